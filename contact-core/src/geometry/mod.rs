@@ -220,3 +220,6 @@ fn arc_bounding_box(a: &Arc) -> (Point3, Point3) {
     }
     (Point3::from(lo), Point3::from(hi))
 }
+
+#[cfg(test)]
+mod tests;

@@ -12,3 +12,6 @@ mod step;
 pub use friction::{CoulombFriction, FrictionForce, FrictionTorque};
 pub use normal::{AugmentedLagrangian, ImpactLaw, NormalForce, PoissonLaw};
 pub use step::{Smooth, Step, step, step5};
+
+#[cfg(test)]
+mod tests;

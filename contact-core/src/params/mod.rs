@@ -567,3 +567,6 @@ fn user_routine(
         parameters,
     })
 }
+
+#[cfg(test)]
+mod tests;
