@@ -1,1 +1,3 @@
-mod x {}
+//! The workspace's integration tests: one binary, one module per topic.
+
+mod scenes_cli;

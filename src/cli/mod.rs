@@ -1,0 +1,3 @@
+//! The `contact` command line: one module per subcommand; `main.rs` only parses and dispatches.
+
+pub mod scenes;

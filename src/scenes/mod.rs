@@ -1,0 +1,635 @@
+//! The reference scenes: one definition of every pair family users compare the engines on,
+//! each with a seeded family of poses from separated through grazing to deep. Tests, benches
+//! and `contact tradeoff` all read them from here.
+//!
+//! A scene's *reference answer* at a pose is its closed form ([`Scene::closed_form`]) where one
+//! exists, else the exact engine's answer. Poses are placed at a *nominal* depth along an
+//! approach direction with support functions ([`support`]); the nominal depth labels the pose
+//! (separated, grazing, shallow, deep) and is never used as an answer.
+
+mod closed_form;
+mod rng;
+mod support;
+
+pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
+pub use rng::SplitMix64;
+pub use support::support;
+
+use contact_core::geometry::{
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus,
+};
+use contact_core::{
+    Contact, Geometry, GeometryInstance, Isometry3, Point2, UnitQuaternion, Vector3,
+};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_6, TAU};
+use std::sync::Arc;
+
+/// A closed-form answer: the contacts at a pose.
+pub type ClosedForm = fn(&Scene, &ScenePose) -> Vec<Contact>;
+
+/// One pair family with its poses.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// The name `--scene` takes (`sphere_plane`, …).
+    pub name: &'static str,
+    /// One line on what the scene exercises.
+    pub description: &'static str,
+    /// The I list (one part).
+    pub i: Vec<GeometryInstance>,
+    /// The J list (one part).
+    pub j: Vec<GeometryInstance>,
+    /// The scene's length scale: point errors are reported relative to it, nominal depths are
+    /// fractions of it.
+    pub scale: f64,
+    /// The poses, in a fixed order.
+    pub poses: Vec<ScenePose>,
+    /// The closed-form answer, where one exists.
+    pub closed_form: Option<ClosedForm>,
+}
+
+/// One pose of a scene: both part poses in the world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScenePose {
+    /// The depth the pose was placed at (negative: separated by that much), in model length.
+    pub nominal_depth: f64,
+    /// `X_WI`.
+    pub pose_world_i: Isometry3,
+    /// `X_WJ`.
+    pub pose_world_j: Isometry3,
+}
+
+/// Nominal depths as fractions of a scene's scale: separated, near, grazing (1e-12 of the
+/// scale), shallow to deep.
+pub const RELATIVE_DEPTHS: [f64; 7] = [-0.05, -1e-3, 1e-12, 1e-3, 0.01, 0.03, 0.1];
+
+/// Poses per nominal depth (different seeded orientations and approach directions).
+pub const POSES_PER_DEPTH: usize = 3;
+
+/// The names of every scene in the suite, in order.
+pub const NAMES: [&str; 17] = [
+    "sphere_plane",
+    "sphere_sphere",
+    "ellipsoid_plane",
+    "ellipsoid_ellipsoid",
+    "cylinder_plane_side",
+    "cylinder_plane_edge",
+    "cylinder_cylinder_parallel",
+    "cylinder_cylinder_crossed",
+    "box_plane",
+    "box_box",
+    "frustum_plane",
+    "torus_plane",
+    "torus_sphere",
+    "circle_circle",
+    "point_curve",
+    "circle_curve",
+    "curve_curve",
+];
+
+/// Every scene of the suite.
+pub fn suite() -> Vec<Scene> {
+    NAMES.iter().filter_map(|n| scene(n)).collect()
+}
+
+/// The scene called `name`, or `None`.
+#[expect(
+    clippy::expect_used,
+    reason = "literal sizes, all inside their valid ranges"
+)]
+pub fn scene(name: &str) -> Option<Scene> {
+    let name: &'static str = NAMES.iter().find(|n| **n == name)?;
+    let sphere = |r: f64| Geometry::Ellipsoid(Ellipsoid::sphere(r).expect("valid literal"));
+    let cylinder = |r, l| Geometry::Cylinder(Cylinder::new(r, l).expect("valid literal"));
+    // A cylinder or frustum with its part origin at its centre (its frame is at the base).
+    let centred = |g: Geometry, length: f64| {
+        GeometryInstance::new(g).at(Isometry3::translation(0.0, 0.0, -0.5 * length))
+    };
+    let free = Orientation::Random;
+    let s = match name {
+        "sphere_plane" => Scene::on_plane(
+            name,
+            "sphere resting on a plane: δ = r − d",
+            single(sphere(1.0)),
+            1.0,
+            free,
+        )
+        .with_closed_form(sphere_plane),
+        "sphere_sphere" => Scene::pair(
+            name,
+            "two spheres: the lens",
+            single(sphere(1.0)),
+            single(sphere(0.7)),
+            0.7,
+            free,
+        )
+        .with_closed_form(sphere_sphere),
+        "ellipsoid_plane" => Scene::on_plane(
+            name,
+            "tilted ellipsoid on a plane: the cap's centroid is off the deepest point's normal",
+            single(Geometry::Ellipsoid(
+                Ellipsoid::new(1.0, 0.6, 0.4).expect("valid literal"),
+            )),
+            0.4,
+            free,
+        ),
+        "ellipsoid_ellipsoid" => Scene::pair(
+            name,
+            "two ellipsoids at random orientations",
+            single(Geometry::Ellipsoid(
+                Ellipsoid::new(1.0, 0.6, 0.4).expect("valid literal"),
+            )),
+            single(Geometry::Ellipsoid(
+                Ellipsoid::new(0.8, 0.8, 0.5).expect("valid literal"),
+            )),
+            0.4,
+            free,
+        ),
+        "cylinder_plane_side" => Scene::on_plane(
+            name,
+            "cylinder lying on its side on a plane: a line contact",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            0.5,
+            Orientation::AxisParallelToPlane,
+        )
+        .with_closed_form(cylinder_plane_side),
+        "cylinder_plane_edge" => Scene::on_plane(
+            name,
+            "cylinder tilted 30° onto its rim",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            0.5,
+            Orientation::Tilted(FRAC_PI_6),
+        ),
+        "cylinder_cylinder_parallel" => Scene::pair(
+            name,
+            "two cylinders with parallel axes: a line contact",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            vec![centred(cylinder(0.8, 3.0), 3.0)],
+            0.5,
+            Orientation::ParallelAxes,
+        ),
+        "cylinder_cylinder_crossed" => Scene::pair(
+            name,
+            "two cylinders with crossed axes: a point contact",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            vec![centred(cylinder(0.8, 3.0), 3.0)],
+            0.5,
+            Orientation::CrossedAxes,
+        ),
+        "box_plane" => Scene::on_plane(
+            name,
+            "tilted box on a plane: a vertex or edge digs in",
+            single(Geometry::Cuboid(
+                Cuboid::centered(1.0, 0.7, 0.5).expect("valid literal"),
+            )),
+            0.5,
+            free,
+        ),
+        "box_box" => Scene::pair(
+            name,
+            "two boxes at random orientations",
+            single(Geometry::Cuboid(
+                Cuboid::centered(1.0, 0.7, 0.5).expect("valid literal"),
+            )),
+            single(Geometry::Cuboid(
+                Cuboid::centered(0.6, 0.6, 0.9).expect("valid literal"),
+            )),
+            0.5,
+            free,
+        ),
+        "frustum_plane" => Scene::on_plane(
+            name,
+            "tilted frustum on a plane",
+            vec![centred(
+                Geometry::Frustum(Frustum::new(0.8, 0.3, 1.5).expect("valid literal")),
+                1.5,
+            )],
+            0.3,
+            free,
+        ),
+        "torus_plane" => Scene::on_plane(
+            name,
+            "tilted torus on a plane",
+            single(Geometry::Torus(
+                Torus::new(1.0, 0.3).expect("valid literal"),
+            )),
+            0.3,
+            free,
+        ),
+        "torus_sphere" => Scene::pair(
+            name,
+            "a sphere against a torus's outer rim",
+            single(sphere(0.4)),
+            single(Geometry::Torus(
+                Torus::new(1.0, 0.3).expect("valid literal"),
+            )),
+            0.3,
+            Orientation::RandomInPlane,
+        ),
+        "circle_circle" => Scene::planar(
+            name,
+            "two circles in one plane",
+            single(circle(0.6)),
+            single(circle(1.0)),
+            0.6,
+        )
+        .with_closed_form(circle_circle),
+        "point_curve" => Scene::on_curve(
+            name,
+            "a point against a closed cubic cam",
+            single(Geometry::Point),
+            0.0,
+        ),
+        "circle_curve" => Scene::on_curve(
+            name,
+            "a circle follower on a closed cubic cam",
+            single(circle(0.2)),
+            0.2,
+        ),
+        "curve_curve" => Scene::planar(
+            name,
+            "two closed B-spline curves",
+            single(Geometry::Curve(Arc::new(blob(0.5, 5, 0.15)))),
+            single(Geometry::Curve(Arc::new(cam()))),
+            0.3,
+        ),
+        _ => return None,
+    };
+    Some(s)
+}
+
+fn single(g: Geometry) -> Vec<GeometryInstance> {
+    vec![GeometryInstance::new(g)]
+}
+
+#[expect(clippy::expect_used, reason = "callers pass literal radii > 0")]
+fn circle(r: f64) -> Geometry {
+    Geometry::Circle(Circle::new(r).expect("valid literal"))
+}
+
+#[expect(
+    clippy::expect_used,
+    reason = "literal sizes, all inside their valid ranges"
+)]
+/// A closed cubic B-spline through `n` points of a wavy circle of radius `r`.
+fn blob(r: f64, n: usize, wave: f64) -> Curve {
+    let points: Vec<Point2> = (0..3 * n)
+        .map(|k| {
+            let a = TAU * k as f64 / (3 * n) as f64;
+            let rho = r * (1.0 + wave * (n as f64 * a).cos());
+            Point2::new(rho * a.cos(), rho * a.sin())
+        })
+        .collect();
+    Curve::new(&points, 4, true, CurvePoints::Interpolated).expect("valid literal")
+}
+
+#[expect(clippy::expect_used, reason = "literal points, distinct and finite")]
+/// The cam of the 2-D scenes: an egg shape, counter-clockwise so its normal points outward.
+fn cam() -> Curve {
+    let points: Vec<Point2> = (0..16)
+        .map(|k| {
+            let a = TAU * k as f64 / 16.0;
+            Point2::new(1.2 * a.cos() + 0.2 * (2.0 * a).cos(), 0.9 * a.sin())
+        })
+        .collect();
+    Curve::new(&points, 4, true, CurvePoints::Interpolated).expect("valid literal")
+}
+
+/// How I is oriented relative to J in a scene's poses.
+#[derive(Debug, Clone, Copy)]
+enum Orientation {
+    /// Uniform on SO(3).
+    Random,
+    /// I's z axis parallel to J's x-y plane (rotation about J's z random).
+    AxisParallelToPlane,
+    /// I's z axis tilted by the angle from J's z (rotation about J's z random).
+    Tilted(f64),
+    /// I's z axis parallel to J's; approach perpendicular to both.
+    ParallelAxes,
+    /// I's z axis along J's y; approach along J's x.
+    CrossedAxes,
+    /// Random rotation; approach direction in J's x-y plane.
+    RandomInPlane,
+}
+
+impl Scene {
+    fn with_closed_form(mut self, f: ClosedForm) -> Self {
+        self.closed_form = Some(f);
+        self
+    }
+
+    fn base(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        j: Vec<GeometryInstance>,
+        scale: f64,
+    ) -> Self {
+        Self {
+            name,
+            description,
+            i,
+            j,
+            scale,
+            poses: Vec::new(),
+            closed_form: None,
+        }
+    }
+
+    /// I above J's plane (J's +z), at each nominal depth.
+    fn on_plane(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        scale: f64,
+        orientation: Orientation,
+    ) -> Self {
+        let mut scene = Self::base(
+            name,
+            description,
+            i,
+            single(Geometry::Plane(Plane::unbounded())),
+            scale,
+        );
+        let mut rng = SplitMix64::new(seed(name));
+        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
+            for _ in 0..POSES_PER_DEPTH {
+                let rotation = orient(orientation, &mut rng);
+                let up = Vector3::z();
+                let lowest = -support_of(
+                    &scene.i,
+                    &Isometry3::from_parts(Default::default(), rotation),
+                    &-up,
+                );
+                let offset =
+                    Vector3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), -lowest - depth);
+                scene.push(
+                    depth,
+                    Isometry3::from_parts(offset.into(), rotation),
+                    &mut rng,
+                );
+            }
+        }
+        scene
+    }
+
+    /// I approaching J along a direction at each nominal depth.
+    fn pair(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        j: Vec<GeometryInstance>,
+        scale: f64,
+        orientation: Orientation,
+    ) -> Self {
+        let mut scene = Self::base(name, description, i, j, scale);
+        let mut rng = SplitMix64::new(seed(name));
+        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
+            for _ in 0..POSES_PER_DEPTH {
+                let rotation = orient(orientation, &mut rng);
+                let u = match orientation {
+                    Orientation::ParallelAxes | Orientation::RandomInPlane => {
+                        let a = rng.range(0.0, TAU);
+                        Vector3::new(a.cos(), a.sin(), 0.0)
+                    }
+                    Orientation::CrossedAxes => Vector3::x(),
+                    _ => rng.unit_vector(),
+                };
+                let placed = Isometry3::from_parts(Default::default(), rotation);
+                let reach = support_of(&scene.j, &Isometry3::identity(), &u)
+                    + support_of(&scene.i, &placed, &-u);
+                scene.push(
+                    depth,
+                    Isometry3::from_parts((u * (reach - depth)).into(), rotation),
+                    &mut rng,
+                );
+            }
+        }
+        scene
+    }
+
+    /// Two 2-D shapes in J's x-y plane, I approaching along a direction in that plane.
+    fn planar(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        j: Vec<GeometryInstance>,
+        scale: f64,
+    ) -> Self {
+        let mut scene = Self::base(name, description, i, j, scale);
+        let mut rng = SplitMix64::new(seed(name));
+        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
+            for _ in 0..POSES_PER_DEPTH {
+                let rotation =
+                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
+                let a = rng.range(0.0, TAU);
+                let u = Vector3::new(a.cos(), a.sin(), 0.0);
+                let placed = Isometry3::from_parts(Default::default(), rotation);
+                let reach = support_of(&scene.j, &Isometry3::identity(), &u)
+                    + support_of(&scene.i, &placed, &-u);
+                scene.push(
+                    depth,
+                    Isometry3::from_parts((u * (reach - depth)).into(), rotation),
+                    &mut rng,
+                );
+            }
+        }
+        scene
+    }
+
+    /// A 2-D shape of radius `radius` placed against the cam along the cam's outward normal.
+    fn on_curve(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        radius: f64,
+    ) -> Self {
+        let cam = cam();
+        let [u0, u1] = cam.domain();
+        let mut scene = Self::base(
+            name,
+            description,
+            i,
+            single(Geometry::Curve(Arc::new(cam.clone()))),
+            0.2,
+        );
+        let mut rng = SplitMix64::new(seed(name));
+        for depth in RELATIVE_DEPTHS.map(|d| d * 0.2) {
+            for _ in 0..POSES_PER_DEPTH {
+                let u = rng.range(u0, u1);
+                let normal = cam.normal(u).unwrap_or(nalgebra::Vector2::x());
+                let at = cam.point(u).coords + normal * (radius - depth);
+                let rotation =
+                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
+                scene.push(
+                    depth,
+                    Isometry3::from_parts(Vector3::new(at.x, at.y, 0.0).into(), rotation),
+                    &mut rng,
+                );
+            }
+        }
+        scene
+    }
+
+    /// Adds a pose given I relative to J, with J at a seeded random world pose (so every
+    /// answer is also a check of rigid-motion invariance).
+    fn push(&mut self, nominal_depth: f64, pose_j_i: Isometry3, rng: &mut SplitMix64) {
+        let t = Vector3::new(
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+            rng.range(-5.0, 5.0),
+        ) * self.scale;
+        let pose_world_j = Isometry3::from_parts(t.into(), rng.rotation());
+        self.poses.push(ScenePose {
+            nominal_depth,
+            pose_world_i: pose_world_j * pose_j_i,
+            pose_world_j,
+        });
+    }
+
+    /// The same scene with every length multiplied by `factor` (geometry, placements, poses):
+    /// for scale-covariance checks from 1e-6 to 1e6.
+    pub fn scaled(&self, factor: f64) -> Result<Self, contact_core::InvalidArgument> {
+        let scale_instance =
+            |g: &GeometryInstance| -> Result<GeometryInstance, contact_core::InvalidArgument> {
+                let mut out = g.clone();
+                out.geometry = Arc::new(scale_geometry(&g.geometry, factor)?);
+                out.pose_part_geometry.translation.vector *= factor;
+                Ok(out)
+            };
+        let scale_pose = |p: &Isometry3| {
+            let mut q = *p;
+            q.translation.vector *= factor;
+            q
+        };
+        Ok(Self {
+            i: self
+                .i
+                .iter()
+                .map(scale_instance)
+                .collect::<Result<_, _>>()?,
+            j: self
+                .j
+                .iter()
+                .map(scale_instance)
+                .collect::<Result<_, _>>()?,
+            scale: self.scale * factor,
+            poses: self
+                .poses
+                .iter()
+                .map(|p| ScenePose {
+                    nominal_depth: p.nominal_depth * factor,
+                    pose_world_i: scale_pose(&p.pose_world_i),
+                    pose_world_j: scale_pose(&p.pose_world_j),
+                })
+                .collect(),
+            ..self.clone()
+        })
+    }
+}
+
+/// A stable seed per scene name (FNV-1a), so adding a scene does not move the others' poses.
+fn seed(name: &str) -> u64 {
+    name.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+fn orient(orientation: Orientation, rng: &mut SplitMix64) -> UnitQuaternion {
+    let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
+    match orientation {
+        Orientation::Random | Orientation::RandomInPlane => rng.rotation(),
+        Orientation::AxisParallelToPlane => {
+            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2)
+        }
+        Orientation::Tilted(angle) => {
+            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), angle)
+        }
+        Orientation::ParallelAxes => spin,
+        Orientation::CrossedAxes => UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2),
+    }
+}
+
+/// The support of a list placed at part pose `pose` (the largest over its members).
+fn support_of(list: &[GeometryInstance], pose: &Isometry3, d: &Vector3) -> f64 {
+    list.iter()
+        .filter_map(|g| support(&g.geometry, &(pose * g.pose_part_geometry), d))
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+fn scale_geometry(g: &Geometry, f: f64) -> Result<Geometry, contact_core::InvalidArgument> {
+    Ok(match g {
+        Geometry::Ellipsoid(e) => {
+            let s = e.semi_axes() * f;
+            Geometry::Ellipsoid(Ellipsoid::new(s.x, s.y, s.z)?)
+        }
+        Geometry::Cylinder(c) => Geometry::Cylinder(Cylinder::new(c.radius() * f, c.length() * f)?),
+        Geometry::Cuboid(b) => {
+            let h = b.half_extents() * f;
+            let c = b.center().coords * f;
+            let centred = Cuboid::centered(h.x, h.y, h.z)?;
+            if c == Vector3::zeros() {
+                Geometry::Cuboid(centred)
+            } else {
+                Geometry::Cuboid(Cuboid::from_corner(2.0 * c.x, 2.0 * c.y, 2.0 * c.z)?)
+            }
+        }
+        Geometry::Frustum(fr) => Geometry::Frustum(Frustum::new(
+            fr.bottom_radius() * f,
+            fr.top_radius() * f,
+            fr.length() * f,
+        )?),
+        Geometry::Torus(t) => {
+            Geometry::Torus(Torus::new(t.major_radius() * f, t.minor_radius() * f)?)
+        }
+        Geometry::Plane(p) => {
+            let [x0, x1] = p.x_range();
+            let [y0, y1] = p.y_range();
+            Geometry::Plane(if p.is_unbounded() {
+                Plane::unbounded()
+            } else {
+                Plane::bounded(x0 * f, x1 * f, y0 * f, y1 * f)?
+            })
+        }
+        Geometry::Mesh(m) => {
+            let vertices = m.vertices().iter().map(|v| v * f).collect();
+            Geometry::Mesh(Arc::new(
+                contact_core::geometry::TriangleMesh::new(vertices, m.triangles().to_vec())
+                    .map_err(|e| {
+                        contact_core::InvalidArgument::with_text(
+                            "scale",
+                            format!("{f:?}"),
+                            format!("a factor that keeps the mesh valid ({e})"),
+                        )
+                    })?,
+            ))
+        }
+        Geometry::Point => Geometry::Point,
+        Geometry::Line(l) => {
+            let [x0, x1] = l.x_range();
+            Geometry::Line(contact_core::geometry::Line::bounded(x0 * f, x1 * f)?)
+        }
+        Geometry::Circle(c) => Geometry::Circle(Circle::new(c.radius() * f)?),
+        Geometry::Arc(a) => Geometry::Arc(contact_core::geometry::Arc::new(
+            a.radius() * f,
+            a.range_angle(),
+        )?),
+        Geometry::Curve(c) => {
+            // Scaling the control points scales the B-spline exactly.
+            let points: Vec<Point2> = c.control_points().iter().map(|q| q * f).collect();
+            let distinct = if c.is_closed() {
+                &points[..points.len() + 1 - c.order()]
+            } else {
+                &points[..]
+            };
+            Geometry::Curve(Arc::new(Curve::new(
+                distinct,
+                c.order(),
+                c.is_closed(),
+                CurvePoints::Control,
+            )?))
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests;

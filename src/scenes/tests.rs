@@ -1,0 +1,99 @@
+//! The suite is well formed, and the closed forms agree with the nominal placements where the
+//! placement is exact (spheres, circles, a cylinder on its side).
+
+use super::*;
+
+#[test]
+fn every_named_scene_exists_with_finite_poses_over_every_depth() {
+    let all = suite();
+    assert_eq!(all.len(), NAMES.len());
+    for s in &all {
+        assert_eq!(
+            s.poses.len(),
+            RELATIVE_DEPTHS.len() * POSES_PER_DEPTH,
+            "{}",
+            s.name
+        );
+        for p in &s.poses {
+            let finite = |x: &Isometry3| {
+                x.translation
+                    .vector
+                    .iter()
+                    .chain(x.rotation.coords.iter())
+                    .all(|c| c.is_finite())
+            };
+            assert!(
+                finite(&p.pose_world_i) && finite(&p.pose_world_j),
+                "{}",
+                s.name
+            );
+        }
+    }
+    assert!(scene("no_such_scene").is_none());
+}
+
+#[test]
+fn closed_forms_return_the_nominal_depth_where_placement_is_exact() {
+    for name in [
+        "sphere_plane",
+        "sphere_sphere",
+        "cylinder_plane_side",
+        "circle_circle",
+    ] {
+        let s = scene(name).unwrap();
+        let f = s.closed_form.unwrap();
+        for p in &s.poses {
+            let contacts = f(&s, p);
+            if p.nominal_depth < 0.0 {
+                assert!(
+                    contacts.is_empty(),
+                    "{name}: separated pose gave {contacts:?}"
+                );
+                continue;
+            }
+            assert_eq!(contacts.len(), 1, "{name}");
+            let c = contacts[0];
+            assert!(c.is_well_formed(), "{name}: {c:?}");
+            assert!(
+                (c.penetration - p.nominal_depth).abs() < 1e-12 * s.scale.max(1.0) * 10.0,
+                "{name}: {} vs {}",
+                c.penetration,
+                p.nominal_depth
+            );
+            // The points are δ apart along the normal, I's deeper into J.
+            let gap = c.point_i_w - c.point_j_w;
+            assert!((gap + c.normal_w * c.penetration).norm() < 1e-9, "{name}");
+        }
+    }
+}
+
+#[test]
+fn scaling_a_scene_scales_its_closed_form_answer() {
+    let s = scene("sphere_sphere").unwrap();
+    for factor in [1e-6, 1e6] {
+        let big = s.scaled(factor).unwrap();
+        for (p, q) in s.poses.iter().zip(&big.poses) {
+            let (a, b) = (sphere_sphere(&s, p), sphere_sphere(&big, q));
+            assert_eq!(a.len(), b.len());
+            for (a, b) in a.iter().zip(&b) {
+                assert!(
+                    (b.penetration / factor - a.penetration).abs()
+                        <= 1e-9 * a.penetration.max(1e-12) + 1e-15
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn scaled_curves_stay_the_same_shape() {
+    let s = scene("curve_curve").unwrap();
+    let big = s.scaled(1e3).unwrap();
+    let (Geometry::Curve(a), Geometry::Curve(b)) = (&*s.j[0].geometry, &*big.j[0].geometry) else {
+        panic!("curves")
+    };
+    for k in 0..20 {
+        let u = a.domain()[1] * k as f64 / 20.0;
+        assert!((b.point(u) - a.point(u) * 1e3).norm() < 1e-9);
+    }
+}
