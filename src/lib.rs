@@ -20,7 +20,9 @@
 )]
 
 pub mod cli;
+pub mod output;
 pub mod scenes;
+pub mod tradeoff;
 
 /// The README's code blocks, compiled and run as doctests.
 #[doc = include_str!("../README.md")]

@@ -1,0 +1,311 @@
+//! Line plots as standalone SVG: linear or logarithmic axes, tick labels, a legend.
+//!
+//! Written by hand rather than with a plotting crate: the plots are simple (a few series of
+//! points), and plain SVG text keeps the output diffable and the dependency tree small.
+
+use std::fmt::Write;
+
+/// How an axis maps values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// Linear.
+    Linear,
+    /// Base-10 logarithmic (non-positive values are left out).
+    Log,
+}
+
+/// One named series of `(x, y)` points, drawn as a polyline with markers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The legend entry.
+    pub name: String,
+    /// The points, in drawing order.
+    pub points: Vec<(f64, f64)>,
+    /// Join the points with a line (else markers only).
+    pub line: bool,
+}
+
+/// A plot: title, axis labels and scales, series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plot {
+    /// The title above the plot.
+    pub title: String,
+    /// The x axis label (with units).
+    pub x_label: String,
+    /// The y axis label (with units).
+    pub y_label: String,
+    /// The x axis scale.
+    pub x_scale: Scale,
+    /// The y axis scale.
+    pub y_scale: Scale,
+    /// The data.
+    pub series: Vec<Series>,
+}
+
+const WIDTH: f64 = 960.0;
+const HEIGHT: f64 = 600.0;
+const LEFT: f64 = 90.0;
+const RIGHT: f64 = 250.0;
+const TOP: f64 = 50.0;
+const BOTTOM: f64 = 70.0;
+/// A colour-blind-safe palette (Okabe & Ito), cycled with marker shapes for more series.
+const COLOURS: [&str; 8] = [
+    "#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7", "#56B4E9", "#F0E442", "#000000",
+];
+
+impl Plot {
+    /// Renders the plot as an SVG document. Points that cannot be drawn (non-finite, or
+    /// non-positive on a log axis) are left out; a plot with no drawable point says so.
+    pub fn to_svg(&self) -> String {
+        let drawable = |x: f64, s: Scale| x.is_finite() && (s == Scale::Linear || x > 0.0);
+        let series: Vec<(usize, Vec<(f64, f64)>)> = self
+            .series
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let pts = s
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|&(x, y)| drawable(x, self.x_scale) && drawable(y, self.y_scale))
+                    .map(|(x, y)| (transform(x, self.x_scale), transform(y, self.y_scale)))
+                    .collect();
+                (k, pts)
+            })
+            .collect();
+        let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
+        let mut svg = String::new();
+        let _ = writeln!(
+            svg,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="13">"#
+        );
+        let _ = writeln!(svg, r#"<rect width="100%" height="100%" fill="white"/>"#);
+        let _ = writeln!(
+            svg,
+            r#"<text x="{}" y="28" text-anchor="middle" font-size="17">{}</text>"#,
+            (LEFT + WIDTH - RIGHT) / 2.0,
+            escape(&self.title)
+        );
+        if all.is_empty() {
+            let _ = writeln!(
+                svg,
+                r#"<text x="{}" y="{}" text-anchor="middle">no data to draw</text></svg>"#,
+                WIDTH / 2.0,
+                HEIGHT / 2.0
+            );
+            return svg;
+        }
+        let (x0, x1) = padded_range(all.iter().map(|p| p.0));
+        let (y0, y1) = padded_range(all.iter().map(|p| p.1));
+        let (pw, ph) = (WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM);
+        let sx = |x: f64| LEFT + (x - x0) / (x1 - x0) * pw;
+        let sy = |y: f64| TOP + ph - (y - y0) / (y1 - y0) * ph;
+        let _ = writeln!(
+            svg,
+            r##"<rect x="{LEFT}" y="{TOP}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>"##
+        );
+        for (v, label) in ticks(x0, x1, self.x_scale) {
+            let x = sx(v);
+            let _ = writeln!(
+                svg,
+                r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/>"##,
+                TOP + ph
+            );
+            let _ = writeln!(
+                svg,
+                r#"<text x="{x:.1}" y="{:.1}" text-anchor="middle">{label}</text>"#,
+                TOP + ph + 18.0
+            );
+        }
+        for (v, label) in ticks(y0, y1, self.y_scale) {
+            let y = sy(v);
+            let _ = writeln!(
+                svg,
+                r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/>"##,
+                LEFT + pw
+            );
+            let _ = writeln!(
+                svg,
+                r#"<text x="{:.1}" y="{:.1}" text-anchor="end">{label}</text>"#,
+                LEFT - 6.0,
+                y + 4.0
+            );
+        }
+        let _ = writeln!(
+            svg,
+            r#"<text x="{}" y="{}" text-anchor="middle">{}</text>"#,
+            LEFT + pw / 2.0,
+            HEIGHT - 20.0,
+            escape(&self.x_label)
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text x="20" y="{0}" text-anchor="middle" transform="rotate(-90 20 {0})">{1}</text>"#,
+            TOP + ph / 2.0,
+            escape(&self.y_label)
+        );
+        for (k, pts) in &series {
+            let colour = COLOURS[k % COLOURS.len()];
+            if self.series[*k].line && pts.len() > 1 {
+                let path: Vec<String> = pts
+                    .iter()
+                    .map(|&(x, y)| format!("{:.1},{:.1}", sx(x), sy(y)))
+                    .collect();
+                let _ = writeln!(
+                    svg,
+                    r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="2"/>"#,
+                    path.join(" ")
+                );
+            }
+            for &(x, y) in pts {
+                let _ = writeln!(svg, "{}", marker(*k / COLOURS.len(), sx(x), sy(y), colour));
+            }
+            let ly = TOP + 10.0 + 20.0 * *k as f64;
+            let lx = WIDTH - RIGHT + 16.0;
+            let _ = writeln!(
+                svg,
+                r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="2"/>"#,
+                lx + 22.0
+            );
+            let _ = writeln!(svg, "{}", marker(*k / COLOURS.len(), lx + 11.0, ly, colour));
+            let _ = writeln!(
+                svg,
+                r#"<text x="{}" y="{}">{}</text>"#,
+                lx + 28.0,
+                ly + 4.0,
+                escape(&self.series[*k].name)
+            );
+        }
+        svg.push_str("</svg>\n");
+        svg
+    }
+}
+
+fn transform(v: f64, s: Scale) -> f64 {
+    match s {
+        Scale::Linear => v,
+        Scale::Log => v.log10(),
+    }
+}
+
+fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    let span = hi - lo;
+    let pad = if span > 0.0 {
+        0.05 * span
+    } else {
+        0.5 * lo.abs().max(1.0)
+    };
+    (lo - pad, hi + pad)
+}
+
+/// Tick positions (in transformed units) with their labels.
+fn ticks(lo: f64, hi: f64, s: Scale) -> Vec<(f64, String)> {
+    match s {
+        Scale::Log => {
+            let step = ((hi - lo) / 8.0).ceil().max(1.0);
+            let mut out = Vec::new();
+            let mut e = (lo / step).ceil() * step;
+            while e <= hi {
+                out.push((e, format!("1e{}", e.round() as i64)));
+                e += step;
+            }
+            out
+        }
+        Scale::Linear => {
+            let raw = (hi - lo) / 6.0;
+            let magnitude = 10f64.powf(raw.log10().floor());
+            let step = [1.0, 2.0, 5.0, 10.0]
+                .iter()
+                .map(|m| m * magnitude)
+                .find(|&s| s >= raw)
+                .unwrap_or(10.0 * magnitude);
+            let mut out = Vec::new();
+            let mut v = (lo / step).ceil() * step;
+            while v <= hi {
+                out.push((v, format!("{}", (v / step).round() * step)));
+                v += step;
+            }
+            out
+        }
+    }
+}
+
+fn marker(shape: usize, x: f64, y: f64, colour: &str) -> String {
+    match shape % 3 {
+        0 => format!(r#"<circle cx="{x:.1}" cy="{y:.1}" r="4" fill="{colour}"/>"#),
+        1 => format!(
+            r#"<rect x="{:.1}" y="{:.1}" width="8" height="8" fill="{colour}"/>"#,
+            x - 4.0,
+            y - 4.0
+        ),
+        _ => format!(
+            r#"<path d="M{x:.1},{:.1} L{:.1},{:.1} L{:.1},{:.1} Z" fill="{colour}"/>"#,
+            y - 5.0,
+            x + 5.0,
+            y + 4.0,
+            x - 5.0,
+            y + 4.0
+        ),
+    }
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_log_plot_has_decade_ticks_a_legend_and_every_point() {
+        let plot = Plot {
+            title: "error <against> time".into(),
+            x_label: "time (ns)".into(),
+            y_label: "error".into(),
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+            series: vec![
+                Series {
+                    name: "a".into(),
+                    points: vec![(1e2, 1e-3), (1e3, 1e-5), (1e4, 1e-7)],
+                    line: true,
+                },
+                Series {
+                    name: "b".into(),
+                    points: vec![(5e2, 0.0), (2e3, 1e-4)],
+                    line: false,
+                },
+            ],
+        };
+        let svg = plot.to_svg();
+        assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
+        assert!(svg.contains("error &lt;against&gt; time"));
+        assert!(svg.contains(">1e3<") && svg.contains(">1e-5<"));
+        // 3 + 1 drawable points (0 is not drawable on a log axis) + 2 legend markers.
+        assert_eq!(svg.matches("<circle").count(), 6);
+        assert!(svg.contains(">a<") && svg.contains(">b<"));
+    }
+
+    #[test]
+    fn an_empty_plot_says_so() {
+        let plot = Plot {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Log,
+            series: vec![Series {
+                name: "s".into(),
+                points: vec![(1.0, -1.0)],
+                line: true,
+            }],
+        };
+        assert!(plot.to_svg().contains("no data to draw"));
+    }
+}

@@ -1,0 +1,177 @@
+//! Choosing an engine and tolerance from measured rows: the fastest that meets an accuracy
+//! target, per contact and for the whole model.
+
+use super::measure::TradeRecord;
+use serde::Serialize;
+
+/// A recommendation for one contact (or scene).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Choice {
+    /// The contact or scene.
+    pub contact: String,
+    /// `exact` or `faceted`.
+    pub engine: String,
+    /// The tolerance, for the faceted engine.
+    pub faceting_tolerance: Option<f64>,
+    /// Its measured median query time, ns.
+    pub query_ns_median: f64,
+    /// Its measured depth error (relative to the contact's scale).
+    pub depth_error: f64,
+}
+
+/// The model-wide recommendation: one engine (PREFERENCES is model-wide) and the tolerance
+/// that meets the target on every contact at the least total query time.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ModelChoice {
+    /// `exact` or `faceted`.
+    pub engine: String,
+    /// The tolerance, for the faceted engine.
+    pub faceting_tolerance: Option<f64>,
+    /// Sum over the contacts of their median query times, ns.
+    pub total_query_ns: f64,
+    /// The worst depth error over the contacts.
+    pub worst_depth_error: f64,
+}
+
+/// True when a row meets the target: it has a reference, its depth error is within
+/// `max_depth_error`, and it missed no contact.
+pub fn meets(record: &TradeRecord, max_depth_error: f64) -> bool {
+    record.depth_error.is_some_and(|e| e <= max_depth_error) && record.missed_contacts == 0
+}
+
+/// The fastest selectable row (exact or faceted; peers are for comparison only) of `contact`
+/// that meets the target; ties go to the smaller tolerance, then to the exact engine.
+pub fn select(records: &[TradeRecord], contact: &str, max_depth_error: f64) -> Option<Choice> {
+    records
+        .iter()
+        .filter(|r| r.scene == contact && selectable(r) && meets(r, max_depth_error))
+        .min_by(|a, b| {
+            a.query_ns_median.total_cmp(&b.query_ns_median).then(
+                a.faceting_tolerance
+                    .unwrap_or(0.0)
+                    .total_cmp(&b.faceting_tolerance.unwrap_or(0.0)),
+            )
+        })
+        .map(|r| Choice {
+            contact: r.scene.clone(),
+            engine: r.engine.clone(),
+            faceting_tolerance: r.faceting_tolerance,
+            query_ns_median: r.query_ns_median,
+            depth_error: r.depth_error.unwrap_or(f64::NAN),
+        })
+}
+
+/// The engine and tolerance meeting the target on every contact in `contacts` at the least
+/// total time; `None` when no single setting meets it everywhere.
+pub fn select_model(
+    records: &[TradeRecord],
+    contacts: &[String],
+    max_depth_error: f64,
+) -> Option<ModelChoice> {
+    let mut settings: Vec<(String, Option<f64>)> = records
+        .iter()
+        .filter(|r| selectable(r))
+        .map(|r| (r.engine.clone(), r.faceting_tolerance))
+        .collect();
+    settings.sort_by(|a, b| {
+        a.0.cmp(&b.0)
+            .then(a.1.unwrap_or(0.0).total_cmp(&b.1.unwrap_or(0.0)))
+    });
+    settings.dedup();
+    settings
+        .into_iter()
+        .filter_map(|(engine, tolerance)| {
+            let rows: Vec<&TradeRecord> = contacts
+                .iter()
+                .filter_map(|c| {
+                    records.iter().find(|r| {
+                        &r.scene == c && r.engine == engine && r.faceting_tolerance == tolerance
+                    })
+                })
+                .collect();
+            let complete =
+                rows.len() == contacts.len() && rows.iter().all(|r| meets(r, max_depth_error));
+            complete.then(|| ModelChoice {
+                engine,
+                faceting_tolerance: tolerance,
+                total_query_ns: rows.iter().map(|r| r.query_ns_median).sum(),
+                worst_depth_error: rows
+                    .iter()
+                    .filter_map(|r| r.depth_error)
+                    .fold(0.0, f64::max),
+            })
+        })
+        .min_by(|a, b| a.total_query_ns.total_cmp(&b.total_query_ns))
+}
+
+fn selectable(r: &TradeRecord) -> bool {
+    r.engine == "exact" || r.engine == "faceted"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tradeoff::measure::{ReferenceSource, WorkPerQuery};
+
+    fn row(scene: &str, engine: &str, ft: Option<f64>, err: f64, ns: f64) -> TradeRecord {
+        TradeRecord {
+            scene: scene.into(),
+            engine: engine.into(),
+            faceting_tolerance: ft,
+            reference: ReferenceSource::ClosedForm,
+            depth_error: Some(err),
+            normal_error_deg: Some(0.0),
+            point_error: Some(0.0),
+            missed_contacts: 0,
+            extra_contacts: 0,
+            query_ns_median: ns,
+            query_ns_p95: ns,
+            prepare_ms: 0.0,
+            prepared_bytes: 0,
+            triangles: 0,
+            poses: 1,
+            work: WorkPerQuery::default(),
+        }
+    }
+
+    #[test]
+    fn exact_wins_when_faster_and_more_accurate() {
+        let rows = vec![
+            row("a", "exact", None, 1e-13, 40.0),
+            row("a", "faceted", Some(300.0), 5e-3, 900.0),
+            row("a", "faceted", Some(1000.0), 5e-4, 2500.0),
+            row("a", "parry", None, 1e-3, 10.0),
+        ];
+        let c = select(&rows, "a", 0.01).unwrap();
+        assert_eq!((c.engine.as_str(), c.faceting_tolerance), ("exact", None));
+    }
+
+    #[test]
+    fn faceted_at_the_smallest_sufficient_tolerance_when_faster() {
+        let rows = vec![
+            row("m", "exact", None, 1e-12, 90_000.0),
+            row("m", "faceted", Some(100.0), 2e-2, 500.0),
+            row("m", "faceted", Some(300.0), 6e-3, 800.0),
+            row("m", "faceted", Some(1000.0), 2e-3, 2000.0),
+        ];
+        let c = select(&rows, "m", 0.01).unwrap();
+        assert_eq!(
+            (c.engine.as_str(), c.faceting_tolerance),
+            ("faceted", Some(300.0))
+        );
+        assert!(select(&rows, "m", 1e-14).is_none());
+        // Model-wide: one setting for both contacts at the least total time.
+        let mut all = rows.clone();
+        all.extend([
+            row("a", "exact", None, 1e-13, 40.0),
+            row("a", "faceted", Some(300.0), 9e-3, 700.0),
+        ]);
+        all.push(row("a", "faceted", Some(1000.0), 1e-3, 1500.0));
+        let model = select_model(&all, &["m".into(), "a".into()], 0.01).unwrap();
+        assert_eq!(
+            (model.engine.as_str(), model.faceting_tolerance),
+            ("faceted", Some(300.0))
+        );
+        assert_eq!(model.total_query_ns, 1500.0);
+    }
+}
