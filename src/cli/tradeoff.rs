@@ -1,0 +1,114 @@
+//! `contact tradeoff`: the accuracy-against-speed sweep over the scene suite.
+
+use crate::scenes::{self, Scene};
+use crate::tradeoff::{self, EngineFactory, Sweep, Timing, TradeReport};
+use contact_core::{FacetingTolerance, GeometryEngine};
+use std::io::Write;
+use std::path::PathBuf;
+
+/// What `contact tradeoff` was asked to do.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct TradeoffArgs {
+    /// Scene names (empty: the whole suite).
+    pub scenes: Vec<String>,
+    /// Faceting tolerances (empty: the default sweep).
+    pub tolerances: Vec<f64>,
+    /// Timed passes over the poses.
+    pub rounds: Option<usize>,
+    /// Write the records as JSON here.
+    pub json: Option<PathBuf>,
+    /// Write the records as CSV here.
+    pub csv: Option<PathBuf>,
+    /// Draw the error-against-time plot here (SVG).
+    pub plot: Option<PathBuf>,
+}
+
+/// Why `contact tradeoff` failed.
+#[derive(Debug, thiserror::Error)]
+pub enum TradeoffError {
+    /// A scene name not in the suite.
+    #[error("no scene named '{0}' (run `contact scenes` for the list)")]
+    UnknownScene(String),
+    /// A tolerance out of range.
+    #[error("--faceting-tolerance: {0}")]
+    Tolerance(#[from] contact_core::InvalidArgument),
+    /// A measurement failed.
+    #[error(transparent)]
+    Measure(#[from] tradeoff::TradeError),
+    /// Writing an output failed.
+    #[error("cannot write {path}: {source}")]
+    Write {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// Serialising JSON failed.
+    #[error("cannot serialise the records: {0}")]
+    Json(#[from] serde_json::Error),
+}
+
+/// Runs the sweep, prints the table to `out` (and progress to `progress`), writes the files
+/// asked for, and returns the report.
+pub fn run(
+    args: &TradeoffArgs,
+    engines: EngineFactory<'_>,
+    peers: &[&dyn GeometryEngine],
+    out: &mut dyn Write,
+    progress: &mut dyn FnMut(&str),
+) -> Result<TradeReport, TradeoffError> {
+    let chosen: Vec<Scene> = if args.scenes.is_empty() {
+        scenes::suite()
+    } else {
+        args.scenes
+            .iter()
+            .map(|n| scenes::scene(n).ok_or_else(|| TradeoffError::UnknownScene(n.clone())))
+            .collect::<Result<_, _>>()?
+    };
+    let mut sweep = Sweep::default();
+    if !args.tolerances.is_empty() {
+        sweep.tolerances = args
+            .tolerances
+            .iter()
+            .map(|&t| FacetingTolerance::new(t))
+            .collect::<Result<_, _>>()?;
+    }
+    if let Some(rounds) = args.rounds {
+        sweep.timing = Timing {
+            rounds: rounds.max(1),
+            ..sweep.timing
+        };
+    }
+    let report = tradeoff::run(&chosen, &sweep, engines, peers, progress)?;
+    let write = |path: &PathBuf, text: &str| {
+        std::fs::write(path, text).map_err(|source| TradeoffError::Write {
+            path: path.clone(),
+            source,
+        })
+    };
+    // Files first: what was measured is kept even if the terminal has gone away.
+    if let Some(path) = &args.json {
+        write(path, &tradeoff::json(&report.records)?)?;
+    }
+    if let Some(path) = &args.csv {
+        write(path, &tradeoff::csv(&report.records))?;
+    }
+    if let Some(path) = &args.plot {
+        write(path, &tradeoff::plot(&report.records).to_svg())?;
+    }
+    let stdout_error = |source| TradeoffError::Write {
+        path: PathBuf::from("<stdout>"),
+        source,
+    };
+    out.write_all(tradeoff::table(&report.records).as_bytes())
+        .map_err(stdout_error)?;
+    for s in &report.skipped {
+        writeln!(
+            out,
+            "skipped: {} with the {} engine (unsupported pair)",
+            s.scene, s.engine
+        )
+        .map_err(stdout_error)?;
+    }
+    Ok(report)
+}
