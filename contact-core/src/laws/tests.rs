@@ -361,3 +361,30 @@ fn friction_torque_partials_agree_with_central_differences() {
         );
     }
 }
+
+#[test]
+fn every_normal_law_is_continuous_at_its_branch_points() {
+    let tiny = 1e-12;
+    let impact = impact();
+    // δ = 0 (first touch), δ = dmax (end of the damping ramp), in both rates.
+    for rate in [-3.0, 0.0, 4.0] {
+        assert!(impact.force(tiny, rate).force < 1e-9);
+        let (below, above) = (
+            impact.force(0.1 - tiny, rate).force,
+            impact.force(0.1 + tiny, rate).force,
+        );
+        assert!(
+            (below - above).abs() < 1e-6,
+            "IMPACT jumps at DMAX: {below} vs {above}"
+        );
+    }
+    let poisson = poisson(0.4);
+    for rate in [-1.0, 1.0, 0.0, -20.0] {
+        assert!(poisson.force(tiny, rate).force < 1e-5);
+        let (below, above) = (
+            poisson.force(1e-3, rate - tiny).force,
+            poisson.force(1e-3, rate + tiny).force,
+        );
+        assert!((below - above).abs() < 1e-6, "POISSON jumps at rate {rate}");
+    }
+}
