@@ -1,0 +1,3 @@
+//! The `contact` command-line subcommands; `main.rs` only parses arguments and dispatches here.
+
+pub mod check;
