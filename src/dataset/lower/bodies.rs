@@ -414,12 +414,13 @@ pub(crate) fn lower_markers(
                     }
                     p
                 }
-                None => enclosing
-                    .get(&st.loc)
-                    .copied()
-                    .flatten()
-                    .filter(|p| model.parts.contains_key(p))
-                    .ok_or_else(|| r.missing("PART (no PART statement comes before it)"))?,
+                None => match enclosing.get(&st.loc).copied().flatten() {
+                    Some(p) if model.parts.contains_key(&p) => p,
+                    Some(p) => {
+                        return Err(Problem::new(st.loc, format!("MARKER/{id}: PART/{p}, the part above it, has errors")));
+                    }
+                    None => return Err(r.missing("PART (no PART statement comes before it)")),
+                },
             };
             let qp = r.vector("QP")?.map(Vector3::from).unwrap_or_else(Vector3::zeros);
             let rotation = orientation(&r, "REULER", "ZP", "XP", qp)?;
