@@ -4,7 +4,11 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 #[derive(Debug, Parser)]
-#[command(name = "contact", version, about = "Compliant contact between rigid parts, as the Adams CONTACT statement")]
+#[command(
+    name = "contact",
+    version,
+    about = "Compliant contact between rigid parts, as the Adams CONTACT statement"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -120,7 +120,9 @@ pub fn summary(model: &Model, engine: &str) -> String {
     ));
     let mut joints: BTreeMap<String, usize> = BTreeMap::new();
     for j in &model.joints {
-        *joints.entry(format!("{:?}", j.kind).to_uppercase()).or_default() += 1;
+        *joints
+            .entry(format!("{:?}", j.kind).to_uppercase())
+            .or_default() += 1;
     }
     for p in &model.primitives {
         *joints
@@ -218,7 +220,10 @@ pub fn run_with(
                     ),
                 ));
             }
-            format!("{} (from {source}; not linked in this build)", library.name())
+            format!(
+                "{} (from {source}; not linked in this build)",
+                library.name()
+            )
         }
     };
     write!(out, "{}", summary(&model, &engine_line))?;

@@ -641,7 +641,11 @@ mod tests {
     fn every_table_has_unique_names() {
         for table in [DATASET_STATEMENTS, COMMANDS] {
             for (k, s) in table.iter().enumerate() {
-                assert!(table[k + 1..].iter().all(|o| o.name != s.name), "{}", s.name);
+                assert!(
+                    table[k + 1..].iter().all(|o| o.name != s.name),
+                    "{}",
+                    s.name
+                );
                 for (m, a) in s.args.iter().enumerate() {
                     assert!(
                         s.args[m + 1..].iter().all(|o| o.name != a.name),

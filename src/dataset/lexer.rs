@@ -167,7 +167,10 @@ mod tests {
     fn continuation_comments_and_end() {
         let text = "title here\r\n! comment\r\nPART/01, GROUND\r\n\r\n  , QG = 1, 2, 3 ! tail\r\nMARKER/2\r\nEND\r\nPART/9\r\n";
         let lines = split_lines(text, FileKind::Dataset);
-        assert_eq!(lines.title.as_ref().map(|t| t.text.as_str()), Some("title here"));
+        assert_eq!(
+            lines.title.as_ref().map(|t| t.text.as_str()),
+            Some("title here")
+        );
         assert_eq!(lines.statements.len(), 2);
         let part = &lines.statements[0];
         assert_eq!(part.segments.len(), 2);

@@ -185,7 +185,10 @@ impl Cursor {
         let mut chars = Vec::new();
         for (seg, s) in raw.segments.iter().enumerate() {
             for (k, c) in s.text.chars().enumerate() {
-                let col = s.loc.col.saturating_add(u32::try_from(k).unwrap_or(u32::MAX));
+                let col = s
+                    .loc
+                    .col
+                    .saturating_add(u32::try_from(k).unwrap_or(u32::MAX));
                 chars.push(Ch {
                     c,
                     loc: Loc::new(s.loc.line, col),
@@ -258,7 +261,7 @@ impl Cursor {
         }
         let p = self.skip_ws_from(p);
         self.peek_at(p).is_some_and(|c| c.c == '=')
-            && !self.peek_at(p + 1).is_some_and(|c| c.c == '=')
+            && self.peek_at(p + 1).is_none_or(|c| c.c != '=')
     }
 }
 
@@ -322,15 +325,15 @@ fn parse_statement(
         cur.skip_ws();
         let (id_text, id_loc) = cur.word();
         if id_text.is_empty() {
-            return Err(problem(id_loc, format!("{} needs an id: {}/id", spec.name, spec.name)));
+            return Err(problem(
+                id_loc,
+                format!("{} needs an id: {}/id", spec.name, spec.name),
+            ));
         }
         let id = parse_id(&id_text).ok_or_else(|| {
             problem(
                 id_loc,
-                format!(
-                    "{}/{id_text}: the id must be a positive integer",
-                    spec.name
-                ),
+                format!("{}/{id_text}: the id must be a positive integer", spec.name),
             )
         })?;
         statement.id = Some((id, id_loc));
@@ -352,8 +355,7 @@ fn looks_numeric(text: &str) -> bool {
     let t = text.strip_suffix(['D', 'd']).unwrap_or(text);
     !t.is_empty()
         && t.chars().any(|c| c.is_ascii_digit())
-        && t
-            .chars()
+        && t.chars()
             .all(|c| c.is_ascii_digit() || matches!(c, '.' | '+' | '-' | 'e' | 'E'))
 }
 
@@ -491,7 +493,7 @@ fn read_values(cur: &mut Cursor) -> Vec<Value> {
         });
         // Another value follows only if, after the comma, a number comes.
         let after_ws = cur.skip_ws_from(cur.pos);
-        if !cur.peek_at(after_ws).is_some_and(|c| c.c == ',') {
+        if cur.peek_at(after_ws).is_none_or(|c| c.c != ',') {
             return values;
         }
         let next = cur.skip_ws_from(after_ws + 1);
@@ -533,8 +535,7 @@ fn read_expression(cur: &mut Cursor) -> Value {
     cur.skip_ws();
     // `FUNCTION =` at the end of a line: the expression starts on the continuation line.
     if let Some(ch) = cur.peek() {
-        if ch.c == ',' && cur.pos > 0 && cur.peek_at(cur.pos - 1).is_some_and(|p| p.seg != ch.seg)
-        {
+        if ch.c == ',' && cur.pos > 0 && cur.peek_at(cur.pos - 1).is_some_and(|p| p.seg != ch.seg) {
             cur.pos += 1;
             cur.skip_ws();
         }
@@ -634,7 +635,10 @@ mod tests {
 
     #[test]
     fn errors_carry_locations() {
-        let parsed = parse("t\nPART/1, MA = 1\nPRT/2\nMARKER/x\nMOTION/1, IC=1\n", FileKind::Dataset);
+        let parsed = parse(
+            "t\nPART/1, MA = 1\nPRT/2\nMARKER/x\nMOTION/1, IC=1\n",
+            FileKind::Dataset,
+        );
         let got: Vec<_> = parsed
             .problems
             .iter()

@@ -85,7 +85,7 @@ fn step_of(function: &'static str, x0: f64, h0: f64, x1: f64, h1: f64) -> Result
 /// x < x1, else 0 (reference §1.3). Needs d > 0 and e > 0.
 fn impact(a: &[f64]) -> Result<f64, EvalError> {
     let [x, xdot, x1, k, e, cmax, d] = [a[0], a[1], a[2], a[3], a[4], a[5], a[6]];
-    if !(e > 0.0) {
+    if e.is_nan() || e <= 0.0 {
         return Err(domain("IMPACT", e, "exponent e > 0"));
     }
     if x >= x1 {
@@ -99,10 +99,10 @@ fn impact(a: &[f64]) -> Result<f64, EvalError> {
 /// (reference §1.5). Needs x1 < x2, d > 0, e > 0.
 fn bistop(a: &[f64]) -> Result<f64, EvalError> {
     let [x, xdot, x1, x2, k, e, cmax, d] = [a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]];
-    if !(x1 < x2) {
+    if x1.is_nan() || x2.is_nan() || x1 >= x2 {
         return Err(domain("BISTOP", x2, "x2 > x1"));
     }
-    if !(e > 0.0) {
+    if e.is_nan() || e <= 0.0 {
         return Err(domain("BISTOP", e, "exponent e > 0"));
     }
     if x < x1 {
@@ -153,7 +153,11 @@ fn math(f: MathFn, a: &[f64]) -> Result<f64, EvalError> {
         MathFn::Aint => a[0].trunc(),
         MathFn::Anint => a[0].round(),
         MathFn::Step => step_of("STEP", a[1], a[2], a[3], a[4])?.cubic(a[0]).value,
-        MathFn::Step5 => step_of("STEP5", a[1], a[2], a[3], a[4])?.quintic(a[0]).value,
+        MathFn::Step5 => {
+            step_of("STEP5", a[1], a[2], a[3], a[4])?
+                .quintic(a[0])
+                .value
+        }
         MathFn::Impact => impact(a)?,
         MathFn::Bistop => bistop(a)?,
         MathFn::Shf => a[2] * (a[3] * (a[0] - a[1]) - a[4]).sin() + a[5],

@@ -76,7 +76,9 @@ impl PreparedPair for SpherePlanePair {
         for (a, gi) in self.i.iter().enumerate() {
             for (b, gj) in self.j.iter().enumerate() {
                 work.geometry_pairs += 1;
-                let Some(r) = sphere_radius(&gi.geometry) else { continue };
+                let Some(r) = sphere_radius(&gi.geometry) else {
+                    continue;
+                };
                 let centre = pose_world_i * gi.pose_part_geometry * contact_core::Point3::origin();
                 let plane = pose_world_j * gj.pose_part_geometry;
                 let normal = plane.rotation * contact_core::Vector3::z();
@@ -140,11 +142,16 @@ fn unsupported_pairs_are_errors_before_any_run() {
     assert!(!loaded.has_errors(), "{:#?}", crate::printed(&loaded));
     let problems: Vec<String> = check_contacts(&loaded.model, &SpherePlaneEngine)
         .iter()
-        .map(|d| d.to_string().replace(&format!("{}/", data_dir().display()), "data/"))
+        .map(|d| {
+            d.to_string()
+                .replace(&format!("{}/", data_dir().display()), "data/")
+        })
         .collect();
     assert_eq!(
         problems,
-        ["data/ballbox.adm:11:1: error: CONTACT/2: the sphere-plane engine cannot compute contact between BOX and PLANE: this test engine knows a sphere (I) on an unbounded plane (J) only"]
+        [
+            "data/ballbox.adm:11:1: error: CONTACT/2: the sphere-plane engine cannot compute contact between BOX and PLANE: this test engine knows a sphere (I) on an unbounded plane (J) only"
+        ]
     );
 }
 
@@ -176,7 +183,9 @@ fn the_lowered_poses_reach_the_engine() {
     // Centre at QG z 7 + QP z 2 = 9, radius XSCALE/2 = 10: 1 deep, under (5, 0).
     assert_eq!(contacts.len(), 1);
     assert!((contacts[0].penetration - 1.0).abs() < 1e-12);
-    assert!((contacts[0].point_j_w.coords - contact_core::Vector3::new(5.0, 0.0, 0.0)).norm() < 1e-12);
+    assert!(
+        (contacts[0].point_j_w.coords - contact_core::Vector3::new(5.0, 0.0, 0.0)).norm() < 1e-12
+    );
     assert_eq!(work.contacts, 1);
 }
 
@@ -190,16 +199,34 @@ fn check_prints_a_summary_and_exits_1_on_errors() {
     let code = run_with(&args(path.clone()), &mut out, &engines).unwrap();
     let text = String::from_utf8(out).unwrap();
     assert_eq!(code, 1, "{text}");
-    assert!(text.contains("contacts: 2 (BOX to PLANE 1, ELLIPSOID to PLANE 1)\n"), "{text}");
-    assert!(text.contains("engine: sphere-plane (from PREFERENCES)\n"), "{text}");
-    assert!(text.contains("parts: 2 (ground PART/1), markers: 2, graphics: 3\n"), "{text}");
-    assert!(text.contains(&format!("{}:11:1: error: CONTACT/2: the sphere-plane engine cannot", path.display())), "{text}");
+    assert!(
+        text.contains("contacts: 2 (BOX to PLANE 1, ELLIPSOID to PLANE 1)\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("engine: sphere-plane (from PREFERENCES)\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("parts: 2 (ground PART/1), markers: 2, graphics: 3\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!(
+            "{}:11:1: error: CONTACT/2: the sphere-plane engine cannot",
+            path.display()
+        )),
+        "{text}"
+    );
     assert!(text.ends_with("1 error(s), 0 warning(s)\n"), "{text}");
 
     let without_box = MODEL.replace("CONTACT/2", "!CONTACT/2");
     let path = write_model("check_ball.adm", &without_box);
     let mut out = Vec::new();
-    assert_eq!(run_with(&args(path.clone()), &mut out, &engines).unwrap(), 0);
+    assert_eq!(
+        run_with(&args(path.clone()), &mut out, &engines).unwrap(),
+        0
+    );
     // Without a linked engine the report says pair checking needs one.
     let mut out = Vec::new();
     assert_eq!(run(&args(path.clone()), &mut out).unwrap(), 0);
@@ -211,15 +238,25 @@ fn check_prints_a_summary_and_exits_1_on_errors() {
         ..args(path)
     };
     assert_eq!(run_with(&bad_engine, &mut out, &engines).unwrap(), 1);
-    assert!(String::from_utf8(out).unwrap().starts_with("error: --engine: CONTACT_GEOMETRY_LIBRARY = ACIS is out of range"));
+    assert!(
+        String::from_utf8(out)
+            .unwrap()
+            .starts_with("error: --engine: CONTACT_GEOMETRY_LIBRARY = ACIS is out of range")
+    );
     let mut out = Vec::new();
-    assert_eq!(run(&args(data_dir().join("no_such.adm")), &mut out).unwrap(), 1);
+    assert_eq!(
+        run(&args(data_dir().join("no_such.adm")), &mut out).unwrap(),
+        1
+    );
     assert!(String::from_utf8(out).unwrap().contains("cannot read"));
 }
 
 #[test]
 fn the_binary_checks_both_public_datasets() {
-    for stem in ["chrono_test_Revolute_Case01", "adamspy_test_analysis_with_spikes"] {
+    for stem in [
+        "chrono_test_Revolute_Case01",
+        "adamspy_test_analysis_with_spikes",
+    ] {
         let dir = data_dir();
         let output = Command::new(env!("CARGO_BIN_EXE_contact"))
             .arg("check")

@@ -6,8 +6,8 @@ use crate::{data_dir, printed};
 use contact::dataset::{self, Loaded};
 use contact::expr::{ElementKind, EvalError, Expr, TimeOnly};
 use contact::model::{
-    Analysis, Command, ContactGeometry, Freedom, JointKind, MotionLevel, MotionTarget,
-    OutputSteps, PrimitiveKind, Shape, SimulationSpan,
+    Analysis, Command, ContactGeometry, Freedom, JointKind, MotionLevel, MotionTarget, OutputSteps,
+    PrimitiveKind, Shape, SimulationSpan,
 };
 use contact_core::{Geometry, Isometry3, Matrix3, Vector3};
 use std::f64::consts::PI;
@@ -49,7 +49,10 @@ fn chrono_revolute_pendulum() {
     let pendulum = &m.parts[&2];
     assert_eq!(pendulum.mass, 1.0);
     assert_eq!(pendulum.cm, Some(201));
-    assert_eq!(pendulum.inertia, Matrix3::from_diagonal(&Vector3::new(0.04, 0.1, 0.1)));
+    assert_eq!(
+        pendulum.inertia,
+        Matrix3::from_diagonal(&Vector3::new(0.04, 0.1, 0.1))
+    );
     assert_eq!(pendulum.origin.loc.line, 38);
     // Ids with leading zeros: MARKER/0102 is marker 102, on PART/01.
     let m102 = &m.markers[&102];
@@ -57,7 +60,9 @@ fn chrono_revolute_pendulum() {
     // "(-90 deg rotation about the X axis)" says the dataset beside REULER = 180D, 90D, 180D.
     assert_close(&rotation(&m102.pose_part_marker), &rx(-PI / 2.0));
     // "(Point Z axis along original x axis)" beside REULER = 90D, 90D, 0.
-    let z = rotation(&m.markers[&203].pose_part_marker).column(2).into_owned();
+    let z = rotation(&m.markers[&203].pose_part_marker)
+        .column(2)
+        .into_owned();
     assert!((z - Vector3::x()).norm() < 1e-12, "{z}");
     assert_eq!(
         m.markers[&201].pose_part_marker.translation.vector,
@@ -78,7 +83,10 @@ fn chrono_revolute_pendulum() {
     assert_eq!(g.pose_part_geometry, m.markers[&103].pose_part_marker);
     assert_eq!(m.graphics[&201].part, Some(2));
     let joint = &m.joints[0];
-    assert_eq!((joint.id, joint.kind, joint.i, joint.j), (1, JointKind::Revolute, 102, 202));
+    assert_eq!(
+        (joint.id, joint.kind, joint.i, joint.j),
+        (1, JointKind::Revolute, 102, 202)
+    );
     assert_eq!(m.requests.len(), 5);
     assert_eq!(m.requests[0].kind, Some("DISPLACEMENT"));
     assert_eq!(
@@ -132,7 +140,10 @@ fn adamspy_spikes_in_inch_units() {
     // MARKER/11: QP = 0, 3, 0 and REULER = 180D, 90D, 90D on PART/2.
     let m11 = &m.markers[&11];
     assert_eq!(m11.part, 2);
-    assert_eq!(m11.pose_part_marker.translation.vector, Vector3::new(0.0, 3.0, 0.0));
+    assert_eq!(
+        m11.pose_part_marker.translation.vector,
+        Vector3::new(0.0, 3.0, 0.0)
+    );
     assert_close(
         &rotation(&m11.pose_part_marker),
         &(rz(PI) * rx(PI / 2.0) * rz(PI / 2.0)),
@@ -148,7 +159,10 @@ fn adamspy_spikes_in_inch_units() {
     let kinds: Vec<_> = m.joints.iter().map(|j| (j.id, j.kind, j.i, j.j)).collect();
     assert_eq!(
         kinds,
-        [(1, JointKind::Revolute, 5, 6), (2, JointKind::Revolute, 7, 8)]
+        [
+            (1, JointKind::Revolute, 5, 6),
+            (2, JointKind::Revolute, 7, 8)
+        ]
     );
     assert_eq!(m.primitives[0].kind, PrimitiveKind::Inline);
     assert_eq!((m.primitives[0].i, m.primitives[0].j), (9, 10));
@@ -168,16 +182,28 @@ fn adamspy_spikes_in_inch_units() {
     }
     // SFORCE/1: a 10-unit torque spike between t = 1 and 1.02 built from two STEPs.
     let spike = &m.sforces[0];
-    assert_eq!((spike.freedom, spike.action_only), (Freedom::Rotational, true));
+    assert_eq!(
+        (spike.freedom, spike.action_only),
+        (Freedom::Rotational, true)
+    );
     assert_eq!((spike.i, spike.j), (13, 14));
     // STEP at the middle of its interval is half way (cubic 3D² − 2D³ at D = ½).
-    for (t, want) in [(0.5, 0.0), (1.005, 5.0), (1.01, 10.0), (1.015, 5.0), (2.0, 0.0)] {
+    for (t, want) in [
+        (0.5, 0.0),
+        (1.005, 5.0),
+        (1.01, 10.0),
+        (1.015, 5.0),
+        (2.0, 0.0),
+    ] {
         let f = spike.function.eval(&TimeOnly(t)).unwrap();
         assert!((f - want).abs() < 1e-9, "t = {t}: {f}");
     }
     // VARIABLE/1 = MOTION(1,0,8,0): the motion's torque, which needs the solver's state.
     let var = &m.variables[0];
-    assert_eq!(var.function, Expr::Element(ElementKind::Motion, [1, 0, 8, 0]));
+    assert_eq!(
+        var.function,
+        Expr::Element(ElementKind::Motion, [1, 0, 8, 0])
+    );
     assert_eq!(
         var.function.eval(&TimeOnly(0.0)),
         Err(EvalError::NeedsState("MOTION"))
@@ -206,12 +232,7 @@ fn degrees_and_radians_give_the_same_frame() {
     let deg = crate::inline("d.adm", &text("30D, 45D, 60D"));
     let rad = crate::inline(
         "r.adm",
-        &text(&format!(
-            "{:?}, {:?}, {:?}",
-            PI / 6.0,
-            PI / 4.0,
-            PI / 3.0
-        )),
+        &text(&format!("{:?}, {:?}, {:?}", PI / 6.0, PI / 4.0, PI / 3.0)),
     );
     assert!(!deg.has_errors() && !rad.has_errors());
     let (a, b) = (
@@ -254,7 +275,10 @@ END\n";
     let m = &loaded.model;
     // Positive product integrals: the tensor holds −Ixy, −Ixz, −Iyz.
     let inertia = m.parts[&2].inertia;
-    assert_eq!((inertia[(0, 1)], inertia[(0, 2)], inertia[(1, 2)]), (-0.1, -0.2, -0.3));
+    assert_eq!(
+        (inertia[(0, 1)], inertia[(0, 2)], inertia[(1, 2)]),
+        (-0.1, -0.2, -0.3)
+    );
     assert_eq!(inertia[(1, 0)], -0.1);
     let c1 = &m.contacts[0];
     assert_eq!((c1.i_part, c1.j_part), (2, 1));
@@ -285,7 +309,10 @@ END\n";
     };
     assert_eq!(mesh.path, data_dir().join("tetra.stl"));
     assert_eq!(mesh.faceting_tolerance.map(|f| f.value()), Some(50.0));
-    assert_eq!(m.preferences.geometry_library, contact_core::GeometryLibrary::Exact);
+    assert_eq!(
+        m.preferences.geometry_library,
+        contact_core::GeometryLibrary::Exact
+    );
     assert_eq!(m.preferences.faceting_tolerance.value(), 500.0);
     assert_eq!(m.preferences.threads.map(|n| n.get()), Some(2));
     assert!(matches!(
@@ -309,5 +336,9 @@ CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT\nEND\n";
     assert!(matches!(line.geometry.as_ref(), Geometry::Line(l) if l.x_range() == [-1.0, 1.0]));
     // Defaults are reported, in the model's units (here SI: 1e5 N/mm^2.2 → N/m^2.2).
     let p = printed(&loaded);
-    assert!(p.iter().any(|d| d.contains("STIFFNESS not given: using the default")), "{p:#?}");
+    assert!(
+        p.iter()
+            .any(|d| d.contains("STIFFNESS not given: using the default")),
+        "{p:#?}"
+    );
 }

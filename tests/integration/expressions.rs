@@ -19,8 +19,20 @@ fn step_matches_the_adams_worked_example() {
     // STEP5 at D = 1/4: D³(10 − 15D + 6D²) = 0.103515625.
     assert!((at("STEP5(1.25, 1, 0, 2, 1)", 0.0) - 0.103_515_625).abs() < 1e-15);
     // x1 <= x0 is out of range, not a silent value.
-    let e = parse_expr("STEP(TIME, 1, 0, 1, 1)").unwrap().eval(&TimeOnly(0.0)).unwrap_err();
-    assert!(matches!(e, EvalError::Parameters { function: "STEP", .. }), "{e}");
+    let e = parse_expr("STEP(TIME, 1, 0, 1, 1)")
+        .unwrap()
+        .eval(&TimeOnly(0.0))
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            EvalError::Parameters {
+                function: "STEP",
+                ..
+            }
+        ),
+        "{e}"
+    );
 }
 
 #[test]
@@ -43,12 +55,24 @@ fn arithmetic_functions_and_degrees() {
     assert!((at("SIN(30D) + COS(60d)", 0.0) - 1.0).abs() < 1e-15);
     assert_eq!(at("ATAN2(1, 1)", 0.0), std::f64::consts::FRAC_PI_4);
     assert_eq!(at("MOD(-7, 3)", 0.0), -1.0);
-    assert_eq!(at("SIGN(2, -1) + ABS(-3) + MAX(1, 2) + MIN(1, 2)", 0.0), 4.0);
+    assert_eq!(
+        at("SIGN(2, -1) + ABS(-3) + MAX(1, 2) + MIN(1, 2)", 0.0),
+        4.0
+    );
     assert_eq!(at("AINT(-2.7) + ANINT(2.5)", 0.0), 1.0);
     assert_eq!(at("SHF(TIME, 0, 2, PI, 0, 1)", 0.5), 3.0);
-    let e = parse_expr("SQRT(TIME - 1)").unwrap().eval(&TimeOnly(0.0)).unwrap_err();
-    assert_eq!(e.to_string(), "SQRT: argument -1.0 is out of range: must be >= 0");
-    let e = parse_expr("1 / TIME").unwrap().eval(&TimeOnly(0.0)).unwrap_err();
+    let e = parse_expr("SQRT(TIME - 1)")
+        .unwrap()
+        .eval(&TimeOnly(0.0))
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "SQRT: argument -1.0 is out of range: must be >= 0"
+    );
+    let e = parse_expr("1 / TIME")
+        .unwrap()
+        .eval(&TimeOnly(0.0))
+        .unwrap_err();
     assert!(matches!(e, EvalError::NotFinite(_)), "{e}");
 }
 
@@ -62,7 +86,9 @@ impl Context for Recorder {
         2.0
     }
     fn measure(&self, m: Measure, markers: &[u32]) -> Result<f64, EvalError> {
-        self.calls.borrow_mut().push(format!("{}{markers:?}", m.name()));
+        self.calls
+            .borrow_mut()
+            .push(format!("{}{markers:?}", m.name()));
         Ok(match m {
             Measure::Dx => 3.0,
             Measure::Vr => -0.5,
@@ -74,7 +100,9 @@ impl Context for Recorder {
         Ok(10.0)
     }
     fn element_force(&self, kind: ElementKind, args: [u32; 4]) -> Result<f64, EvalError> {
-        self.calls.borrow_mut().push(format!("{}{args:?}", kind.name()));
+        self.calls
+            .borrow_mut()
+            .push(format!("{}{args:?}", kind.name()));
         Ok(0.0)
     }
 }
@@ -105,11 +133,20 @@ fn measures_go_to_the_context_with_their_markers() {
 #[test]
 fn unsupported_functions_are_errors_naming_them() {
     let e = parse_expr("ORIENT(27,1,0201,0101)").unwrap_err();
-    assert_eq!((e.offset, e.to_string().as_str()), (0, "unsupported function ORIENT"));
+    assert_eq!(
+        (e.offset, e.to_string().as_str()),
+        (0, "unsupported function ORIENT")
+    );
     let e = parse_expr("2 * CHEBY(TIME, 0, 1)").unwrap_err();
-    assert_eq!((e.offset, e.to_string().as_str()), (4, "unsupported function CHEBY"));
+    assert_eq!(
+        (e.offset, e.to_string().as_str()),
+        (4, "unsupported function CHEBY")
+    );
     let e = parse_expr("3 * SPEED").unwrap_err();
-    assert_eq!(e.to_string(), "unknown name SPEED (known: TIME, PI, DTOR, RTOD)");
+    assert_eq!(
+        e.to_string(),
+        "unknown name SPEED (known: TIME, PI, DTOR, RTOD)"
+    );
 }
 
 #[test]

@@ -1,6 +1,5 @@
 //! The root package's one integration test binary (one link on 2 cores); modules by topic.
 
-
 mod check;
 mod dataset;
 mod expressions;
@@ -12,7 +11,9 @@ use std::path::{Path, PathBuf};
 
 /// The project's test data directory.
 pub fn data_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("data")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("data")
 }
 
 /// Reads an inline dataset named `name` (relative paths in it resolve against the test data

@@ -55,7 +55,9 @@ const CASES: &[Case] = &[
         name: "ambiguous_argument",
         body: "MARKER/3, PART = 2, R = 0, 0, 0\n",
         with_shapes: false,
-        errors: &["data/bad.adm:7:21: error: MARKER/3: ambiguous abbreviation 'R': could be REULER, RM"],
+        errors: &[
+            "data/bad.adm:7:21: error: MARKER/3: ambiguous abbreviation 'R': could be REULER, RM",
+        ],
     },
     Case {
         name: "ambiguous_statement",
@@ -115,67 +117,89 @@ const CASES: &[Case] = &[
         name: "negative_stiffness",
         body: "CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT, STIFFNESS = -1, DAMPING = 10, DMAX = 0.1, EXPONENT = 2\n",
         with_shapes: true,
-        errors: &["data/bad.adm:9:54: error: CONTACT/1: STIFFNESS = -1.0 is out of range: must be finite and > 0"],
+        errors: &[
+            "data/bad.adm:9:54: error: CONTACT/1: STIFFNESS = -1.0 is out of range: must be finite and > 0",
+        ],
     },
     Case {
         name: "restitution_above_one",
         body: "CONTACT/1, IGEOM = 2, JGEOM = 1, POISSON, PENALTY = 1e4\n, RESTITUTION_COEFFICIENT = 1.5\n",
         with_shapes: true,
-        errors: &["data/bad.adm:10:29: error: CONTACT/1: RESTITUTION_COEFFICIENT = 1.5 is out of range: must be in [0, 1]"],
+        errors: &[
+            "data/bad.adm:10:29: error: CONTACT/1: RESTITUTION_COEFFICIENT = 1.5 is out of range: must be in [0, 1]",
+        ],
     },
     Case {
         name: "mu_dynamic_above_static",
         body: "CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT, COULOMB_FRICTION = ON\n, MU_STATIC = 0.1, MU_DYNAMIC = 0.3\n",
         with_shapes: true,
-        errors: &["data/bad.adm:10:33: error: CONTACT/1: MU_DYNAMIC = 0.3 is out of range: must be in (0, MU_STATIC = 0.1]"],
+        errors: &[
+            "data/bad.adm:10:33: error: CONTACT/1: MU_DYNAMIC = 0.3 is out of range: must be in (0, MU_STATIC = 0.1]",
+        ],
     },
     Case {
         name: "bad_contact_type",
         body: "CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT, TYPE = SOLID\n",
         with_shapes: true,
-        errors: &["data/bad.adm:9:49: error: CONTACT/1: TYPE = SOLID is out of range: must be one of solid_to_solid, curve_to_curve, point_to_curve, point_to_plane, curve_to_plane, sphere_to_plane, sphere_to_sphere, cylinder_to_cylinder"],
+        errors: &[
+            "data/bad.adm:9:49: error: CONTACT/1: TYPE = SOLID is out of range: must be one of solid_to_solid, curve_to_curve, point_to_curve, point_to_plane, curve_to_plane, sphere_to_plane, sphere_to_sphere, cylinder_to_cylinder",
+        ],
     },
     Case {
         name: "missing_stl",
         body: "GRAPHICS/3, EXTERNAL, RM = 2, FILE = missing.stl\n",
         with_shapes: false,
-        errors: &["data/bad.adm:7:38: error: GRAPHICS/3: FILE = missing.stl: no such file (data/missing.stl)"],
+        errors: &[
+            "data/bad.adm:7:38: error: GRAPHICS/3: FILE = missing.stl: no such file (data/missing.stl)",
+        ],
     },
     Case {
         name: "parasolid_file",
         body: "GRAPHICS/3, EXTERNAL, RM = 2, FILE = part.xmt_txt, ELEMENT = SOLID4\n",
         with_shapes: false,
-        errors: &["data/bad.adm:7:38: error: GRAPHICS/3: FILE = part.xmt_txt is a Parasolid file, which contact cannot read; export the part as STL and give FILE = name.stl"],
+        errors: &[
+            "data/bad.adm:7:38: error: GRAPHICS/3: FILE = part.xmt_txt is a Parasolid file, which contact cannot read; export the part as STL and give FILE = name.stl",
+        ],
     },
     Case {
         name: "mixed_dimensions",
         body: "GRAPHICS/3, CIRCLE, CM = 2, RADIUS = 1\nGRAPHICS/4, BOX, CORNER = 1, X = 1, Y = 1, Z = 1\nCONTACT/1, IGEOM = 3, JGEOM = 4, IMPACT\n",
         with_shapes: false,
-        errors: &["data/bad.adm:9:31: error: CONTACT/1: GRAPHICS/4 is 3-D but GRAPHICS/3 makes the contact 2-D; 2-D and 3-D geometry cannot be mixed"],
+        errors: &[
+            "data/bad.adm:9:31: error: CONTACT/1: GRAPHICS/4 is 3-D but GRAPHICS/3 makes the contact 2-D; 2-D and 3-D geometry cannot be mixed",
+        ],
     },
     Case {
         name: "type_against_geometry",
         body: "GRAPHICS/3, CIRCLE, CM = 2, RADIUS = 1\nCONTACT/1, IGEOM = 3, JGEOM = 1, IMPACT, TYPE = SPHERE_TO_PLANE\n",
         with_shapes: true,
-        errors: &["data/bad.adm:10:20: error: CONTACT/1: GRAPHICS/3 is 2-D but TYPE makes the contact 3-D; 2-D and 3-D geometry cannot be mixed"],
+        errors: &[
+            "data/bad.adm:10:20: error: CONTACT/1: GRAPHICS/3 is 2-D but TYPE makes the contact 3-D; 2-D and 3-D geometry cannot be mixed",
+        ],
     },
     Case {
         name: "list_on_two_parts",
         body: "PART/3, MASS = 1, CM = 3, IP = 1, 1, 1\nMARKER/3\nGRAPHICS/5, ELLIPSOID, CM = 3, XSCALE = 1, YSCALE = 1, ZSCALE = 1\nCONTACT/1, IGEOM = 2, 5, JGEOM = 1, IMPACT\n",
         with_shapes: true,
-        errors: &["data/bad.adm:12:23: error: CONTACT/1: IGEOM: GRAPHICS/5 is on PART/3 but GRAPHICS/2 is on PART/2; one list's geometries must belong to one part"],
+        errors: &[
+            "data/bad.adm:12:23: error: CONTACT/1: IGEOM: GRAPHICS/5 is on PART/3 but GRAPHICS/2 is on PART/2; one list's geometries must belong to one part",
+        ],
     },
     Case {
         name: "flip_normal_on_a_list",
         body: "GRAPHICS/3, ELLIPSOID, CM = 2, XSCALE = 1, YSCALE = 1, ZSCALE = 1\nCONTACT/1, IGEOM = 2, 3, JGEOM = 1, IMPACT, IFLIP_NORMAL\n",
         with_shapes: true,
-        errors: &["data/bad.adm:10:45: error: CONTACT/1: IFLIP_NORMAL applies to a single IGEOM geometry; use IFLIP_GEOMETRY for lists"],
+        errors: &[
+            "data/bad.adm:10:45: error: CONTACT/1: IFLIP_NORMAL applies to a single IGEOM geometry; use IFLIP_GEOMETRY for lists",
+        ],
     },
     Case {
         name: "expression_syntax",
         body: "VARIABLE/1, FUNCTION = 2 * (TIME + 1\n",
         with_shapes: false,
-        errors: &["data/bad.adm:7:36: error: VARIABLE/1: FUNCTION: expression ends early: expected ')'"],
+        errors: &[
+            "data/bad.adm:7:36: error: VARIABLE/1: FUNCTION: expression ends early: expected ')'",
+        ],
     },
     Case {
         name: "orphan_continuation",
@@ -197,7 +221,10 @@ fn each_malformed_input_gives_its_error_at_its_location() {
         let loaded = inline("bad.adm", &text_of(case));
         let got = errors(&loaded);
         if got != case.errors {
-            failures.push(format!("{}:\n  want {:?}\n  got  {:?}", case.name, case.errors, got));
+            failures.push(format!(
+                "{}:\n  want {:?}\n  got  {:?}",
+                case.name, case.errors, got
+            ));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -208,7 +235,9 @@ fn a_continuation_line_without_a_statement_is_an_error() {
     let loaded = inline("bad.adm", "t\n, MASS = 1\nEND\n");
     assert_eq!(
         errors(&loaded),
-        ["data/bad.adm:2:1: error: a continuation line (starting with ',') has no statement to continue"]
+        [
+            "data/bad.adm:2:1: error: a continuation line (starting with ',') has no statement to continue"
+        ]
     );
 }
 
@@ -222,7 +251,12 @@ fn the_fuzz_corpus_holds_every_case() {
             std::fs::write(&path, text_of(case)).unwrap();
         }
         let on_disk = std::fs::read_to_string(&path).unwrap_or_default();
-        assert_eq!(on_disk, text_of(case), "{} differs from its case", path.display());
+        assert_eq!(
+            on_disk,
+            text_of(case),
+            "{} differs from its case",
+            path.display()
+        );
     }
     let _ = data_dir();
 }

@@ -29,7 +29,7 @@ pub fn rotation_from_points(
 ) -> Option<UnitQuaternion> {
     let dz = zp - origin;
     let scale = dz.norm();
-    if !(scale > 0.0) {
+    if scale.is_nan() || scale <= 0.0 {
         return None;
     }
     let z = dz / scale;
@@ -43,8 +43,12 @@ pub fn rotation_from_points(
         }
     };
     let x_raw = hint - z * hint.dot(&z);
-    let hint_scale = if xp.is_some() { hint.norm().max(scale) } else { 1.0 };
-    if !(x_raw.norm() > 1e-9 * hint_scale) {
+    let hint_scale = if xp.is_some() {
+        hint.norm().max(scale)
+    } else {
+        1.0
+    };
+    if x_raw.norm().is_nan() || x_raw.norm() <= 1e-9 * hint_scale {
         return None;
     }
     let x = x_raw.normalize();
@@ -61,7 +65,7 @@ fn unit_size(kind: &str, word: &str) -> Option<f64> {
         ("KPOUND_FORCE", 4_448.221_615_260_5),
         ("NEWTON", 1.0),
         ("POUND_FORCE", 4.448_221_615_260_5),
-        ("OUNCE_FORCE", 0.278_013_850_953_781_25),
+        ("OUNCE_FORCE", 0.278_013_850_953_781_2),
         ("CENTINEWTON", 1e-2),
         ("MEGANEWTON", 1e6),
         ("MICRONEWTON", 1e-6),
@@ -153,7 +157,10 @@ fn units(low: &mut Lowering, st: &Statement) -> Option<Units> {
         let Some(size) = unit_size(kind, &word) else {
             low.error(Problem::new(
                 loc,
-                format!("UNITS: {kind} = {word} is not a known {} unit", kind.to_lowercase()),
+                format!(
+                    "UNITS: {kind} = {word} is not a known {} unit",
+                    kind.to_lowercase()
+                ),
             ));
             return None;
         };
@@ -265,7 +272,10 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
         ));
     }
     if ground && (r.flag("MASS") || r.flag("CM") || r.flag("IP")) {
-        low.warning(st.loc, format!("PART/{id}: GROUND takes no MASS, CM or IP: ignored"));
+        low.warning(
+            st.loc,
+            format!("PART/{id}: GROUND takes no MASS, CM or IP: ignored"),
+        );
     }
     let cm = r.id("CM")?.map(|(m, _)| m);
     if mass > 0.0 && cm.is_none() && !ground {
@@ -275,10 +285,13 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
     let mut inertia = Matrix3::zeros();
     if let Some(ip) = r.numbers("IP", &[3, 6])? {
         for (k, v) in ip.iter().take(3).enumerate() {
-            if !(*v >= 0.0) {
+            if v.is_nan() || *v < 0.0 {
                 return Err(Problem::new(
                     r.loc_of("IP"),
-                    format!("PART/{id}: IP moment {} = {v:?} is out of range: must be >= 0", ["Ixx", "Iyy", "Izz"][k]),
+                    format!(
+                        "PART/{id}: IP moment {} = {v:?} is out of range: must be >= 0",
+                        ["Ixx", "Iyy", "Izz"][k]
+                    ),
                 ));
             }
             inertia[(k, k)] = *v;
@@ -291,7 +304,10 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
             }
         }
     }
-    let qg = r.vector("QG")?.map(Vector3::from).unwrap_or_else(Vector3::zeros);
+    let qg = r
+        .vector("QG")?
+        .map(Vector3::from)
+        .unwrap_or_else(Vector3::zeros);
     let rotation = orientation(&r, "REULER", "ZG", "XG", qg)?;
     let v = |name: &str| -> Result<f64, Problem> { Ok(r.number(name)?.unwrap_or(0.0)) };
     Ok(Part {
@@ -333,16 +349,25 @@ fn orientation(
             }
             Ok(rotation_313(a, b, c))
         }
-        (None, Some(z)) => rotation_from_points(origin, Vector3::from(z), x_point.map(Vector3::from))
-            .ok_or_else(|| {
-                Problem::new(
-                    r.loc_of(zp),
-                    format!("{}: {zp}/{xp} do not define axes (coincident or collinear points)", r.label()),
-                )
-            }),
+        (None, Some(z)) => {
+            rotation_from_points(origin, Vector3::from(z), x_point.map(Vector3::from)).ok_or_else(
+                || {
+                    Problem::new(
+                        r.loc_of(zp),
+                        format!(
+                            "{}: {zp}/{xp} do not define axes (coincident or collinear points)",
+                            r.label()
+                        ),
+                    )
+                },
+            )
+        }
         (None, None) => {
             if x_point.is_some() {
-                return Err(Problem::new(r.loc_of(xp), format!("{}: {xp} needs {zp}", r.label())));
+                return Err(Problem::new(
+                    r.loc_of(xp),
+                    format!("{}: {xp} needs {zp}", r.label()),
+                ));
             }
             Ok(UnitQuaternion::identity())
         }
@@ -410,19 +435,28 @@ pub(crate) fn lower_markers(
             let part = match r.id("PART")? {
                 Some((p, loc)) => {
                     if !model.parts.contains_key(&p) {
-                        return Err(Problem::new(loc, format!("MARKER/{id}: PART/{p} is not defined")));
+                        return Err(Problem::new(
+                            loc,
+                            format!("MARKER/{id}: PART/{p} is not defined"),
+                        ));
                     }
                     p
                 }
                 None => match enclosing.get(&st.loc).copied().flatten() {
                     Some(p) if model.parts.contains_key(&p) => p,
                     Some(p) => {
-                        return Err(Problem::new(st.loc, format!("MARKER/{id}: PART/{p}, the part above it, has errors")));
+                        return Err(Problem::new(
+                            st.loc,
+                            format!("MARKER/{id}: PART/{p}, the part above it, has errors"),
+                        ));
                     }
                     None => return Err(r.missing("PART (no PART statement comes before it)")),
                 },
             };
-            let qp = r.vector("QP")?.map(Vector3::from).unwrap_or_else(Vector3::zeros);
+            let qp = r
+                .vector("QP")?
+                .map(Vector3::from)
+                .unwrap_or_else(Vector3::zeros);
             let rotation = orientation(&r, "REULER", "ZP", "XP", qp)?;
             Ok(Marker {
                 id,
@@ -441,7 +475,9 @@ pub(crate) fn lower_markers(
 pub(crate) fn check_part_markers(low: &mut Lowering, model: &Model, parts: &[&Statement]) {
     for st in parts {
         let Some((id, _)) = st.id else { continue };
-        let Some(p) = model.parts.get(&id) else { continue };
+        let Some(p) = model.parts.get(&id) else {
+            continue;
+        };
         let r = Reader::new(st);
         for (name, marker) in [("CM", p.cm), ("IM", p.im)] {
             let Some(m) = marker else { continue };
@@ -452,7 +488,10 @@ pub(crate) fn check_part_markers(low: &mut Lowering, model: &Model, parts: &[&St
                 )),
                 Some(mk) if mk.part != id => low.error(Problem::new(
                     r.loc_of(name),
-                    format!("PART/{id}: {name} = {m}: MARKER/{m} is on PART/{}, not this part", mk.part),
+                    format!(
+                        "PART/{id}: {name} = {m}: MARKER/{m} is on PART/{}, not this part",
+                        mk.part
+                    ),
                 )),
                 Some(_) => {}
             }

@@ -10,50 +10,113 @@ use crate::model::{Analysis, Command, Model, OutputSteps, SimulationSpan};
 use std::path::Path;
 
 fn simulate(r: &Reader<'_>) -> Result<Command, Problem> {
-    let analysis = match r.one_of(&["DYNAMICS", "KINEMATICS", "STATICS", "TRANSIENT", "INITIAL_CONDITIONS"])? {
+    let analysis = match r.one_of(&[
+        "DYNAMICS",
+        "KINEMATICS",
+        "STATICS",
+        "TRANSIENT",
+        "INITIAL_CONDITIONS",
+    ])? {
         Some("DYNAMICS") => Analysis::Dynamics,
         Some("KINEMATICS") => Analysis::Kinematics,
         Some("STATICS") => Analysis::Statics,
         Some("TRANSIENT") => Analysis::Transient,
         Some(_) => Analysis::InitialConditions,
-        None => return Err(r.missing("an analysis (DYNAMICS, KINEMATICS, STATICS, TRANSIENT or INITIAL_CONDITIONS)")),
+        None => {
+            return Err(r.missing(
+                "an analysis (DYNAMICS, KINEMATICS, STATICS, TRANSIENT or INITIAL_CONDITIONS)",
+            ));
+        }
     };
-    let timed = matches!(analysis, Analysis::Dynamics | Analysis::Kinematics | Analysis::Transient);
+    let timed = matches!(
+        analysis,
+        Analysis::Dynamics | Analysis::Kinematics | Analysis::Transient
+    );
     let span = match (r.number("END")?, r.number("DURATION")?) {
-        (Some(_), Some(_)) => return Err(Problem::new(r.loc_of("DURATION"), "SIMULATE: END and DURATION cannot both be given")),
+        (Some(_), Some(_)) => {
+            return Err(Problem::new(
+                r.loc_of("DURATION"),
+                "SIMULATE: END and DURATION cannot both be given",
+            ));
+        }
         (Some(t), None) => Some(SimulationSpan::End(t)),
         (None, Some(d)) if d > 0.0 => Some(SimulationSpan::Duration(d)),
-        (None, Some(d)) => return Err(Problem::new(r.loc_of("DURATION"), format!("SIMULATE: DURATION = {d:?} is out of range: must be > 0"))),
+        (None, Some(d)) => {
+            return Err(Problem::new(
+                r.loc_of("DURATION"),
+                format!("SIMULATE: DURATION = {d:?} is out of range: must be > 0"),
+            ));
+        }
         (None, None) if timed => return Err(r.missing("END or DURATION")),
         (None, None) => None,
     };
     let output = match (r.count_value("STEPS")?, r.number("DTOUT")?) {
-        (Some(_), Some(_)) => return Err(Problem::new(r.loc_of("DTOUT"), "SIMULATE: STEPS and DTOUT cannot both be given")),
-        (Some(0), None) => return Err(Problem::new(r.loc_of("STEPS"), "SIMULATE: STEPS = 0 is out of range: must be >= 1")),
+        (Some(_), Some(_)) => {
+            return Err(Problem::new(
+                r.loc_of("DTOUT"),
+                "SIMULATE: STEPS and DTOUT cannot both be given",
+            ));
+        }
+        (Some(0), None) => {
+            return Err(Problem::new(
+                r.loc_of("STEPS"),
+                "SIMULATE: STEPS = 0 is out of range: must be >= 1",
+            ));
+        }
         (Some(n), None) => Some(OutputSteps::Steps(n)),
         (None, Some(dt)) if dt > 0.0 => Some(OutputSteps::Interval(dt)),
-        (None, Some(dt)) => return Err(Problem::new(r.loc_of("DTOUT"), format!("SIMULATE: DTOUT = {dt:?} is out of range: must be > 0"))),
+        (None, Some(dt)) => {
+            return Err(Problem::new(
+                r.loc_of("DTOUT"),
+                format!("SIMULATE: DTOUT = {dt:?} is out of range: must be > 0"),
+            ));
+        }
         (None, None) if timed => return Err(r.missing("STEPS or DTOUT")),
         (None, None) => None,
     };
-    Ok(Command::Simulate { analysis, span, output })
+    Ok(Command::Simulate {
+        analysis,
+        span,
+        output,
+    })
 }
 
 fn activate(r: &Reader<'_>, active: bool) -> Result<Command, Problem> {
-    const CLASSES: [&str; 8] = ["JOINT", "JPRIM", "CONTACT", "MOTION", "SFORCE", "SENSOR", "VARIABLE", "REQUEST"];
-    let class = r.one_of(&CLASSES)?.ok_or_else(|| r.missing(&format!("an element class ({})", CLASSES.join(", "))))?;
+    const CLASSES: [&str; 8] = [
+        "JOINT", "JPRIM", "CONTACT", "MOTION", "SFORCE", "SENSOR", "VARIABLE", "REQUEST",
+    ];
+    let class = r
+        .one_of(&CLASSES)?
+        .ok_or_else(|| r.missing(&format!("an element class ({})", CLASSES.join(", "))))?;
     let ids = r.ids("ID")?.ok_or_else(|| r.missing("ID"))?;
-    Ok(Command::Activate { active, class, ids: ids.into_iter().map(|(id, _)| id).collect() })
+    Ok(Command::Activate {
+        active,
+        class,
+        ids: ids.into_iter().map(|(id, _)| id).collect(),
+    })
 }
 
 /// The model file a command file names (`file/model=name` or the first line) should be the
 /// dataset being checked.
 fn check_model_name(low: &mut Lowering, name: &str, loc: crate::dataset::Loc, adm: &Path) {
-    let stem = adm.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+    let stem = adm
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_default();
     let named = Path::new(name.trim());
-    let named_stem = named.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+    let named_stem = named
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_default();
     if !named_stem.eq_ignore_ascii_case(&stem) {
-        low.warning(loc, format!("the command file names model '{}', but the dataset checked is '{}'", name.trim(), adm.display()));
+        low.warning(
+            loc,
+            format!(
+                "the command file names model '{}', but the dataset checked is '{}'",
+                name.trim(),
+                adm.display()
+            ),
+        );
     }
 }
 
@@ -72,18 +135,19 @@ fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) ->
             None
         }
         "OUTPUT" => {
-            model.output_flags.extend(st.args.iter().map(|a| a.spec.name));
+            model
+                .output_flags
+                .extend(st.args.iter().map(|a| a.spec.name));
             None
         }
         "FILE" => {
             match low.ok(r.word("MODEL")) {
                 Some(Some((name, loc))) => check_model_name(low, &name, loc, adm),
-                Some(None) => {
-                    if r.flag("COMMAND") {
-                        low.warning(st.loc, "FILE/COMMAND: reading further command files is not modelled: ignored");
-                    }
-                }
-                None => {}
+                Some(None) if r.flag("COMMAND") => low.warning(
+                    st.loc,
+                    "FILE/COMMAND: reading further command files is not modelled: ignored",
+                ),
+                Some(None) | None => {}
             }
             None
         }
@@ -92,7 +156,12 @@ fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) ->
 }
 
 /// Lowers a command file's commands into `model.commands`.
-pub(crate) fn lower_commands(low: &mut Lowering, model: &mut Model, parsed: &ParsedFile, adm: &Path) {
+pub(crate) fn lower_commands(
+    low: &mut Lowering,
+    model: &mut Model,
+    parsed: &ParsedFile,
+    adm: &Path,
+) {
     if let Some(first) = parsed.file_names.first() {
         check_model_name(low, &first.text, first.loc, adm);
     }

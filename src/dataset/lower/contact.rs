@@ -38,7 +38,9 @@ fn member_shape(shape: &Shape) -> Option<MemberShape> {
     match shape {
         Shape::Geometry(g) => Some(MemberShape::Fixed(ContactGeometry::Geometry(g.clone()))),
         Shape::MeshFile(f) => Some(MemberShape::Fixed(ContactGeometry::MeshFile(f.clone()))),
-        Shape::Plane { solid, line } => Some(MemberShape::Plane(Box::new((solid.clone(), line.clone())))),
+        Shape::Plane { solid, line } => {
+            Some(MemberShape::Plane(Box::new((solid.clone(), line.clone()))))
+        }
         Shape::DisplayOnly(_) => None,
     }
 }
@@ -49,23 +51,41 @@ fn list(model: &Model, r: &Reader<'_>, name: &str) -> Result<(u32, Vec<Member>),
     let mut members = Vec::new();
     for (id, loc) in ids {
         let g = model.graphics.get(&id).ok_or_else(|| {
-            Problem::new(loc, format!("{}: {name}: GRAPHICS/{id} is not defined (or has errors)", r.label()))
+            Problem::new(
+                loc,
+                format!(
+                    "{}: {name}: GRAPHICS/{id} is not defined (or has errors)",
+                    r.label()
+                ),
+            )
         })?;
         let (Some(p), Some(shape)) = (g.part, member_shape(&g.shape)) else {
-            return Err(Problem::new(loc, format!("{}: {name}: GRAPHICS/{id} is display-only and cannot be in contact", r.label())));
+            return Err(Problem::new(
+                loc,
+                format!(
+                    "{}: {name}: GRAPHICS/{id} is display-only and cannot be in contact",
+                    r.label()
+                ),
+            ));
         };
         match part {
             Some((first_part, first_id)) if first_part != p => {
                 return Err(Problem::new(
                     loc,
-                    format!("{}: {name}: GRAPHICS/{id} is on PART/{p} but GRAPHICS/{first_id} is on PART/{first_part}; one list's geometries must belong to one part", r.label()),
+                    format!(
+                        "{}: {name}: GRAPHICS/{id} is on PART/{p} but GRAPHICS/{first_id} is on PART/{first_part}; one list's geometries must belong to one part",
+                        r.label()
+                    ),
                 ));
             }
             Some(_) => {}
             None => part = Some((p, id)),
         }
         if members.iter().any(|m: &Member| m.id == id) {
-            return Err(Problem::new(loc, format!("{}: {name}: GRAPHICS/{id} is listed twice", r.label())));
+            return Err(Problem::new(
+                loc,
+                format!("{}: {name}: GRAPHICS/{id} is listed twice", r.label()),
+            ));
         }
         members.push(Member { id, loc, shape });
     }
@@ -79,8 +99,14 @@ fn user_constants(r: &Reader<'_>, name: &str) -> Result<Option<Vec<f64>>, Proble
     };
     match parse_expr(&text.text) {
         Ok(Expr::User(values)) => Ok(Some(values)),
-        Ok(_) => Err(Problem::new(loc, format!("{}: {name} must be USER(r1, …, r30)", r.label()))),
-        Err(e) => Err(Problem::new(text.loc_at(e.offset), format!("{}: {name}: {e}", r.label()))),
+        Ok(_) => Err(Problem::new(
+            loc,
+            format!("{}: {name} must be USER(r1, …, r30)", r.label()),
+        )),
+        Err(e) => Err(Problem::new(
+            text.loc_at(e.offset),
+            format!("{}: {name}: {e}", r.label()),
+        )),
     }
 }
 
@@ -106,16 +132,29 @@ fn arguments(r: &Reader<'_>) -> Result<ContactArgs, Problem> {
         ..ContactArgs::default()
     };
     if let Some((t, loc)) = r.word("TYPE")? {
-        a.contact_type = Some(ContactType::parse(&t).map_err(|e| Problem::new(loc, format!("{}: {e}", r.label())))?);
+        a.contact_type = Some(
+            ContactType::parse(&t).map_err(|e| Problem::new(loc, format!("{}: {e}", r.label())))?,
+        );
     }
     if let Some((w, loc)) = r.word("COULOMB_FRICTION")? {
-        a.coulomb_friction = Some(FrictionSwitch::parse(&w).map_err(|e| Problem::new(loc, format!("{}: {e}", r.label())))?);
+        a.coulomb_friction = Some(
+            FrictionSwitch::parse(&w)
+                .map_err(|e| Problem::new(loc, format!("{}: {e}", r.label())))?,
+        );
     }
     if let Some((w, loc)) = r.word("STICTION")? {
         a.stiction = Some(match w.to_ascii_uppercase().as_str() {
             "ON" => true,
             "OFF" => false,
-            _ => return Err(Problem::new(loc, format!("{}: STICTION = {w} is out of range: must be ON or OFF", r.label()))),
+            _ => {
+                return Err(Problem::new(
+                    loc,
+                    format!(
+                        "{}: STICTION = {w} is out of range: must be ON or OFF",
+                        r.label()
+                    ),
+                ));
+            }
         });
     }
     Ok(a)
@@ -130,26 +169,50 @@ fn param_problem(r: &Reader<'_>, e: &ParamError) -> Problem {
     Problem::new(loc, format!("{}: {e}", r.label()))
 }
 
-fn contact(low: &mut Lowering, model: &Model, st: &Statement, id: u32) -> Result<ContactElement, Problem> {
+fn contact(
+    low: &mut Lowering,
+    model: &Model,
+    st: &Statement,
+    id: u32,
+) -> Result<ContactElement, Problem> {
     let r = Reader::new(st);
     let (i_part, i_members) = list(model, &r, "IGEOM")?;
     let (j_part, j_members) = list(model, &r, "JGEOM")?;
     if i_part == j_part {
-        return Err(Problem::new(r.loc_of("JGEOM"), format!("CONTACT/{id}: IGEOM and JGEOM are both on PART/{i_part}; a contact acts between two parts")));
+        return Err(Problem::new(
+            r.loc_of("JGEOM"),
+            format!(
+                "CONTACT/{id}: IGEOM and JGEOM are both on PART/{i_part}; a contact acts between two parts"
+            ),
+        ));
     }
     let args = arguments(&r)?;
     // The dimension: from TYPE if given, else from the first geometry that fixes it.
-    let mut dimension = args.contact_type.map(|t| if t.is_planar() { ContactDimension::TwoD } else { ContactDimension::ThreeD });
+    let mut dimension = args.contact_type.map(|t| {
+        if t.is_planar() {
+            ContactDimension::TwoD
+        } else {
+            ContactDimension::ThreeD
+        }
+    });
     let mut decided_by = dimension.map(|_| "TYPE".to_string());
     for m in i_members.iter().chain(&j_members) {
-        let Some(d) = dimension_of(&m.shape) else { continue };
+        let Some(d) = dimension_of(&m.shape) else {
+            continue;
+        };
         match dimension {
             None => {
                 dimension = Some(d);
                 decided_by = Some(format!("GRAPHICS/{}", m.id));
             }
             Some(prev) if prev != d => {
-                let name = |d| if d == ContactDimension::TwoD { "2-D" } else { "3-D" };
+                let name = |d| {
+                    if d == ContactDimension::TwoD {
+                        "2-D"
+                    } else {
+                        "3-D"
+                    }
+                };
                 return Err(Problem::new(
                     m.loc,
                     format!(
@@ -165,19 +228,30 @@ fn contact(low: &mut Lowering, model: &Model, st: &Statement, id: u32) -> Result
         }
     }
     let dimension = dimension.unwrap_or(ContactDimension::ThreeD);
-    let resolve = |members: Vec<Member>, side: char| -> Result<Vec<(u32, ContactGeometry)>, Problem> {
+    let resolve = |members: Vec<Member>,
+                   side: char|
+     -> Result<Vec<(u32, ContactGeometry)>, Problem> {
         let flip_all = r.flag(&format!("{side}FLIP_NORMAL"));
         let flip_name = format!("{side}FLIP_GEOMETRY");
         if flip_all && members.len() > 1 {
             return Err(Problem::new(
-                r.get(&format!("{side}FLIP_NORMAL")).map(|a| a.loc).unwrap_or(st.loc),
-                format!("CONTACT/{id}: {side}FLIP_NORMAL applies to a single {side}GEOM geometry; use {flip_name} for lists"),
+                r.get(&format!("{side}FLIP_NORMAL"))
+                    .map(|a| a.loc)
+                    .unwrap_or(st.loc),
+                format!(
+                    "CONTACT/{id}: {side}FLIP_NORMAL applies to a single {side}GEOM geometry; use {flip_name} for lists"
+                ),
             ));
         }
         let flips = r.ids(&flip_name)?.unwrap_or_default();
         for (f, loc) in &flips {
             if !members.iter().any(|m| m.id == *f) {
-                return Err(Problem::new(*loc, format!("CONTACT/{id}: {flip_name}: GRAPHICS/{f} is not in the {side}GEOM list")));
+                return Err(Problem::new(
+                    *loc,
+                    format!(
+                        "CONTACT/{id}: {flip_name}: GRAPHICS/{f} is not in the {side}GEOM list"
+                    ),
+                ));
             }
         }
         Ok(members
@@ -188,7 +262,11 @@ fn contact(low: &mut Lowering, model: &Model, st: &Statement, id: u32) -> Result
                     MemberShape::Fixed(g) => g,
                     MemberShape::Plane(forms) => {
                         let (solid, line) = *forms;
-                        ContactGeometry::Geometry(if dimension == ContactDimension::TwoD { line } else { solid })
+                        ContactGeometry::Geometry(if dimension == ContactDimension::TwoD {
+                            line
+                        } else {
+                            solid
+                        })
                     }
                 };
                 let g = match g {
@@ -207,11 +285,22 @@ fn contact(low: &mut Lowering, model: &Model, st: &Statement, id: u32) -> Result
     };
     let i_geometries = resolve(i_members, 'I')?;
     let j_geometries = resolve(j_members, 'J')?;
-    let (params, warnings) = args.validate(&model.units).map_err(|e| param_problem(&r, &e))?;
+    let (params, warnings) = args
+        .validate(&model.units)
+        .map_err(|e| param_problem(&r, &e))?;
     for w in warnings {
         low.warning(st.loc, format!("CONTACT/{id}: {w}"));
     }
-    Ok(ContactElement { id, origin: low.origin(st.loc), i_part, j_part, i_geometries, j_geometries, dimension, params })
+    Ok(ContactElement {
+        id,
+        origin: low.origin(st.loc),
+        i_part,
+        j_part,
+        i_geometries,
+        j_geometries,
+        dimension,
+        params,
+    })
 }
 
 /// CONTACT statements.

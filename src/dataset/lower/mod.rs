@@ -127,7 +127,10 @@ fn by_id<'p>(low: &mut Lowering, parsed: &'p ParsedFile, name: &str) -> Vec<&'p 
         if let Some(first) = seen.get(&id) {
             low.error(Problem::new(
                 loc,
-                format!("{name}/{id} is defined twice (first at line {})", first.line),
+                format!(
+                    "{name}/{id} is defined twice (first at line {})",
+                    first.line
+                ),
             ));
             continue;
         }
@@ -215,9 +218,12 @@ pub(crate) fn lower(
     }
     for name in ["OUTPUT", "RESULTS"] {
         for st in singletons(parsed, name) {
-            model
-                .output_flags
-                .extend(st.args.iter().filter(|a| a.values.is_empty()).map(|a| a.spec.name));
+            model.output_flags.extend(
+                st.args
+                    .iter()
+                    .filter(|a| a.values.is_empty())
+                    .map(|a| a.spec.name),
+            );
         }
     }
 
