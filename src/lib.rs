@@ -1,18 +1,36 @@
-//! # contact: compliant contact between rigid parts
+//! # contact: compliant contact between rigid parts, as the Adams CONTACT statement
 //!
-//! The application package of the workspace: it composes [`contact_core`] (the shared
-//! vocabulary: geometry, the engine trait, force laws) with the exact and faceted geometry
-//! engines, and holds the reference [`scenes`] that tests, benches and the CLI share.
+//! The application crate of the workspace: it composes [`contact_core`] (the shared vocabulary:
+//! geometry, the engine trait, force laws) with the exact and faceted geometry engines.
+//!
+//! - [`dataset`] — the `.adm`/`.acf` reader (lexer, parser, lowering) with located diagnostics;
+//! - [`expr`] — Adams function expressions (MOTION, SFORCE, VARIABLE);
+//! - [`model`] — the validated model;
+//! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
+//! - [`tradeoff`] — the accuracy-against-speed measurement and engine selection;
+//! - [`output`] — plots;
+//! - [`cli`] — the `contact` command-line subcommands.
 //!
 //! ```
+//! use contact::dataset::read_str;
+//! use contact::expr::TimeOnly;
 //! use contact::scenes;
 //!
-//! // A sphere of radius 1 resting 0.01 deep on a plane: the closed form says δ = r − d.
+//! // A dataset: a MOTION function evaluated at t = 1.
+//! let adm = "pendulum\nUNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND\n\
+//!            PART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1, CM = 2, IP = 1, 1, 1\n\
+//!            MARKER/2, PART = 2\nJOINT/1, REVOLUTE, I = 2, J = 1\n\
+//!            MOTION/1, JOINT = 1, FUNCTION = 30D * TIME\nEND\n";
+//! let loaded = read_str(adm, "pendulum.adm", None);
+//! assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+//! let angle = loaded.model.motions[0].function.eval(&TimeOnly(1.0)).unwrap();
+//! assert!((angle - 30f64.to_radians()).abs() < 1e-15);
+//!
+//! // A reference scene: a sphere 0.01 deep on a plane; the closed form says δ = r − d.
 //! let scene = scenes::scene("sphere_plane").expect("a suite scene");
 //! let pose = scene.poses.iter().find(|p| p.nominal_depth > 0.005).expect("a contact pose");
 //! let oracle = scene.closed_form.expect("sphere_plane has a closed form");
-//! let contacts = oracle(&scene, pose);
-//! assert!((contacts[0].penetration - pose.nominal_depth).abs() < 1e-12);
+//! assert!((oracle(&scene, pose)[0].penetration - pose.nominal_depth).abs() < 1e-12);
 //! ```
 #![cfg_attr(
     not(test),
@@ -20,6 +38,9 @@
 )]
 
 pub mod cli;
+pub mod dataset;
+pub mod expr;
+pub mod model;
 pub mod output;
 pub mod scenes;
 pub mod tradeoff;

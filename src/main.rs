@@ -1,9 +1,10 @@
-//! The `contact` command line. Each subcommand lives in `contact::cli`.
+//! The `contact` command line: a thin clap front end over [`contact::cli`].
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-/// Compliant contact between rigid parts, with an exact and a faceted geometry engine.
+/// Compliant contact between rigid parts, as the Adams CONTACT statement, with an exact and a
+/// faceted geometry engine.
 #[derive(Debug, Parser)]
 #[command(name = "contact", version, about)]
 struct Cli {
@@ -13,6 +14,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Read an Adams dataset (and command file), check it, and report every problem.
+    Check(contact::cli::check::CheckArgs),
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {
         /// Scene names (default: the whole suite).
@@ -25,17 +28,24 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command {
+    let mut stdout = std::io::stdout().lock();
+    match &cli.command {
+        Command::Check(args) => match contact::cli::check::run(args, &mut stdout) {
+            Ok(0) => ExitCode::SUCCESS,
+            Ok(_) => ExitCode::from(1),
+            Err(e) => {
+                eprintln!("error: cannot write the report: {e}");
+                ExitCode::from(1)
+            }
+        },
         Command::Scenes { names, answers } => {
-            contact::cli::scenes::run(&names, answers, &mut std::io::stdout().lock())
-                .map_err(|e| e.to_string())
-        }
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("error: {message}");
-            ExitCode::FAILURE
+            match contact::cli::scenes::run(names, *answers, &mut stdout) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(1)
+                }
+            }
         }
     }
 }

@@ -1,4 +1,5 @@
-//! The `contact` command line: one module per subcommand; `main.rs` only parses and dispatches.
+//! The `contact` command-line subcommands; `main.rs` only parses arguments and dispatches here.
 
+pub mod check;
 pub mod scenes;
 pub mod tradeoff;

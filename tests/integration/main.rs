@@ -1,4 +1,46 @@
-//! The workspace's integration tests: one binary, one module per topic.
+//! The root package's one integration test binary (one link on 2 cores); modules by topic.
 
+mod check;
+mod dataset;
+mod expressions;
+mod fuzz_seeds;
+mod malformed;
 mod scenes_cli;
 mod trade_schema;
+
+use contact::dataset::{Loaded, read_str};
+use std::path::{Path, PathBuf};
+
+/// The project's test data directory.
+pub fn data_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("data")
+}
+
+/// Reads an inline dataset named `name` (relative paths in it resolve against the test data
+/// directory).
+pub fn inline(name: &str, text: &str) -> Loaded {
+    read_str(text, data_dir().join(name), None)
+}
+
+/// Every diagnostic as printed, with the data directory shortened to `data/`.
+pub fn printed(loaded: &Loaded) -> Vec<String> {
+    let dir = format!("{}/", data_dir().display());
+    loaded
+        .diagnostics
+        .iter()
+        .map(|d| d.to_string().replace(&dir, "data/"))
+        .collect()
+}
+
+/// Only the errors, as printed.
+pub fn errors(loaded: &Loaded) -> Vec<String> {
+    let dir = format!("{}/", data_dir().display());
+    loaded
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.to_string().replace(&dir, "data/"))
+        .collect()
+}

@@ -1,0 +1,178 @@
+//! Command files (`.acf`): SIMULATE, INTEGRATOR, EQUILIBRIUM, ACTIVATE/DEACTIVATE, ACCGRAV,
+//! PREFERENCES, OUTPUT, FILE and STOP.
+
+use super::Lowering;
+use super::bodies::{apply_preferences, gravity};
+use super::elements::{equilibrium, integrator};
+use super::reader::{Problem, Reader};
+use crate::dataset::parser::{ParsedFile, Statement};
+use crate::model::{Analysis, Command, Model, OutputSteps, SimulationSpan};
+use std::path::Path;
+
+fn simulate(r: &Reader<'_>) -> Result<Command, Problem> {
+    let analysis = match r.one_of(&[
+        "DYNAMICS",
+        "KINEMATICS",
+        "STATICS",
+        "TRANSIENT",
+        "INITIAL_CONDITIONS",
+    ])? {
+        Some("DYNAMICS") => Analysis::Dynamics,
+        Some("KINEMATICS") => Analysis::Kinematics,
+        Some("STATICS") => Analysis::Statics,
+        Some("TRANSIENT") => Analysis::Transient,
+        Some(_) => Analysis::InitialConditions,
+        None => {
+            return Err(r.missing(
+                "an analysis (DYNAMICS, KINEMATICS, STATICS, TRANSIENT or INITIAL_CONDITIONS)",
+            ));
+        }
+    };
+    let timed = matches!(
+        analysis,
+        Analysis::Dynamics | Analysis::Kinematics | Analysis::Transient
+    );
+    let span = match (r.number("END")?, r.number("DURATION")?) {
+        (Some(_), Some(_)) => {
+            return Err(Problem::new(
+                r.loc_of("DURATION"),
+                "SIMULATE: END and DURATION cannot both be given",
+            ));
+        }
+        (Some(t), None) => Some(SimulationSpan::End(t)),
+        (None, Some(d)) if d > 0.0 => Some(SimulationSpan::Duration(d)),
+        (None, Some(d)) => {
+            return Err(Problem::new(
+                r.loc_of("DURATION"),
+                format!("SIMULATE: DURATION = {d:?} is out of range: must be > 0"),
+            ));
+        }
+        (None, None) if timed => return Err(r.missing("END or DURATION")),
+        (None, None) => None,
+    };
+    let output = match (r.count_value("STEPS")?, r.number("DTOUT")?) {
+        (Some(_), Some(_)) => {
+            return Err(Problem::new(
+                r.loc_of("DTOUT"),
+                "SIMULATE: STEPS and DTOUT cannot both be given",
+            ));
+        }
+        (Some(0), None) => {
+            return Err(Problem::new(
+                r.loc_of("STEPS"),
+                "SIMULATE: STEPS = 0 is out of range: must be >= 1",
+            ));
+        }
+        (Some(n), None) => Some(OutputSteps::Steps(n)),
+        (None, Some(dt)) if dt > 0.0 => Some(OutputSteps::Interval(dt)),
+        (None, Some(dt)) => {
+            return Err(Problem::new(
+                r.loc_of("DTOUT"),
+                format!("SIMULATE: DTOUT = {dt:?} is out of range: must be > 0"),
+            ));
+        }
+        (None, None) if timed => return Err(r.missing("STEPS or DTOUT")),
+        (None, None) => None,
+    };
+    Ok(Command::Simulate {
+        analysis,
+        span,
+        output,
+    })
+}
+
+fn activate(r: &Reader<'_>, active: bool) -> Result<Command, Problem> {
+    const CLASSES: [&str; 8] = [
+        "JOINT", "JPRIM", "CONTACT", "MOTION", "SFORCE", "SENSOR", "VARIABLE", "REQUEST",
+    ];
+    let class = r
+        .one_of(&CLASSES)?
+        .ok_or_else(|| r.missing(&format!("an element class ({})", CLASSES.join(", "))))?;
+    let ids = r.ids("ID")?.ok_or_else(|| r.missing("ID"))?;
+    Ok(Command::Activate {
+        active,
+        class,
+        ids: ids.into_iter().map(|(id, _)| id).collect(),
+    })
+}
+
+/// The model file a command file names (`file/model=name` or the first line) should be the
+/// dataset being checked.
+fn check_model_name(low: &mut Lowering, name: &str, loc: crate::dataset::Loc, adm: &Path) {
+    let stem = adm
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_default();
+    let named = Path::new(name.trim());
+    let named_stem = named
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_default();
+    if !named_stem.eq_ignore_ascii_case(&stem) {
+        low.warning(
+            loc,
+            format!(
+                "the command file names model '{}', but the dataset checked is '{}'",
+                name.trim(),
+                adm.display()
+            ),
+        );
+    }
+}
+
+fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) -> Option<Command> {
+    let r = Reader::new(st);
+    match st.spec.name {
+        "SIMULATE" => low.ok(simulate(&r)),
+        "ACTIVATE" => low.ok(activate(&r, true)),
+        "DEACTIVATE" => low.ok(activate(&r, false)),
+        "INTEGRATOR" => integrator(low, st).map(Command::Integrator),
+        "EQUILIBRIUM" => equilibrium(low, st).map(Command::Equilibrium),
+        "ACCGRAV" => gravity(low, st).map(Command::Gravity),
+        "STOP" => Some(Command::Stop),
+        "PREFERENCES" => {
+            apply_preferences(low, model, st);
+            None
+        }
+        "OUTPUT" => {
+            model
+                .output_flags
+                .extend(st.args.iter().map(|a| a.spec.name));
+            None
+        }
+        "FILE" => {
+            match low.ok(r.word("MODEL")) {
+                Some(Some((name, loc))) => check_model_name(low, &name, loc, adm),
+                Some(None) if r.flag("COMMAND") => low.warning(
+                    st.loc,
+                    "FILE/COMMAND: reading further command files is not modelled: ignored",
+                ),
+                Some(None) | None => {}
+            }
+            None
+        }
+        _ => None,
+    }
+}
+
+/// Lowers a command file's commands into `model.commands`.
+pub(crate) fn lower_commands(
+    low: &mut Lowering,
+    model: &mut Model,
+    parsed: &ParsedFile,
+    adm: &Path,
+) {
+    if let Some(first) = parsed.file_names.first() {
+        check_model_name(low, &first.text, first.loc, adm);
+    }
+    for st in parsed.statements.iter().filter(|s| s.spec.modelled) {
+        if let Some(c) = command(low, model, st, adm) {
+            let origin = low.origin(st.loc);
+            model.commands.push((origin, c));
+        }
+    }
+    if parsed.end.is_none() {
+        let loc = parsed.statements.last().map(|s| s.loc).unwrap_or_default();
+        low.warning(loc, "the command file has no STOP command");
+    }
+}

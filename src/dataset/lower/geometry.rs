@@ -1,0 +1,465 @@
+//! GRAPHICS (with CURVE and MATRIX) → geometry placed on parts.
+
+use super::Lowering;
+use super::reader::{Problem, Reader};
+use crate::dataset::error::Loc;
+use crate::dataset::parser::Statement;
+use crate::model::{Graphic, MeshFile, Model, Shape};
+use contact_core::geometry::{
+    Arc, Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
+};
+use contact_core::{
+    FacetingTolerance, Geometry, GeometryInstance, InvalidArgument, Isometry3, Point2,
+    UnitQuaternion, Vector3,
+};
+use std::collections::BTreeMap;
+
+const KINDS: [&str; 14] = [
+    "ARC",
+    "CIRCLE",
+    "BOX",
+    "CYLINDER",
+    "FRUSTUM",
+    "ELLIPSOID",
+    "TORUS",
+    "PLANE",
+    "POINT",
+    "CURVE",
+    "EXTERNAL",
+    "FORCE",
+    "SPDP",
+    "OUTLINE",
+];
+
+/// A lowered MATRIX: rows × columns, row-major.
+struct MatrixData {
+    rows: usize,
+    columns: usize,
+    values: Vec<f64>,
+}
+
+fn matrix(st: &Statement, id: u32) -> Result<MatrixData, Problem> {
+    let r = Reader::new(st);
+    if r.flag("FILE") || r.flag("NAME") {
+        return Err(Problem::new(
+            r.loc_of("FILE"),
+            format!(
+                "MATRIX/{id}: matrices read from files are not supported; give FULL or SPARSE values"
+            ),
+        ));
+    }
+    let rows = r.count_value("ROWS")?.ok_or_else(|| r.missing("ROWS"))? as usize;
+    let columns = r
+        .count_value("COLUMNS")?
+        .ok_or_else(|| r.missing("COLUMNS"))? as usize;
+    if rows == 0 || columns == 0 {
+        return Err(Problem::new(
+            r.loc_of("ROWS"),
+            format!("MATRIX/{id}: ROWS and COLUMNS must be >= 1"),
+        ));
+    }
+    let values = r
+        .number_list("VALUES")?
+        .ok_or_else(|| r.missing("VALUES"))?;
+    if r.flag("SPARSE") {
+        let is = r
+            .ids("I")?
+            .ok_or_else(|| r.missing("I (row indices) with SPARSE"))?;
+        let js = r
+            .ids("J")?
+            .ok_or_else(|| r.missing("J (column indices) with SPARSE"))?;
+        if is.len() != values.len() || js.len() != values.len() {
+            return Err(Problem::new(
+                r.loc_of("VALUES"),
+                format!(
+                    "MATRIX/{id}: SPARSE needs as many I and J as VALUES ({} I, {} J, {} VALUES)",
+                    is.len(),
+                    js.len(),
+                    values.len()
+                ),
+            ));
+        }
+        let mut dense = vec![0.0; rows * columns];
+        for ((i, loc), ((j, _), v)) in is.iter().zip(js.iter().zip(&values)) {
+            let (i, j) = (*i as usize, *j as usize);
+            if i > rows || j > columns {
+                return Err(Problem::new(
+                    *loc,
+                    format!("MATRIX/{id}: entry ({i}, {j}) is outside {rows} x {columns}"),
+                ));
+            }
+            dense[(i - 1) * columns + (j - 1)] = *v;
+        }
+        return Ok(MatrixData {
+            rows,
+            columns,
+            values: dense,
+        });
+    }
+    if values.len() != rows * columns {
+        return Err(Problem::new(
+            r.loc_of("VALUES"),
+            format!(
+                "MATRIX/{id}: VALUES has {} numbers, ROWS x COLUMNS = {}",
+                values.len(),
+                rows * columns
+            ),
+        ));
+    }
+    let order = r.word("FULL")?.map(|(w, _)| w.to_ascii_uppercase());
+    let values = match order.as_deref() {
+        None | Some("RORDER") => values,
+        Some("CORDER") => (0..rows * columns)
+            .map(|k| values[(k % columns) * rows + k / columns])
+            .collect(),
+        Some(other) => {
+            return Err(Problem::new(
+                r.loc_of("FULL"),
+                format!("MATRIX/{id}: FULL = {other} is out of range: must be RORDER or CORDER"),
+            ));
+        }
+    };
+    Ok(MatrixData {
+        rows,
+        columns,
+        values,
+    })
+}
+
+fn curve(
+    st: &Statement,
+    id: u32,
+    matrices: &BTreeMap<u32, (MatrixData, Loc)>,
+) -> Result<Curve, Problem> {
+    let r = Reader::new(st);
+    if r.flag("FUNCTION") || r.flag("ROUTINE") {
+        return Err(Problem::new(
+            r.loc_of("FUNCTION"),
+            format!("CURVE/{id}: user-function curves are not supported; give MATRIX points"),
+        ));
+    }
+    let (m_id, m_loc) = r.id("MATRIX")?.ok_or_else(|| r.missing("MATRIX"))?;
+    let (m, _) = matrices
+        .get(&m_id)
+        .ok_or_else(|| Problem::new(m_loc, format!("CURVE/{id}: MATRIX/{m_id} is not defined")))?;
+    if m.columns != 3 {
+        return Err(Problem::new(
+            m_loc,
+            format!(
+                "CURVE/{id}: MATRIX/{m_id} has {} columns; curve points need 3 (x, y, z)",
+                m.columns
+            ),
+        ));
+    }
+    let closed = r.one_of(&["OPEN", "CLOSED"])? == Some("CLOSED");
+    let order = r.count_value("ORDER")?.unwrap_or(4) as usize;
+    let mut points = Vec::with_capacity(m.rows);
+    let scale = m
+        .values
+        .iter()
+        .fold(0.0_f64, |a, v| a.max(v.abs()))
+        .max(f64::MIN_POSITIVE);
+    for row in 0..m.rows {
+        let (x, y, z) = (
+            m.values[3 * row],
+            m.values[3 * row + 1],
+            m.values[3 * row + 2],
+        );
+        if z.abs() > 1e-12 * scale {
+            return Err(Problem::new(
+                m_loc,
+                format!(
+                    "CURVE/{id}: point {} of MATRIX/{m_id} has z = {z:?}; contact curves lie in the CRM x-y plane (z = 0)",
+                    row + 1
+                ),
+            ));
+        }
+        points.push(Point2::new(x, y));
+    }
+    // Adams repeats the first point at the end of a CLOSED curve; closure is implied here.
+    if closed && points.len() > 1 && points.first() == points.last() {
+        points.pop();
+    }
+    let kind = if r.flag("CURVE_POINTS") {
+        CurvePoints::Interpolated
+    } else {
+        CurvePoints::Control
+    };
+    Curve::new(&points, order, closed, kind)
+        .map_err(|e| Problem::new(st.loc, format!("CURVE/{id}: {e}")))
+}
+
+/// The reference marker's part and `X_PM`.
+fn reference(model: &Model, r: &Reader<'_>, name: &str) -> Result<(u32, Isometry3), Problem> {
+    let (m, loc) = r.id(name)?.ok_or_else(|| r.missing(name))?;
+    let marker = model.markers.get(&m).ok_or_else(|| {
+        Problem::new(
+            loc,
+            format!("{}: {name} = {m}: MARKER/{m} is not defined", r.label()),
+        )
+    })?;
+    Ok((marker.part, marker.pose_part_marker))
+}
+
+fn need(r: &Reader<'_>, name: &str) -> Result<f64, Problem> {
+    r.number(name)?.ok_or_else(|| r.missing(name))
+}
+
+/// A contact-core constructor's range error, located at the argument it names.
+fn invalid(r: &Reader<'_>, e: InvalidArgument) -> Problem {
+    let name = e.argument.split('/').next().unwrap_or(e.argument);
+    Problem::new(r.loc_of(name), format!("{}: {e}", r.label()))
+}
+
+/// A 180° turn about x: the frame for a negative LENGTH (the solid then runs along −z).
+fn flipped_z(pose: Isometry3) -> Isometry3 {
+    pose * Isometry3::from_parts(
+        nalgebra::Translation3::identity(),
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI),
+    )
+}
+
+fn graphic(
+    low: &Lowering,
+    model: &Model,
+    st: &Statement,
+    id: u32,
+    curves: &BTreeMap<u32, (Curve, Loc)>,
+) -> Result<Graphic, Problem> {
+    let r = Reader::new(st);
+    let kind = r
+        .one_of(&KINDS)?
+        .ok_or_else(|| r.missing(&format!("a graphics type ({})", KINDS.join(", "))))?;
+    let label = format!("GRAPHICS/{id}");
+    let tolerance = match r.number("FACETING_TOLERANCE")? {
+        Some(v) => Some(FacetingTolerance::new(v).map_err(|e| invalid(&r, e))?),
+        None => None,
+    };
+    let instance = |geometry: Geometry, pose: Isometry3| GeometryInstance {
+        faceting_tolerance: tolerance,
+        ..GeometryInstance::new(geometry)
+            .at(pose)
+            .labeled(label.clone())
+    };
+    let origin = low.origin(st.loc);
+    let (part, shape) = match kind {
+        "FORCE" | "SPDP" | "OUTLINE" => (None, Shape::DisplayOnly(kind)),
+        "ELLIPSOID" => {
+            let (part, pose) = reference(model, &r, "CM")?;
+            let e = Ellipsoid::from_diameters(
+                need(&r, "XSCALE")?,
+                need(&r, "YSCALE")?,
+                need(&r, "ZSCALE")?,
+            )
+            .map_err(|e| invalid(&r, e))?;
+            (
+                Some(part),
+                Shape::Geometry(instance(Geometry::Ellipsoid(e), pose)),
+            )
+        }
+        "CYLINDER" | "FRUSTUM" => {
+            let (part, pose) = reference(model, &r, "CM")?;
+            if let Some(angle) = r.number("RANGLE")? {
+                if (angle - std::f64::consts::TAU).abs() > 1e-9 {
+                    return Err(Problem::new(
+                        r.loc_of("RANGLE"),
+                        format!(
+                            "{label}: RANGLE = {angle:?}: partial {kind}s are not supported for contact (must be 360D)"
+                        ),
+                    ));
+                }
+            }
+            let length = need(&r, "LENGTH")?;
+            let pose = if length < 0.0 { flipped_z(pose) } else { pose };
+            let g = if kind == "CYLINDER" {
+                Geometry::Cylinder(
+                    Cylinder::new(need(&r, "RADIUS")?, length.abs()).map_err(|e| invalid(&r, e))?,
+                )
+            } else {
+                Geometry::Frustum(
+                    Frustum::new(need(&r, "BOTTOM")?, need(&r, "TOP")?, length.abs())
+                        .map_err(|e| invalid(&r, e))?,
+                )
+            };
+            (Some(part), Shape::Geometry(instance(g, pose)))
+        }
+        "BOX" => {
+            let (part, pose) = reference(model, &r, "CORNER")?;
+            let b = Cuboid::from_corner(need(&r, "X")?, need(&r, "Y")?, need(&r, "Z")?)
+                .map_err(|e| invalid(&r, e))?;
+            (
+                Some(part),
+                Shape::Geometry(instance(Geometry::Cuboid(b), pose)),
+            )
+        }
+        "TORUS" => {
+            let (part, pose) = reference(model, &r, "CM")?;
+            let t = Torus::new(need(&r, "MAJOR_RADIUS")?, need(&r, "MINOR_RADIUS")?)
+                .map_err(|e| invalid(&r, e))?;
+            (
+                Some(part),
+                Shape::Geometry(instance(Geometry::Torus(t), pose)),
+            )
+        }
+        "PLANE" => {
+            let (part, pose) = reference(model, &r, "RM")?;
+            let bounds = ["XMIN", "XMAX", "YMIN", "YMAX"].map(|n| r.number(n));
+            let [xmin, xmax, ymin, ymax] = [
+                bounds[0].clone()?,
+                bounds[1].clone()?,
+                bounds[2].clone()?,
+                bounds[3].clone()?,
+            ];
+            let plane = match (xmin, xmax, ymin, ymax) {
+                (None, None, None, None) => Plane::unbounded(),
+                (Some(a), Some(b), Some(c), Some(d)) => {
+                    Plane::bounded(a, b, c, d).map_err(|e| invalid(&r, e))?
+                }
+                _ => {
+                    return Err(Problem::new(
+                        st.loc,
+                        format!("{label}: PLANE needs all of XMIN, XMAX, YMIN, YMAX or none"),
+                    ));
+                }
+            };
+            let line = match (xmin, xmax) {
+                (Some(a), Some(b)) => Line::bounded(a, b).map_err(|e| invalid(&r, e))?,
+                _ => Line::unbounded(),
+            };
+            (
+                Some(part),
+                Shape::Plane {
+                    solid: instance(Geometry::Plane(plane), pose),
+                    line: instance(Geometry::Line(line), pose),
+                },
+            )
+        }
+        "POINT" => {
+            let (part, pose) = reference(model, &r, "RM")?;
+            (Some(part), Shape::Geometry(instance(Geometry::Point, pose)))
+        }
+        "CIRCLE" => {
+            let (part, pose) = reference(model, &r, "CM")?;
+            let c = Circle::new(need(&r, "RADIUS")?).map_err(|e| invalid(&r, e))?;
+            (
+                Some(part),
+                Shape::Geometry(instance(Geometry::Circle(c), pose)),
+            )
+        }
+        "ARC" => {
+            let (part, pose) = reference(model, &r, "CM")?;
+            let a =
+                Arc::new(need(&r, "RADIUS")?, need(&r, "RANGLE")?).map_err(|e| invalid(&r, e))?;
+            (
+                Some(part),
+                Shape::Geometry(instance(Geometry::Arc(a), pose)),
+            )
+        }
+        "CURVE" => {
+            let (part, pose) = reference(model, &r, "CRM")?;
+            let (cid, loc) = r.id("CID")?.ok_or_else(|| r.missing("CID"))?;
+            let (c, _) = curves.get(&cid).ok_or_else(|| {
+                Problem::new(
+                    loc,
+                    format!("{label}: CID = {cid}: CURVE/{cid} is not defined or has errors"),
+                )
+            })?;
+            (
+                Some(part),
+                Shape::Geometry(instance(
+                    Geometry::Curve(std::sync::Arc::new(c.clone())),
+                    pose,
+                )),
+            )
+        }
+        _ => {
+            let (part, pose) = reference(model, &r, "RM")?;
+            let (file, loc) = r.word("FILE")?.ok_or_else(|| r.missing("FILE"))?;
+            let lower = file.to_ascii_lowercase();
+            if [".xmt_txt", ".x_t", ".xmt_bin", ".x_b"]
+                .iter()
+                .any(|ext| lower.ends_with(ext))
+            {
+                return Err(Problem::new(
+                    loc,
+                    format!(
+                        "{label}: FILE = {file} is a Parasolid file, which contact cannot read; export the part as STL and give FILE = name.stl"
+                    ),
+                ));
+            }
+            if !lower.ends_with(".stl") {
+                return Err(Problem::new(
+                    loc,
+                    format!(
+                        "{label}: FILE = {file}: only STL files (.stl) are supported for EXTERNAL geometry"
+                    ),
+                ));
+            }
+            let path = low.dir.join(&file);
+            if !path.is_file() {
+                return Err(Problem::new(
+                    loc,
+                    format!("{label}: FILE = {file}: no such file ({})", path.display()),
+                ));
+            }
+            (
+                Some(part),
+                Shape::MeshFile(MeshFile {
+                    path,
+                    pose_part_geometry: pose,
+                    flip_normal: false,
+                    faceting_tolerance: tolerance,
+                    label,
+                }),
+            )
+        }
+    };
+    Ok(Graphic {
+        id,
+        origin,
+        part,
+        shape,
+    })
+}
+
+/// GRAPHICS statements (with the CURVE and MATRIX statements they use).
+pub(crate) fn lower_graphics(
+    low: &mut Lowering,
+    model: &mut Model,
+    graphics: &[&Statement],
+    curves: &[&Statement],
+    matrices: &[&Statement],
+) {
+    let mut mats = BTreeMap::new();
+    for st in matrices {
+        let Some((id, _)) = st.id else { continue };
+        if let Some(m) = low.ok(matrix(st, id)) {
+            mats.insert(id, (m, st.loc));
+        }
+    }
+    let mut lowered_curves = BTreeMap::new();
+    for st in curves {
+        let Some((id, _)) = st.id else { continue };
+        if let Some(c) = low.ok(curve(st, id, &mats)) {
+            lowered_curves.insert(id, (c, st.loc));
+        }
+    }
+    for st in graphics {
+        let Some((id, _)) = st.id else { continue };
+        let result = graphic(low, model, st, id, &lowered_curves);
+        if let Some(g) = low.ok(result) {
+            if let Shape::DisplayOnly(kind) = g.shape {
+                low.warning(
+                    st.loc,
+                    format!("GRAPHICS/{id} ({kind}) is display-only and not modelled: ignored"),
+                );
+            }
+            if let Shape::MeshFile(m) = &g.shape {
+                if Reader::new(st).flag("ELEMENT") {
+                    low.warning(Reader::new(st).loc_of("ELEMENT"), format!("{}: ELEMENT names a body in a Parasolid file; an STL file has one body: ignored", m.label));
+                }
+            }
+            model.graphics.insert(id, g);
+        }
+    }
+}

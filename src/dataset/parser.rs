@@ -1,0 +1,657 @@
+//! The statement layer: `NAME/id, ARG, ARG = v1, v2, …, FUNCTION = expression` with every
+//! keyword resolved (abbreviations allowed) and every value located.
+//!
+//! - A statement keyword is followed by `/`; what follows the `/` is the id (digits, leading
+//!   zeros allowed) or, for statements without ids, the first argument (`SIMULATE/DYNAMIC`).
+//! - Arguments may come in any order, separated by `,` (or `\` after an expression).
+//! - A value list runs over commas and continuation lines while the items are numbers; a word
+//!   after a comma is the next keyword.
+//! - An expression (`FUNCTION=`, `F1=`…`F8=`, `NORMAL_FUNCTION=`…) runs to the end of the
+//!   statement, a `\`, or a comma outside parentheses on the same line. It continues onto a
+//!   continuation line (whose leading comma is dropped) unless that line starts with `KEYWORD =`.
+//! - Free text (`COMMENT=`/`C=`, `TITLE=`) runs to the end of its line.
+//!
+//! Errors do not stop the parse: the statement in error is dropped, the problem recorded, and
+//! parsing goes on with the next statement.
+
+use super::error::Loc;
+use super::keywords::{self, ArgSpec, Form, IdRule, Match, StatementSpec};
+use super::lexer::{FileKind, LineProblem, RawStatement, Segment, split_lines};
+
+/// An expression's source text with the location of each character (continuation lines joined
+/// by a space, which is located at the next line's start).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExprText {
+    /// The expression.
+    pub text: String,
+    /// `locs[k]` is where the `k`-th character of `text` came from.
+    pub locs: Vec<Loc>,
+}
+
+impl ExprText {
+    /// Where the character at char index `index` came from (the last one past the end).
+    pub fn loc_at(&self, index: usize) -> Loc {
+        self.locs
+            .get(index)
+            .or(self.locs.last())
+            .copied()
+            .unwrap_or_default()
+    }
+}
+
+/// A value as written.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ValueKind {
+    /// A number, id, word or colon list, as written.
+    Atom(String),
+    /// A function expression.
+    Expr(ExprText),
+    /// Free text.
+    Text(String),
+}
+
+/// One value of an argument, with its location.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Value {
+    /// What was written.
+    pub kind: ValueKind,
+    /// Where its first character is.
+    pub loc: Loc,
+}
+
+/// One argument of a statement.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Arg {
+    /// The keyword it resolved to.
+    pub spec: &'static ArgSpec,
+    /// The keyword as written (may be abbreviated).
+    pub written: String,
+    /// Where the keyword is.
+    pub loc: Loc,
+    /// Its values (empty for a flag).
+    pub values: Vec<Value>,
+}
+
+/// One statement or command.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Statement {
+    /// The keyword it resolved to.
+    pub spec: &'static StatementSpec,
+    /// Where the statement starts.
+    pub loc: Loc,
+    /// `NAME/id`: the id and where it is.
+    pub id: Option<(u32, Loc)>,
+    /// The arguments in the order written (none for statements that are not modelled).
+    pub args: Vec<Arg>,
+}
+
+impl Statement {
+    /// `NAME/id` or `NAME/` for messages.
+    pub fn label(&self) -> String {
+        match self.id {
+            Some((id, _)) => format!("{}/{}", self.spec.name, id),
+            None => format!("{}/", self.spec.name),
+        }
+    }
+}
+
+/// A problem found while parsing: where, and what.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ParseProblem {
+    /// Where.
+    pub loc: Loc,
+    /// What.
+    pub message: String,
+}
+
+/// A parsed dataset or command file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ParsedFile {
+    /// Dataset or command file.
+    pub kind: FileKind,
+    /// The title line (datasets).
+    pub title: Option<Segment>,
+    /// Leading file-name lines (command files).
+    pub file_names: Vec<Segment>,
+    /// The statements that parsed.
+    pub statements: Vec<Statement>,
+    /// Where END / STOP was.
+    pub end: Option<Loc>,
+    /// The problems found.
+    pub problems: Vec<ParseProblem>,
+}
+
+/// Parses a whole file; never panics, whatever the input.
+pub fn parse(text: &str, kind: FileKind) -> ParsedFile {
+    let lines = split_lines(text, kind);
+    let mut problems: Vec<ParseProblem> = lines
+        .problems
+        .iter()
+        .map(|p| match p {
+            LineProblem::OrphanContinuation(loc) => ParseProblem {
+                loc: *loc,
+                message: "a continuation line (starting with ',') has no statement to continue"
+                    .to_string(),
+            },
+        })
+        .collect();
+    let table = match kind {
+        FileKind::Dataset => keywords::DATASET_STATEMENTS,
+        FileKind::Commands => keywords::COMMANDS,
+    };
+    let mut statements = Vec::new();
+    for raw in &lines.statements {
+        match parse_statement(raw, table) {
+            Ok(s) => statements.push(s),
+            Err(p) => problems.push(p),
+        }
+    }
+    ParsedFile {
+        kind,
+        title: lines.title,
+        file_names: lines.file_names,
+        statements,
+        end: lines.end,
+        problems,
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Ch {
+    c: char,
+    loc: Loc,
+    seg: usize,
+}
+
+struct Cursor {
+    chars: Vec<Ch>,
+    pos: usize,
+    end_loc: Loc,
+}
+
+fn problem(loc: Loc, message: impl Into<String>) -> ParseProblem {
+    ParseProblem {
+        loc,
+        message: message.into(),
+    }
+}
+
+fn is_word_char(c: char) -> bool {
+    !(c.is_whitespace() || matches!(c, ',' | '=' | '\\' | '(' | ')' | '!'))
+}
+
+impl Cursor {
+    fn new(raw: &RawStatement) -> Self {
+        let mut chars = Vec::new();
+        for (seg, s) in raw.segments.iter().enumerate() {
+            for (k, c) in s.text.chars().enumerate() {
+                let col = s
+                    .loc
+                    .col
+                    .saturating_add(u32::try_from(k).unwrap_or(u32::MAX));
+                chars.push(Ch {
+                    c,
+                    loc: Loc::new(s.loc.line, col),
+                    seg,
+                });
+            }
+        }
+        let end_loc = chars
+            .last()
+            .map(|ch| Loc::new(ch.loc.line, ch.loc.col.saturating_add(1)))
+            .unwrap_or_else(|| raw.loc());
+        Self {
+            chars,
+            pos: 0,
+            end_loc,
+        }
+    }
+
+    fn peek(&self) -> Option<Ch> {
+        self.chars.get(self.pos).copied()
+    }
+
+    fn peek_at(&self, pos: usize) -> Option<Ch> {
+        self.chars.get(pos).copied()
+    }
+
+    fn loc(&self) -> Loc {
+        self.peek().map(|c| c.loc).unwrap_or(self.end_loc)
+    }
+
+    fn skip_ws(&mut self) {
+        while self.peek().is_some_and(|c| c.c.is_whitespace()) {
+            self.pos += 1;
+        }
+    }
+
+    /// Skips blanks from `pos` on; returns the first position that is not blank.
+    fn skip_ws_from(&self, mut pos: usize) -> usize {
+        while self.peek_at(pos).is_some_and(|c| c.c.is_whitespace()) {
+            pos += 1;
+        }
+        pos
+    }
+
+    fn word(&mut self) -> (String, Loc) {
+        let loc = self.loc();
+        let mut s = String::new();
+        while let Some(ch) = self.peek() {
+            if !is_word_char(ch.c) {
+                break;
+            }
+            s.push(ch.c);
+            self.pos += 1;
+        }
+        (s, loc)
+    }
+
+    /// True when, from `pos`, the text reads `WORD =` (not `==`): the start of an argument.
+    fn keyword_assignment_at(&self, pos: usize) -> bool {
+        let mut p = self.skip_ws_from(pos);
+        let start = p;
+        while self
+            .peek_at(p)
+            .is_some_and(|c| c.c.is_ascii_alphanumeric() || c.c == '_')
+        {
+            p += 1;
+        }
+        if p == start {
+            return false;
+        }
+        let p = self.skip_ws_from(p);
+        self.peek_at(p).is_some_and(|c| c.c == '=')
+            && self.peek_at(p + 1).is_none_or(|c| c.c != '=')
+    }
+}
+
+fn parse_statement(
+    raw: &RawStatement,
+    table: &'static [StatementSpec],
+) -> Result<Statement, ParseProblem> {
+    let mut cur = Cursor::new(raw);
+    cur.skip_ws();
+    let name_loc = cur.loc();
+    let mut name = String::new();
+    while let Some(ch) = cur.peek() {
+        if !(ch.c.is_ascii_alphanumeric() || ch.c == '_') {
+            break;
+        }
+        name.push(ch.c);
+        cur.pos += 1;
+    }
+    if name.is_empty() {
+        let c = cur.peek().map(|ch| ch.c).unwrap_or(' ');
+        return Err(problem(
+            name_loc,
+            format!("expected a statement keyword, found '{c}'"),
+        ));
+    }
+    let spec = match keywords::statement(&name, table) {
+        Match::Found(spec) => spec,
+        Match::Ambiguous(names) => {
+            return Err(problem(
+                name_loc,
+                format!(
+                    "ambiguous abbreviation '{name}': could be {}",
+                    names.join(", ")
+                ),
+            ));
+        }
+        Match::Unknown => {
+            return Err(problem(name_loc, format!("unknown statement '{name}'")));
+        }
+    };
+    let mut statement = Statement {
+        spec,
+        loc: name_loc,
+        id: None,
+        args: Vec::new(),
+    };
+    cur.skip_ws();
+    let has_slash = cur.peek().is_some_and(|c| c.c == '/');
+    if has_slash {
+        cur.pos += 1;
+    } else if spec.name != "STOP" && spec.modelled {
+        return Err(problem(
+            cur.loc(),
+            format!("expected '/' after {}", spec.name),
+        ));
+    }
+    if !spec.modelled {
+        return Ok(statement);
+    }
+    if has_slash && spec.id == IdRule::Required {
+        cur.skip_ws();
+        let (id_text, id_loc) = cur.word();
+        if id_text.is_empty() {
+            return Err(problem(
+                id_loc,
+                format!("{} needs an id: {}/id", spec.name, spec.name),
+            ));
+        }
+        let id = parse_id(&id_text).ok_or_else(|| {
+            problem(
+                id_loc,
+                format!("{}/{id_text}: the id must be a positive integer", spec.name),
+            )
+        })?;
+        statement.id = Some((id, id_loc));
+    }
+    parse_arguments(&mut cur, &mut statement)?;
+    Ok(statement)
+}
+
+/// A positive integer id; leading zeros allowed (`0101` is 101).
+pub fn parse_id(text: &str) -> Option<u32> {
+    if text.is_empty() || !text.chars().all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    text.parse::<u32>().ok().filter(|id| *id > 0)
+}
+
+/// True for text that reads as a number, optionally with a `D` (degrees) suffix.
+fn looks_numeric(text: &str) -> bool {
+    let t = text.strip_suffix(['D', 'd']).unwrap_or(text);
+    !t.is_empty()
+        && t.chars().any(|c| c.is_ascii_digit())
+        && t.chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '.' | '+' | '-' | 'e' | 'E'))
+}
+
+fn parse_arguments(cur: &mut Cursor, statement: &mut Statement) -> Result<(), ParseProblem> {
+    let spec = statement.spec;
+    loop {
+        while cur
+            .peek()
+            .is_some_and(|c| c.c.is_whitespace() || c.c == ',' || c.c == '\\')
+        {
+            cur.pos += 1;
+        }
+        let Some(first) = cur.peek() else {
+            return Ok(());
+        };
+        let (word, loc) = cur.word();
+        if word.is_empty() {
+            return Err(problem(
+                first.loc,
+                format!(
+                    "{}: unexpected '{}' where an argument keyword was expected",
+                    statement.label(),
+                    first.c
+                ),
+            ));
+        }
+        let arg_spec = match spec.argument(&word) {
+            Match::Found(a) => a,
+            Match::Ambiguous(names) => {
+                return Err(problem(
+                    loc,
+                    format!(
+                        "{}: ambiguous abbreviation '{word}': could be {}",
+                        statement.label(),
+                        names.join(", ")
+                    ),
+                ));
+            }
+            Match::Unknown => {
+                return Err(problem(
+                    loc,
+                    format!("{}: unknown argument '{word}'", statement.label()),
+                ));
+            }
+        };
+        if let Some(previous) = statement.args.iter().find(|a| a.spec.name == arg_spec.name) {
+            return Err(problem(
+                loc,
+                format!(
+                    "{}: {} is given twice (first at {})",
+                    statement.label(),
+                    arg_spec.name,
+                    previous.loc
+                ),
+            ));
+        }
+        cur.skip_ws();
+        let has_equals = cur.peek().is_some_and(|c| c.c == '=');
+        let values = match (arg_spec.form, has_equals) {
+            (Form::Flag, false) => Vec::new(),
+            (Form::Flag, true) => {
+                return Err(problem(
+                    cur.loc(),
+                    format!(
+                        "{}: {} is a flag and takes no value",
+                        statement.label(),
+                        arg_spec.name
+                    ),
+                ));
+            }
+            (_, false) => {
+                return Err(problem(
+                    cur.loc(),
+                    format!(
+                        "{}: {} needs a value: {} = …",
+                        statement.label(),
+                        arg_spec.name,
+                        arg_spec.name
+                    ),
+                ));
+            }
+            (form, true) => {
+                cur.pos += 1;
+                let values = match form {
+                    Form::Expr => vec![read_expression(cur)],
+                    Form::Text => vec![read_text(cur)],
+                    _ => read_values(cur),
+                };
+                if values.iter().all(|v| match &v.kind {
+                    ValueKind::Atom(s) | ValueKind::Text(s) => s.is_empty(),
+                    ValueKind::Expr(e) => e.text.trim().is_empty(),
+                }) {
+                    return Err(problem(
+                        cur.loc(),
+                        format!(
+                            "{}: {} = has no value (truncated statement?)",
+                            statement.label(),
+                            arg_spec.name
+                        ),
+                    ));
+                }
+                values
+            }
+        };
+        if let Some(next) = cur.peek() {
+            if !(next.c.is_whitespace() || next.c == ',' || next.c == '\\') {
+                return Err(problem(
+                    next.loc,
+                    format!(
+                        "{}: unexpected '{}' after {}",
+                        statement.label(),
+                        next.c,
+                        arg_spec.name
+                    ),
+                ));
+            }
+        }
+        statement.args.push(Arg {
+            spec: arg_spec,
+            written: word,
+            loc,
+            values,
+        });
+    }
+}
+
+fn read_values(cur: &mut Cursor) -> Vec<Value> {
+    let mut values = Vec::new();
+    loop {
+        cur.skip_ws();
+        let (atom, loc) = cur.word();
+        values.push(Value {
+            kind: ValueKind::Atom(atom),
+            loc,
+        });
+        // Another value follows only if, after the comma, a number comes.
+        let after_ws = cur.skip_ws_from(cur.pos);
+        if cur.peek_at(after_ws).is_none_or(|c| c.c != ',') {
+            return values;
+        }
+        let next = cur.skip_ws_from(after_ws + 1);
+        let mut end = next;
+        let mut text = String::new();
+        while let Some(ch) = cur.peek_at(end) {
+            if !is_word_char(ch.c) {
+                break;
+            }
+            text.push(ch.c);
+            end += 1;
+        }
+        if !looks_numeric(&text) {
+            return values;
+        }
+        cur.pos = after_ws + 1;
+    }
+}
+
+fn read_text(cur: &mut Cursor) -> Value {
+    cur.skip_ws();
+    let loc = cur.loc();
+    let seg = cur.peek().map(|c| c.seg);
+    let mut text = String::new();
+    while let Some(ch) = cur.peek() {
+        if Some(ch.seg) != seg {
+            break;
+        }
+        text.push(ch.c);
+        cur.pos += 1;
+    }
+    Value {
+        kind: ValueKind::Text(text.trim_end().to_string()),
+        loc,
+    }
+}
+
+fn read_expression(cur: &mut Cursor) -> Value {
+    cur.skip_ws();
+    // `FUNCTION =` at the end of a line: the expression starts on the continuation line.
+    if let Some(ch) = cur.peek() {
+        if ch.c == ',' && cur.pos > 0 && cur.peek_at(cur.pos - 1).is_some_and(|p| p.seg != ch.seg) {
+            cur.pos += 1;
+            cur.skip_ws();
+        }
+    }
+    let loc = cur.loc();
+    let mut text = String::new();
+    let mut locs = Vec::new();
+    let mut depth = 0usize;
+    while let Some(ch) = cur.peek() {
+        let starts_line = cur.pos > 0 && cur.peek_at(cur.pos - 1).is_some_and(|p| p.seg != ch.seg);
+        if starts_line && depth == 0 {
+            // A continuation line: `, KEYWORD =` starts the next argument; anything else goes on.
+            let after_comma = if ch.c == ',' { cur.pos + 1 } else { cur.pos };
+            if cur.keyword_assignment_at(after_comma) {
+                break;
+            }
+            text.push(' ');
+            locs.push(ch.loc);
+            cur.pos = after_comma;
+            continue;
+        }
+        if starts_line && ch.c == ',' {
+            text.push(' ');
+            locs.push(ch.loc);
+            cur.pos += 1;
+            continue;
+        }
+        match ch.c {
+            '\\' => break,
+            ',' if depth == 0 => break,
+            '(' => depth += 1,
+            ')' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+        text.push(ch.c);
+        locs.push(ch.loc);
+        cur.pos += 1;
+    }
+    while text.ends_with(char::is_whitespace) {
+        text.pop();
+        locs.pop();
+    }
+    Value {
+        kind: ValueKind::Expr(ExprText { text, locs }),
+        loc,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(text: &str) -> Statement {
+        let parsed = parse(&format!("title\n{text}\n"), FileKind::Dataset);
+        assert!(parsed.problems.is_empty(), "{:?}", parsed.problems);
+        assert_eq!(parsed.statements.len(), 1);
+        parsed.statements[0].clone()
+    }
+
+    fn atoms(arg: &Arg) -> Vec<String> {
+        arg.values
+            .iter()
+            .map(|v| match &v.kind {
+                ValueKind::Atom(s) | ValueKind::Text(s) => s.clone(),
+                ValueKind::Expr(e) => e.text.clone(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn ids_lists_and_flags() {
+        let s = one("PART/02, MASS = 1\n, CM = 0201, IP = 0.04, 0.1\n, 0.1, GROUND");
+        assert_eq!(s.id, Some((2, Loc::new(2, 6))));
+        let names: Vec<_> = s.args.iter().map(|a| a.spec.name).collect();
+        assert_eq!(names, ["MASS", "CM", "IP", "GROUND"]);
+        assert_eq!(atoms(&s.args[2]), ["0.04", "0.1", "0.1"]);
+        assert_eq!(s.args[2].values[2].loc, Loc::new(4, 3));
+    }
+
+    #[test]
+    fn expressions_end_at_backslash_comma_or_keyword_line() {
+        let s = one(
+            "REQUEST/04, F2=ORIENT(27,1,0201,0101)\\F3=ORIENT(27,2,0201,0101),C=EULER PARAMETERS",
+        );
+        assert_eq!(atoms(&s.args[0]), ["ORIENT(27,1,0201,0101)"]);
+        assert_eq!(atoms(&s.args[1]), ["ORIENT(27,2,0201,0101)"]);
+        assert_eq!(atoms(&s.args[2]), ["EULER PARAMETERS"]);
+        let s = one("MOTION/1, JOINT=1, FUNCTION =\n, 30.0d *\n, time\n, ICDISP = 0");
+        assert_eq!(atoms(&s.args[1]), ["30.0d *  time"]);
+        let ValueKind::Expr(e) = &s.args[1].values[0].kind else {
+            panic!("not an expression")
+        };
+        assert_eq!(e.loc_at(0), Loc::new(3, 3));
+        assert_eq!(e.loc_at(9), Loc::new(4, 3));
+        assert_eq!(s.args[2].spec.name, "ICDISP");
+    }
+
+    #[test]
+    fn errors_carry_locations() {
+        let parsed = parse(
+            "t\nPART/1, MA = 1\nPRT/2\nMARKER/x\nMOTION/1, IC=1\n",
+            FileKind::Dataset,
+        );
+        let got: Vec<_> = parsed
+            .problems
+            .iter()
+            .map(|p| format!("{}: {}", p.loc, p.message))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                "2:9: PART/1: ambiguous abbreviation 'MA': could be MASS, MATERIAL",
+                "3:1: unknown statement 'PRT'",
+                "4:8: MARKER/x: the id must be a positive integer",
+                "5:11: MOTION/1: ambiguous abbreviation 'IC': could be ICDISP, ICVEL",
+            ]
+        );
+    }
+}

@@ -1,0 +1,519 @@
+//! The validated model: what a dataset (`.adm` + `.acf`) describes, in the model's own units.
+//!
+//! Built by [`crate::dataset::load`] (or by hand). Every element keeps the [`Origin`] of the
+//! statement it came from, so later stages (solver, outputs) can point back to the source.
+//! Frames follow contact-core's notation: `pose_world_part` is `X_WP`, `pose_part_marker` is
+//! `X_PM`; REULER angles are body-fixed 3-1-3, `R = Rz(ψ)·Rx(θ)·Rz(φ)`.
+
+use crate::dataset::Origin;
+use crate::expr::Expr;
+use contact_core::{
+    ContactParams, FacetingTolerance, GeometryInstance, Isometry3, Matrix3, Preferences, Units,
+    Vector3,
+};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+/// A rigid part (`PART/id`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Part {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// True for the ground part (the Newtonian frame).
+    pub ground: bool,
+    /// MASS (≥ 0; 0 = massless).
+    pub mass: f64,
+    /// CM: the centre-of-mass marker.
+    pub cm: Option<u32>,
+    /// IM: the marker whose origin and axes the inertia is given in (defaults to CM).
+    pub im: Option<u32>,
+    /// The inertia tensor at IM in IM's axes: diagonal IP = Ixx, Iyy, Izz; off-diagonal
+    /// `−Ixy`, `−Ixz`, `−Iyz` from Adams' positive product integrals `Ixy = ∫xy dm`.
+    pub inertia: Matrix3,
+    /// `X_WP`: QG and REULER (or XG/ZG) of the part's frame in ground.
+    pub pose_world_part: Isometry3,
+    /// VX, VY, VZ: initial velocity of the CM, in ground.
+    pub velocity_w: Vector3,
+    /// WX, WY, WZ: initial angular velocity, in ground.
+    pub angular_velocity_w: Vector3,
+}
+
+/// A marker (`MARKER/id`): a frame fixed on a part.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Marker {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The part it is on.
+    pub part: u32,
+    /// `X_PM`: QP and REULER (or ZP/XP) in the part frame.
+    pub pose_part_marker: Isometry3,
+}
+
+/// A triangle-mesh file (`GRAPHICS/…, EXTERNAL, FILE = *.stl`), read later by the faceted
+/// engine's STL reader.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshFile {
+    /// The file, resolved relative to the dataset's directory.
+    pub path: PathBuf,
+    /// `X_PG`: the reference marker RM in the part frame.
+    pub pose_part_geometry: Isometry3,
+    /// Reverse the outward normal (set per contact).
+    pub flip_normal: bool,
+    /// FACETING_TOLERANCE given on the GRAPHICS (meshes keep their own facets; kept for
+    /// reports).
+    pub faceting_tolerance: Option<FacetingTolerance>,
+    /// Label for messages (`GRAPHICS/id`).
+    pub label: String,
+}
+
+/// What a GRAPHICS statement lowers to.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// A geometry whose dimension is fixed by its kind.
+    Geometry(GeometryInstance),
+    /// PLANE: the 3-D half-space for 3-D contacts, the 2-D line (RM x axis, outward +y) for
+    /// 2-D ones; a contact picks one.
+    Plane {
+        /// The 3-D form (RM x-y plane, outward +z; XMIN..YMAX bound it).
+        solid: GeometryInstance,
+        /// The 2-D form (RM x axis; XMIN..XMAX bound it).
+        line: GeometryInstance,
+    },
+    /// EXTERNAL with an STL file.
+    MeshFile(MeshFile),
+    /// A display-only graphic (FORCE, SPDP, OUTLINE): kept so contacts naming it get a clear
+    /// error.
+    DisplayOnly(&'static str),
+}
+
+/// A GRAPHICS statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Graphic {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The part of its reference marker (`None` for display-only graphics).
+    pub part: Option<u32>,
+    /// The shape.
+    pub shape: Shape,
+}
+
+/// One member of a CONTACT's I or J list.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ContactGeometry {
+    /// A native geometry placed on the part.
+    Geometry(GeometryInstance),
+    /// A mesh file still to be read.
+    MeshFile(MeshFile),
+}
+
+/// Whether a contact acts in 3-D or in a plane.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContactDimension {
+    /// Solids (and 3-D planes).
+    ThreeD,
+    /// Points, curves, circles, arcs and 2-D planes.
+    TwoD,
+}
+
+/// A CONTACT statement with its geometry resolved and its parameters validated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactElement {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The part of every IGEOM geometry.
+    pub i_part: u32,
+    /// The part of every JGEOM geometry.
+    pub j_part: u32,
+    /// The IGEOM list (flips applied), with the GRAPHICS ids.
+    pub i_geometries: Vec<(u32, ContactGeometry)>,
+    /// The JGEOM list (flips applied), with the GRAPHICS ids.
+    pub j_geometries: Vec<(u32, ContactGeometry)>,
+    /// 2-D or 3-D.
+    pub dimension: ContactDimension,
+    /// The validated force parameters.
+    pub params: ContactParams,
+}
+
+/// JOINT types (SPEC §8 lists which the solver supports).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum JointKind {
+    /// CONVEL (constant velocity).
+    Convel,
+    /// CYLINDRICAL.
+    Cylindrical,
+    /// FIXED.
+    Fixed,
+    /// HOOKE (universal).
+    Hooke,
+    /// PLANAR.
+    Planar,
+    /// RACKPIN (with PD).
+    Rackpin,
+    /// REVOLUTE.
+    Revolute,
+    /// SCREW (with PITCH).
+    Screw,
+    /// SPHERICAL.
+    Spherical,
+    /// TRANSLATIONAL.
+    Translational,
+    /// UNIVERSAL.
+    Universal,
+}
+
+/// A JOINT statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Joint {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The type.
+    pub kind: JointKind,
+    /// The I marker.
+    pub i: u32,
+    /// The J marker.
+    pub j: u32,
+    /// PITCH (SCREW) or PD (RACKPIN).
+    pub parameter: Option<f64>,
+}
+
+/// JPRIM types.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PrimitiveKind {
+    /// ATPOINT.
+    Atpoint,
+    /// INLINE.
+    Inline,
+    /// INPLANE.
+    Inplane,
+    /// ORIENTATION.
+    Orientation,
+    /// PARALLEL_AXES.
+    ParallelAxes,
+    /// PERPENDICULAR.
+    Perpendicular,
+}
+
+/// A JPRIM statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointPrimitive {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The type.
+    pub kind: PrimitiveKind,
+    /// The I marker.
+    pub i: u32,
+    /// The J marker.
+    pub j: u32,
+}
+
+/// Translation or rotation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Freedom {
+    /// Along an axis.
+    Translational,
+    /// About an axis.
+    Rotational,
+}
+
+/// What a MOTION drives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MotionTarget {
+    /// `JOINT = id` with TRANSLATIONAL or ROTATIONAL (along/about the joint's z).
+    Joint {
+        /// The joint.
+        joint: u32,
+        /// Which freedom.
+        freedom: Freedom,
+    },
+    /// `I, J` with one of X, Y, Z, B1, B2, B3 (index 0..=5).
+    Markers {
+        /// The I marker.
+        i: u32,
+        /// The J marker.
+        j: u32,
+        /// 0..=2 for X, Y, Z; 3..=5 for B1, B2, B3.
+        axis: u8,
+    },
+}
+
+/// DISPLACEMENT, VELOCITY or ACCELERATION.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MotionLevel {
+    /// The function is the displacement (default).
+    Displacement,
+    /// The function is the velocity.
+    Velocity,
+    /// The function is the acceleration.
+    Acceleration,
+}
+
+/// A MOTION statement: a time function imposed on a joint or marker pair.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Motion {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// What it drives.
+    pub target: MotionTarget,
+    /// What the function gives.
+    pub level: MotionLevel,
+    /// FUNCTION (of TIME only).
+    pub function: Expr,
+    /// ICDISP.
+    pub ic_displacement: Option<f64>,
+    /// ICVEL.
+    pub ic_velocity: Option<f64>,
+}
+
+/// An SFORCE statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SForce {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The I marker.
+    pub i: u32,
+    /// The J marker.
+    pub j: u32,
+    /// Force or torque.
+    pub freedom: Freedom,
+    /// ACTIONONLY.
+    pub action_only: bool,
+    /// FUNCTION.
+    pub function: Expr,
+}
+
+/// A VARIABLE statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// FUNCTION.
+    pub function: Expr,
+    /// IC.
+    pub initial_value: Option<f64>,
+}
+
+/// A REQUEST statement, kept for output.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// DISPLACEMENT, VELOCITY, ACCELERATION or FORCE, if given.
+    pub kind: Option<&'static str>,
+    /// I, J, RM markers.
+    pub markers: [Option<u32>; 3],
+    /// COMMENT.
+    pub comment: Option<String>,
+    /// F1..F8 / FUNCTION expressions as written (name, text).
+    pub functions: Vec<(&'static str, String)>,
+}
+
+/// INTEGRATOR settings (SPEC §8).
+#[derive(Debug, Clone, PartialEq)]
+pub struct IntegratorSettings {
+    /// The method keyword given (GSTIFF, WSTIFF, HHT, …); the solver uses its own BDF.
+    pub method: Option<&'static str>,
+    /// The formulation keyword given (I3, SI2, SI1).
+    pub formulation: Option<&'static str>,
+    /// ERROR (default 1e-3).
+    pub error: f64,
+    /// HMAX.
+    pub hmax: Option<f64>,
+    /// HMIN.
+    pub hmin: Option<f64>,
+    /// HINIT.
+    pub hinit: Option<f64>,
+    /// KMAX (default 6).
+    pub kmax: u32,
+    /// MAXIT (default 10).
+    pub maxit: u32,
+    /// CORRECTOR (ORIGINAL, MODIFIED, …), as written upper case.
+    pub corrector: Option<String>,
+}
+
+impl Default for IntegratorSettings {
+    fn default() -> Self {
+        Self {
+            method: None,
+            formulation: None,
+            error: 1e-3,
+            hmax: None,
+            hmin: None,
+            hinit: None,
+            kmax: 6,
+            maxit: 10,
+            corrector: None,
+        }
+    }
+}
+
+/// EQUILIBRIUM settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EquilibriumSettings {
+    /// ALIMIT in radians (default 10°).
+    pub alimit: f64,
+    /// ERROR (default 1e-4).
+    pub error: f64,
+    /// IMBALANCE (default 1e-4).
+    pub imbalance: f64,
+    /// MAXIT (default 25).
+    pub maxit: u32,
+    /// STABILITY (default 1e-5).
+    pub stability: f64,
+    /// TLIMIT (default 20).
+    pub tlimit: f64,
+    /// DYNAMIC: the quasi-dynamic method.
+    pub dynamic: bool,
+}
+
+impl Default for EquilibriumSettings {
+    fn default() -> Self {
+        Self {
+            alimit: 10f64.to_radians(),
+            error: 1e-4,
+            imbalance: 1e-4,
+            maxit: 25,
+            stability: 1e-5,
+            tlimit: 20.0,
+            dynamic: false,
+        }
+    }
+}
+
+/// Which analysis a SIMULATE command runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Analysis {
+    /// DYNAMICS.
+    Dynamics,
+    /// KINEMATICS.
+    Kinematics,
+    /// STATICS.
+    Statics,
+    /// TRANSIENT: dynamics or kinematics as the degrees of freedom require.
+    Transient,
+    /// INITIAL_CONDITIONS.
+    InitialConditions,
+}
+
+/// When a SIMULATE ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SimulationSpan {
+    /// END = t.
+    End(f64),
+    /// DURATION = t.
+    Duration(f64),
+}
+
+/// How often a SIMULATE writes output.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OutputSteps {
+    /// STEPS = n.
+    Steps(u32),
+    /// DTOUT = dt.
+    Interval(f64),
+}
+
+/// A command of a command file (`.acf`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// SIMULATE.
+    Simulate {
+        /// The analysis.
+        analysis: Analysis,
+        /// END or DURATION (none for statics and initial conditions).
+        span: Option<SimulationSpan>,
+        /// STEPS or DTOUT.
+        output: Option<OutputSteps>,
+    },
+    /// INTEGRATOR: new settings from here on.
+    Integrator(IntegratorSettings),
+    /// EQUILIBRIUM: new settings from here on.
+    Equilibrium(EquilibriumSettings),
+    /// ACTIVATE (`active`) or DEACTIVATE elements of a class (JOINT, CONTACT, …).
+    Activate {
+        /// True for ACTIVATE.
+        active: bool,
+        /// The element class keyword.
+        class: &'static str,
+        /// The ids.
+        ids: Vec<u32>,
+    },
+    /// ACCGRAV: new gravity.
+    Gravity(Vector3),
+    /// STOP.
+    Stop,
+}
+
+/// The whole validated model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    /// The dataset's title line.
+    pub title: String,
+    /// UNITS.
+    pub units: Units,
+    /// ACCGRAV, in model units.
+    pub gravity: Vector3,
+    /// PREFERENCES.
+    pub preferences: Preferences,
+    /// Parts by id.
+    pub parts: BTreeMap<u32, Part>,
+    /// Markers by id.
+    pub markers: BTreeMap<u32, Marker>,
+    /// GRAPHICS by id.
+    pub graphics: BTreeMap<u32, Graphic>,
+    /// CONTACTs in id order.
+    pub contacts: Vec<ContactElement>,
+    /// JOINTs in id order.
+    pub joints: Vec<Joint>,
+    /// JPRIMs in id order.
+    pub primitives: Vec<JointPrimitive>,
+    /// MOTIONs in id order.
+    pub motions: Vec<Motion>,
+    /// SFORCEs in id order.
+    pub sforces: Vec<SForce>,
+    /// VARIABLEs in id order.
+    pub variables: Vec<Variable>,
+    /// REQUESTs in id order.
+    pub requests: Vec<Request>,
+    /// INTEGRATOR.
+    pub integrator: IntegratorSettings,
+    /// EQUILIBRIUM.
+    pub equilibrium: EquilibriumSettings,
+    /// OUTPUT and RESULTS flags given (full keywords).
+    pub output_flags: Vec<&'static str>,
+    /// The command file's commands, in order, with their origins.
+    pub commands: Vec<(Origin, Command)>,
+}
+
+impl Model {
+    /// The ground part's id, if the model has one.
+    pub fn ground(&self) -> Option<u32> {
+        self.parts.values().find(|p| p.ground).map(|p| p.id)
+    }
+
+    /// `X_WM` of a marker at the initial configuration (`X_WP · X_PM`).
+    pub fn pose_world_marker(&self, marker: u32) -> Option<Isometry3> {
+        let m = self.markers.get(&marker)?;
+        let p = self.parts.get(&m.part)?;
+        Some(p.pose_world_part * m.pose_part_marker)
+    }
+}
