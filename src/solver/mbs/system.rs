@@ -313,10 +313,10 @@ impl MultibodySystem {
     pub fn constraint_reactions(
         &self,
         y: &DVector<f64>,
-    ) -> Result<Vec<(Vector3<f64>, Vector3<f64>)>, EvaluationError> {
+    ) -> Result<Vec<Load>, EvaluationError> {
         let states = self.part_states(y)?;
         let lambda = y.rows(self.layout.lambda_offset(), self.layout.constraint_rows());
-        let mut reactions = vec![(Vector3::zeros(), Vector3::zeros()); self.parts.len()];
+        let mut reactions = vec![Load::default(); self.parts.len()];
         for element in &self.constraints {
             let (pose_a, pose_b) = (
                 &states[element.part_i.0].pose_w,
@@ -336,8 +336,8 @@ impl MultibodySystem {
                     continue;
                 }
                 let entry = &mut reactions[part.0 - 1];
-                entry.0 -= force;
-                entry.1 -= pose.rotation * torque_body;
+                entry.force_w -= force;
+                entry.torque_w -= pose.rotation * torque_body;
             }
         }
         Ok(reactions)

@@ -73,7 +73,7 @@ impl TranslationalSpringDamper {
     ) -> Result<(Vector3<f64>, f64, f64), EvaluationError> {
         let length = d.norm();
         let p = &self.params;
-        if !(length > 1e-12 * p.free_length) || length == 0.0 {
+        if length <= 1e-12 * p.free_length || length == 0.0 {
             return Err(EvaluationError {
                 element: self.name.clone(),
                 message: format!(
