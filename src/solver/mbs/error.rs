@@ -72,13 +72,14 @@ pub enum MbsError {
     },
     /// Newton iteration on Φ(q, t) = 0 did not converge from the user's positions.
     #[error(
-        "assembly failed after {iterations} iterations: |Φ| = {residual:e} on {worst} \
+        "assembly failed after {iterations} iterations: |Φ|/L = {residual:e} on {worst} \
          (tolerance {tolerance:e}); check that the joints can be closed from the given positions"
     )]
     AssemblyFailed {
         /// Iterations made.
         iterations: usize,
-        /// The largest constraint residual left (length or radian).
+        /// The largest constraint residual left, relative: lengths over the model's length
+        /// scale L, angles (cosines) as they are.
         residual: f64,
         /// The tolerance asked for.
         tolerance: f64,

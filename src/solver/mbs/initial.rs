@@ -31,6 +31,20 @@ const MAX_ASSEMBLY_ITERATIONS: usize = 50;
 /// Relative tolerance of the assembled constraints.
 const ASSEMBLY_TOLERANCE: f64 = 1e-10;
 
+/// The minimum-norm least-squares solution of `A x = b` by SVD, singular values below
+/// `1e-12·σ_max` treated as zero (redundant rows then cost nothing); `None` if `A` has no
+/// nonzero singular value or the result is not finite.
+fn minimum_norm_solution(matrix: DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+    let svd = matrix.svd(true, true);
+    let largest = svd.singular_values.max();
+    if !(largest.is_finite() && largest > 0.0) {
+        return None;
+    }
+    svd.solve(rhs, 1e-12 * largest)
+        .ok()
+        .filter(|x| x.iter().all(|v| v.is_finite()))
+}
+
 impl MultibodySystem {
     /// Consistent initial conditions at `t0` from the builder's positions and velocities.
     pub fn compute_initial_state(&self, t0: f64) -> Result<InitialState, MbsError> {
@@ -75,15 +89,14 @@ impl MultibodySystem {
                 break;
             }
             let jacobian = self.velocity_jacobian(&states);
-            let step = jacobian
-                .svd(true, true)
-                .solve(&(-phi), 1e-12)
-                .map_err(|_| MbsError::AssemblyFailed {
+            let step = minimum_norm_solution(jacobian, &(-phi)).ok_or_else(|| {
+                MbsError::AssemblyFailed {
                     iterations: iteration,
                     residual: worst.0,
                     tolerance: ASSEMBLY_TOLERANCE,
                     worst: worst.1.clone(),
-                })?;
+                }
+            })?;
             self.displace(y, &step);
         }
         Err(MbsError::AssemblyFailed {
@@ -146,10 +159,8 @@ impl MultibodySystem {
         let n6 = 6 * self.parts.len();
         let v = y.rows(vo, n6).into_owned();
         let violation = &jacobian * &v + phi_t;
-        let correction = jacobian
-            .svd(true, true)
-            .solve(&violation, 1e-12)
-            .map_err(|_| MbsError::SingularConstraints { time: t })?;
+        let correction = minimum_norm_solution(jacobian, &violation)
+            .ok_or(MbsError::SingularConstraints { time: t })?;
         y.rows_mut(vo, n6).copy_from(&(v - correction));
         Ok(())
     }

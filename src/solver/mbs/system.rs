@@ -69,6 +69,19 @@ impl MultibodySystem {
         self.length_scale
     }
 
+    /// The name of a moving part (`None` for the ground or an unknown id).
+    pub fn part_name(&self, part: PartId) -> Option<&str> {
+        part.0
+            .checked_sub(1)
+            .and_then(|k| self.parts.get(k))
+            .map(|p| p.name.as_str())
+    }
+
+    /// The constraints' names and their first row in Φ (and λ), in row order.
+    pub fn constraint_rows(&self) -> impl Iterator<Item = (&str, usize)> {
+        self.constraints.iter().map(|c| (c.name.as_str(), c.row))
+    }
+
     /// The part ids of the moving parts, in state order.
     pub fn moving_parts(&self) -> impl Iterator<Item = PartId> + use<> {
         (1..=self.parts.len()).map(PartId)
@@ -102,8 +115,9 @@ impl MultibodySystem {
             })
     }
 
-    /// The world state of every part (index = part id, 0 = ground) at `y`.
-    pub(crate) fn part_states(&self, y: &DVector<f64>) -> Result<Vec<PartState>, EvaluationError> {
+    /// The world state of every part at `y`, indexed by [`PartId`] (`[0]` is the ground); an
+    /// error names a part whose coordinates are not finite or whose Euler parameters are zero.
+    pub fn part_states(&self, y: &DVector<f64>) -> Result<Vec<PartState>, EvaluationError> {
         let mut states = Vec::with_capacity(self.parts.len() + 1);
         states.push(PartState::GROUND);
         for part in self.moving_parts() {
@@ -310,10 +324,7 @@ impl MultibodySystem {
 
     /// The generalized reactions `−Φ_vᵀ λ` at `y`, as a world force and a world torque about
     /// the CM per moving part (for joint reaction output).
-    pub fn constraint_reactions(
-        &self,
-        y: &DVector<f64>,
-    ) -> Result<Vec<Load>, EvaluationError> {
+    pub fn constraint_reactions(&self, y: &DVector<f64>) -> Result<Vec<Load>, EvaluationError> {
         let states = self.part_states(y)?;
         let lambda = y.rows(self.layout.lambda_offset(), self.layout.constraint_rows());
         let mut reactions = vec![Load::default(); self.parts.len()];

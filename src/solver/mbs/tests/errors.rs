@@ -176,3 +176,70 @@ fn non_finite_motion_stops_evaluation_naming_the_motion() {
         crate::solver::dae::DaeSystem::residual(&mut system, 1.0, &y, &y, &mut out).unwrap_err();
     assert_eq!(error.element, "MOTION/4");
 }
+
+/// A part at the origin with markers at its CM and 1 along x.
+fn part_with_two_markers(builder: &mut MultibodyBuilder) -> (MarkerId, MarkerId) {
+    let part = builder
+        .add_part(PartSpec::at_rest(
+            "PART/2",
+            1.0,
+            Matrix3::identity(),
+            Isometry3::identity(),
+        ))
+        .unwrap();
+    let near = builder.add_marker(part, Isometry3::identity()).unwrap();
+    let far = builder
+        .add_marker(part, Isometry3::translation(1.0, 0.0, 0.0))
+        .unwrap();
+    (near, far)
+}
+
+#[test]
+fn duplicated_joint_is_reported_as_redundant() {
+    let mut builder = MultibodyBuilder::new(Vector3::new(0.0, 0.0, -9.81));
+    let (near, _) = part_with_two_markers(&mut builder);
+    let ground = builder
+        .add_marker(PartId::GROUND, Isometry3::identity())
+        .unwrap();
+    builder
+        .add_constraint("JOINT/1", ConstraintKind::Revolute, near, ground)
+        .unwrap();
+    builder
+        .add_constraint("JOINT/2", ConstraintKind::Revolute, near, ground)
+        .unwrap();
+    let system = builder.build().unwrap();
+    assert_eq!(
+        system.compute_initial_state(0.0).unwrap_err(),
+        MbsError::SingularConstraints { time: 0.0 }
+    );
+}
+
+#[test]
+fn joints_that_cannot_close_fail_assembly_naming_an_element() {
+    // The part's markers are 1 apart, the ground's 5 apart: two SPHERICAL joints cannot both close.
+    let mut builder = MultibodyBuilder::new(Vector3::zeros());
+    let (near, far) = part_with_two_markers(&mut builder);
+    let ground_near = builder
+        .add_marker(PartId::GROUND, Isometry3::identity())
+        .unwrap();
+    let ground_far = builder
+        .add_marker(PartId::GROUND, Isometry3::translation(5.0, 0.0, 0.0))
+        .unwrap();
+    builder
+        .add_constraint("JOINT/1", ConstraintKind::Spherical, near, ground_near)
+        .unwrap();
+    builder
+        .add_constraint("JOINT/2", ConstraintKind::Spherical, far, ground_far)
+        .unwrap();
+    let system = builder.build().unwrap();
+    let error = system.compute_initial_state(0.0).unwrap_err();
+    let MbsError::AssemblyFailed {
+        residual, worst, ..
+    } = &error
+    else {
+        panic!("{error}")
+    };
+    // Least squares splits the 4-unit gap evenly: 2 per joint, over L = 5.
+    assert!((residual - 0.4).abs() < 1e-9, "{error}");
+    assert!(worst.starts_with("JOINT/"), "{error}");
+}
