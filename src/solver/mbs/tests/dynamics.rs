@@ -58,6 +58,20 @@ fn residual_is_zero_on_the_exact_free_fall_with_spin() {
 /// `length` from a REVOLUTE pivot at the world origin whose axis is world y, released at angle
 /// `theta0` from the downward vertical with angular velocity `omega0` about world y.
 fn pendulum(m: f64, jc: f64, length: f64, theta0: f64, omega0: f64) -> MultibodySystem {
+    pendulum_builder(m, jc, length, theta0, omega0)
+        .0
+        .build()
+        .unwrap()
+}
+
+/// The pendulum's builder and its joint, to add a MOTION.
+fn pendulum_builder(
+    m: f64,
+    jc: f64,
+    length: f64,
+    theta0: f64,
+    omega0: f64,
+) -> (MultibodyBuilder, ConstraintId) {
     let g = Vector3::new(0.0, 0.0, -9.81);
     let mut builder = MultibodyBuilder::new(g);
     let cm = Vector3::new(length * theta0.sin(), 0.0, -length * theta0.cos());
@@ -83,10 +97,47 @@ fn pendulum(m: f64, jc: f64, length: f64, theta0: f64, omega0: f64) -> Multibody
             Isometry3::from_parts(Translation3::identity(), axis),
         )
         .unwrap();
-    builder
+    let joint = builder
         .add_constraint("JOINT/1", ConstraintKind::Revolute, on_bob, on_ground)
         .unwrap();
-    builder.build().unwrap()
+    (builder, joint)
+}
+
+#[test]
+fn rotational_motion_multiplier_is_the_driving_torque() {
+    // The pendulum driven by f(t) = 0.4 sin(3t) + 1.5t: assembly turns it to f(t0), velocity
+    // projection spins it at f′(t0), and the MOTION's multiplier must supply
+    // τ = (Jc + m L²) f″(t0) − ((c × m g)·z_J) about the joint axis z_J (world y); the reaction
+    // of the MOTION row on the bob is −λ z_J, so λ = −τ.
+    let (m, jc, length, theta0) = (1.5, 0.03, 0.6, 0.2);
+    let (mut builder, joint) = pendulum_builder(m, jc, length, theta0, 0.0);
+    let drive = sine_drive(0.4, 3.0, 1.5);
+    builder
+        .add_motion("MOTION/1", joint, MotionDof::Rotational, drive.clone())
+        .unwrap();
+    let system = builder.build().unwrap();
+    let t0 = 0.9;
+    let start = system.compute_initial_state(t0).unwrap();
+    let (angle, rate, acceleration) = drive(t0);
+    let c = start.y.fixed_rows::<3>(0).into_owned();
+    let axis = Vector3::y();
+    // x_J is world x and z_J world y; the bob starts unrotated (angle 0), so the MOTION turns
+    // its CM about world y by f(t0).
+    let c0 = Vector3::new(length * theta0.sin(), 0.0, -length * theta0.cos());
+    let turned = UnitQuaternion::from_scaled_axis(axis * angle) * c0;
+    assert!((c - turned).norm() < 1e-9, "{c} vs {turned}");
+    let rotation = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(
+        start.y[3], start.y[4], start.y[5], start.y[6],
+    ));
+    let omega_w = rotation * start.y.fixed_rows::<3>(10).into_owned();
+    assert!((omega_w - axis * rate).norm() < 1e-9, "{omega_w} vs {rate}");
+    let gravity_moment = c.cross(&(Vector3::new(0.0, 0.0, -9.81) * m)).dot(&axis);
+    let torque = (jc + m * length * length) * acceleration - gravity_moment;
+    let lambda_motion = start.y[system.layout().lambda_offset() + 5];
+    assert!(
+        (lambda_motion + torque).abs() < 1e-7 * torque.abs().max(1.0),
+        "λ = {lambda_motion}, τ = {torque}"
+    );
 }
 
 #[test]
