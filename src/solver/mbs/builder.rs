@@ -4,7 +4,7 @@ use super::constraints::primitives::{Axis, Primitive};
 use super::constraints::{ConstraintElement, ConstraintKind};
 use super::error::MbsError;
 use super::force::ForceElement;
-use super::layout::StateLayout;
+use super::layout::{Formulation, StateLayout};
 use super::motion::{MotionDof, TimeFunction};
 use super::part::{Marker, MarkerId, PartId, PartSpec};
 use super::quaternion::parameters_of;
@@ -24,6 +24,7 @@ pub struct MultibodyBuilder {
     constraints: Vec<ConstraintElement>,
     forces: Vec<Box<dyn ForceElement>>,
     length_scale: Option<f64>,
+    formulation: Formulation,
 }
 
 impl MultibodyBuilder {
@@ -37,6 +38,7 @@ impl MultibodyBuilder {
             constraints: Vec::new(),
             forces: Vec::new(),
             length_scale: None,
+            formulation: Formulation::I3,
         }
     }
 
@@ -203,6 +205,11 @@ impl MultibodyBuilder {
         Ok(())
     }
 
+    /// Chooses how constraints enter the DAE (default [`Formulation::I3`]).
+    pub fn set_formulation(&mut self, formulation: Formulation) {
+        self.formulation = formulation;
+    }
+
     /// Sets the model's length scale `L` (> 0, finite) instead of deriving it (see
     /// [`Self::build`]).
     pub fn set_length_scale(&mut self, length: f64) -> Result<(), MbsError> {
@@ -258,7 +265,7 @@ impl MultibodyBuilder {
             element.row = rows;
             rows += element.primitives.len();
         }
-        let layout = StateLayout::new(self.parts.len(), rows);
+        let layout = StateLayout::new(self.parts.len(), rows, self.formulation);
         let mut initial_y = DVector::zeros(layout.size());
         for (k, spec) in self.parts.iter().enumerate() {
             let part = PartId(k + 1);

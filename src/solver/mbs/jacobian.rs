@@ -3,21 +3,19 @@
 //! - Kinematic, inertia, gyroscopic and normalization blocks: analytic.
 //! - Constraint Jacobians `Φ_q = [Φ_r, Φ_π′·2G(e)/|e|²]` and `Φ_vᵀ` in the dynamic rows:
 //!   analytic (`constraints::primitives`).
-//! - `∂(Φ_vᵀλ)/∂q`: a central difference of each element's generalized reaction over the 7
-//!   coordinates of each of its two parts (14 × 2 evaluations of one element), step
-//!   `ε^(1/3)·max(|r|, L)` for positions and `ε^(1/3)·|e|` for Euler parameters.
+//! - `∂(Φ_vᵀλ)/∂q` (and under SI2 `∂(Φ_qᵀη)/∂q`, `∂(Φ_v v)/∂q`): a central difference of one
+//!   element at a time over the 7 coordinates of each of its two parts (see
+//!   `jacobian_constraints`).
 //! - Force elements: their analytic partials, or an element-local forward difference
 //!   ([`super::force::difference_partials`]), mapped from world `(δr, θ, u, ω)` to the state:
 //!   `∂/∂e = (D_θ − D_ω ω̃) A · 2G(e)/|e|²`, `∂/∂ω′ = D_ω A`, and for the body torque
 //!   `Aᵀn` of a part the extra `∂/∂e_p = ñ′ · 2G(e_p)/|e_p|²`.
 
-use super::constraints::ConstraintElement;
 use super::force::{StateView, difference_partials};
 use super::quaternion::{g_matrix, g_transpose_omega_partial, rotation_per_parameter, skew};
-use super::residual::multipliers;
 use super::system::MultibodySystem;
 use crate::solver::dae::EvaluationError;
-use nalgebra::{DMatrix, DVector, Matrix3, Matrix4, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Matrix4};
 
 impl MultibodySystem {
     /// Writes the Newton matrix `∂F/∂y + c·∂F/∂y′` at `(t, y, y′)` into `out` (size² entries).
@@ -61,134 +59,8 @@ impl MultibodySystem {
             out.fixed_view_mut::<1, 4>(mo, qo + 3)
                 .copy_from(&(e.transpose() * 2.0));
         }
-        self.add_constraint_blocks(t, y, &states, out)?;
+        self.add_constraint_blocks(y, &states, out)?;
         self.add_force_blocks(t, y, &states, out)?;
-        Ok(())
-    }
-
-    /// Φ_q rows, Φ_vᵀ columns and ∂(Φ_vᵀλ)/∂q.
-    fn add_constraint_blocks(
-        &self,
-        _t: f64,
-        y: &DVector<f64>,
-        states: &[super::force::PartState],
-        out: &mut DMatrix<f64>,
-    ) -> Result<(), EvaluationError> {
-        let layout = self.layout;
-        let lo = layout.lambda_offset();
-        for element in &self.constraints {
-            let (pose_a, pose_b) = (
-                &states[element.part_i.0].pose_w,
-                &states[element.part_j.0].pose_w,
-            );
-            let frames = element.frames(pose_a, pose_b);
-            for (k, primitive) in element.primitives.iter().enumerate() {
-                let row = lo + element.row + k;
-                let gradient = ConstraintElement::body_gradient(primitive, &frames, pose_a, pose_b);
-                for (part, linear, angular) in [
-                    (element.part_i, gradient[0], gradient[1]),
-                    (element.part_j, gradient[2], gradient[3]),
-                ] {
-                    if part.is_ground() {
-                        continue;
-                    }
-                    let (qo, vo) = (layout.position_offset(part), layout.velocity_offset(part));
-                    let per_parameter =
-                        angular.transpose() * rotation_per_parameter(&self.parameters(y, part));
-                    for i in 0..3 {
-                        out[(row, qo + i)] += linear[i];
-                        out[(vo + i, row)] += linear[i];
-                        out[(vo + 3 + i, row)] += angular[i];
-                    }
-                    for i in 0..4 {
-                        out[(row, qo + 3 + i)] += per_parameter[i];
-                    }
-                }
-            }
-            self.add_reaction_stiffness(element, y, out)?;
-        }
-        Ok(())
-    }
-
-    /// `∂(Φ_vᵀλ)/∂q` of one element by central differences over its parts' coordinates.
-    fn add_reaction_stiffness(
-        &self,
-        element: &ConstraintElement,
-        y: &DVector<f64>,
-        out: &mut DMatrix<f64>,
-    ) -> Result<(), EvaluationError> {
-        let layout = self.layout;
-        let lambda = multipliers(y, layout.lambda_offset(), element);
-        if lambda.iter().all(|&l| l == 0.0) {
-            return Ok(());
-        }
-        let parts = [element.part_i, element.part_j];
-        let coordinates = |part: super::part::PartId| -> [f64; 7] {
-            let qo = layout.position_offset(part);
-            std::array::from_fn(|i| y[qo + i])
-        };
-        let pose_of = |part: super::part::PartId, q: &[f64; 7]| {
-            if part.is_ground() {
-                Ok(super::force::PartState::GROUND.pose_w)
-            } else {
-                self.pose_from(
-                    part,
-                    Vector3::new(q[0], q[1], q[2]),
-                    &nalgebra::Vector4::new(q[3], q[4], q[5], q[6]),
-                )
-            }
-        };
-        let base: [[f64; 7]; 2] = parts.map(|p| {
-            if p.is_ground() {
-                [0.0; 7]
-            } else {
-                coordinates(p)
-            }
-        });
-        let cube_root_eps = f64::EPSILON.cbrt();
-        for (slot, &part) in parts.iter().enumerate() {
-            if part.is_ground() {
-                continue;
-            }
-            let qo = layout.position_offset(part);
-            let position_scale = Vector3::new(base[slot][0], base[slot][1], base[slot][2])
-                .norm()
-                .max(self.length_scale);
-            let parameter_scale =
-                nalgebra::Vector4::new(base[slot][3], base[slot][4], base[slot][5], base[slot][6])
-                    .norm();
-            for coordinate in 0..7 {
-                let h = cube_root_eps
-                    * if coordinate < 3 {
-                        position_scale
-                    } else {
-                        parameter_scale
-                    };
-                let mut reactions = [[Vector3::zeros(); 4]; 2];
-                for (sign_index, sign) in [1.0, -1.0].into_iter().enumerate() {
-                    let mut q = base;
-                    q[slot][coordinate] += sign * h;
-                    let pose_a = pose_of(parts[0], &q[0])?;
-                    let pose_b = pose_of(parts[1], &q[1])?;
-                    reactions[sign_index] = element.generalized_reaction(&pose_a, &pose_b, &lambda);
-                }
-                for (target_slot, &target) in parts.iter().enumerate() {
-                    if target.is_ground() {
-                        continue;
-                    }
-                    let vo = layout.velocity_offset(target);
-                    let force =
-                        (reactions[0][2 * target_slot] - reactions[1][2 * target_slot]) / (2.0 * h);
-                    let torque = (reactions[0][2 * target_slot + 1]
-                        - reactions[1][2 * target_slot + 1])
-                        / (2.0 * h);
-                    for i in 0..3 {
-                        out[(vo + i, qo + coordinate)] += force[i];
-                        out[(vo + 3 + i, qo + coordinate)] += torque[i];
-                    }
-                }
-            }
-        }
         Ok(())
     }
 

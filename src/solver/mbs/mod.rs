@@ -1,5 +1,6 @@
 //! The multibody equations: rigid parts with joints, JPRIMs, MOTIONs and applied forces as an
-//! index-3 DAE for the integrator ([`crate::solver::dae::DaeSystem`]).
+//! index-3 (I3) or stabilized index-2 (SI2, [`Formulation`]) DAE for the integrator
+//! ([`crate::solver::dae::DaeSystem`]).
 //!
 //! Formulation (solver-notes §2.3): Cartesian coordinates per part — CM position `r`, Euler
 //! parameters `e` (unit quaternion, with a normalization multiplier μ), CM velocity `u` and
@@ -26,6 +27,7 @@ mod error;
 mod force;
 mod initial;
 mod jacobian;
+mod jacobian_constraints;
 mod layout;
 mod motion;
 mod part;
@@ -44,7 +46,7 @@ pub use force::{
     ForceElement, Load, PartState, StateView, difference_partials, point_pair_partials,
 };
 pub use initial::InitialState;
-pub use layout::StateLayout;
+pub use layout::{Formulation, StateLayout};
 pub use motion::{MotionDof, TimeFunction};
 pub use part::{MarkerId, PartId, PartSpec};
 pub use springs::{RotationalSpringDamper, SpringParams, TranslationalSpringDamper};

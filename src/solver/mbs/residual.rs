@@ -1,7 +1,9 @@
 //! The residual `F(t, y, y′)` and the [`DaeSystem`] implementation.
 
 use super::constraints::ConstraintElement;
-use super::quaternion::g_matrix;
+use super::force::PartState;
+use super::layout::Formulation;
+use super::quaternion::{g_matrix, rotation_per_parameter};
 use super::system::MultibodySystem;
 use crate::solver::dae::{DaeSystem, EvaluationError, VariableKind};
 use nalgebra::{DMatrix, DVector};
@@ -39,8 +41,14 @@ impl MultibodySystem {
             out[layout.mu_offset(part)] = e.norm_squared() - 1.0;
         }
         let phi = self.constraint_values(t, &states)?;
-        out.rows_mut(layout.lambda_offset(), layout.constraint_rows())
-            .copy_from(&phi);
+        out.rows_mut(
+            layout.position_constraint_offset(),
+            layout.constraint_rows(),
+        )
+        .copy_from(&phi);
+        if layout.formulation() == Formulation::Si2 {
+            self.add_stabilization(t, y, &states, out);
+        }
         // Constraint forces Φ_vᵀλ in the dynamic rows.
         for element in &self.constraints {
             let (pose_a, pose_b) = (
@@ -67,6 +75,49 @@ impl MultibodySystem {
     }
 }
 
+impl MultibodySystem {
+    /// SI2: the velocity constraints `Φ_v v + Φ_t` in the λ rows and `Φ_qᵀη` in the kinematic
+    /// rows (`Φ_q = [Φ_r, Φ_π′·2G(e)/|e|²]`).
+    fn add_stabilization(
+        &self,
+        t: f64,
+        y: &DVector<f64>,
+        states: &[PartState],
+        out: &mut DVector<f64>,
+    ) {
+        let layout = self.layout;
+        let (phi_t, _) = self.constraint_time_derivatives(t);
+        for element in &self.constraints {
+            let (pose_a, pose_b) = (
+                &states[element.part_i.0].pose_w,
+                &states[element.part_j.0].pose_w,
+            );
+            let velocities = [element.part_i, element.part_j].map(|p| self.part_velocity(y, p));
+            let rates = element.velocity_rates(pose_a, pose_b, &velocities);
+            for (k, rate) in rates.into_iter().enumerate() {
+                out[layout.lambda_offset() + element.row + k] = rate + phi_t[element.row + k];
+            }
+            let eta = multipliers(y, layout.position_constraint_offset(), element);
+            let correction = element.generalized_reaction(pose_a, pose_b, &eta);
+            for (part, linear, angular) in [
+                (element.part_i, correction[0], correction[1]),
+                (element.part_j, correction[2], correction[3]),
+            ] {
+                if part.is_ground() {
+                    continue;
+                }
+                let qo = layout.position_offset(part);
+                let per_parameter =
+                    rotation_per_parameter(&self.parameters(y, part)).transpose() * angular;
+                let mut position = out.fixed_rows_mut::<3>(qo);
+                position += linear;
+                let mut parameters = out.fixed_rows_mut::<4>(qo + 3);
+                parameters += per_parameter;
+            }
+        }
+    }
+}
+
 /// The multipliers of one constraint element.
 pub(crate) fn multipliers(
     y: &DVector<f64>,
@@ -85,18 +136,23 @@ impl DaeSystem for MultibodySystem {
         self.layout.size()
     }
 
-    /// q and v are differential; λ has index 3; μ index 2 (the normalization constraint
-    /// differentiated once gives `2eᵀė = 2μ|e|²`, and μ follows).
+    /// q and v are differential; λ has index 3 under I3 and 2 under SI2; η (SI2) index 2; μ
+    /// index 2 (the normalization constraint differentiated once gives `2eᵀė = 2μ|e|²`, and μ
+    /// follows).
     fn variable_kinds(&self) -> Vec<VariableKind> {
         let layout = self.layout;
-        let mut kinds = vec![VariableKind::Differential; layout.size()];
+        let mut kinds = vec![VariableKind::Algebraic { index: 2 }; layout.size()];
+        kinds[..13 * layout.parts()].fill(VariableKind::Differential);
+        let lambda_index = match layout.formulation() {
+            Formulation::I3 => 3,
+            Formulation::Si2 => 2,
+        };
         for kind in
             &mut kinds[layout.lambda_offset()..layout.lambda_offset() + layout.constraint_rows()]
         {
-            *kind = VariableKind::Algebraic { index: 3 };
-        }
-        for part in self.moving_parts() {
-            kinds[layout.mu_offset(part)] = VariableKind::Algebraic { index: 2 };
+            *kind = VariableKind::Algebraic {
+                index: lambda_index,
+            };
         }
         kinds
     }

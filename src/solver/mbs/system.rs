@@ -30,7 +30,9 @@ pub(crate) struct PartData {
 /// ```
 /// and `Φ(q, t) = 0` for every constraint row, with `f`, `n` the world force and torque of the
 /// force elements and `A` the part's rotation (from `e/|e|`). The reaction of the constraints
-/// on the parts is `−Φ_vᵀ λ`.
+/// on the parts is `−Φ_vᵀ λ`. Under [`super::Formulation::Si2`] the velocity constraints
+/// `Φ_v v + Φ_t = 0` are added (in the λ rows) and the kinematic rows get `+Φ_qᵀη`, with Φ in
+/// the η rows.
 pub struct MultibodySystem {
     pub(crate) parts: Vec<PartData>,
     pub(crate) constraints: Vec<ConstraintElement>,

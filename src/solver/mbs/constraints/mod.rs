@@ -198,4 +198,25 @@ impl ConstraintElement {
         }
         sum
     }
+
+    /// `Φ_v v` of each equation (without `Φ_t`) at the poses, for part velocities
+    /// `[[u_a, ω′_a], [u_b, ω′_b]]` (body-frame angular velocities).
+    pub fn velocity_rates(
+        &self,
+        pose_a: &Isometry3<f64>,
+        pose_b: &Isometry3<f64>,
+        velocities: &[[Vector3<f64>; 2]; 2],
+    ) -> Vec<f64> {
+        let frames = self.frames(pose_a, pose_b);
+        self.primitives
+            .iter()
+            .map(|primitive| {
+                let g = Self::body_gradient(primitive, &frames, pose_a, pose_b);
+                g[0].dot(&velocities[0][0])
+                    + g[1].dot(&velocities[0][1])
+                    + g[2].dot(&velocities[1][0])
+                    + g[3].dot(&velocities[1][1])
+            })
+            .collect()
+    }
 }

@@ -6,8 +6,9 @@ use crate::solver::dae::DaeSystem;
 use nalgebra::DMatrix;
 
 /// Integrates from consistent `(y0, yp0)` at `t0` with `steps` steps of `h` (the first one
-/// implicit Euler, then BDF2), calling `observe(t, y)` after each step. Panics if Newton fails:
-/// it is a test helper.
+/// implicit Euler, then BDF2), calling `observe(t, y)` after each step. Newton is modified
+/// (one matrix per step, factored once) to keep debug-mode tests fast. Panics if Newton
+/// fails: it is a test helper.
 pub(super) fn integrate_bdf2(
     system: &mut MultibodySystem,
     t0: f64,
@@ -31,11 +32,14 @@ pub(super) fn integrate_bdf2(
         };
         let mut y = &current * 2.0 - &previous;
         let mut converged = false;
-        for _ in 0..20 {
+        system
+            .newton_matrix(t, &y, &((&y - &psi) * c), c, &mut matrix)
+            .unwrap();
+        let factored = matrix.clone().lu();
+        for _ in 0..30 {
             let yp = (&y - &psi) * c;
             system.residual(t, &y, &yp, &mut residual).unwrap();
-            system.newton_matrix(t, &y, &yp, c, &mut matrix).unwrap();
-            let delta = matrix.clone().lu().solve(&(-&residual)).unwrap();
+            let delta = factored.solve(&(-&residual)).unwrap();
             y += &delta;
             let small = delta
                 .iter()

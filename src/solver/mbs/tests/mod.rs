@@ -76,9 +76,10 @@ pub(super) fn sine_drive(a: f64, omega: f64, b: f64) -> TimeFunction {
 /// Every joint and JPRIM kind between random markers of three random parts and the ground,
 /// a translational and a rotational MOTION, and both springs: a system whose residual and
 /// Newton matrix exercise every block. Positions are random, so constraints are violated.
-pub(super) fn every_element_system(seed: u64) -> MultibodySystem {
+pub(super) fn every_element_system(seed: u64, formulation: Formulation) -> MultibodySystem {
     let mut rng = Rng::new(seed);
     let mut builder = MultibodyBuilder::new(Vector3::new(0.1, -0.2, -9.81));
+    builder.set_formulation(formulation);
     let parts: Vec<PartId> = (0..3)
         .map(|k| {
             builder
@@ -158,7 +159,7 @@ pub(super) fn every_element_system(seed: u64) -> MultibodySystem {
 }
 
 /// A random state for `system`: builder positions with Euler parameters scaled off the unit
-/// sphere by up to 1%, random multipliers, and a random `y′`.
+/// sphere by up to 1%, random multipliers (λ, μ and under SI2 η), and a random `y′`.
 pub(super) fn random_state(system: &MultibodySystem, seed: u64) -> (DVector<f64>, DVector<f64>) {
     let mut rng = Rng::new(seed);
     let layout = system.layout();
@@ -173,6 +174,9 @@ pub(super) fn random_state(system: &MultibodySystem, seed: u64) -> (DVector<f64>
     }
     for i in 0..layout.constraint_rows() {
         y[layout.lambda_offset() + i] = 10.0 * rng.signed();
+        if layout.formulation() == Formulation::Si2 {
+            y[layout.position_constraint_offset() + i] = 0.1 * rng.signed();
+        }
     }
     let yp = DVector::from_fn(layout.size(), |_, _| rng.signed());
     (y, yp)

@@ -37,8 +37,9 @@ fn difference_matrix(
 
 #[test]
 fn newton_matrix_matches_a_difference_of_the_residual_with_every_element() {
-    for seed in [1, 2] {
-        let mut system = every_element_system(seed);
+    let cases = [(1, Formulation::I3), (3, Formulation::Si2)];
+    for (seed, formulation) in cases {
+        let mut system = every_element_system(seed, formulation);
         let (y, yp) = random_state(&system, seed + 50);
         let (t, c) = (0.37, 250.0);
         let n = system.size();
@@ -58,7 +59,7 @@ fn newton_matrix_matches_a_difference_of_the_residual_with_every_element() {
         }
         assert!(
             worst.0 < 1e-6,
-            "seed {seed}: worst relative error {:e} at ({}, {}) of {n}: analytic {} difference {}",
+            "seed {seed} {formulation:?}: worst relative error {:e} at ({}, {}) of {n}: analytic {} difference {}",
             worst.0,
             worst.1,
             worst.2,
@@ -70,25 +71,38 @@ fn newton_matrix_matches_a_difference_of_the_residual_with_every_element() {
 
 #[test]
 fn variable_kinds_follow_the_layout() {
-    let system = every_element_system(3);
-    let layout = *system.layout();
-    let kinds = system.variable_kinds();
-    assert_eq!(kinds.len(), 14 * 3 + layout.constraint_rows());
-    assert!(
-        kinds[..13 * 3]
-            .iter()
-            .all(|k| *k == VariableKind::Differential)
-    );
-    let lambda = &kinds[layout.lambda_offset()..layout.lambda_offset() + layout.constraint_rows()];
-    assert!(
-        lambda
-            .iter()
-            .all(|k| *k == VariableKind::Algebraic { index: 3 })
-    );
-    for part in system.moving_parts() {
-        assert_eq!(
-            kinds[layout.mu_offset(part)],
-            VariableKind::Algebraic { index: 2 }
+    for (formulation, lambda_index) in [(Formulation::I3, 3), (Formulation::Si2, 2)] {
+        let system = every_element_system(3, formulation);
+        let layout = *system.layout();
+        let m = layout.constraint_rows();
+        let kinds = system.variable_kinds();
+        let eta_rows = if formulation == Formulation::Si2 {
+            m
+        } else {
+            0
+        };
+        assert_eq!(kinds.len(), 14 * 3 + m + eta_rows);
+        assert!(
+            kinds[..13 * 3]
+                .iter()
+                .all(|k| *k == VariableKind::Differential)
+        );
+        let lambda = &kinds[layout.lambda_offset()..layout.lambda_offset() + m];
+        assert!(lambda.iter().all(|k| *k
+            == VariableKind::Algebraic {
+                index: lambda_index
+            }));
+        for part in system.moving_parts() {
+            assert_eq!(
+                kinds[layout.mu_offset(part)],
+                VariableKind::Algebraic { index: 2 }
+            );
+        }
+        let eta = &kinds[14 * 3 + m..];
+        assert_eq!(eta.len(), eta_rows);
+        assert!(
+            eta.iter()
+                .all(|k| *k == VariableKind::Algebraic { index: 2 })
         );
     }
 }
