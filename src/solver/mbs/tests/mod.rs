@@ -8,6 +8,7 @@ mod constraint_jacobians;
 mod driver;
 mod dynamics;
 mod errors;
+mod mechanisms;
 mod newton_matrix;
 mod springs;
 
