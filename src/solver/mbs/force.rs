@@ -112,6 +112,12 @@ pub trait ForceElement: Send + Sync {
     ) -> Option<Result<DMatrix<f64>, EvaluationError>> {
         None
     }
+
+    /// Called once after each step the integrator accepts, with the state at its end: where an
+    /// element keeps history (contact onset, augmented-Lagrangian multipliers, output
+    /// samples). Evaluations between accepted steps must not change the element. The default
+    /// does nothing.
+    fn step_accepted(&mut self, _t: f64, _state: &StateView<'_>) {}
 }
 
 /// The partials of a force `f(d, ḋ)` acting on part a at marker point `p_I` and `−f` on part b at

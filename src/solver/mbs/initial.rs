@@ -2,8 +2,9 @@
 //!
 //! 1. **Assembly**: Gauss–Newton on `Φ(q, t₀) = 0` with the minimum-norm step
 //!    `Δx = −Φ_v⁺ Φ` in virtual displacements (SVD pseudo-inverse), so the user's positions move
-//!    as little as possible; converged when every length row is within `1e-10·L` and every
-//!    angle row within `1e-10`.
+//!    as little as possible, halved until the scaled merit `Σ (Φ_k/s_k)²` decreases
+//!    (`s_k = L` for lengths, 1 for angles); converged when every length row is within
+//!    `1e-10·L` and every angle row within `1e-10`. No decrease means the joints cannot close.
 //! 2. **Velocities**: the minimum-norm correction `v = v₀ − Φ_v⁺(Φ_v v₀ + Φ_t)`.
 //! 3. **Accelerations and multipliers**: `[M Φ_vᵀ; Φ_v 0] [v̇; λ] = [Q − ω′×Jω′; γ]` with
 //!    `γ = −Φ_tt − (dΦ_v/dt) v`; the last term is a central difference of `Φ_v v` along the
@@ -78,33 +79,77 @@ impl MultibodySystem {
     /// iterations used.
     pub fn assemble(&self, t: f64, y: &mut DVector<f64>) -> Result<usize, MbsError> {
         let mut worst = (0.0, String::new());
-        for iteration in 0..=MAX_ASSEMBLY_ITERATIONS {
+        let mut iterations = 0;
+        while iterations < MAX_ASSEMBLY_ITERATIONS {
             let states = self.part_states(y)?;
             let phi = self.constraint_values(t, &states)?;
             worst = self.worst_constraint(&phi);
             if worst.0 <= ASSEMBLY_TOLERANCE {
-                return Ok(iteration);
+                return Ok(iterations);
             }
-            if iteration == MAX_ASSEMBLY_ITERATIONS {
-                break;
-            }
+            iterations += 1;
             let jacobian = self.velocity_jacobian(&states);
-            let step = minimum_norm_solution(jacobian, &(-phi)).ok_or_else(|| {
-                MbsError::AssemblyFailed {
-                    iterations: iteration,
-                    residual: worst.0,
-                    tolerance: ASSEMBLY_TOLERANCE,
-                    worst: worst.1.clone(),
+            let Some(step) = minimum_norm_solution(jacobian, &(-&phi)) else {
+                break;
+            };
+            // Backtrack on the scaled least-squares merit so a far-off start cannot diverge; no
+            // decrease at all means a least-squares minimum with Φ ≠ 0: the joints cannot close.
+            let merit = self.scaled_merit(&phi);
+            let mut fraction = 1.0;
+            let accepted = loop {
+                let mut trial = y.clone();
+                self.displace(&mut trial, &(&step * fraction));
+                let trial_merit = self
+                    .part_states(&trial)
+                    .and_then(|states| self.constraint_values(t, &states))
+                    .map(|phi| self.scaled_merit(&phi));
+                if trial_merit.is_ok_and(|m| m < merit) {
+                    break Some(trial);
                 }
-            })?;
-            self.displace(y, &step);
+                fraction *= 0.5;
+                if fraction < 1e-6 {
+                    break None;
+                }
+            };
+            match accepted {
+                Some(trial) => *y = trial,
+                None => break,
+            }
         }
+        let states = self.part_states(y)?;
+        let phi = self.constraint_values(t, &states)?;
+        let final_worst = self.worst_constraint(&phi);
+        if final_worst.0 <= ASSEMBLY_TOLERANCE {
+            return Ok(iterations);
+        }
+        worst = final_worst;
         Err(MbsError::AssemblyFailed {
-            iterations: MAX_ASSEMBLY_ITERATIONS,
+            iterations,
             residual: worst.0,
             tolerance: ASSEMBLY_TOLERANCE,
             worst: worst.1,
         })
+    }
+
+    /// `Σ (Φ_k / s_k)²` with `s_k = L` for length rows and 1 for angle rows.
+    fn scaled_merit(&self, phi: &DVector<f64>) -> f64 {
+        self.constraints
+            .iter()
+            .flat_map(|element| {
+                element
+                    .primitives
+                    .iter()
+                    .enumerate()
+                    .map(move |(k, primitive)| {
+                        let scale = if primitive.is_length() {
+                            self.length_scale
+                        } else {
+                            1.0
+                        };
+                        (phi[element.row + k] / scale).powi(2)
+                    })
+            })
+            .sum()
     }
 
     /// The largest constraint residual, relative (lengths over `L`), and its element.

@@ -1,7 +1,7 @@
 //! The residual `F(t, y, y′)` and the [`DaeSystem`] implementation.
 
 use super::constraints::ConstraintElement;
-use super::force::PartState;
+use super::force::{PartState, StateView};
 use super::layout::Formulation;
 use super::quaternion::{g_matrix, rotation_per_parameter};
 use super::system::MultibodySystem;
@@ -176,5 +176,18 @@ impl DaeSystem for MultibodySystem {
         out: &mut DMatrix<f64>,
     ) -> Result<(), EvaluationError> {
         self.compute_newton_matrix(t, y, yp, c, out)
+    }
+
+    /// Forwards to every force element's [`ForceElement::step_accepted`] (skipped if `y` has
+    /// no usable part state, which an accepted step cannot have).
+    ///
+    /// [`ForceElement::step_accepted`]: super::ForceElement::step_accepted
+    fn step_accepted(&mut self, t: f64, y: &DVector<f64>, _yp: &DVector<f64>) {
+        if let Ok(states) = self.part_states(y) {
+            let view = StateView::new(&states);
+            for element in &mut self.forces {
+                element.step_accepted(t, &view);
+            }
+        }
     }
 }

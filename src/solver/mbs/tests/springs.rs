@@ -188,3 +188,56 @@ fn difference_fallback_matches_central_differences() {
     let error = (&forward - &central).amax() / central.amax();
     assert!(error < 1e-6, "relative error {error:e}");
 }
+
+/// An element that records the times of accepted steps and where its part was.
+struct Recorder {
+    parts: [PartId; 1],
+    accepted: Arc<std::sync::Mutex<Vec<(f64, f64)>>>,
+}
+
+impl ForceElement for Recorder {
+    fn name(&self) -> &str {
+        "RECORDER/1"
+    }
+    fn parts(&self) -> &[PartId] {
+        &self.parts
+    }
+    fn evaluate(
+        &self,
+        _t: f64,
+        _state: &StateView<'_>,
+        loads: &mut [Load],
+    ) -> Result<(), crate::solver::dae::EvaluationError> {
+        loads[0] = Load::default();
+        Ok(())
+    }
+    fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {
+        let z = state.part(self.parts[0]).pose_w.translation.z;
+        self.accepted.lock().unwrap().push((t, z));
+    }
+}
+
+#[test]
+fn accepted_steps_reach_force_elements_with_the_state() {
+    use crate::solver::dae::DaeSystem;
+    let mut builder = MultibodyBuilder::new(Vector3::zeros());
+    let pose = Isometry3::translation(0.0, 0.0, 3.0);
+    let part = builder
+        .add_part(PartSpec::at_rest("PART/2", 1.0, Matrix3::identity(), pose))
+        .unwrap();
+    let accepted = Arc::new(std::sync::Mutex::new(Vec::new()));
+    let recorder = Recorder {
+        parts: [part],
+        accepted: accepted.clone(),
+    };
+    builder.add_force(Box::new(recorder)).unwrap();
+    let mut system = builder.build().unwrap();
+    let start = system.compute_initial_state(0.0).unwrap();
+    let mut out = DVector::zeros(system.size());
+    system.residual(0.1, &start.y, &start.yp, &mut out).unwrap();
+    system.step_accepted(0.25, &start.y, &start.yp);
+    let mut moved = start.y.clone();
+    moved[2] = 4.0;
+    system.step_accepted(0.5, &moved, &start.yp);
+    assert_eq!(*accepted.lock().unwrap(), vec![(0.25, 3.0), (0.5, 4.0)]);
+}
