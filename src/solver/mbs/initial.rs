@@ -78,13 +78,11 @@ impl MultibodySystem {
     /// Moves the positions in `y` onto `Φ(q, t) = 0` by the smallest correction; returns the
     /// iterations used.
     pub fn assemble(&self, t: f64, y: &mut DVector<f64>) -> Result<usize, MbsError> {
-        let mut worst = (0.0, String::new());
         let mut iterations = 0;
         while iterations < MAX_ASSEMBLY_ITERATIONS {
             let states = self.part_states(y)?;
             let phi = self.constraint_values(t, &states)?;
-            worst = self.worst_constraint(&phi);
-            if worst.0 <= ASSEMBLY_TOLERANCE {
+            if self.worst_constraint(&phi).0 <= ASSEMBLY_TOLERANCE {
                 return Ok(iterations);
             }
             iterations += 1;
@@ -118,11 +116,10 @@ impl MultibodySystem {
         }
         let states = self.part_states(y)?;
         let phi = self.constraint_values(t, &states)?;
-        let final_worst = self.worst_constraint(&phi);
-        if final_worst.0 <= ASSEMBLY_TOLERANCE {
+        let worst = self.worst_constraint(&phi);
+        if worst.0 <= ASSEMBLY_TOLERANCE {
             return Ok(iterations);
         }
-        worst = final_worst;
         Err(MbsError::AssemblyFailed {
             iterations,
             residual: worst.0,
