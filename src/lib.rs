@@ -8,6 +8,8 @@
 //! - [`model`] — the validated model;
 //! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
 //! - [`tradeoff`] — the accuracy-against-speed measurement and engine selection;
+//! - [`solver`] — the DAE interface ([`solver::dae`]), the multibody equations ([`solver::mbs`])
+//!   and the BDF integrator;
 //! - [`output`] — plots;
 //! - [`cli`] — the `contact` command-line subcommands.
 //!
@@ -43,6 +45,7 @@ pub mod expr;
 pub mod model;
 pub mod output;
 pub mod scenes;
+pub mod solver;
 pub mod tradeoff;
 
 /// The README's code blocks, compiled and run as doctests.

@@ -1,0 +1,15 @@
+//! JPRIM ATPOINT: the I and J origins coincide (3 equations); the same equations as a
+//! SPHERICAL joint, kept as its own element so reactions report under the JPRIM's name.
+//!
+//! Equations in `primitives` terms, in row order.
+
+use super::primitives::Primitive;
+
+/// The equations of this constraint, in row order.
+pub(super) fn primitives() -> Vec<Primitive> {
+    vec![
+        Primitive::Coincident(0),
+        Primitive::Coincident(1),
+        Primitive::Coincident(2),
+    ]
+}
