@@ -20,9 +20,15 @@ pub struct Dominant {
 
 /// Formats the dominant variables as `y[3] (4.1), y[7] (2.0)`.
 fn list(dominant: &[Dominant]) -> String {
-    let parts: Vec<String> =
-        dominant.iter().map(|d| format!("y[{}] ({:.3e})", d.index, d.weighted)).collect();
-    if parts.is_empty() { "none".to_string() } else { parts.join(", ") }
+    let parts: Vec<String> = dominant
+        .iter()
+        .map(|d| format!("y[{}] ({:.3e})", d.index, d.weighted))
+        .collect();
+    if parts.is_empty() {
+        "none".to_string()
+    } else {
+        parts.join(", ")
+    }
 }
 
 /// Why the last failed step attempt failed.
@@ -53,7 +59,11 @@ impl std::fmt::Display for FailureCause {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::ErrorTest { dominant } => {
-                write!(f, "local error test failed; largest weighted errors: {}", list(dominant))
+                write!(
+                    f,
+                    "local error test failed; largest weighted errors: {}",
+                    list(dominant)
+                )
             }
             Self::Convergence { dominant } => write!(
                 f,

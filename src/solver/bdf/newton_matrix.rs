@@ -46,7 +46,10 @@ impl NewtonMatrix {
 
     /// Evaluates, scales and factorises the matrix at `(t, y, y′)` with coefficient `cj` and
     /// step size `h`.
-    #[expect(clippy::too_many_arguments, reason = "the point, c, h and the classes are all needed")]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the point, c, h and the classes are all needed"
+    )]
     pub fn refresh(
         &mut self,
         system: &mut dyn DaeSystem,
@@ -59,7 +62,9 @@ impl NewtonMatrix {
     ) -> Result<(), FailureCause> {
         self.lu = None;
         self.buffer.fill(0.0);
-        system.newton_matrix(t, y, yp, cj, &mut self.buffer).map_err(FailureCause::Evaluation)?;
+        system
+            .newton_matrix(t, y, yp, cj, &mut self.buffer)
+            .map_err(FailureCause::Evaluation)?;
         let n = y.len();
         for (j, kind) in kinds.iter().enumerate() {
             let s = match kind {
@@ -72,9 +77,15 @@ impl NewtonMatrix {
             }
         }
         for i in 0..n {
-            let row_max = self.buffer.row(i).iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let row_max = self
+                .buffer
+                .row(i)
+                .iter()
+                .fold(0.0_f64, |m, v| m.max(v.abs()));
             if !row_max.is_finite() {
-                let index = (0..n).find(|&j| !self.buffer[(i, j)].is_finite()).unwrap_or(i);
+                let index = (0..n)
+                    .find(|&j| !self.buffer[(i, j)].is_finite())
+                    .unwrap_or(i);
                 return Err(FailureCause::NonFinite { index });
             }
             if row_max == 0.0 {

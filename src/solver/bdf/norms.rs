@@ -20,9 +20,16 @@ impl Norms {
     /// Norms for the given variable kinds and tolerance.
     pub fn new(kinds: Vec<VariableKind>, error: f64) -> Self {
         let n = kinds.len();
-        let differential_count =
-            kinds.iter().filter(|k| matches!(k, VariableKind::Differential)).count();
-        Self { kinds, weights: DVector::from_element(n, error), error, differential_count }
+        let differential_count = kinds
+            .iter()
+            .filter(|k| matches!(k, VariableKind::Differential))
+            .count();
+        Self {
+            kinds,
+            weights: DVector::from_element(n, error),
+            error,
+            differential_count,
+        }
     }
 
     /// Recomputes the weights from the solution at the start of a step.
@@ -75,7 +82,11 @@ impl Norms {
                 count += 1;
             }
         }
-        if count == 0 { 0.0 } else { (sum / count as f64).sqrt() }
+        if count == 0 {
+            0.0
+        } else {
+            (sum / count as f64).sqrt()
+        }
     }
 
     /// The three largest weighted entries of `v` over the error-test variables
@@ -96,7 +107,10 @@ impl Norms {
                 } else {
                     return None;
                 };
-                Some(Dominant { index: i, weighted: (factor * v[i] / self.weights[i]).abs() })
+                Some(Dominant {
+                    index: i,
+                    weighted: (factor * v[i] / self.weights[i]).abs(),
+                })
             })
             .collect();
         all.sort_by(|a, b| b.weighted.total_cmp(&a.weighted));

@@ -65,9 +65,17 @@ impl IntegratorSettings {
     /// keyword), the value and the range.
     pub fn validate(&self) -> Result<(), InvalidArgument> {
         if !(self.error.is_finite() && self.error > 0.0 && self.error < 1.0) {
-            return Err(InvalidArgument::new("ERROR", self.error, "finite and in (0, 1)"));
+            return Err(InvalidArgument::new(
+                "ERROR",
+                self.error,
+                "finite and in (0, 1)",
+            ));
         }
-        for (name, value) in [("HMAX", self.hmax), ("HMIN", self.hmin), ("HINIT", self.hinit)] {
+        for (name, value) in [
+            ("HMAX", self.hmax),
+            ("HMIN", self.hmin),
+            ("HINIT", self.hinit),
+        ] {
             if let Some(v) = value
                 && !(v.is_finite() && v > 0.0)
             {
@@ -77,25 +85,45 @@ impl IntegratorSettings {
         if let (Some(hmin), Some(hmax)) = (self.hmin, self.hmax)
             && hmin > hmax
         {
-            return Err(InvalidArgument::new("HMIN", hmin, format!("<= HMAX = {hmax:?}")));
+            return Err(InvalidArgument::new(
+                "HMIN",
+                hmin,
+                format!("<= HMAX = {hmax:?}"),
+            ));
         }
         if let Some(hinit) = self.hinit {
             if let Some(hmax) = self.hmax
                 && hinit > hmax
             {
-                return Err(InvalidArgument::new("HINIT", hinit, format!("<= HMAX = {hmax:?}")));
+                return Err(InvalidArgument::new(
+                    "HINIT",
+                    hinit,
+                    format!("<= HMAX = {hmax:?}"),
+                ));
             }
             if let Some(hmin) = self.hmin
                 && hinit < hmin
             {
-                return Err(InvalidArgument::new("HINIT", hinit, format!(">= HMIN = {hmin:?}")));
+                return Err(InvalidArgument::new(
+                    "HINIT",
+                    hinit,
+                    format!(">= HMIN = {hmin:?}"),
+                ));
             }
         }
         if !(1..=6).contains(&self.kmax) {
-            return Err(InvalidArgument::with_text("KMAX", self.kmax.to_string(), "in 1..=6"));
+            return Err(InvalidArgument::with_text(
+                "KMAX",
+                self.kmax.to_string(),
+                "in 1..=6",
+            ));
         }
         if !(1..=100).contains(&self.maxit) {
-            return Err(InvalidArgument::with_text("MAXIT", self.maxit.to_string(), "in 1..=100"));
+            return Err(InvalidArgument::with_text(
+                "MAXIT",
+                self.maxit.to_string(),
+                "in 1..=100",
+            ));
         }
         Ok(())
     }
@@ -118,24 +146,56 @@ mod tests {
         let base = IntegratorSettings::default();
         let cases: Vec<(IntegratorSettings, &str)> = vec![
             (IntegratorSettings { error: 0.0, ..base }, "ERROR = 0.0"),
-            (IntegratorSettings { error: f64::NAN, ..base }, "ERROR = NaN"),
-            (IntegratorSettings { hmax: Some(-1.0), ..base }, "HMAX = -1.0"),
-            (IntegratorSettings { hmin: Some(0.0), ..base }, "HMIN = 0.0"),
             (
-                IntegratorSettings { hmin: Some(2.0), hmax: Some(1.0), ..base },
+                IntegratorSettings {
+                    error: f64::NAN,
+                    ..base
+                },
+                "ERROR = NaN",
+            ),
+            (
+                IntegratorSettings {
+                    hmax: Some(-1.0),
+                    ..base
+                },
+                "HMAX = -1.0",
+            ),
+            (
+                IntegratorSettings {
+                    hmin: Some(0.0),
+                    ..base
+                },
+                "HMIN = 0.0",
+            ),
+            (
+                IntegratorSettings {
+                    hmin: Some(2.0),
+                    hmax: Some(1.0),
+                    ..base
+                },
                 "HMIN = 2.0 is out of range: must be <= HMAX = 1.0",
             ),
             (
-                IntegratorSettings { hinit: Some(2.0), hmax: Some(1.0), ..base },
+                IntegratorSettings {
+                    hinit: Some(2.0),
+                    hmax: Some(1.0),
+                    ..base
+                },
                 "HINIT = 2.0",
             ),
-            (IntegratorSettings { kmax: 7, ..base }, "KMAX = 7 is out of range: must be in 1..=6"),
+            (
+                IntegratorSettings { kmax: 7, ..base },
+                "KMAX = 7 is out of range: must be in 1..=6",
+            ),
             (IntegratorSettings { kmax: 0, ..base }, "KMAX = 0"),
             (IntegratorSettings { maxit: 0, ..base }, "MAXIT = 0"),
         ];
         for (settings, expected) in cases {
             let message = settings.validate().unwrap_err().to_string();
-            assert!(message.starts_with(expected), "{message} does not start with {expected}");
+            assert!(
+                message.starts_with(expected),
+                "{message} does not start with {expected}"
+            );
         }
     }
 }
