@@ -12,12 +12,17 @@ use nalgebra::{DMatrix, DVector};
 pub enum VariableKind {
     /// A differential variable (positions, quaternions, velocities): in the local error test.
     Differential,
-    /// An algebraic variable (Lagrange multipliers, quaternion-norm multipliers): excluded from
-    /// the error test, as Adams' index-3 formulation does. `index` is its DAE index (2 or 3); the
-    /// integrator scales its Newton rows and columns by `h^(index − 1)` to keep the matrix O(1)
-    /// as `h → 0` (Bottasso, Bauchau & Cardona 2007).
+    /// A variable of DAE index `index` ≥ 2 in the sense of Hairer & Wanner (RADAU5's
+    /// NIND2/NIND3), or a plain algebraic variable (`index` 1): excluded from the local error
+    /// test, as Adams' index-3 formulation does. In Adams' I3 formulation the Lagrange
+    /// multipliers have index 3 and the velocities index 2 (so only displacements are
+    /// error-tested); quaternion-norm multipliers have index 3. The integrator multiplies the
+    /// variable's Newton column by `h^(1 − index)` and then equilibrates the rows, which keeps
+    /// the matrix O(1) as `h → 0` (Bottasso, Bauchau & Cardona 2007); with
+    /// `CORRECTOR=ORIGINAL` its Newton corrections are weighted by `h^(index − 1)`.
+    /// Allowed range of `index`: 1..=3.
     Algebraic {
-        /// The DAE index of the variable.
+        /// The DAE index of the variable (1, 2 or 3).
         index: u8,
     },
 }

@@ -1,0 +1,7 @@
+//! Tests of the BDF integrator against published references and closed forms.
+
+mod andrews;
+mod api;
+mod order;
+mod pendulum;
+mod stiff;
