@@ -77,6 +77,9 @@ pub struct MassProperties {
     /// `Σ area·outward normal` over the faces made by clipping: the clipping solid's surface
     /// inside the polyhedron.
     pub clipped_area_vector: Vector3,
+    /// `Σ area` over the same faces: `|clipped_area_vector|` far below it means the clipping
+    /// solid's surface inside the polyhedron closes on itself (it is contained, or crosses).
+    pub clipped_area: f64,
 }
 
 impl ConvexPolyhedron {
@@ -187,6 +190,7 @@ impl ConvexPolyhedron {
         let mut six_volume = 0.0;
         let mut moment = Vector3::zeros();
         let mut clipped = Vector3::zeros();
+        let mut clipped_area = 0.0;
         for face in &self.faces[..self.len] {
             let a = face.vertices[0] - origin;
             for k in 1..face.len - 1 {
@@ -197,7 +201,9 @@ impl ConvexPolyhedron {
                 moment += v6 * (a + b + c);
             }
             if face.from_clip {
-                clipped += face.area_vector();
+                let area = face.area_vector();
+                clipped += area;
+                clipped_area += area.norm();
             }
         }
         let centroid = if six_volume > 0.0 {
@@ -209,6 +215,7 @@ impl ConvexPolyhedron {
             volume: six_volume / 6.0,
             centroid,
             clipped_area_vector: clipped,
+            clipped_area,
         }
     }
 
@@ -304,6 +311,7 @@ mod tests {
         assert!((m.volume - 8.0).abs() < 1e-14);
         assert!(m.centroid.coords.norm() < 1e-15);
         assert_eq!(m.clipped_area_vector, Vector3::zeros());
+        assert_eq!(m.clipped_area, 0.0);
         assert!((unit_cube().projected_area(&Vector3::z()) - 4.0).abs() < 1e-14);
     }
 

@@ -8,6 +8,7 @@ use engine_exact::ExactEngine;
 use nalgebra::{Quaternion, Translation3};
 
 /// SplitMix64: small, seeded, reproducible.
+#[derive(Clone)]
 pub struct Rng(u64);
 
 impl Rng {
@@ -131,8 +132,9 @@ pub fn errors(got: &Contact, expected: &Expected, length: f64) -> [f64; 3] {
     ]
 }
 
-/// Asserts two contacts agree to `tol` relative to `length`.
-pub fn assert_close(a: &Contact, b: &Contact, length: f64, tol: f64, what: &str) {
+/// Asserts two contacts agree to `tol` relative to the pair's size: `length` for depth and
+/// points, `area_scale` (length² in 3-D, length in 2-D, where the area is a length) for area.
+pub fn assert_close(a: &Contact, b: &Contact, length: f64, area_scale: f64, tol: f64, what: &str) {
     let e = errors(
         a,
         &Expected {
@@ -143,7 +145,7 @@ pub fn assert_close(a: &Contact, b: &Contact, length: f64, tol: f64, what: &str)
         },
         length,
     );
-    let area_err = (a.area - b.area).abs() / a.area.abs().max(b.area.abs()).max(f64::MIN_POSITIVE);
+    let area_err = (a.area - b.area).abs() / area_scale;
     assert!(
         e.iter().all(|&x| x <= tol) && area_err <= tol,
         "{what}: errors {e:?}, area {area_err:e} > {tol:e}\n{a:?}\n{b:?}"
