@@ -10,13 +10,14 @@
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
+//! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //!
-//! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, every
-//! cylinder, frustum, torus and mesh pair, curved solids on a *bounded* plane, and the 2-D
+//! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, the
+//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded* plane, and the 2-D
 //! arc and curve pairs are not built yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -140,6 +141,19 @@ pub(crate) fn select(
                 NOT_BUILT_BOUNDED
             })
         }),
+        (G::Cylinder(cylinder), G::Plane(p)) => {
+            if p.is_unbounded() {
+                no_flip(
+                    flip_a,
+                    Kernel::CylinderPlane {
+                        cylinder: *cylinder,
+                        side: side(flip_b),
+                    },
+                )
+            } else {
+                Err(no(NOT_BUILT_BOUNDED))
+            }
+        }
         (G::Cuboid(a_box), G::Cuboid(b_box)) => no_flip(
             flip_a || flip_b,
             Kernel::BoxBox {
@@ -161,12 +175,7 @@ pub(crate) fn select(
         )
         | (
             G::Cylinder(_),
-            G::Cylinder(_)
-            | G::Cuboid(_)
-            | G::Frustum(_)
-            | G::Torus(_)
-            | G::Mesh(_)
-            | G::Plane(_),
+            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
         )
         | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_) | G::Plane(_))

@@ -2,7 +2,7 @@
 //! holding a copy of the shape data it needs, evaluated at every query without allocation.
 
 use crate::{pairs, planar};
-use contact_core::geometry::{Cuboid, Line, Plane};
+use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 
 /// One contact between the pair's first geometry `a` and second `b`, in the world frame.
@@ -57,6 +57,8 @@ pub(crate) enum Kernel {
     SphereInCavity { radius_a: f64, radius_b: f64 },
     /// Ellipsoid `a` against an unbounded plane `b`.
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
+    /// Cylinder `a` against an unbounded plane `b`.
+    CylinderPlane { cylinder: Cylinder, side: f64 },
     /// Box `a` against a (possibly bounded) plane `b`.
     BoxPlane {
         cuboid: Cuboid,
@@ -100,6 +102,9 @@ impl Kernel {
             }
             Self::EllipsoidPlane { semi_axes, side } => {
                 pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
+            }
+            Self::CylinderPlane { ref cylinder, side } => {
+                pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
             }
             Self::BoxPlane {
                 ref cuboid,

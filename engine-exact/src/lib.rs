@@ -63,6 +63,7 @@ pub mod parry_adapter;
 pub mod planar;
 pub mod polyhedron;
 mod prepared;
+pub mod quadrature;
 
 use contact_core::{
     Geometry, GeometryEngine, GeometryInstance, PrepareError, PreparedPair, Unsupported,

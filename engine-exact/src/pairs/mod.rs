@@ -9,6 +9,7 @@
 pub mod box_box;
 pub mod box_plane;
 pub mod clipped;
+pub mod cylinder_plane;
 pub mod ellipsoid_plane;
 pub mod sphere_plane;
 pub mod sphere_sphere;

@@ -144,6 +144,49 @@ fn parallel_faces_and_bounded_edges() {
 }
 
 #[test]
+fn a_cylinder_tilting_through_parallel_changes_continuously() {
+    let cylinder = instance(Geometry::Cylinder(
+        contact_core::geometry::Cylinder::new(0.5, 2.0).unwrap(),
+    ));
+    let id = Isometry3::identity();
+    let on_side = |tilt: f64| {
+        let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0 + tilt);
+        one(
+            &cylinder,
+            &plane(),
+            &Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.4), q),
+            &id,
+        )
+    };
+    let exact = on_side(0.0);
+    assert!((exact.penetration - 0.1).abs() < 1e-15, "{exact:?}");
+    // The contact patch of a wheel: chord 2√(R² − d²) times the length.
+    assert!(
+        (exact.area - 2.0 * (0.25f64 - 0.16).sqrt() * 2.0).abs() < 1e-12,
+        "{exact:?}"
+    );
+    for tilt in [1e-14, 1e-10, 1e-6] {
+        let c = on_side(tilt);
+        assert!(
+            (c.penetration - exact.penetration).abs() < 4.0 * tilt + 1e-14,
+            "{tilt}: {c:?}"
+        );
+        assert!(
+            (c.area - exact.area).abs() < 1e-6 * exact.area + 10.0 * tilt,
+            "{tilt}: {c:?}"
+        );
+    }
+    // Wholly under the plane: finite, the shadow as area.
+    let c = one(&cylinder, &plane(), &at(0.0, 0.0, -5.0), &id);
+    assert!(
+        (c.penetration - 5.0).abs() < 1e-14 && (c.area - PI * 0.25).abs() < 1e-14,
+        "{c:?}"
+    );
+    // Touching on a cap or along a side line: no contact.
+    assert!(query(&cylinder, &plane(), &id, &id).is_empty());
+}
+
+#[test]
 fn huge_and_tiny_scenes_give_finite_scaled_answers() {
     let id = Isometry3::identity();
     let tilt = Isometry3::rotation(Vector3::new(0.2, -0.1, 0.3));

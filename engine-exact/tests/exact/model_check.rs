@@ -56,7 +56,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 11] = [
+const BUILT: [(&str, &str); 12] = [
+    ("cylinder", "plane"),
     ("sphere", "sphere"),
     ("sphere", "plane"),
     ("ellipsoid", "plane"),
@@ -77,6 +78,7 @@ fn name(g: &Geometry) -> &'static str {
         other => match other.kind() {
             GeometryKind::Ellipsoid => "ellipsoid",
             GeometryKind::Cuboid => "box",
+            GeometryKind::Cylinder => "cylinder",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
@@ -118,16 +120,16 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 10 distinct pairs, 7 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 7);
+    // 11 distinct pairs, 8 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 8);
 }
 
 #[test]
 fn prepare_refuses_what_it_cannot_answer_before_any_query() {
     let cube = || instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap()));
     let plane = || instance(Geometry::Plane(Plane::unbounded()));
-    let cylinder = instance(Geometry::Cylinder(Cylinder::new(1.0, 1.0).unwrap()));
-    let err = ExactEngine.prepare(&[cylinder], &[plane()]).unwrap_err();
+    let frustum = instance(Geometry::Frustum(Frustum::new(1.0, 0.5, 1.0).unwrap()));
+    let err = ExactEngine.prepare(&[frustum], &[plane()]).unwrap_err();
     assert!(matches!(err, PrepareError::Unsupported(_)), "{err}");
     // A flipped box is refused at prepare (supports cannot see flips).
     let err = ExactEngine

@@ -3,7 +3,7 @@
 //! configuration placed in a canonical frame, so a shared mistake is unlikely.
 
 use crate::common::Expected;
-use contact_core::{Matrix3, Point3, UnitQuaternion, Vector3};
+use contact_core::{Isometry3, Matrix3, Point3, UnitQuaternion, Vector3};
 
 /// Sphere of radius `r` with its centre at height `d` above the plane z = 0.
 pub fn sphere_plane(r: f64, d: f64) -> Expected {
@@ -143,4 +143,83 @@ pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Op
         normal: n,
         depth: ta + tb,
     })
+}
+
+/// A cylinder (radius `r`, length `len`, axis tilted by `alpha` about y, base-centre height
+/// `z0`) against the plane z = 0, by slicing *across* the axis: the slice at axial height z is
+/// a circular segment with chord offset `s(z) = (h − b z)/a` (area `R² acos(−s/R) + s√(R²−s²)`,
+/// first moment `−(2/3)(R² − s²)^{3/2}`). With `s = −R cos θ` the partial part is smooth in
+/// θ and integrated by composite Simpson (4,000 panels: error ~1e-13); the full-disc part is
+/// exact. Needs `a = |sin α|` and `b = cos α` both away from zero.
+pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected {
+    let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), alpha);
+    let n = q.inverse_transform_vector(&Vector3::z());
+    let (a, b) = (n.xy().norm(), n.z);
+    let e = n.xy() / a;
+    let h = -z0;
+    let z_of = |theta: f64| (h + a * r * theta.cos()) / b;
+    let area = |theta: f64| r * r * (theta - theta.sin() * theta.cos());
+    let moment = |theta: f64| -2.0 / 3.0 * r.powi(3) * theta.sin().powi(3);
+    let jac = |theta: f64| a * r * theta.sin() / b.abs();
+    let theta_at = |z: f64| ((b * z - h) / (a * r)).clamp(-1.0, 1.0).acos();
+    let (t0, t1) = {
+        let (x, y) = (theta_at(0.0), theta_at(len));
+        (x.min(y), x.max(y))
+    };
+    let panels = 4000;
+    let step = (t1 - t0) / panels as f64;
+    let (mut v, mut mu, mut mz) = (0.0, 0.0, 0.0);
+    for k in 0..=panels {
+        let t = t0 + k as f64 * step;
+        let w = if k == 0 || k == panels {
+            1.0
+        } else if k % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        } * step
+            / 3.0;
+        let j = jac(t);
+        v += w * area(t) * j;
+        mu += w * moment(t) * j;
+        mz += w * z_of(t) * area(t) * j;
+    }
+    // Full discs: b z ≤ h − a R.
+    let bound = (h - a * r) / b;
+    let (lo, hi) = if b > 0.0 {
+        (0.0, bound.min(len))
+    } else {
+        (bound.max(0.0), len)
+    };
+    if hi > lo {
+        let disc = std::f64::consts::PI * r * r;
+        v += disc * (hi - lo);
+        mz += disc * (hi * hi - lo * lo) / 2.0;
+    }
+    let u_bar = mu / v;
+    let centroid_c = Vector3::new(e.x * u_bar, e.y * u_bar, mz / v);
+    // Ray from the centroid along −n (cylinder frame): the nearest of the caps and the side.
+    let d = -n;
+    let mut t = f64::INFINITY;
+    for cap in [0.0, len] {
+        if d.z != 0.0 {
+            let tc = (cap - centroid_c.z) / d.z;
+            if tc > 0.0 {
+                t = t.min(tc);
+            }
+        }
+    }
+    let (px, py, dx, dy) = (centroid_c.x, centroid_c.y, d.x, d.y);
+    let qa = dx * dx + dy * dy;
+    let qb = 2.0 * (px * dx + py * dy);
+    let qc = px * px + py * py - r * r;
+    t = t.min((-qb + (qb * qb - 4.0 * qa * qc).sqrt()) / (2.0 * qa));
+    let pose = Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, z0), q);
+    let centroid = pose * Point3::from(centroid_c);
+    Expected {
+        point_i: pose * Point3::from(centroid_c + t * d),
+        point_j: Point3::new(centroid.x, centroid.y, 0.0),
+        normal: Vector3::z(),
+        depth: t - centroid.z,
+    }
 }

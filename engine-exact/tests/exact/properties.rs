@@ -3,7 +3,7 @@
 //! 1e6 scales depth and points by the same factor.
 
 use crate::common::{Rng, assert_close, instance, query};
-use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
+use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
 
@@ -81,6 +81,26 @@ fn ellipsoid_plane(rng: &mut Rng, s: f64) -> Scene {
         pose_i: scaled_pose(&pose_i, s),
         pose_j: scaled_pose(&plane_pose, s),
         length: axes.max() * s,
+    }
+}
+
+fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
+    let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.2, 3.0));
+    let plane_pose = rng.pose(3.0);
+    // Half the scenes lie exactly on the side (axis parallel to the plane).
+    let q = if rng.uniform(0.0, 1.0) < 0.5 {
+        nalgebra::UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::FRAC_PI_2)
+    } else {
+        rng.rotation()
+    };
+    let pose_i = plane_pose
+        * Isometry3::from_parts(Translation3::new(0.2, 0.1, rng.uniform(-0.8, 0.8) * r), q);
+    Scene {
+        i: instance(Geometry::Cylinder(Cylinder::new(r * s, len * s).unwrap())),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: r.max(len) * s,
     }
 }
 
@@ -173,7 +193,8 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 8] = [
+const MAKERS: [(&str, Maker); 9] = [
+    ("cylinder–plane", cylinder_plane),
     ("sphere–plane", sphere_plane),
     ("sphere–sphere", sphere_sphere),
     ("ellipsoid–plane", ellipsoid_plane),
