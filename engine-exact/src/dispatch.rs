@@ -1,0 +1,287 @@
+//! The one exhaustive `match` over geometry pairs.
+//!
+//! A pair is computed in the canonical order of [`GeometryKind`] (`a.kind() <= b.kind()`);
+//! the reverse order is the same computation with the result [`swapped`](contact_core::Contact::swapped).
+//! There is no wildcard arm: a new geometry kind in `contact-core` is a compile error here.
+//!
+//! ## What is built (the model check's table)
+//! | pair | method | flips |
+//! | --- | --- | --- |
+//! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
+//! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
+//! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
+//! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
+//! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
+//! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
+//! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
+//! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
+//!
+//! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, the
+//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded* plane, and the 2-D
+//! arc and curve pairs are not built yet; point–point, plane–plane and line–line are not
+//! contacts; 2-D against 3-D is refused (SPEC §3).
+
+use crate::ExactEngine;
+use crate::kernel::Kernel;
+use contact_core::geometry::{Ellipsoid, Plane};
+use contact_core::{Geometry, GeometryKind, Unsupported};
+
+/// A pair's kernel and whether it runs with I and J exchanged (`swap`: the kernel's first
+/// geometry is J).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Selected {
+    /// The computation.
+    pub kernel: Kernel,
+    /// True when the kernel's first geometry is the caller's second.
+    pub swap: bool,
+}
+
+/// The reasons given for pairs not built yet, shared so messages stay consistent.
+const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
+const NOT_BUILT_BOUNDED: &str = "a curved solid against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
+const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
+const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
+
+/// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
+pub(crate) fn select(
+    a: &Geometry,
+    flip_a: bool,
+    b: &Geometry,
+    flip_b: bool,
+) -> Result<Selected, Unsupported> {
+    use Geometry as G;
+    let no = |reason: &'static str| Unsupported {
+        engine: ExactEngine::NAME,
+        i: a.kind(),
+        j: b.kind(),
+        reason,
+    };
+    let side = |flip: bool| if flip { -1.0 } else { 1.0 };
+    let no_flip = |flip: bool, kernel: Kernel| {
+        if flip {
+            Err(no(FLIP_NOT_BUILT))
+        } else {
+            Ok(canonical(kernel))
+        }
+    };
+    match (a, b) {
+        // ---- 3-D × 2-D: not a contact.
+        (
+            G::Ellipsoid(_)
+            | G::Cylinder(_)
+            | G::Cuboid(_)
+            | G::Frustum(_)
+            | G::Torus(_)
+            | G::Mesh(_)
+            | G::Plane(_),
+            G::Point | G::Circle(_) | G::Arc(_) | G::Curve(_) | G::Line(_),
+        )
+        | (
+            G::Point | G::Circle(_) | G::Arc(_) | G::Curve(_) | G::Line(_),
+            G::Ellipsoid(_)
+            | G::Cylinder(_)
+            | G::Cuboid(_)
+            | G::Frustum(_)
+            | G::Torus(_)
+            | G::Mesh(_)
+            | G::Plane(_),
+        ) => Err(no(MIXED)),
+
+        // ---- Non-canonical 3-D orders: the canonical computation, swapped.
+        (G::Cylinder(_), G::Ellipsoid(_))
+        | (G::Cuboid(_), G::Ellipsoid(_) | G::Cylinder(_))
+        | (G::Frustum(_), G::Ellipsoid(_) | G::Cylinder(_) | G::Cuboid(_))
+        | (G::Torus(_), G::Ellipsoid(_) | G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_))
+        | (
+            G::Mesh(_),
+            G::Ellipsoid(_) | G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_),
+        )
+        | (
+            G::Plane(_),
+            G::Ellipsoid(_)
+            | G::Cylinder(_)
+            | G::Cuboid(_)
+            | G::Frustum(_)
+            | G::Torus(_)
+            | G::Mesh(_),
+        )
+        // ---- Non-canonical 2-D orders.
+        | (G::Circle(_), G::Point)
+        | (G::Arc(_), G::Point | G::Circle(_))
+        | (G::Curve(_), G::Point | G::Circle(_) | G::Arc(_))
+        | (G::Line(_), G::Point | G::Circle(_) | G::Arc(_) | G::Curve(_)) => {
+            reversed(select(b, flip_b, a, flip_a))
+        }
+
+        // ---- 3-D, canonical order.
+        (G::Ellipsoid(ea), G::Ellipsoid(eb)) => {
+            match (ea.sphere_radius(), eb.sphere_radius(), flip_a, flip_b) {
+                (Some(radius_a), Some(radius_b), false, false) => {
+                    Ok(canonical(Kernel::SphereSphere { radius_a, radius_b }))
+                }
+                (Some(radius_a), Some(radius_b), false, true) => {
+                    Ok(canonical(Kernel::SphereInCavity { radius_a, radius_b }))
+                }
+                (Some(radius_a), Some(radius_b), true, false) => Ok(Selected {
+                    kernel: Kernel::SphereInCavity {
+                        radius_a: radius_b,
+                        radius_b: radius_a,
+                    },
+                    swap: true,
+                }),
+                (Some(_), Some(_), true, true) => Err(no(NOT_A_CONTACT)),
+                _ => Err(no(NOT_BUILT)),
+            }
+        }
+        (G::Ellipsoid(e), G::Plane(p)) => ellipsoid_plane(e, flip_a, p, flip_b).ok_or_else(|| {
+            no(if flip_a {
+                FLIP_NOT_BUILT
+            } else {
+                NOT_BUILT_BOUNDED
+            })
+        }),
+        (G::Cylinder(cylinder), G::Plane(p)) => {
+            if p.is_unbounded() {
+                no_flip(
+                    flip_a,
+                    Kernel::CylinderPlane {
+                        cylinder: *cylinder,
+                        side: side(flip_b),
+                    },
+                )
+            } else {
+                Err(no(NOT_BUILT_BOUNDED))
+            }
+        }
+        (G::Cuboid(a_box), G::Cuboid(b_box)) => no_flip(
+            flip_a || flip_b,
+            Kernel::BoxBox {
+                a: *a_box,
+                b: *b_box,
+            },
+        ),
+        (G::Cuboid(cuboid), G::Plane(plane)) => no_flip(
+            flip_a,
+            Kernel::BoxPlane {
+                cuboid: *cuboid,
+                plane: *plane,
+                side: side(flip_b),
+            },
+        ),
+        (
+            G::Ellipsoid(_),
+            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
+        )
+        | (
+            G::Cylinder(_),
+            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
+        )
+        | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
+        | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_) | G::Plane(_))
+        | (G::Torus(_), G::Torus(_) | G::Mesh(_) | G::Plane(_))
+        | (G::Mesh(_), G::Mesh(_) | G::Plane(_)) => Err(no(NOT_BUILT)),
+        (G::Plane(_), G::Plane(_)) => Err(no(NOT_A_CONTACT)),
+
+        // ---- 2-D, canonical order.
+        (G::Point, G::Point) => Err(no(NOT_A_CONTACT)),
+        (G::Point, G::Circle(c)) => no_flip(
+            flip_a,
+            Kernel::PointCircle {
+                radius: c.radius(),
+                hole: flip_b,
+            },
+        ),
+        (G::Point, G::Line(line)) => no_flip(
+            flip_a,
+            Kernel::PointLine {
+                line: *line,
+                side: side(flip_b),
+            },
+        ),
+        (G::Circle(ca), G::Circle(cb)) => {
+            let (radius_a, radius_b) = (ca.radius(), cb.radius());
+            match (flip_a, flip_b) {
+                (false, false) => Ok(canonical(Kernel::CircleCircle { radius_a, radius_b })),
+                (false, true) => Ok(canonical(Kernel::CircleInHole { radius_a, radius_b })),
+                (true, false) => Ok(Selected {
+                    kernel: Kernel::CircleInHole {
+                        radius_a: radius_b,
+                        radius_b: radius_a,
+                    },
+                    swap: true,
+                }),
+                (true, true) => Err(no(NOT_A_CONTACT)),
+            }
+        }
+        (G::Circle(c), G::Line(line)) => {
+            let [x0, x1] = line.x_range();
+            if x0.is_finite() || x1.is_finite() {
+                Err(no(NOT_BUILT_BOUNDED))
+            } else {
+                no_flip(
+                    flip_a,
+                    Kernel::CircleLine {
+                        radius: c.radius(),
+                        side: side(flip_b),
+                    },
+                )
+            }
+        }
+        (G::Point, G::Arc(_) | G::Curve(_))
+        | (G::Circle(_), G::Arc(_) | G::Curve(_))
+        | (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
+        | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
+        (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
+    }
+}
+
+fn canonical(kernel: Kernel) -> Selected {
+    Selected {
+        kernel,
+        swap: false,
+    }
+}
+
+/// The selection for the reversed order: the same kernel with `swap` toggled, and an error
+/// that still names the caller's I and J.
+fn reversed(result: Result<Selected, Unsupported>) -> Result<Selected, Unsupported> {
+    match result {
+        Ok(s) => Ok(Selected { swap: !s.swap, ..s }),
+        Err(e) => Err(Unsupported {
+            i: e.j,
+            j: e.i,
+            ..e
+        }),
+    }
+}
+
+fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {
+    if flip_e || !p.is_unbounded() {
+        return None;
+    }
+    let side = if flip_p { -1.0 } else { 1.0 };
+    Some(canonical(match e.sphere_radius() {
+        Some(radius) => Kernel::SpherePlane { radius, side },
+        None => Kernel::EllipsoidPlane {
+            semi_axes: e.semi_axes(),
+            side,
+        },
+    }))
+}
+
+/// The kinds in canonical order, for tests and reports that walk every pair.
+pub const ALL_KINDS: [GeometryKind; 12] = [
+    GeometryKind::Ellipsoid,
+    GeometryKind::Cylinder,
+    GeometryKind::Cuboid,
+    GeometryKind::Frustum,
+    GeometryKind::Torus,
+    GeometryKind::Mesh,
+    GeometryKind::Plane,
+    GeometryKind::Point,
+    GeometryKind::Circle,
+    GeometryKind::Arc,
+    GeometryKind::Curve,
+    GeometryKind::Line,
+];

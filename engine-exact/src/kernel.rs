@@ -1,0 +1,137 @@
+//! The evaluated form of a pair: a [`Kernel`] chosen once by [`crate::dispatch::select`],
+//! holding a copy of the shape data it needs, evaluated at every query without allocation.
+
+use crate::{pairs, planar};
+use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
+use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+
+/// One contact between the pair's first geometry `a` and second `b`, in the world frame.
+/// The normal points from `b` into `a`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PairContact {
+    /// Point on `a`'s surface.
+    pub point_a: Point3,
+    /// Point on `b`'s surface.
+    pub point_b: Point3,
+    /// Unit normal from `b` into `a`.
+    pub normal: Vector3,
+    /// Penetration δ > 0.
+    pub depth: f64,
+    /// Projected area (length in 2-D).
+    pub area: f64,
+}
+
+impl PairContact {
+    /// The same contact with `a` and `b` exchanged.
+    pub fn swapped(self) -> Self {
+        Self {
+            point_a: self.point_b,
+            point_b: self.point_a,
+            normal: -self.normal,
+            ..self
+        }
+    }
+}
+
+/// Why a pair could not be evaluated at the given poses (the caller adds labels and poses).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum PairError {
+    /// Two 2-D geometries are not in one plane.
+    OutOfPlane {
+        /// Angle between the plane normals (either orientation).
+        angle_rad: f64,
+        /// Distance of `a`'s origin from `b`'s plane.
+        offset: f64,
+    },
+}
+
+/// A pair computation with its shape data. `side` is +1, or −1 for a flipped plane or line
+/// (the material then lies on the +z / +y side).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Kernel {
+    /// Sphere `a` against an unbounded plane `b`.
+    SpherePlane { radius: f64, side: f64 },
+    /// Two solid spheres.
+    SphereSphere { radius_a: f64, radius_b: f64 },
+    /// Solid sphere `a` inside the spherical cavity `b` (a flipped sphere).
+    SphereInCavity { radius_a: f64, radius_b: f64 },
+    /// Ellipsoid `a` against an unbounded plane `b`.
+    EllipsoidPlane { semi_axes: Vector3, side: f64 },
+    /// Cylinder `a` against an unbounded plane `b`.
+    CylinderPlane { cylinder: Cylinder, side: f64 },
+    /// Box `a` against a (possibly bounded) plane `b`.
+    BoxPlane {
+        cuboid: Cuboid,
+        plane: Plane,
+        side: f64,
+    },
+    /// Two boxes.
+    BoxBox { a: Cuboid, b: Cuboid },
+    /// 2-D point `a` against line `b`.
+    PointLine { line: Line, side: f64 },
+    /// 2-D point `a` against solid circle `b` (or a circular hole when `hole`).
+    PointCircle { radius: f64, hole: bool },
+    /// Two solid 2-D circles.
+    CircleCircle { radius_a: f64, radius_b: f64 },
+    /// Solid circle `a` inside the circular hole `b` (a flipped circle).
+    CircleInHole { radius_a: f64, radius_b: f64 },
+    /// Solid circle `a` against an unbounded line `b`.
+    CircleLine { radius: f64, side: f64 },
+}
+
+impl Kernel {
+    /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`).
+    /// `length` is the pair's length scale (for the 2-D in-plane tolerance).
+    pub fn evaluate(
+        &self,
+        pose_a: &Isometry3,
+        pose_b: &Isometry3,
+        length: f64,
+        work: &mut WorkCounters,
+    ) -> Result<Option<PairContact>, PairError> {
+        work.primitive_tests += 1;
+        Ok(match *self {
+            Self::SpherePlane { radius, side } => {
+                pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+            }
+            Self::SphereSphere { radius_a, radius_b } => {
+                pairs::sphere_sphere::contact(radius_a, pose_a, radius_b, pose_b)
+            }
+            Self::SphereInCavity { radius_a, radius_b } => {
+                pairs::sphere_sphere::contact_in_cavity(radius_a, pose_a, radius_b, pose_b)
+            }
+            Self::EllipsoidPlane { semi_axes, side } => {
+                pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
+            }
+            Self::CylinderPlane { ref cylinder, side } => {
+                pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
+            }
+            Self::BoxPlane {
+                ref cuboid,
+                ref plane,
+                side,
+            } => pairs::box_plane::contact(cuboid, pose_a, plane, side, pose_b),
+            Self::BoxBox { ref a, ref b } => pairs::box_box::contact(a, pose_a, b, pose_b, work),
+            Self::PointLine { ref line, side } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_line::contact(&frame, line, side)
+            }
+            Self::PointCircle { radius, hole } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::circles::point_circle(&frame, radius, hole)
+            }
+            Self::CircleCircle { radius_a, radius_b } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::circles::circle_circle(&frame, radius_a, radius_b)
+            }
+            Self::CircleInHole { radius_a, radius_b } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::circles::circle_in_hole(&frame, radius_a, radius_b)
+            }
+            Self::CircleLine { radius, side } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_line::circle_line(&frame, radius, side)
+            }
+        })
+    }
+}

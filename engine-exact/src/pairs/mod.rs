@@ -1,0 +1,15 @@
+//! 3-D pair families, one file each. Every function takes the world poses `X_WG` of its two
+//! geometries (first `a`, second `b`, in canonical order) and returns the contact with the
+//! normal from `b` into `a`, or `None` when the intersection has no volume.
+//!
+//! Normals by family: against a plane, the plane's outward normal; between spheres, the line
+//! of centres; between boxes, the area-weighted outward normal of the part of `b`'s surface
+//! inside `a` (the direction of the net force of a uniform pressure on that surface).
+
+pub mod box_box;
+pub mod box_plane;
+pub mod clipped;
+pub mod cylinder_plane;
+pub mod ellipsoid_plane;
+pub mod sphere_plane;
+pub mod sphere_sphere;

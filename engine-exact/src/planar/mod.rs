@@ -1,0 +1,61 @@
+//! 2-D pairs, computed in the plane of the second (canonical) geometry `b`.
+//!
+//! Both geometries lie in the x-y planes of their frames. [`InPlane::new`] checks the two
+//! planes coincide — the angle between their normals (either orientation: a marker whose z
+//! axis is reversed still spans the same plane) at most [`PLANE_ANGLE_TOLERANCE`] rad, and
+//! `a`'s origin within `PLANE_OFFSET_TOLERANCE · L` of `b`'s plane, `L` the pair's length
+//! scale — and otherwise reports [`QueryError::OutOfPlane`](contact_core::QueryError).
+//! Results are mapped back to the world with `b`'s pose (normals have no z component in `b`).
+//!
+//! The 2-D "area" of a contact is a length: the intersection region's extent across the
+//! normal.
+
+pub mod circles;
+pub mod point_line;
+
+use crate::kernel::PairError;
+use contact_core::{Isometry3, Point2, Point3, Vector2, Vector3};
+
+/// Largest angle (rad) between the planes of a 2-D pair.
+pub const PLANE_ANGLE_TOLERANCE: f64 = 1e-6;
+/// Largest offset between the planes of a 2-D pair, relative to the pair's length scale.
+pub const PLANE_OFFSET_TOLERANCE: f64 = 1e-6;
+
+/// The first geometry's origin expressed in the second geometry's plane.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct InPlane<'a> {
+    /// `a`'s origin in `b`'s frame (x, y).
+    pub origin_a: Point2,
+    /// `X_WGb`.
+    pub pose_b: &'a Isometry3,
+}
+
+impl<'a> InPlane<'a> {
+    /// Checks `a` and `b` share a plane and expresses `a`'s origin in `b`'s frame.
+    pub fn new(pose_a: &Isometry3, pose_b: &'a Isometry3, length: f64) -> Result<Self, PairError> {
+        let relative = pose_b.inv_mul(pose_a);
+        let z_a = relative.rotation * Vector3::z();
+        let angle_rad = z_a.xy().norm().atan2(z_a.z.abs());
+        let t = relative.translation.vector;
+        if angle_rad > PLANE_ANGLE_TOLERANCE || t.z.abs() > PLANE_OFFSET_TOLERANCE * length {
+            return Err(PairError::OutOfPlane {
+                angle_rad,
+                offset: t.z,
+            });
+        }
+        Ok(Self {
+            origin_a: Point2::new(t.x, t.y),
+            pose_b,
+        })
+    }
+
+    /// A point of `b`'s plane, in the world.
+    pub fn point_w(&self, p: &Point2) -> Point3 {
+        self.pose_b * Point3::new(p.x, p.y, 0.0)
+    }
+
+    /// A direction of `b`'s plane, in the world.
+    pub fn vector_w(&self, v: &Vector2) -> Vector3 {
+        self.pose_b.rotation * Vector3::new(v.x, v.y, 0.0)
+    }
+}

@@ -1,0 +1,261 @@
+//! Degenerate and extreme input: every branch documented in the pair modules, each with a
+//! finite answer (no NaN, no panic) and the documented value.
+
+use crate::common::{instance, one, query};
+use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
+use contact_core::{
+    Geometry, GeometryEngine, Isometry3, QueryError, Side, UnitQuaternion, Vector3, WorkCounters,
+};
+use engine_exact::ExactEngine;
+use std::f64::consts::PI;
+
+fn sphere(r: f64) -> contact_core::GeometryInstance {
+    instance(Geometry::sphere(r).unwrap())
+}
+
+fn plane() -> contact_core::GeometryInstance {
+    instance(Geometry::Plane(Plane::unbounded()))
+}
+
+fn cube(h: f64) -> contact_core::GeometryInstance {
+    instance(Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap()))
+}
+
+fn at(x: f64, y: f64, z: f64) -> Isometry3 {
+    Isometry3::translation(x, y, z)
+}
+
+#[test]
+fn touching_is_not_a_contact_and_grazing_is_a_tiny_one() {
+    let id = Isometry3::identity();
+    assert!(query(&sphere(1.0), &plane(), &at(0.0, 0.0, 1.0), &id).is_empty());
+    let c = one(&sphere(1.0), &plane(), &at(0.0, 0.0, 1.0 - 1e-12), &id);
+    // δ = r − d, with d = 1 − 1e-12 rounded to f64 (an error of at most 1.2e-16).
+    assert!((c.penetration - 1e-12).abs() < 2e-16, "{c:?}");
+    assert!(query(&sphere(1.0), &sphere(2.0), &at(3.0, 0.0, 0.0), &id).is_empty());
+    // Boxes face to face, edge to edge, corner to corner: zero volume, no contact.
+    assert!(query(&cube(1.0), &cube(1.0), &at(2.0, 0.0, 0.0), &id).is_empty());
+    assert!(query(&cube(1.0), &cube(1.0), &at(2.0, 2.0, 0.0), &id).is_empty());
+    assert!(query(&cube(1.0), &cube(1.0), &at(2.0, 2.0, 2.0), &id).is_empty());
+    assert!(query(&cube(1.0), &plane(), &at(0.0, 0.0, 1.0), &id).is_empty());
+    // A cube on its edge, 1e-9 into the plane: a thin wedge, finite and normal +z.
+    let edge_down = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.0, 0.0, 2f64.sqrt() - 1e-9),
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), PI / 4.0),
+    );
+    let c = one(&cube(1.0), &plane(), &edge_down, &id);
+    assert!((c.normal_w - Vector3::z()).norm() < 1e-9);
+    assert!(c.penetration > 0.0 && c.penetration < 2e-9, "{c:?}");
+    // Stacked boxes overlapping by 1e-12 of their size.
+    let c = one(&cube(1.0), &cube(1.0), &at(0.0, 0.0, 2.0 - 1e-12), &id);
+    assert!((c.normal_w - Vector3::z()).norm() < 1e-12);
+    assert!((c.penetration - 1e-12).abs() < 1e-15, "{c:?}");
+    assert!((c.area - 4.0).abs() < 1e-12);
+}
+
+#[test]
+fn full_containment_keeps_depth_growing() {
+    let id = Isometry3::identity();
+    // Sphere far below the plane: δ = r − d, area = π r².
+    let c = one(&sphere(1.0), &plane(), &at(0.0, 0.0, -5.0), &id);
+    assert_eq!(c.penetration, 6.0);
+    assert!((c.area - PI).abs() < 1e-14);
+    // A small sphere inside a big one: δ = r_a + r_b − D grows as the centres approach.
+    let d1 = one(&sphere(0.5), &sphere(3.0), &at(1.0, 0.0, 0.0), &id).penetration;
+    let d2 = one(&sphere(0.5), &sphere(3.0), &at(0.5, 0.0, 0.0), &id).penetration;
+    assert!(d2 > d1 && (d1 - 2.5).abs() < 1e-15);
+    // An ellipsoid wholly under the plane: the centroid is its centre.
+    let e = instance(Geometry::Ellipsoid(Ellipsoid::new(1.0, 2.0, 0.5).unwrap()));
+    let c = one(&e, &plane(), &at(0.3, 0.0, -4.0), &id);
+    assert!((c.penetration - 4.5).abs() < 1e-14, "{c:?}");
+    // A small box inside a big one: the normal is the big box's nearest face (+x here).
+    let small = instance(Geometry::Cuboid(Cuboid::centered(0.1, 0.2, 0.3).unwrap()));
+    let c = one(&small, &cube(2.0), &at(1.5, 0.0, 0.0), &id);
+    assert_eq!(c.normal_w, Vector3::x());
+    assert!((c.penetration - 0.6).abs() < 1e-14, "{c:?}");
+    // The big box seen from the other side: the swapped contact.
+    let s = one(&cube(2.0), &small, &id, &at(1.5, 0.0, 0.0));
+    assert!((s.normal_w + Vector3::x()).norm() < 1e-14, "{s:?}");
+    // A box sunk wholly below the plane: normal is the plane's.
+    let c = one(&cube(1.0), &plane(), &at(0.0, 0.0, -10.0), &id);
+    assert_eq!(c.normal_w, Vector3::z());
+    assert!((c.penetration - 11.0).abs() < 1e-13);
+}
+
+#[test]
+fn coincident_centres_and_coincident_boxes_use_the_documented_axis() {
+    let id = Isometry3::identity();
+    let turned = Isometry3::rotation(Vector3::new(0.0, 0.3, 0.0));
+    // Two spheres: +z of J's frame.
+    let c = one(&sphere(1.0), &sphere(2.0), &id, &turned);
+    assert!((c.normal_w - turned.rotation * Vector3::z()).norm() < 1e-15);
+    assert_eq!(c.penetration, 3.0);
+    // Ball in cavity with coincident centres: contact only when the ball is bigger.
+    assert!(query(&sphere(1.0), &sphere(2.0).flipped(), &id, &id).is_empty());
+    let c = one(&sphere(2.0), &sphere(1.0).flipped(), &id, &id);
+    assert_eq!(c.penetration, 1.0);
+    // Circles and a point at a circle's centre: +x of J's frame.
+    let circle = |r| instance(Geometry::Circle(Circle::new(r).unwrap()));
+    let c = one(&circle(1.0), &circle(1.0), &id, &id);
+    assert_eq!(c.normal_w, Vector3::x());
+    let c = one(&instance(Geometry::Point), &circle(1.0), &id, &id);
+    assert_eq!((c.normal_w, c.penetration), (Vector3::x(), 1.0));
+    // Two identical coincident cubes: nothing is cut, the normal is J's nearest face.
+    let c = one(&cube(1.0), &cube(1.0), &id, &id);
+    assert!(
+        c.is_well_formed() && (c.penetration - 2.0).abs() < 1e-15,
+        "{c:?}"
+    );
+    // Crossed bars (a 'plus'): J's surface inside I sums to zero; finite answer.
+    let bar_x = instance(Geometry::Cuboid(Cuboid::centered(3.0, 0.5, 0.5).unwrap()));
+    let bar_y = instance(Geometry::Cuboid(Cuboid::centered(0.5, 3.0, 0.5).unwrap()));
+    let c = one(&bar_x, &bar_y, &id, &id);
+    assert!(c.is_well_formed(), "{c:?}");
+}
+
+#[test]
+fn parallel_faces_and_bounded_edges() {
+    let id = Isometry3::identity();
+    // A box straddling the +x edge of a bounded plane: the prism's top and its side face
+    // are both inside the box, so the normal tilts from +z towards +x.
+    let bounded = instance(Geometry::Plane(
+        Plane::bounded(-5.0, 0.0, -5.0, 5.0).unwrap(),
+    ));
+    let c = one(&cube(1.0), &bounded, &at(0.0, 0.0, 0.5), &id);
+    assert!(
+        c.normal_w.x > 0.1 && c.normal_w.z > 0.1 && c.normal_w.y.abs() < 1e-15,
+        "{c:?}"
+    );
+    // Off the bounded plane altogether: no contact.
+    assert!(query(&cube(1.0), &bounded, &at(3.0, 0.0, 0.5), &id).is_empty());
+    // A flipped plane: the material is above; a box below it is free, above it sinks.
+    let up = plane().flipped();
+    assert!(query(&cube(1.0), &up, &at(0.0, 0.0, -1.5), &id).is_empty());
+    let c = one(&cube(1.0), &up, &at(0.0, 0.0, 0.5), &id);
+    assert_eq!(c.normal_w, -Vector3::z());
+    assert!((c.penetration - 1.5).abs() < 1e-15);
+    // 2-D: a point on a bounded line's end is inside, beyond it is not.
+    let line = instance(Geometry::Line(Line::bounded(0.0, 1.0).unwrap()));
+    assert_eq!(
+        one(&instance(Geometry::Point), &line, &at(1.0, -0.5, 0.0), &id).penetration,
+        0.5
+    );
+    assert!(query(&instance(Geometry::Point), &line, &at(1.5, -0.5, 0.0), &id).is_empty());
+}
+
+#[test]
+fn a_cylinder_tilting_through_parallel_changes_continuously() {
+    let cylinder = instance(Geometry::Cylinder(
+        contact_core::geometry::Cylinder::new(0.5, 2.0).unwrap(),
+    ));
+    let id = Isometry3::identity();
+    let on_side = |tilt: f64| {
+        let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0 + tilt);
+        one(
+            &cylinder,
+            &plane(),
+            &Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.4), q),
+            &id,
+        )
+    };
+    let exact = on_side(0.0);
+    assert!((exact.penetration - 0.1).abs() < 1e-15, "{exact:?}");
+    // The contact patch of a wheel: chord 2√(R² − d²) times the length.
+    assert!(
+        (exact.area - 2.0 * (0.25f64 - 0.16).sqrt() * 2.0).abs() < 1e-12,
+        "{exact:?}"
+    );
+    for tilt in [1e-14, 1e-10, 1e-6] {
+        let c = on_side(tilt);
+        assert!(
+            (c.penetration - exact.penetration).abs() < 4.0 * tilt + 1e-14,
+            "{tilt}: {c:?}"
+        );
+        assert!(
+            (c.area - exact.area).abs() < 1e-6 * exact.area + 10.0 * tilt,
+            "{tilt}: {c:?}"
+        );
+    }
+    // Wholly under the plane: finite, the shadow as area.
+    let c = one(&cylinder, &plane(), &at(0.0, 0.0, -5.0), &id);
+    assert!(
+        (c.penetration - 5.0).abs() < 1e-14 && (c.area - PI * 0.25).abs() < 1e-14,
+        "{c:?}"
+    );
+    // Touching on a cap or along a side line: no contact.
+    assert!(query(&cylinder, &plane(), &id, &id).is_empty());
+}
+
+#[test]
+fn huge_and_tiny_scenes_give_finite_scaled_answers() {
+    let id = Isometry3::identity();
+    let tilt = Isometry3::rotation(Vector3::new(0.2, -0.1, 0.3));
+    let boxes = |s: f64| {
+        one(
+            &cube(s),
+            &cube(s),
+            &(at(0.5 * s, 0.25 * s, 1.5 * s) * tilt),
+            &id,
+        )
+    };
+    let reference = boxes(1.0);
+    let reference_ball = one(&sphere(1.0), &plane(), &at(0.0, 0.0, 0.5), &id);
+    for s in [1e-100, 1e100] {
+        let c = one(&sphere(s), &plane(), &at(0.0, 0.0, 0.5 * s), &id);
+        assert!((c.penetration / s - reference_ball.penetration).abs() < 1e-15);
+        assert!((c.area / (s * s) - reference_ball.area).abs() < 1e-14);
+        let c = boxes(s);
+        assert!(c.is_well_formed(), "{c:?}");
+        assert!(
+            (c.penetration / s - reference.penetration).abs() < 1e-14,
+            "{c:?}"
+        );
+        assert!((c.normal_w - reference.normal_w).norm() < 1e-14, "{c:?}");
+        assert!((c.point_i_w.coords / s - reference.point_i_w.coords).norm() < 1e-14);
+        assert!((c.area / (s * s) - reference.area).abs() < 1e-13, "{c:?}");
+    }
+    // Small shapes far from the origin: still finite.
+    let far = at(1e12, -1e12, 1e12);
+    let c = one(&sphere(1.0), &plane(), &(far * at(0.0, 0.0, 0.5)), &far);
+    assert!(c.is_well_formed());
+}
+
+#[test]
+fn bad_poses_and_leaving_the_plane_are_typed_errors() {
+    let pair = ExactEngine.prepare(&[sphere(1.0)], &[plane()]).unwrap();
+    let mut out = Vec::new();
+    let mut work = WorkCounters::default();
+    let bad = at(f64::NAN, 0.0, 0.0);
+    let err = pair
+        .query(&bad, &Isometry3::identity(), &mut out, &mut work)
+        .unwrap_err();
+    assert!(
+        matches!(err, QueryError::NonFinitePose { side: Side::I, .. }),
+        "{err}"
+    );
+
+    let circle = instance(Geometry::Circle(Circle::new(1.0).unwrap())).labeled("wheel");
+    let line = instance(Geometry::Line(Line::unbounded())).labeled("road");
+    let pair = ExactEngine.prepare(&[circle], &[line]).unwrap();
+    let tilted = Isometry3::rotation(Vector3::new(1e-3, 0.0, 0.0));
+    let err = pair
+        .query(&tilted, &Isometry3::identity(), &mut out, &mut work)
+        .unwrap_err();
+    assert!(matches!(err, QueryError::OutOfPlane { .. }), "{err}");
+    let message = err.to_string();
+    assert!(
+        message.contains("wheel") && message.contains("road"),
+        "{message}"
+    );
+    let lifted = at(0.0, 0.0, 1e-3);
+    assert!(
+        pair.query(&lifted, &Isometry3::identity(), &mut out, &mut work)
+            .is_err()
+    );
+    // A marker with its z axis reversed spans the same plane: accepted.
+    let reversed = Isometry3::rotation(Vector3::new(PI, 0.0, 0.0)) * at(0.0, 0.5, 0.0);
+    pair.query(&reversed, &Isometry3::identity(), &mut out, &mut work)
+        .unwrap();
+    assert_eq!(out.len(), 1);
+    assert!((out[0].penetration - 1.5).abs() < 1e-15, "{:?}", out[0]);
+}

@@ -1,0 +1,15 @@
+//! The exact engine's test binary (one binary, modules inside, to keep linking cheap).
+//!
+//! - [`oracles`]: closed forms written independently of the engine (slicing instead of the
+//!   engine's affine map, axis-aligned box overlap instead of clipping, …);
+//! - [`characterization`]: the accuracy contract, one row per pair;
+//! - [`properties`]: I/J swap, rigid motion and scale covariance;
+//! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
+//! - [`model_check`]: what `supports`/`prepare` accept and refuse.
+
+mod characterization;
+mod common;
+mod degenerate;
+mod model_check;
+mod oracles;
+mod properties;

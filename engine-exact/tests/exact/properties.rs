@@ -1,0 +1,292 @@
+//! Invariants every built pair must keep: exchanging I and J gives the swapped contact; a
+//! rigid motion of both bodies moves the contact with them; scaling the scene by 1e-6 and
+//! 1e6 scales depth and points by the same factor.
+
+use crate::common::{Rng, assert_close, instance, query};
+use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
+use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
+use nalgebra::Translation3;
+
+/// A random scene of one pair family at `scale`; the same RNG state gives the same scene
+/// at every scale.
+struct Scene {
+    i: GeometryInstance,
+    j: GeometryInstance,
+    pose_i: Isometry3,
+    pose_j: Isometry3,
+    length: f64,
+}
+
+impl Scene {
+    fn area_scale(&self) -> f64 {
+        if self.i.geometry.is_planar() {
+            self.length
+        } else {
+            self.length * self.length
+        }
+    }
+}
+
+type Maker = fn(&mut Rng, f64) -> Scene;
+
+fn scaled_pose(p: &Isometry3, s: f64) -> Isometry3 {
+    Isometry3::from_parts(Translation3::from(p.translation.vector * s), p.rotation)
+}
+
+fn sphere_plane(rng: &mut Rng, s: f64) -> Scene {
+    let r = rng.uniform(0.5, 2.0);
+    let d = rng.uniform(-0.5, 0.99) * r;
+    let plane_pose = rng.pose(3.0);
+    let pose_i = plane_pose * Isometry3::translation(0.0, 0.0, d);
+    Scene {
+        i: instance(Geometry::sphere(r * s).unwrap()),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: r * s,
+    }
+}
+
+fn sphere_sphere(rng: &mut Rng, s: f64) -> Scene {
+    let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
+    let d = rng.uniform(0.1, 0.99) * (ra + rb);
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * Isometry3::translation(d, 0.0, 0.0) * rng.pose(0.0);
+    Scene {
+        i: instance(Geometry::sphere(ra * s).unwrap()),
+        j: instance(Geometry::sphere(rb * s).unwrap()),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: ra.max(rb) * s,
+    }
+}
+
+fn ellipsoid_plane(rng: &mut Rng, s: f64) -> Scene {
+    let axes = Vector3::new(
+        rng.uniform(0.3, 2.0),
+        rng.uniform(0.3, 2.0),
+        rng.uniform(0.3, 2.0),
+    );
+    let q = rng.rotation();
+    let k = axes
+        .component_mul(&q.inverse_transform_vector(&Vector3::z()))
+        .norm();
+    let plane_pose = rng.pose(3.0);
+    let pose_i = plane_pose
+        * Isometry3::from_parts(Translation3::new(0.0, 0.0, k * rng.uniform(-0.8, 0.99)), q);
+    let e = Ellipsoid::new(axes.x * s, axes.y * s, axes.z * s).unwrap();
+    Scene {
+        i: instance(Geometry::Ellipsoid(e)),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: axes.max() * s,
+    }
+}
+
+fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
+    let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.2, 3.0));
+    let plane_pose = rng.pose(3.0);
+    // Half the scenes lie exactly on the side (axis parallel to the plane).
+    let q = if rng.uniform(0.0, 1.0) < 0.5 {
+        nalgebra::UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::FRAC_PI_2)
+    } else {
+        rng.rotation()
+    };
+    let pose_i = plane_pose
+        * Isometry3::from_parts(Translation3::new(0.2, 0.1, rng.uniform(-0.8, 0.8) * r), q);
+    Scene {
+        i: instance(Geometry::Cylinder(Cylinder::new(r * s, len * s).unwrap())),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: r.max(len) * s,
+    }
+}
+
+fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
+    let h = Vector3::new(
+        rng.uniform(0.3, 1.5),
+        rng.uniform(0.3, 1.5),
+        rng.uniform(0.3, 1.5),
+    );
+    // A CORNER-marker box (centre off the frame origin) exercises the centre offset.
+    let b = Cuboid::from_corner(2.0 * h.x * s, -2.0 * h.y * s, 2.0 * h.z * s).unwrap();
+    (b, h.norm() * s)
+}
+
+fn box_plane(rng: &mut Rng, s: f64) -> Scene {
+    let (b, length) = random_box(rng, s);
+    let plane_pose = rng.pose(3.0);
+    let q = rng.rotation();
+    let pose_i =
+        plane_pose * Isometry3::from_parts(Translation3::new(0.1, -0.2, rng.uniform(-1.5, 0.2)), q);
+    let bounded = Plane::bounded(-3.0 * s, 0.5 * s, -2.0 * s, 4.0 * s).unwrap();
+    let plane = if rng.uniform(0.0, 1.0) < 0.5 {
+        bounded
+    } else {
+        Plane::unbounded()
+    };
+    Scene {
+        i: instance(Geometry::Cuboid(b)),
+        j: instance(Geometry::Plane(plane)),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length,
+    }
+}
+
+fn box_box(rng: &mut Rng, s: f64) -> Scene {
+    let (a, la) = random_box(rng, s);
+    let (b, lb) = random_box(rng, s);
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * rng.pose(1.2);
+    Scene {
+        i: instance(Geometry::Cuboid(a)),
+        j: instance(Geometry::Cuboid(b)),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: la.max(lb),
+    }
+}
+
+fn circle_circle(rng: &mut Rng, s: f64) -> Scene {
+    let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
+    let d = rng.uniform(0.1, 0.99) * (ra + rb);
+    let angle = rng.uniform(0.0, std::f64::consts::TAU);
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * Isometry3::translation(d * angle.cos(), d * angle.sin(), 0.0);
+    Scene {
+        i: instance(Geometry::Circle(Circle::new(ra * s).unwrap())),
+        j: instance(Geometry::Circle(Circle::new(rb * s).unwrap())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: ra.max(rb) * s,
+    }
+}
+
+fn circle_line(rng: &mut Rng, s: f64) -> Scene {
+    let r = rng.uniform(0.3, 2.0);
+    let pose_j = rng.pose(3.0);
+    let pose_i =
+        pose_j * Isometry3::translation(rng.uniform(-2.0, 2.0), rng.uniform(-0.5, 0.99) * r, 0.0);
+    Scene {
+        i: instance(Geometry::Circle(Circle::new(r * s).unwrap())),
+        j: instance(Geometry::Line(Line::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: r * s,
+    }
+}
+
+fn point_circle(rng: &mut Rng, s: f64) -> Scene {
+    let r = rng.uniform(0.3, 2.0);
+    let pose_j = rng.pose(3.0);
+    let d = rng.uniform(0.05, 0.99) * r;
+    let pose_i = pose_j * Isometry3::translation(d, 0.0, 0.0);
+    Scene {
+        i: instance(Geometry::Point),
+        j: instance(Geometry::Circle(Circle::new(r * s).unwrap())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: r * s,
+    }
+}
+
+const MAKERS: [(&str, Maker); 9] = [
+    ("cylinder–plane", cylinder_plane),
+    ("sphere–plane", sphere_plane),
+    ("sphere–sphere", sphere_sphere),
+    ("ellipsoid–plane", ellipsoid_plane),
+    ("box–plane", box_plane),
+    ("box–box", box_box),
+    ("circle–circle", circle_circle),
+    ("circle–line", circle_line),
+    ("point–circle", point_circle),
+];
+
+const SAMPLES: usize = 60;
+
+fn sorted(mut v: Vec<Contact>) -> Vec<Contact> {
+    v.sort_by_key(|c| c.geometry_i);
+    v
+}
+
+#[test]
+fn exchanging_i_and_j_gives_the_swapped_contact() {
+    let mut rng = Rng::new(11);
+    for (name, make) in MAKERS {
+        let mut seen = 0;
+        for _ in 0..SAMPLES {
+            let sc = make(&mut rng, 1.0);
+            let forward = query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j);
+            let backward = query(&sc.j, &sc.i, &sc.pose_j, &sc.pose_i);
+            assert_eq!(forward.len(), backward.len(), "{name}");
+            for (f, b) in forward.iter().zip(&backward) {
+                assert_close(&b.swapped(), f, sc.length, sc.area_scale(), 1e-12, name);
+                seen += 1;
+            }
+        }
+        assert!(
+            seen > SAMPLES / 4,
+            "{name}: only {seen} contacts in {SAMPLES} scenes"
+        );
+    }
+}
+
+#[test]
+fn a_rigid_motion_of_both_bodies_moves_the_contact() {
+    let mut rng = Rng::new(12);
+    for (name, make) in MAKERS {
+        for _ in 0..SAMPLES {
+            let sc = make(&mut rng, 1.0);
+            let motion = rng.pose(5.0 * sc.length);
+            let before = sorted(query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j));
+            let after = sorted(query(
+                &sc.i,
+                &sc.j,
+                &(motion * sc.pose_i),
+                &(motion * sc.pose_j),
+            ));
+            assert_eq!(before.len(), after.len(), "{name}");
+            for (b, a) in before.iter().zip(&after) {
+                let moved = Contact {
+                    point_i_w: motion * b.point_i_w,
+                    point_j_w: motion * b.point_j_w,
+                    normal_w: motion.rotation * b.normal_w,
+                    ..*b
+                };
+                assert_close(a, &moved, sc.length, sc.area_scale(), 1e-12, name);
+            }
+        }
+    }
+}
+
+#[test]
+fn scaling_the_scene_scales_depth_and_points() {
+    let mut rng = Rng::new(13);
+    for (name, make) in MAKERS {
+        for _ in 0..SAMPLES {
+            let state = rng.clone();
+            let unit = make(&mut rng, 1.0);
+            let reference = query(&unit.i, &unit.j, &unit.pose_i, &unit.pose_j);
+            for s in [1e-6, 1e6] {
+                let sc = make(&mut state.clone(), s);
+                let got = query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j);
+                assert_eq!(got.len(), reference.len(), "{name} at scale {s:e}");
+                for (g, r) in got.iter().zip(&reference) {
+                    // A 2-D contact's "area" is a length.
+                    let area_power = if sc.i.geometry.is_planar() { 1 } else { 2 };
+                    let expected = Contact {
+                        point_i_w: Point3::from(r.point_i_w.coords * s),
+                        point_j_w: Point3::from(r.point_j_w.coords * s),
+                        penetration: r.penetration * s,
+                        area: r.area * s.powi(area_power),
+                        ..*r
+                    };
+                    assert_close(g, &expected, sc.length, sc.area_scale(), 1e-9, name);
+                }
+            }
+        }
+    }
+}
