@@ -1,0 +1,202 @@
+//! A CONTACT as a force element: the engine's contact kinematics plus contact-core's force laws.
+//!
+//! At each evaluation the prepared pair is queried at the two parts' poses. For every contact
+//! (SPEC §4) the force acts at the midpoint `p` of the two surface points:
+//! - the relative velocity of I's material point at `p` against J's, `v = v_I(p) − v_J(p)`;
+//!   the penetration rate is `δ̇ = −n·v` (positive while approaching, `n` from J into I);
+//! - the normal force `Fn(δ, δ̇) ≥ 0` from IMPACT or POISSON, pushing I along `n`;
+//! - with friction, the slip `v_t = v − (n·v)·n` gives `F_t = μ(|v_t|)·Fn·v̂_t` (μ signed, so it
+//!   opposes the slip) and the relative spin `ω_n = (ω_I − ω_J)·n` gives the torque
+//!   `(2/3)·R·μ(ω_n·R)·Fn` about `n`, `R = sqrt(A/π)`;
+//! - I receives `Fn·n + F_t` at `p` and the torque; J the opposite.
+//!
+//! Partials are left to the system's element-local difference (12 evaluations per moving part).
+
+use crate::solver::dae::EvaluationError;
+use crate::solver::mbs::{ForceElement, Load, PartId, StateView};
+use contact_core::{
+    Contact, ContactParams, FrictionModel, NormalModel, PreparedPair, Vector3, WorkCounters,
+    laws::NormalForce,
+};
+use std::sync::Mutex;
+
+/// Which analysis is running: DYNAMICS_ONLY friction acts in dynamics only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Analysis {
+    /// Transient dynamics.
+    Dynamics,
+    /// Statics or kinematics.
+    Quasistatic,
+}
+
+/// One contact's kinematics and forces, for output.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactReport {
+    /// The engine's contact.
+    pub contact: Contact,
+    /// δ̇ (positive approaching).
+    pub penetration_rate: f64,
+    /// Normal force magnitude.
+    pub normal_force: f64,
+    /// Friction force on I, world frame.
+    pub friction_force_w: Vector3,
+    /// Friction torque on I about the normal.
+    pub friction_torque: f64,
+}
+
+/// Why a CONTACT cannot become a force element.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ContactForceError {
+    /// NORMAL_ROUTINE / FRICTION_ROUTINE: loading user routines from shared libraries is not
+    /// built yet; the model check reports it before a run.
+    #[error("{contact}: user force routine {routine} cannot be loaded by this build")]
+    UserRoutine {
+        /// The contact's name.
+        contact: String,
+        /// `library::function`.
+        routine: String,
+    },
+}
+
+/// A CONTACT between two parts.
+#[derive(Debug)]
+pub struct ContactForce {
+    name: String,
+    parts: [PartId; 2],
+    pair: Box<dyn PreparedPair>,
+    params: ContactParams,
+    analysis: Analysis,
+    work: Mutex<WorkCounters>,
+}
+
+impl ContactForce {
+    /// A contact named `name` (e.g. `CONTACT/3`) between `part_i` (the I geometry's part) and
+    /// `part_j`, with geometry prepared as `pair` in the parts' CM frames.
+    pub fn new(
+        name: impl Into<String>,
+        part_i: PartId,
+        part_j: PartId,
+        pair: Box<dyn PreparedPair>,
+        params: ContactParams,
+        analysis: Analysis,
+    ) -> Result<Self, ContactForceError> {
+        let name = name.into();
+        let routine = match (&params.normal, &params.friction) {
+            (NormalModel::User(u), _) | (_, FrictionModel::User(u)) => Some(format!("{}::{}", u.library, u.function)),
+            _ => None,
+        };
+        if let Some(routine) = routine {
+            return Err(ContactForceError::UserRoutine { contact: name, routine });
+        }
+        Ok(Self { name, parts: [part_i, part_j], pair, params, analysis, work: Mutex::new(WorkCounters::default()) })
+    }
+
+    /// The work the engine has done for this contact so far.
+    pub fn work(&self) -> WorkCounters {
+        self.work.lock().map(|w| *w).unwrap_or_default()
+    }
+
+    /// Every contact's kinematics and forces at the given state.
+    pub fn reports(&self, state: &StateView<'_>) -> Result<Vec<ContactReport>, EvaluationError> {
+        let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
+        let mut contacts = Vec::new();
+        let mut work = WorkCounters::default();
+        self.pair.query(&si.pose_w, &sj.pose_w, &mut contacts, &mut work).map_err(|e| EvaluationError {
+            element: self.name.clone(),
+            message: e.to_string(),
+        })?;
+        if let Ok(mut total) = self.work.lock() {
+            *total += work;
+        }
+        let friction = match (&self.params.friction, self.analysis) {
+            (FrictionModel::On(c), _) | (FrictionModel::DynamicsOnly(c), Analysis::Dynamics) => Some(c),
+            _ => None,
+        };
+        let mut out = Vec::with_capacity(contacts.len());
+        for contact in contacts {
+            let p = contact.midpoint_w().coords;
+            let n = contact.normal_w;
+            let v = si.point_velocity_w(&p) - sj.point_velocity_w(&p);
+            let rate = -n.dot(&v);
+            let normal = self.normal_force(contact.penetration, rate);
+            let (friction_force_w, friction_torque) = match friction {
+                Some(c) => {
+                    let slip = v - n * n.dot(&v);
+                    let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
+                    (c.force(&slip, normal.force).force, c.torque(spin, normal.force, contact.area).torque)
+                }
+                None => (Vector3::zeros(), 0.0),
+            };
+            out.push(ContactReport {
+                contact,
+                penetration_rate: rate,
+                normal_force: normal.force,
+                friction_force_w,
+                friction_torque,
+            });
+        }
+        Ok(out)
+    }
+
+    fn normal_force(&self, delta: f64, rate: f64) -> NormalForce {
+        match &self.params.normal {
+            NormalModel::Impact(law) => law.force(delta, rate),
+            NormalModel::Poisson { law, .. } => law.force(delta, rate),
+            // Rejected in `new`.
+            NormalModel::User(_) => NormalForce::ZERO,
+        }
+    }
+}
+
+impl ForceElement for ContactForce {
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn parts(&self) -> &[PartId] {
+        &self.parts
+    }
+
+    fn evaluate(&self, _t: f64, state: &StateView<'_>, loads: &mut [Load]) -> Result<(), EvaluationError> {
+        let (cm_i, cm_j) = (
+            state.part(self.parts[0]).pose_w.translation.vector,
+            state.part(self.parts[1]).pose_w.translation.vector,
+        );
+        let mut on_i = Load::default();
+        let mut on_j = Load::default();
+        for r in self.reports(state)? {
+            let p = r.contact.midpoint_w().coords;
+            let n = r.contact.normal_w;
+            let force = n * r.normal_force + r.friction_force_w;
+            let torque = n * r.friction_torque;
+            let li = Load::at_point(force, &p, &cm_i);
+            let lj = Load::at_point(-force, &p, &cm_j);
+            on_i.force_w += li.force_w;
+            on_i.torque_w += li.torque_w + torque;
+            on_j.force_w += lj.force_w;
+            on_j.torque_w += lj.torque_w - torque;
+        }
+        loads[0] = on_i;
+        loads[1] = on_j;
+        Ok(())
+    }
+}
+
+/// A [`ContactForce`] shared between the system (which evaluates it) and the driver (which
+/// reads its contacts for output and contact prediction).
+#[derive(Debug, Clone)]
+pub struct SharedContact(pub std::sync::Arc<ContactForce>);
+
+impl ForceElement for SharedContact {
+    fn name(&self) -> &str {
+        self.0.name()
+    }
+
+    fn parts(&self) -> &[PartId] {
+        self.0.parts()
+    }
+
+    fn evaluate(&self, t: f64, state: &StateView<'_>, loads: &mut [Load]) -> Result<(), EvaluationError> {
+        self.0.evaluate(t, state, loads)
+    }
+}
