@@ -18,6 +18,7 @@ impl MultibodySystem {
         out: &mut DVector<f64>,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
+        debug_assert!(y.len() == layout.size() && yp.len() == y.len() && out.len() == y.len());
         let states = self.part_states(y)?;
         // Kinematic rows, inertia and the normalization rows; the applied and gyroscopic part
         // comes from `applied_minus_gyroscopic`.
