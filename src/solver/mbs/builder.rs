@@ -9,7 +9,7 @@ use super::motion::{MotionDof, TimeFunction};
 use super::part::{Marker, MarkerId, PartId, PartSpec};
 use super::quaternion::parameters_of;
 use super::system::{MultibodySystem, PartData};
-use nalgebra::{DVector, Isometry3, Vector3};
+use nalgebra::{DVector, Isometry3, UnitQuaternion, Vector3};
 
 /// A constraint's index in the builder (joints, JPRIMs and MOTIONs, in the order added).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -273,9 +273,11 @@ impl MultibodyBuilder {
             initial_y
                 .fixed_rows_mut::<3>(qo)
                 .copy_from(&spec.pose_w.translation.vector);
+            // Renormalized: a quaternion built unchecked may be off the unit sphere.
+            let rotation = UnitQuaternion::new_normalize(spec.pose_w.rotation.into_inner());
             initial_y
                 .fixed_rows_mut::<4>(qo + 3)
-                .copy_from(&parameters_of(&spec.pose_w.rotation));
+                .copy_from(&parameters_of(&rotation));
             initial_y
                 .fixed_rows_mut::<3>(vo)
                 .copy_from(&spec.velocity_w);

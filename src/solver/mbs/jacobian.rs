@@ -19,6 +19,7 @@ use nalgebra::{DMatrix, DVector, Matrix3, Matrix4};
 
 impl MultibodySystem {
     /// Writes the Newton matrix `∂F/∂y + c·∂F/∂y′` at `(t, y, y′)` into `out` (size² entries).
+    /// `F` is linear in `y′` with constant coefficients (I, M, J), so `y′` itself is not used.
     pub fn compute_newton_matrix(
         &self,
         t: f64,
@@ -28,6 +29,8 @@ impl MultibodySystem {
         out: &mut DMatrix<f64>,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
+        debug_assert_eq!(out.shape(), (layout.size(), layout.size()));
+        debug_assert_eq!(y.len(), layout.size());
         let states = self.part_states(y)?;
         out.fill(0.0);
         for (part, data) in self.moving_parts().zip(&self.parts) {

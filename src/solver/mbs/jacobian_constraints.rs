@@ -89,7 +89,7 @@ impl MultibodySystem {
         // ∂(Φ_vᵀλ)/∂q into the dynamic rows.
         if lambda.iter().any(|&l| l != 0.0) {
             let value = |poses: &[Isometry3<f64>; 2], _: &ElementCoordinates| {
-                let g = element.generalized_reaction(&poses[0], &poses[1], &lambda);
+                let g = element.generalized_reaction(&poses[0], &poses[1], lambda);
                 g.iter()
                     .flat_map(|v| v.iter().copied())
                     .collect::<Vec<f64>>()
@@ -107,7 +107,7 @@ impl MultibodySystem {
         let eta = multipliers(y, layout.position_constraint_offset(), element);
         if eta.iter().any(|&l| l != 0.0) {
             let value = |poses: &[Isometry3<f64>; 2], q: &ElementCoordinates| {
-                let g = element.generalized_reaction(&poses[0], &poses[1], &eta);
+                let g = element.generalized_reaction(&poses[0], &poses[1], eta);
                 let mut values = Vec::with_capacity(14);
                 for slot in 0..2 {
                     let e = Vector4::new(q[slot][3], q[slot][4], q[slot][5], q[slot][6]);

@@ -61,8 +61,8 @@ impl PartSpec {
     }
 
     /// Checks mass, inertia and initial state: mass finite and `> 0`; inertia finite, symmetric
-    /// to 1e-12 of its largest entry and positive definite (Cholesky succeeds); pose and
-    /// velocities finite.
+    /// to 1e-12 of its largest entry and positive definite (Cholesky succeeds); position and
+    /// velocities finite; orientation quaternion finite and nonzero (it is renormalized).
     pub(crate) fn validate(&self) -> Result<(), MbsError> {
         let name = self.name.as_str();
         if !(self.mass.is_finite() && self.mass > 0.0) {
@@ -89,8 +89,18 @@ impl PartSpec {
         }
         let finite = |v: &Vector3<f64>| v.iter().all(|x| x.is_finite());
         let rotation = self.pose_w.rotation.quaternion().coords;
-        if !finite(&self.pose_w.translation.vector) || !rotation.iter().all(|x| x.is_finite()) {
-            return Err(MbsError::invalid(name, "POSITION", f64::NAN, "finite"));
+        if !finite(&self.pose_w.translation.vector) {
+            let norm = self.pose_w.translation.vector.norm();
+            return Err(MbsError::invalid(name, "POSITION (norm)", norm, "finite"));
+        }
+        let rotation_norm = rotation.norm();
+        if !(rotation_norm.is_finite() && rotation_norm > 0.0) {
+            return Err(MbsError::invalid(
+                name,
+                "ORIENTATION (quaternion norm)",
+                rotation_norm,
+                "finite and > 0",
+            ));
         }
         if !finite(&self.velocity_w) {
             return Err(MbsError::invalid(

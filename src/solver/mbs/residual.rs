@@ -6,7 +6,7 @@ use super::layout::Formulation;
 use super::quaternion::{g_matrix, rotation_per_parameter};
 use super::system::MultibodySystem;
 use crate::solver::dae::{DaeSystem, EvaluationError, VariableKind};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DVector, Vector3};
 
 impl MultibodySystem {
     /// Writes `F(t, y, y′)` (see [`MultibodySystem`] for the equations) into `out`.
@@ -18,6 +18,7 @@ impl MultibodySystem {
         out: &mut DVector<f64>,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
+        debug_assert!(y.len() == layout.size() && yp.len() == y.len() && out.len() == y.len());
         let states = self.part_states(y)?;
         // Kinematic rows, inertia and the normalization rows; the applied and gyroscopic part
         // comes from `applied_minus_gyroscopic`.
@@ -40,23 +41,32 @@ impl MultibodySystem {
             out.fixed_rows_mut::<3>(vo + 3).copy_from(&angular);
             out[layout.mu_offset(part)] = e.norm_squared() - 1.0;
         }
-        let phi = self.constraint_values(t, &states)?;
-        out.rows_mut(
-            layout.position_constraint_offset(),
-            layout.constraint_rows(),
-        )
-        .copy_from(&phi);
-        if layout.formulation() == Formulation::Si2 {
-            self.add_stabilization(t, y, &states, out);
-        }
-        // Constraint forces Φ_vᵀλ in the dynamic rows.
+        // Φ in its rows and the constraint forces Φ_vᵀλ in the dynamic rows, from one set of
+        // marker frames per element.
         for element in &self.constraints {
             let (pose_a, pose_b) = (
                 &states[element.part_i.0].pose_w,
                 &states[element.part_j.0].pose_w,
             );
+            let frames = element.frames(pose_a, pose_b);
             let lambda = multipliers(y, layout.lambda_offset(), element);
-            let reaction = element.generalized_reaction(pose_a, pose_b, &lambda);
+            let mut reaction = [Vector3::zeros(); 4];
+            for (k, (primitive, &l)) in element.primitives.iter().zip(lambda).enumerate() {
+                let value = primitive.value(&frames, t);
+                if !value.is_finite() {
+                    return Err(EvaluationError {
+                        element: element.name.clone(),
+                        message: format!(
+                            "constraint equation {k} ({primitive:?}) is {value} at t = {t}"
+                        ),
+                    });
+                }
+                out[layout.position_constraint_offset() + element.row + k] = value;
+                let gradient = ConstraintElement::body_gradient(primitive, &frames, pose_a, pose_b);
+                for (sum, g) in reaction.iter_mut().zip(gradient) {
+                    *sum += g * l;
+                }
+            }
             for (part, force, torque) in [
                 (element.part_i, reaction[0], reaction[1]),
                 (element.part_j, reaction[2], reaction[3]),
@@ -70,6 +80,9 @@ impl MultibodySystem {
                 let mut angular = out.fixed_rows_mut::<3>(vo + 3);
                 angular += torque;
             }
+        }
+        if layout.formulation() == Formulation::Si2 {
+            self.add_stabilization(t, y, &states, out);
         }
         Ok(())
     }
@@ -98,7 +111,7 @@ impl MultibodySystem {
                 out[layout.lambda_offset() + element.row + k] = rate + phi_t[element.row + k];
             }
             let eta = multipliers(y, layout.position_constraint_offset(), element);
-            let correction = element.generalized_reaction(pose_a, pose_b, &eta);
+            let correction = element.generalized_reaction(pose_a, pose_b, eta);
             for (part, linear, angular) in [
                 (element.part_i, correction[0], correction[1]),
                 (element.part_j, correction[2], correction[3]),
@@ -118,17 +131,14 @@ impl MultibodySystem {
     }
 }
 
-/// The multipliers of one constraint element.
-pub(crate) fn multipliers(
-    y: &DVector<f64>,
-    lambda_offset: usize,
+/// The multipliers of one constraint element (its rows of the block at `offset`).
+pub(crate) fn multipliers<'y>(
+    y: &'y DVector<f64>,
+    offset: usize,
     element: &ConstraintElement,
-) -> Vec<f64> {
-    let start = lambda_offset + element.row;
-    y.rows(start, element.primitives.len())
-        .iter()
-        .copied()
-        .collect()
+) -> &'y [f64] {
+    let start = offset + element.row;
+    &y.as_slice()[start..start + element.primitives.len()]
 }
 
 impl DaeSystem for MultibodySystem {

@@ -243,3 +243,34 @@ fn joints_that_cannot_close_fail_assembly_naming_an_element() {
     assert!((residual - 0.4).abs() < 1e-9, "{error}");
     assert!(worst.starts_with("JOINT/"), "{error}");
 }
+
+#[test]
+fn unnormalized_orientation_is_renormalized_and_zero_is_rejected() {
+    let quaternion =
+        |w, i, j, k| UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(w, i, j, k));
+    let pose = |q| Isometry3::from_parts(Translation3::identity(), q);
+    let mut builder = MultibodyBuilder::new(Vector3::zeros());
+    let spec = PartSpec::at_rest(
+        "PART/2",
+        1.0,
+        Matrix3::identity(),
+        pose(quaternion(2.0, 0.0, 0.0, 0.0)),
+    );
+    let part = builder.add_part(spec).unwrap();
+    let system = builder.build().unwrap();
+    let e = system.parameters(&system.initial_y, part);
+    assert_eq!(e, nalgebra::Vector4::new(1.0, 0.0, 0.0, 0.0));
+    let zero = PartSpec::at_rest(
+        "PART/3",
+        1.0,
+        Matrix3::identity(),
+        pose(quaternion(0.0, 0.0, 0.0, 0.0)),
+    );
+    let error = MultibodyBuilder::new(Vector3::zeros())
+        .add_part(zero)
+        .unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "PART/3: ORIENTATION (quaternion norm) = 0.0 is out of range: must be finite and > 0"
+    );
+}
