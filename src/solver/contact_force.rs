@@ -82,13 +82,25 @@ impl ContactForce {
     ) -> Result<Self, ContactForceError> {
         let name = name.into();
         let routine = match (&params.normal, &params.friction) {
-            (NormalModel::User(u), _) | (_, FrictionModel::User(u)) => Some(format!("{}::{}", u.library, u.function)),
+            (NormalModel::User(u), _) | (_, FrictionModel::User(u)) => {
+                Some(format!("{}::{}", u.library, u.function))
+            }
             _ => None,
         };
         if let Some(routine) = routine {
-            return Err(ContactForceError::UserRoutine { contact: name, routine });
+            return Err(ContactForceError::UserRoutine {
+                contact: name,
+                routine,
+            });
         }
-        Ok(Self { name, parts: [part_i, part_j], pair, params, analysis, work: Mutex::new(WorkCounters::default()) })
+        Ok(Self {
+            name,
+            parts: [part_i, part_j],
+            pair,
+            params,
+            analysis,
+            work: Mutex::new(WorkCounters::default()),
+        })
     }
 
     /// The work the engine has done for this contact so far.
@@ -101,15 +113,19 @@ impl ContactForce {
         let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
         let mut contacts = Vec::new();
         let mut work = WorkCounters::default();
-        self.pair.query(&si.pose_w, &sj.pose_w, &mut contacts, &mut work).map_err(|e| EvaluationError {
-            element: self.name.clone(),
-            message: e.to_string(),
-        })?;
+        self.pair
+            .query(&si.pose_w, &sj.pose_w, &mut contacts, &mut work)
+            .map_err(|e| EvaluationError {
+                element: self.name.clone(),
+                message: e.to_string(),
+            })?;
         if let Ok(mut total) = self.work.lock() {
             *total += work;
         }
         let friction = match (&self.params.friction, self.analysis) {
-            (FrictionModel::On(c), _) | (FrictionModel::DynamicsOnly(c), Analysis::Dynamics) => Some(c),
+            (FrictionModel::On(c), _) | (FrictionModel::DynamicsOnly(c), Analysis::Dynamics) => {
+                Some(c)
+            }
             _ => None,
         };
         let mut out = Vec::with_capacity(contacts.len());
@@ -123,7 +139,10 @@ impl ContactForce {
                 Some(c) => {
                     let slip = v - n * n.dot(&v);
                     let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
-                    (c.force(&slip, normal.force).force, c.torque(spin, normal.force, contact.area).torque)
+                    (
+                        c.force(&slip, normal.force).force,
+                        c.torque(spin, normal.force, contact.area).torque,
+                    )
                 }
                 None => (Vector3::zeros(), 0.0),
             };
@@ -157,7 +176,12 @@ impl ForceElement for ContactForce {
         &self.parts
     }
 
-    fn evaluate(&self, _t: f64, state: &StateView<'_>, loads: &mut [Load]) -> Result<(), EvaluationError> {
+    fn evaluate(
+        &self,
+        _t: f64,
+        state: &StateView<'_>,
+        loads: &mut [Load],
+    ) -> Result<(), EvaluationError> {
         let (cm_i, cm_j) = (
             state.part(self.parts[0]).pose_w.translation.vector,
             state.part(self.parts[1]).pose_w.translation.vector,
@@ -196,7 +220,12 @@ impl ForceElement for SharedContact {
         self.0.parts()
     }
 
-    fn evaluate(&self, t: f64, state: &StateView<'_>, loads: &mut [Load]) -> Result<(), EvaluationError> {
+    fn evaluate(
+        &self,
+        t: f64,
+        state: &StateView<'_>,
+        loads: &mut [Load],
+    ) -> Result<(), EvaluationError> {
         self.0.evaluate(t, state, loads)
     }
 }

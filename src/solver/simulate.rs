@@ -9,10 +9,10 @@
 //! order, with small steps. Each onset is predicted once. The run reports how many steps were
 //! rejected for onsets and the largest penetration a contact started with.
 
+use super::EvaluationError;
 use super::bdf::{Bdf, IntegratorError, IntegratorSettings, IntegratorStats};
 use super::contact_force::{ContactForce, ContactReport};
 use super::mbs::{MbsError, MultibodySystem, PartState, StateView};
-use super::EvaluationError;
 use std::sync::Arc;
 
 /// Where in the step a retried step ends: the fraction of the time from the estimated onset
@@ -101,19 +101,33 @@ pub fn simulate(
     settings: &DynamicsSettings,
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
 ) -> Result<RunSummary, SimulationError> {
-    let DynamicsSettings { start, end, output_step, integrator } = *settings;
+    let DynamicsSettings {
+        start,
+        end,
+        output_step,
+        integrator,
+    } = *settings;
     if !(start.is_finite() && end.is_finite() && end > start) {
-        return Err(SimulationError::Settings(format!("END = {end:?} must be finite and > START = {start:?}")));
+        return Err(SimulationError::Settings(format!(
+            "END = {end:?} must be finite and > START = {start:?}"
+        )));
     }
     if !(output_step.is_finite() && output_step > 0.0) {
-        return Err(SimulationError::Settings(format!("DTOUT = {output_step:?} must be finite and > 0")));
+        return Err(SimulationError::Settings(format!(
+            "DTOUT = {output_step:?} must be finite and > 0"
+        )));
     }
     let initial = system.compute_initial_state(start)?;
     let mut bdf = Bdf::new(system, start, initial.y, initial.yp, integrator)
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
     let mut summary = RunSummary::default();
-    let frame_at = |system: &MultibodySystem, t: f64, y: &nalgebra::DVector<f64>| -> Result<Frame, SimulationError> {
-        let parts = system.part_states(y).map_err(|source| SimulationError::Evaluation { t, source })?;
+    let frame_at = |system: &MultibodySystem,
+                    t: f64,
+                    y: &nalgebra::DVector<f64>|
+     -> Result<Frame, SimulationError> {
+        let parts = system
+            .part_states(y)
+            .map_err(|source| SimulationError::Evaluation { t, source })?;
         let view = StateView::new(&parts);
         let contacts = contacts
             .iter()
@@ -128,12 +142,24 @@ pub fn simulate(
     summary.frames += 1;
     let outputs = ((end - start) / output_step).round().max(1.0) as u64;
     let mut next_output = 1u64;
-    let output_time = |k: u64| if k >= outputs { end } else { start + k as f64 * output_step };
+    let output_time = |k: u64| {
+        if k >= outputs {
+            end
+        } else {
+            start + k as f64 * output_step
+        }
+    };
     while next_output <= outputs {
         let target = output_time(next_output);
-        bdf.set_stop_time(Some(target)).map_err(|source| SimulationError::Integrator { t: bdf.t(), source })?;
+        bdf.set_stop_time(Some(target))
+            .map_err(|source| SimulationError::Integrator { t: bdf.t(), source })?;
         let t_before = bdf.t();
-        let mut t = bdf.step(system).map_err(|source| SimulationError::Integrator { t: t_before, source })?;
+        let mut t = bdf
+            .step(system)
+            .map_err(|source| SimulationError::Integrator {
+                t: t_before,
+                source,
+            })?;
         frame = frame_at(system, t, bdf.y())?;
         // Contact prediction: one retry per new contact.
         let onset = frame
@@ -142,23 +168,33 @@ pub fn simulate(
             .zip(&active)
             .filter(|(now, was)| !**was && !now.is_empty())
             .filter_map(|(now, _)| {
-                let deepest = now.iter().max_by(|a, b| a.contact.penetration.total_cmp(&b.contact.penetration))?;
-                (deepest.penetration_rate > 0.0).then(|| t - deepest.contact.penetration / deepest.penetration_rate)
+                let deepest = now
+                    .iter()
+                    .max_by(|a, b| a.contact.penetration.total_cmp(&b.contact.penetration))?;
+                (deepest.penetration_rate > 0.0)
+                    .then(|| t - deepest.contact.penetration / deepest.penetration_rate)
             })
             .fold(f64::INFINITY, f64::min);
         if onset.is_finite() {
-            let retry = (onset + ONSET_MARGIN * (t - onset)).clamp(t_before + ONSET_MARGIN * (t - t_before), t);
+            let retry = (onset + ONSET_MARGIN * (t - onset))
+                .clamp(t_before + ONSET_MARGIN * (t - t_before), t);
             if retry < t {
                 t = bdf
                     .reject_last_step_and_retry_to(system, retry)
-                    .map_err(|source| SimulationError::Integrator { t: t_before, source })?;
+                    .map_err(|source| SimulationError::Integrator {
+                        t: t_before,
+                        source,
+                    })?;
                 summary.rejected_for_contact_onset += 1;
                 frame = frame_at(system, t, bdf.y())?;
             }
         }
         for (k, now) in frame.contacts.iter().enumerate() {
             if !active[k] {
-                let entry = now.iter().map(|r| r.contact.penetration).fold(0.0, f64::max);
+                let entry = now
+                    .iter()
+                    .map(|r| r.contact.penetration)
+                    .fold(0.0, f64::max);
                 summary.largest_entry_penetration = summary.largest_entry_penetration.max(entry);
             }
             active[k] = !now.is_empty();
