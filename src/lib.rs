@@ -44,6 +44,7 @@ pub mod dataset;
 pub mod expr;
 pub mod model;
 pub mod output;
+pub mod run;
 pub mod scenes;
 pub mod solver;
 pub mod tradeoff;

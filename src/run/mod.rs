@@ -1,0 +1,8 @@
+//! Running a model: the dataset's [`Model`](crate::model::Model) lowered onto the solver
+//! ([`lower`]), with the measures its expressions read ([`measures`]).
+
+pub mod frames;
+pub mod lower;
+pub mod measures;
+pub mod output;
+pub mod sforce;
