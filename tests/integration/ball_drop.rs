@@ -10,7 +10,7 @@ use contact_core::{ContactArgs, Geometry, GeometryEngine, GeometryInstance, Norm
 use nalgebra::{Isometry3, Matrix3, Vector3};
 use std::sync::Arc;
 
-const RADIUS: f64 = 0.1;
+pub const RADIUS: f64 = 0.1;
 const MASS: f64 = 1.0;
 const G: f64 = 9.81;
 const DROP: f64 = 1.0;
@@ -28,7 +28,7 @@ fn impact_args() -> ContactArgs {
 
 /// Apex heights of the ball's centre after each bounce, from the 1-DOF equation
 /// `m z̈ = −m g + Fn(r − z, −ż)` integrated by classical RK4 at a fixed 1 µs step.
-fn reference_apexes(bounces: usize) -> Vec<f64> {
+pub fn reference_apexes(bounces: usize) -> Vec<f64> {
     let (params, _) = impact_args().validate(&Units::MKS).unwrap();
     let NormalModel::Impact(law) = params.normal else {
         unreachable!()

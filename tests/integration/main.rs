@@ -3,6 +3,7 @@
 mod ball_drop;
 mod check;
 mod dataset;
+mod examples;
 mod expressions;
 mod fuzz_seeds;
 mod malformed;
