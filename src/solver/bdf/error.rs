@@ -116,6 +116,14 @@ pub enum IntegratorError {
         /// End of the last accepted step.
         to: f64,
     },
+    /// [`Bdf::make_consistent`](super::Bdf::make_consistent) could not make the start consistent.
+    #[error("cannot make the initial point at t = {t:?} consistent: {reason}")]
+    InconsistentStart {
+        /// The initial time.
+        t: f64,
+        /// Why (index > 1, not converged, evaluation failure, already started).
+        reason: String,
+    },
     /// There is no accepted step to roll back (or it was already rolled back).
     #[error("no accepted step to reject: take a step first (a step can be rolled back once)")]
     NothingToReject,

@@ -15,6 +15,9 @@ const CJ_RATIO_LIMIT: f64 = 0.6;
 const NEWTON_TOLERANCE: f64 = 0.33;
 /// Newton counts as diverging when successive corrections shrink by less than this.
 const MAX_RATE: f64 = 0.9;
+/// A step that needed more Newton iterations than this with an old matrix asks for a fresh one
+/// at the next step (slow convergence).
+const SLOW_ITERATIONS: usize = 4;
 /// Most convergence or evaluation failures of one step before giving up (DASSL's 10).
 const MAX_CONVERGENCE_FAILURES: u32 = 10;
 /// Most failed attempts of one step in all.
@@ -164,8 +167,10 @@ impl Bdf {
         };
         if let Some(stop) = stop {
             let to_stop = stop - self.t;
-            // Land on the stop time instead of leaving a sliver of less than 1% of a step.
-            if h * 1.01 >= to_stop {
+            // Land on the stop time instead of leaving a sliver of less than 1% of a step
+            // (unless that would exceed HMAX).
+            let hmax = self.settings.hmax.unwrap_or(f64::INFINITY);
+            if to_stop <= h || (h * 1.01 >= to_stop && to_stop <= hmax) {
                 self.h = to_stop;
                 return (to_stop, stop);
             }
@@ -308,6 +313,9 @@ impl Bdf {
                 rate_factor = rate / (1.0 - rate);
             }
             if rate_factor * norm <= NEWTON_TOLERANCE {
+                if m + 1 >= SLOW_ITERATIONS && !fresh {
+                    self.newton.invalidate();
+                }
                 return Ok(Converged { y, yp, e });
             }
         }

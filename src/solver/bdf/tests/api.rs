@@ -77,6 +77,18 @@ fn hmax_and_kmax_are_honoured() {
         assert!(bdf.t() - bdf.t_previous() <= 0.05 * (1.0 + 1e-12));
         assert!(bdf.last_order() <= 2);
     }
+    // A stop just beyond HMAX is reached in two steps, never one longer than HMAX.
+    bdf.set_stop_time(Some(3.0 + 0.0502)).unwrap();
+    while bdf.t() < 3.0502 {
+        bdf.step(&mut system).unwrap();
+        assert!(bdf.t() - bdf.t_previous() <= 0.05 * (1.0 + 1e-12));
+    }
+    assert!(
+        bdf.restart(-1.0)
+            .unwrap_err()
+            .to_string()
+            .contains("restart step = -1.0")
+    );
     let stats = bdf.stats();
     assert_eq!(stats.steps_by_order[3..].iter().sum::<u64>(), 0);
     assert!(stats.steps_by_order[2] > 0);
@@ -422,4 +434,53 @@ fn bad_initial_state_and_settings_are_typed_errors() {
         bdf.step(&mut system),
         Err(IntegratorError::NoInitialStep)
     ));
+}
+
+#[test]
+fn a_consistent_start_is_computed_for_index_1_systems() {
+    // Robertson as a DAE, started with a wrong algebraic y3 and y′ = 0.
+    let mut system = Robertson { as_dae: true };
+    let y0 = DVector::from_vec(vec![0.9, 0.1, 0.5]);
+    let mut bdf = Bdf::new(
+        &system,
+        0.0,
+        y0,
+        DVector::zeros(3),
+        IntegratorSettings::default(),
+    )
+    .unwrap();
+    bdf.make_consistent(&mut system).unwrap();
+    let (y, yp) = (bdf.y().clone(), bdf.yp().clone());
+    // Closed form: y3 = 1 − y1 − y2 = 0, then y1′ = −0.04·y1, y2′ = 0.04·y1 − 3e7·y2².
+    assert!(y[2].abs() < 1e-12, "y3 = {}", y[2]);
+    assert!((yp[0] + 0.04 * 0.9).abs() < 1e-12, "y1' = {}", yp[0]);
+    assert!(
+        (yp[1] - (0.04 * 0.9 - 3e7 * 0.01)).abs() < 1e-12 * 3e5,
+        "y2' = {}",
+        yp[1]
+    );
+    // Twice is an error once stepping has begun.
+    bdf.set_stop_time(Some(1.0)).unwrap();
+    bdf.step(&mut system).unwrap();
+    assert!(matches!(
+        bdf.make_consistent(&mut system),
+        Err(IntegratorError::InconsistentStart { .. })
+    ));
+}
+
+#[test]
+fn a_consistent_start_is_refused_for_index_3_systems() {
+    use crate::solver::bdf::reference::Pendulum;
+    let mut pendulum = Pendulum {
+        mass: 1.0,
+        length: 1.0,
+        gravity: 9.81,
+    };
+    let (y0, yp0) = pendulum.at_rest(0.5);
+    let mut bdf = Bdf::new(&pendulum, 0.0, y0, yp0, IntegratorSettings::default()).unwrap();
+    let error = bdf.make_consistent(&mut pendulum).unwrap_err();
+    assert!(
+        error.to_string().contains("y[2] has DAE index > 1"),
+        "{error}"
+    );
 }
