@@ -53,6 +53,12 @@ pub enum FailureCause {
     },
     /// The scaled Newton matrix was singular to working precision.
     SingularMatrix,
+    /// The system's inner iteration ([`DaeSystem::corrector_converged`](crate::solver::DaeSystem::corrector_converged),
+    /// e.g. the augmented Lagrangian) still asked for more after MAXIT corrector passes.
+    InnerIterations {
+        /// Corrector passes made.
+        passes: usize,
+    },
 }
 
 impl std::fmt::Display for FailureCause {
@@ -73,6 +79,10 @@ impl std::fmt::Display for FailureCause {
             Self::Evaluation(e) => write!(f, "the equations could not be evaluated: {e}"),
             Self::NonFinite { index } => write!(f, "non-finite value (NaN or inf) in y[{index}]"),
             Self::SingularMatrix => write!(f, "the Newton matrix is singular"),
+            Self::InnerIterations { passes } => write!(
+                f,
+                "the inner (augmented-Lagrangian) iteration did not settle in {passes} corrector passes"
+            ),
         }
     }
 }

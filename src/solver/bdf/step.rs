@@ -87,7 +87,9 @@ impl Bdf {
                     self.stats.rejected_error_test += 1;
                     None
                 }
-                FailureCause::Convergence { .. } | FailureCause::SingularMatrix => {
+                FailureCause::Convergence { .. }
+                | FailureCause::SingularMatrix
+                | FailureCause::InnerIterations { .. } => {
                     convergence_failures += 1;
                     self.stats.rejected_convergence += 1;
                     Some(0.25)
@@ -210,6 +212,7 @@ impl Bdf {
             return Err(Retry::Failed(FailureCause::SingularMatrix));
         };
         let coefficients = history.begin_step(h);
+        system.attempt_started(t_new, h);
         let outcome = self.correct(system, &history, coefficients, h, t_new);
         match outcome {
             Ok(converged) => {
@@ -236,7 +239,9 @@ impl Bdf {
         }
     }
 
-    /// Modified Newton on `F(t, y, y′⁽⁰⁾ + c·(y − y⁽⁰⁾)) = 0` from the predictor.
+    /// Modified Newton on `F(t, y, y′⁽⁰⁾ + c·(y − y⁽⁰⁾)) = 0` from the predictor, repeated
+    /// while the system's inner iteration ([`DaeSystem::corrector_converged`], e.g. the
+    /// augmented-Lagrangian update) asks for it, at most MAXIT passes.
     fn correct(
         &mut self,
         system: &mut dyn DaeSystem,
@@ -247,16 +252,42 @@ impl Bdf {
     ) -> Result<Converged, Retry> {
         let n = self.y.len();
         let cj = coefficients.cj;
-        let mut y = DVector::zeros(n);
-        let mut yp = DVector::zeros(n);
-        history.predict(&mut y, &mut yp);
-        let corrector = self.settings.corrector;
-        let predicted_norm = self.norms.convergence_norm(&y, h, corrector);
+        let mut state = Converged {
+            y: DVector::zeros(n),
+            yp: DVector::zeros(n),
+            e: DVector::zeros(n),
+        };
+        history.predict(&mut state.y, &mut state.yp);
         let ratio = cj / self.newton.cj;
         if !self.newton.is_factorised() || !(CJ_RATIO_LIMIT..=1.0 / CJ_RATIO_LIMIT).contains(&ratio)
         {
             self.newton.invalidate();
         }
+        let mut passes = 0;
+        loop {
+            self.newton_iterations(system, &mut state, cj, h, t_new)?;
+            if !system.corrector_converged(t_new, &state.y, &state.yp) {
+                return Ok(state);
+            }
+            passes += 1;
+            self.stats.inner_iterations += 1;
+            if passes >= self.settings.maxit {
+                return Err(Retry::Failed(FailureCause::InnerIterations { passes }));
+            }
+        }
+    }
+
+    /// Newton iterations from `state` until converged (Ok) or failed.
+    fn newton_iterations(
+        &mut self,
+        system: &mut dyn DaeSystem,
+        state: &mut Converged,
+        cj: f64,
+        h: f64,
+        t_new: f64,
+    ) -> Result<(), Retry> {
+        let corrector = self.settings.corrector;
+        let start_norm = self.norms.convergence_norm(&state.y, h, corrector);
         let mut fresh = false;
         // The rate estimate s = ρ/(1−ρ) starts pessimistic at every step, so a step needs a
         // second iteration (a measured rate) unless its first correction is already 300× below
@@ -265,13 +296,12 @@ impl Bdf {
         // Modified test sees displacements only), which cost 3.5× the steps and 60× the energy
         // drift on the pendulum test.
         let mut rate_factor = 100.0;
-        let mut e = DVector::zeros(n);
-        let mut delta = DVector::zeros(n);
+        let mut delta = DVector::zeros(state.y.len());
         let mut old_norm = 0.0;
         for m in 0..self.settings.maxit {
             self.stats.residual_evaluations += 1;
             system
-                .residual(t_new, &y, &yp, &mut delta)
+                .residual(t_new, &state.y, &state.yp, &mut delta)
                 .map_err(|err| Retry::Failed(FailureCause::Evaluation(err)))?;
             if let Some(index) = delta.iter().position(|v| !v.is_finite()) {
                 return Err(Retry::Failed(FailureCause::NonFinite { index }));
@@ -280,7 +310,7 @@ impl Bdf {
                 self.stats.jacobian_evaluations += 1;
                 let kinds = self.norms.kinds().to_vec();
                 self.newton
-                    .refresh(system, t_new, &y, &yp, cj, h, &kinds)
+                    .refresh(system, t_new, &state.y, &state.yp, cj, h, &kinds)
                     .map_err(Retry::Failed)?;
                 self.stats.lu_factorizations += 1;
                 fresh = true;
@@ -296,14 +326,14 @@ impl Bdf {
             if let Some(index) = delta.iter().position(|v| !v.is_finite()) {
                 return Err(Retry::Failed(FailureCause::NonFinite { index }));
             }
-            y -= &delta;
-            e -= &delta;
-            yp.axpy(-cj, &delta, 1.0);
+            state.y -= &delta;
+            state.e -= &delta;
+            state.yp.axpy(-cj, &delta, 1.0);
             let norm = self.norms.convergence_norm(&delta, h, corrector);
             if m == 0 {
                 old_norm = norm;
-                if norm <= 100.0 * f64::EPSILON * predicted_norm {
-                    return Ok(Converged { y, yp, e });
+                if norm <= 100.0 * f64::EPSILON * start_norm {
+                    return Ok(());
                 }
             } else {
                 let rate = (norm / old_norm).powf(1.0 / m as f64);
@@ -316,7 +346,7 @@ impl Bdf {
                 if m + 1 >= SLOW_ITERATIONS && !fresh {
                     self.newton.invalidate();
                 }
-                return Ok(Converged { y, yp, e });
+                return Ok(());
             }
         }
         self.not_converged(fresh, &delta, h)
@@ -324,12 +354,7 @@ impl Bdf {
 
     /// A Newton failure: with an old matrix, retry the same step with a new one; with a fresh
     /// matrix, the attempt fails.
-    fn not_converged(
-        &mut self,
-        fresh: bool,
-        delta: &DVector<f64>,
-        h: f64,
-    ) -> Result<Converged, Retry> {
+    fn not_converged(&mut self, fresh: bool, delta: &DVector<f64>, h: f64) -> Result<(), Retry> {
         if fresh {
             let dominant = self.norms.dominant(delta, h, self.settings.corrector, true);
             Err(Retry::Failed(FailureCause::Convergence { dominant }))
