@@ -121,6 +121,8 @@ struct Snapshot {
     y: DVector<f64>,
     yp: DVector<f64>,
     order_taken: usize,
+    /// The stop time before the step (the step may have reached and cleared it).
+    stop_time: Option<f64>,
 }
 
 /// A variable-step, variable-order BDF integrator (see the [module docs](self)).
@@ -335,6 +337,7 @@ impl Bdf {
         self.t_prev = snapshot.t_prev;
         self.y = snapshot.y;
         self.yp = snapshot.yp;
+        self.stop_time = snapshot.stop_time;
         let h = t_target - self.t;
         self.h = h;
         self.history = Some(History::restart(&self.y, &self.yp, h, self.settings.kmax));

@@ -62,6 +62,7 @@ impl Bdf {
             y: self.y.clone(),
             yp: self.yp.clone(),
             order_taken: 0,
+            stop_time: self.stop_time,
         };
         self.norms.set_weights(&self.y);
         let mut convergence_failures = 0u32;

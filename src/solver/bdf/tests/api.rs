@@ -225,6 +225,27 @@ fn rejecting_needs_an_accepted_step_and_a_later_target() {
     assert!((bdf.y()[0] - (-target).exp()).abs() < 1e-6);
 }
 
+#[test]
+fn a_stop_time_reached_by_a_rolled_back_step_is_kept() {
+    let settings = IntegratorSettings {
+        hinit: Some(0.01),
+        ..IntegratorSettings::default()
+    };
+    let (mut system, mut bdf) = decay(settings);
+    bdf.set_stop_time(Some(0.01)).unwrap();
+    assert_eq!(bdf.step(&mut system).unwrap(), 0.01);
+    assert_eq!(
+        bdf.reject_last_step_and_retry_to(&mut system, 0.004)
+            .unwrap(),
+        0.004
+    );
+    // Stepping on lands on 0.01 again.
+    while bdf.t() < 0.01 {
+        bdf.step(&mut system).unwrap();
+    }
+    assert_eq!(bdf.t(), 0.01);
+}
+
 /// `y′ = y²`, `y(0) = 1`: the solution 1/(1 − t) blows up at t = 1.
 struct BlowUp;
 impl DaeSystem for BlowUp {
