@@ -46,6 +46,16 @@ pub trait DaeSystem {
     /// The kind of each component of `y` (length [`Self::size`]).
     fn variable_kinds(&self) -> Vec<VariableKind>;
 
+    /// The absolute part of each variable's error weight: the integrator tests
+    /// `|e_i| / (ERROR·(|y_i| + s_i))`. The default, `s_i = 1` for every variable, is Adams'
+    /// convention (ERROR absolute in model units). A model passes its characteristic length for
+    /// displacements (and the matching scales for velocities and angles) so that the same model
+    /// in millimetres or in metres is integrated to the same relative accuracy. Each `s_i` must
+    /// be finite and > 0 (length [`Self::size`]).
+    fn absolute_scales(&self) -> Vec<f64> {
+        vec![1.0; self.size()]
+    }
+
     /// Writes `F(t, y, y′)` into `out` (length [`Self::size`]).
     fn residual(
         &mut self,

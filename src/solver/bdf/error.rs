@@ -14,7 +14,7 @@ set INTEGRATOR/KMAX=2, set a smaller INTEGRATOR/HMAX, avoid extreme friction \
 pub struct Dominant {
     /// Index of the variable in `y`.
     pub index: usize,
-    /// Weighted size: |value| / (ERROR·(|y| + 1)), the quantity the test compares with 1.
+    /// Weighted size: |value| / (ERROR·(|y| + s)), s the variable's absolute scale, the quantity the test compares with 1.
     pub weighted: f64,
 }
 

@@ -179,6 +179,23 @@ impl Bdf {
                 what: format!("{bad:?}: an algebraic variable's index must be in 1..=3"),
             });
         }
+        let scales = DVector::from_vec(system.absolute_scales());
+        if scales.len() != n {
+            return Err(IntegratorError::InvalidInitialState {
+                what: format!(
+                    "absolute_scales() has {} entries, size() is {n}",
+                    scales.len()
+                ),
+            });
+        }
+        if let Some(i) = scales.iter().position(|s| !(s.is_finite() && *s > 0.0)) {
+            return Err(IntegratorError::InvalidInitialState {
+                what: format!(
+                    "absolute_scales()[{i}] = {:?} must be finite and > 0",
+                    scales[i]
+                ),
+            });
+        }
         for (name, v) in [("y0", &y0), ("yp0", &yp0)] {
             if v.len() != n {
                 return Err(IntegratorError::InvalidInitialState {
@@ -198,7 +215,7 @@ impl Bdf {
         }
         Ok(Self {
             settings,
-            norms: Norms::new(kinds, settings.error),
+            norms: Norms::new(kinds, scales, settings.error),
             t: t0,
             t_prev: t0,
             y: y0,

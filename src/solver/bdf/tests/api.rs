@@ -505,3 +505,77 @@ fn a_consistent_start_is_refused_for_index_3_systems() {
         "{error}"
     );
 }
+
+/// `y′ = −y` in units where `y` is of size `scale`, with the matching absolute scale.
+struct ScaledDecay {
+    scale: f64,
+}
+impl DaeSystem for ScaledDecay {
+    fn size(&self) -> usize {
+        1
+    }
+    fn variable_kinds(&self) -> Vec<VariableKind> {
+        vec![VariableKind::Differential]
+    }
+    fn absolute_scales(&self) -> Vec<f64> {
+        vec![self.scale]
+    }
+    fn residual(
+        &mut self,
+        _t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        out: &mut DVector<f64>,
+    ) -> Result<(), EvaluationError> {
+        out[0] = yp[0] + y[0];
+        Ok(())
+    }
+    fn newton_matrix(
+        &mut self,
+        _t: f64,
+        _y: &DVector<f64>,
+        _yp: &DVector<f64>,
+        c: f64,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), EvaluationError> {
+        out[(0, 0)] = c + 1.0;
+        Ok(())
+    }
+}
+
+#[test]
+fn the_same_model_in_other_units_takes_the_same_steps() {
+    let run = |scale: f64| {
+        let mut system = ScaledDecay { scale };
+        let y0 = DVector::from_element(1, scale);
+        let settings = IntegratorSettings {
+            error: 1e-6,
+            ..IntegratorSettings::default()
+        };
+        let mut bdf = Bdf::new(&system, 0.0, y0.clone(), -y0, settings).unwrap();
+        bdf.set_stop_time(Some(5.0)).unwrap();
+        while bdf.t() < 5.0 {
+            bdf.step(&mut system).unwrap();
+        }
+        (bdf.stats().steps, bdf.y()[0] / scale)
+    };
+    let (reference_steps, reference_y) = run(1.0);
+    for scale in [1e-6, 1e6] {
+        let (steps, y) = run(scale);
+        assert_eq!(steps, reference_steps, "scale {scale}");
+        assert!(
+            (y - reference_y).abs() < 1e-12,
+            "scale {scale}: {y} vs {reference_y}"
+        );
+    }
+    let e = Bdf::new(
+        &ScaledDecay { scale: 0.0 },
+        0.0,
+        DVector::zeros(1),
+        DVector::zeros(1),
+        IntegratorSettings::default(),
+    )
+    .err()
+    .unwrap();
+    assert!(e.to_string().contains("absolute_scales()[0] = 0.0"), "{e}");
+}
