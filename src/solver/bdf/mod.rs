@@ -19,8 +19,11 @@
 //!    rebuilt when Newton fails with an old matrix or needed 4 or more iterations with it,
 //!    when `c` moved out of `[0.6, 1.67]×` its value at factorisation, or on request ([`Bdf::request_newton_matrix`]); a stale matrix's
 //!    corrections are damped by `2/(1 + c/c_old)`. Convergence: the rate `ρ` of successive
-//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step (a
-//!    first correction below 0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail;
+//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step on
+//!    all variables and `‖Δ‖` over the variables [`Corrector`] names (a first correction below
+//!    0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail. A system with an inner
+//!    iteration (augmented Lagrangian) may ask for further passes
+//!    ([`DaeSystem::corrector_converged`]);
 //! 3. estimates the local error `ck·‖y − y⁽⁰⁾‖` in the weighted RMS norm over the differential
 //!    variables only (ERROR relative and absolute), rejects above 1;
 //! 4. chooses the next order among `k−1, k, k+1` by comparing the error estimates
