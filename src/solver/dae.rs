@@ -46,6 +46,16 @@ pub trait DaeSystem {
     /// The kind of each component of `y` (length [`Self::size`]).
     fn variable_kinds(&self) -> Vec<VariableKind>;
 
+    /// The absolute part of each variable's error weight: the integrator tests
+    /// `|e_i| / (ERROR·(|y_i| + s_i))`. The default, `s_i = 1` for every variable, is Adams'
+    /// convention (ERROR absolute in model units). A model passes its characteristic length for
+    /// displacements (and the matching scales for velocities and angles) so that the same model
+    /// in millimetres or in metres is integrated to the same relative accuracy. Each `s_i` must
+    /// be finite and > 0 (length [`Self::size`]).
+    fn absolute_scales(&self) -> Vec<f64> {
+        vec![1.0; self.size()]
+    }
+
     /// Writes `F(t, y, y′)` into `out` (length [`Self::size`]).
     fn residual(
         &mut self,
@@ -65,6 +75,23 @@ pub trait DaeSystem {
         c: f64,
         out: &mut DMatrix<f64>,
     ) -> Result<(), EvaluationError>;
+
+    /// Called at the start of every step attempt (ending at `t_new`, size `h`), accepted or not,
+    /// before any residual of that attempt: a system with state of its own that the corrector
+    /// updates (augmented-Lagrangian multipliers) resets it here to its value at the last
+    /// accepted step. The default does nothing.
+    fn attempt_started(&mut self, _t_new: f64, _h: f64) {}
+
+    /// Called when Newton has converged on a step attempt at `(t, y, y′)`, before the error
+    /// test. A system with an inner iteration — SPEC §5's augmented Lagrangian,
+    /// `λ ← max(0, λ + p·δ)` until the penetration is below its tolerance — updates its state
+    /// here and returns `true` to have Newton run again on the updated equations from the
+    /// current iterate; `false` accepts the corrector's result. The integrator allows MAXIT
+    /// passes, then fails the attempt with `FailureCause::InnerIterations` (the step is retried
+    /// smaller). The default returns `false`.
+    fn corrector_converged(&mut self, _t: f64, _y: &DVector<f64>, _yp: &DVector<f64>) -> bool {
+        false
+    }
 
     /// Called by the integrator after each accepted step, so the system can update state that
     /// is not part of `y` (contact onset bookkeeping, augmented-Lagrangian multipliers, output).

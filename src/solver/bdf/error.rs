@@ -14,7 +14,7 @@ set INTEGRATOR/KMAX=2, set a smaller INTEGRATOR/HMAX, avoid extreme friction \
 pub struct Dominant {
     /// Index of the variable in `y`.
     pub index: usize,
-    /// Weighted size: |value| / (ERROR·(|y| + 1)), the quantity the test compares with 1.
+    /// Weighted size: |value| / (ERROR·(|y| + s)), s the variable's absolute scale, the quantity the test compares with 1.
     pub weighted: f64,
 }
 
@@ -53,6 +53,12 @@ pub enum FailureCause {
     },
     /// The scaled Newton matrix was singular to working precision.
     SingularMatrix,
+    /// The system's inner iteration ([`DaeSystem::corrector_converged`](crate::solver::DaeSystem::corrector_converged),
+    /// e.g. the augmented Lagrangian) still asked for more after MAXIT corrector passes.
+    InnerIterations {
+        /// Corrector passes made.
+        passes: usize,
+    },
 }
 
 impl std::fmt::Display for FailureCause {
@@ -73,6 +79,10 @@ impl std::fmt::Display for FailureCause {
             Self::Evaluation(e) => write!(f, "the equations could not be evaluated: {e}"),
             Self::NonFinite { index } => write!(f, "non-finite value (NaN or inf) in y[{index}]"),
             Self::SingularMatrix => write!(f, "the Newton matrix is singular"),
+            Self::InnerIterations { passes } => write!(
+                f,
+                "the inner (augmented-Lagrangian) iteration did not settle in {passes} corrector passes"
+            ),
         }
     }
 }
@@ -115,6 +125,14 @@ pub enum IntegratorError {
         from: f64,
         /// End of the last accepted step.
         to: f64,
+    },
+    /// [`Bdf::make_consistent`](super::Bdf::make_consistent) could not make the start consistent.
+    #[error("cannot make the initial point at t = {t:?} consistent: {reason}")]
+    InconsistentStart {
+        /// The initial time.
+        t: f64,
+        /// Why (index > 1, not converged, evaluation failure, already started).
+        reason: String,
     },
     /// There is no accepted step to roll back (or it was already rolled back).
     #[error("no accepted step to reject: take a step first (a step can be rolled back once)")]

@@ -16,11 +16,14 @@
 //! 1. predicts `y⁽⁰⁾`, `y′⁽⁰⁾` from the history polynomial;
 //! 2. corrects with modified Newton on `F(t, y, y′⁽⁰⁾ + c·(y − y⁽⁰⁾)) = 0`, reusing the
 //!    factorised, scaled Newton matrix `∂F/∂y + c·∂F/∂y′` across iterations and steps; it is
-//!    rebuilt when Newton fails with an old matrix, when `c` moved out of `[0.6, 1.67]×` its
-//!    value at factorisation, or on request ([`Bdf::request_newton_matrix`]); a stale matrix's
+//!    rebuilt when Newton fails with an old matrix or needed 4 or more iterations with it,
+//!    when `c` moved out of `[0.6, 1.67]×` its value at factorisation, or on request ([`Bdf::request_newton_matrix`]); a stale matrix's
 //!    corrections are damped by `2/(1 + c/c_old)`. Convergence: the rate `ρ` of successive
-//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step (a
-//!    first correction below 0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail;
+//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step on
+//!    all variables and `‖Δ‖` over the variables [`Corrector`] names (a first correction below
+//!    0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail. A system with an inner
+//!    iteration (augmented Lagrangian) may ask for further passes
+//!    ([`DaeSystem::corrector_converged`]);
 //! 3. estimates the local error `ck·‖y − y⁽⁰⁾‖` in the weighted RMS norm over the differential
 //!    variables only (ERROR relative and absolute), rejects above 1;
 //! 4. chooses the next order among `k−1, k, k+1` by comparing the error estimates
@@ -42,7 +45,8 @@
 //! (as RADAU5's NIND2/NIND3): the error is then tested on displacements only, as Adams does.
 //!
 //! # Driving it
-//! [`Bdf::step`] takes one step and returns the accepted time; [`Bdf::set_stop_time`] makes
+//! [`Bdf::make_consistent`] computes `y′(t0)` (and index-1 algebraic `y(t0)`) for systems of
+//! index ≤ 1; [`Bdf::step`] takes one step and returns the accepted time; [`Bdf::set_stop_time`] makes
 //! steps end exactly at a time; [`Bdf::interpolate`] gives the solution anywhere in the last
 //! step; [`Bdf::reject_last_step_and_retry_to`] rolls the last step back and restarts at order 1
 //! with a step ending at a chosen time (contact onset); [`Bdf::stats`] counts the work.
@@ -82,6 +86,7 @@
 //! # Ok::<(), contact::solver::bdf::IntegratorError>(())
 //! ```
 
+mod consistent;
 mod error;
 mod history;
 mod newton_matrix;
@@ -98,6 +103,7 @@ pub use settings::{Corrector, IntegratorSettings};
 pub use stats::IntegratorStats;
 
 use crate::solver::{DaeSystem, VariableKind};
+use contact_core::InvalidArgument;
 use history::History;
 use nalgebra::DVector;
 use newton_matrix::NewtonMatrix;
@@ -118,6 +124,8 @@ struct Snapshot {
     y: DVector<f64>,
     yp: DVector<f64>,
     order_taken: usize,
+    /// The stop time before the step (the step may have reached and cleared it).
+    stop_time: Option<f64>,
 }
 
 /// A variable-step, variable-order BDF integrator (see the [module docs](self)).
@@ -174,6 +182,23 @@ impl Bdf {
                 what: format!("{bad:?}: an algebraic variable's index must be in 1..=3"),
             });
         }
+        let scales = DVector::from_vec(system.absolute_scales());
+        if scales.len() != n {
+            return Err(IntegratorError::InvalidInitialState {
+                what: format!(
+                    "absolute_scales() has {} entries, size() is {n}",
+                    scales.len()
+                ),
+            });
+        }
+        if let Some(i) = scales.iter().position(|s| !(s.is_finite() && *s > 0.0)) {
+            return Err(IntegratorError::InvalidInitialState {
+                what: format!(
+                    "absolute_scales()[{i}] = {:?} must be finite and > 0",
+                    scales[i]
+                ),
+            });
+        }
         for (name, v) in [("y0", &y0), ("yp0", &yp0)] {
             if v.len() != n {
                 return Err(IntegratorError::InvalidInitialState {
@@ -193,7 +218,7 @@ impl Bdf {
         }
         Ok(Self {
             settings,
-            norms: Norms::new(kinds, settings.error),
+            norms: Norms::new(kinds, scales, settings.error),
             t: t0,
             t_prev: t0,
             y: y0,
@@ -332,6 +357,7 @@ impl Bdf {
         self.t_prev = snapshot.t_prev;
         self.y = snapshot.y;
         self.yp = snapshot.yp;
+        self.stop_time = snapshot.stop_time;
         let h = t_target - self.t;
         self.h = h;
         self.history = Some(History::restart(&self.y, &self.yp, h, self.settings.kmax));
@@ -345,11 +371,7 @@ impl Bdf {
     /// the caller handled itself, e.g. a changed MOTION). Error if `h` is not finite and > 0.
     pub fn restart(&mut self, h: f64) -> Result<(), IntegratorError> {
         if !(h.is_finite() && h > 0.0) {
-            return Err(IntegratorError::InvalidTarget {
-                argument: "restart step",
-                value: h,
-                t: 0.0,
-            });
+            return Err(InvalidArgument::new("restart step", h, "finite and > 0").into());
         }
         self.h = h;
         self.history = Some(History::restart(&self.y, &self.yp, h, self.settings.kmax));

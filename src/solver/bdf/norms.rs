@@ -10,15 +10,17 @@ use nalgebra::DVector;
 #[derive(Debug, Clone)]
 pub(super) struct Norms {
     kinds: Vec<VariableKind>,
-    /// `w_i = ERROR·(|y_i| + 1)`: relative and absolute tolerance both equal to ERROR.
+    /// `w_i = ERROR·(|y_i| + s_i)`: relative tolerance ERROR, absolute ERROR·s_i.
     weights: DVector<f64>,
+    /// The absolute scales `s_i` ([`DaeSystem::absolute_scales`](crate::solver::DaeSystem::absolute_scales)).
+    scales: DVector<f64>,
     error: f64,
     differential_count: usize,
 }
 
 impl Norms {
     /// Norms for the given variable kinds and tolerance.
-    pub fn new(kinds: Vec<VariableKind>, error: f64) -> Self {
+    pub fn new(kinds: Vec<VariableKind>, scales: DVector<f64>, error: f64) -> Self {
         let n = kinds.len();
         let differential_count = kinds
             .iter()
@@ -27,6 +29,7 @@ impl Norms {
         Self {
             kinds,
             weights: DVector::from_element(n, error),
+            scales,
             error,
             differential_count,
         }
@@ -34,8 +37,13 @@ impl Norms {
 
     /// Recomputes the weights from the solution at the start of a step.
     pub fn set_weights(&mut self, y: &DVector<f64>) {
-        for (w, yi) in self.weights.iter_mut().zip(y.iter()) {
-            *w = self.error * (yi.abs() + 1.0);
+        for ((w, yi), s) in self
+            .weights
+            .iter_mut()
+            .zip(y.iter())
+            .zip(self.scales.iter())
+        {
+            *w = self.error * (yi.abs() + s);
         }
     }
 

@@ -22,9 +22,11 @@ pub enum Corrector {
 /// (the integrator calls it too).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IntegratorSettings {
-    /// ERROR: the local error tolerance, used as both the relative and the absolute tolerance of
-    /// the weighted RMS norm `sqrt(mean((e_i / (ERROR·(|y_i| + 1)))²))` over the differential
-    /// variables. Default `1e-3` (Adams). Range: finite, `0 < ERROR < 1`.
+    /// ERROR: the local error tolerance of the weighted RMS norm
+    /// `sqrt(mean((e_i / (ERROR·(|y_i| + s_i)))²))` over the differential variables, relative
+    /// and, times the system's absolute scale `s_i` (default 1,
+    /// [`DaeSystem::absolute_scales`](crate::solver::DaeSystem::absolute_scales)), absolute.
+    /// Default `1e-3` (Adams). Range: finite, `0 < ERROR < 1`.
     pub error: f64,
     /// HMAX: the largest step. `None` means no limit (Adams' default is the output step, which
     /// the caller sets through this field). Range: finite, `> 0`, and `≥ hmin` when both are set.

@@ -19,6 +19,10 @@ pub struct IntegratorStats {
     pub rejected_by_caller: u64,
     /// Newton iterations (linear solves) over all attempts.
     pub newton_iterations: u64,
+    /// Extra corrector passes the system's inner iteration asked for
+    /// ([`DaeSystem::corrector_converged`](crate::solver::DaeSystem::corrector_converged)
+    /// returning true: augmented-Lagrangian updates).
+    pub inner_iterations: u64,
     /// Calls of [`DaeSystem::residual`](crate::solver::DaeSystem::residual).
     pub residual_evaluations: u64,
     /// Calls of [`DaeSystem::newton_matrix`](crate::solver::DaeSystem::newton_matrix)

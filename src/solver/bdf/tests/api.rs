@@ -77,6 +77,18 @@ fn hmax_and_kmax_are_honoured() {
         assert!(bdf.t() - bdf.t_previous() <= 0.05 * (1.0 + 1e-12));
         assert!(bdf.last_order() <= 2);
     }
+    // A stop just beyond HMAX is reached in two steps, never one longer than HMAX.
+    bdf.set_stop_time(Some(3.0 + 0.0502)).unwrap();
+    while bdf.t() < 3.0502 {
+        bdf.step(&mut system).unwrap();
+        assert!(bdf.t() - bdf.t_previous() <= 0.05 * (1.0 + 1e-12));
+    }
+    assert!(
+        bdf.restart(-1.0)
+            .unwrap_err()
+            .to_string()
+            .contains("restart step = -1.0")
+    );
     let stats = bdf.stats();
     assert_eq!(stats.steps_by_order[3..].iter().sum::<u64>(), 0);
     assert!(stats.steps_by_order[2] > 0);
@@ -211,6 +223,27 @@ fn rejecting_needs_an_accepted_step_and_a_later_target() {
         target
     );
     assert!((bdf.y()[0] - (-target).exp()).abs() < 1e-6);
+}
+
+#[test]
+fn a_stop_time_reached_by_a_rolled_back_step_is_kept() {
+    let settings = IntegratorSettings {
+        hinit: Some(0.01),
+        ..IntegratorSettings::default()
+    };
+    let (mut system, mut bdf) = decay(settings);
+    bdf.set_stop_time(Some(0.01)).unwrap();
+    assert_eq!(bdf.step(&mut system).unwrap(), 0.01);
+    assert_eq!(
+        bdf.reject_last_step_and_retry_to(&mut system, 0.004)
+            .unwrap(),
+        0.004
+    );
+    // Stepping on lands on 0.01 again.
+    while bdf.t() < 0.01 {
+        bdf.step(&mut system).unwrap();
+    }
+    assert_eq!(bdf.t(), 0.01);
 }
 
 /// `y′ = y²`, `y(0) = 1`: the solution 1/(1 − t) blows up at t = 1.
@@ -422,4 +455,127 @@ fn bad_initial_state_and_settings_are_typed_errors() {
         bdf.step(&mut system),
         Err(IntegratorError::NoInitialStep)
     ));
+}
+
+#[test]
+fn a_consistent_start_is_computed_for_index_1_systems() {
+    // Robertson as a DAE, started with a wrong algebraic y3 and y′ = 0.
+    let mut system = Robertson { as_dae: true };
+    let y0 = DVector::from_vec(vec![0.9, 0.1, 0.5]);
+    let mut bdf = Bdf::new(
+        &system,
+        0.0,
+        y0,
+        DVector::zeros(3),
+        IntegratorSettings::default(),
+    )
+    .unwrap();
+    bdf.make_consistent(&mut system).unwrap();
+    let (y, yp) = (bdf.y().clone(), bdf.yp().clone());
+    // Closed form: y3 = 1 − y1 − y2 = 0, then y1′ = −0.04·y1, y2′ = 0.04·y1 − 3e7·y2².
+    assert!(y[2].abs() < 1e-12, "y3 = {}", y[2]);
+    assert!((yp[0] + 0.04 * 0.9).abs() < 1e-12, "y1' = {}", yp[0]);
+    assert!(
+        (yp[1] - (0.04 * 0.9 - 3e7 * 0.01)).abs() < 1e-12 * 3e5,
+        "y2' = {}",
+        yp[1]
+    );
+    // Twice is an error once stepping has begun.
+    bdf.set_stop_time(Some(1.0)).unwrap();
+    bdf.step(&mut system).unwrap();
+    assert!(matches!(
+        bdf.make_consistent(&mut system),
+        Err(IntegratorError::InconsistentStart { .. })
+    ));
+}
+
+#[test]
+fn a_consistent_start_is_refused_for_index_3_systems() {
+    use crate::solver::bdf::reference::Pendulum;
+    let mut pendulum = Pendulum {
+        mass: 1.0,
+        length: 1.0,
+        gravity: 9.81,
+    };
+    let (y0, yp0) = pendulum.at_rest(0.5);
+    let mut bdf = Bdf::new(&pendulum, 0.0, y0, yp0, IntegratorSettings::default()).unwrap();
+    let error = bdf.make_consistent(&mut pendulum).unwrap_err();
+    assert!(
+        error.to_string().contains("y[2] has DAE index > 1"),
+        "{error}"
+    );
+}
+
+/// `y′ = −y` in units where `y` is of size `scale`, with the matching absolute scale.
+struct ScaledDecay {
+    scale: f64,
+}
+impl DaeSystem for ScaledDecay {
+    fn size(&self) -> usize {
+        1
+    }
+    fn variable_kinds(&self) -> Vec<VariableKind> {
+        vec![VariableKind::Differential]
+    }
+    fn absolute_scales(&self) -> Vec<f64> {
+        vec![self.scale]
+    }
+    fn residual(
+        &mut self,
+        _t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        out: &mut DVector<f64>,
+    ) -> Result<(), EvaluationError> {
+        out[0] = yp[0] + y[0];
+        Ok(())
+    }
+    fn newton_matrix(
+        &mut self,
+        _t: f64,
+        _y: &DVector<f64>,
+        _yp: &DVector<f64>,
+        c: f64,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), EvaluationError> {
+        out[(0, 0)] = c + 1.0;
+        Ok(())
+    }
+}
+
+#[test]
+fn the_same_model_in_other_units_takes_the_same_steps() {
+    let run = |scale: f64| {
+        let mut system = ScaledDecay { scale };
+        let y0 = DVector::from_element(1, scale);
+        let settings = IntegratorSettings {
+            error: 1e-6,
+            ..IntegratorSettings::default()
+        };
+        let mut bdf = Bdf::new(&system, 0.0, y0.clone(), -y0, settings).unwrap();
+        bdf.set_stop_time(Some(5.0)).unwrap();
+        while bdf.t() < 5.0 {
+            bdf.step(&mut system).unwrap();
+        }
+        (bdf.stats().steps, bdf.y()[0] / scale)
+    };
+    let (reference_steps, reference_y) = run(1.0);
+    for scale in [1e-6, 1e6] {
+        let (steps, y) = run(scale);
+        assert_eq!(steps, reference_steps, "scale {scale}");
+        assert!(
+            (y - reference_y).abs() < 1e-12,
+            "scale {scale}: {y} vs {reference_y}"
+        );
+    }
+    let e = Bdf::new(
+        &ScaledDecay { scale: 0.0 },
+        0.0,
+        DVector::zeros(1),
+        DVector::zeros(1),
+        IntegratorSettings::default(),
+    )
+    .err()
+    .unwrap();
+    assert!(e.to_string().contains("absolute_scales()[0] = 0.0"), "{e}");
 }

@@ -2,6 +2,7 @@
 
 mod andrews;
 mod api;
+mod inner;
 mod order;
 mod pendulum;
 mod stiff;
