@@ -55,3 +55,111 @@ fn the_ball_example_bounces_as_the_one_dof_reference() {
         assert!(relative < 1e-3, "rebound {got} vs {want}");
     }
 }
+
+/// Runs an example with the exact engine and returns the frames' `(t, CM position, CM velocity)`
+/// of its first moving part.
+fn run_example(
+    name: &str,
+    end: f64,
+    output_step: f64,
+) -> Vec<(f64, nalgebra::Vector3<f64>, nalgebra::Vector3<f64>)> {
+    let adm = example(&format!("{name}/{name}.adm"));
+    let loaded = dataset::read(&adm, None).unwrap();
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let engine = engine_exact::ExactEngine;
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let settings = DynamicsSettings {
+        start: 0.0,
+        end,
+        output_step,
+        integrator: IntegratorSettings {
+            error: loaded.model.integrator.error,
+            ..IntegratorSettings::default()
+        },
+    };
+    let part = lowered.parts[0].0;
+    let mut out = Vec::new();
+    simulate(
+        &mut lowered.system,
+        &lowered.contacts,
+        &settings,
+        &mut |frame| {
+            let s = frame.parts[part.0];
+            out.push((frame.t, s.pose_w.translation.vector, s.velocity_w));
+            Ok(())
+        },
+    )
+    .unwrap();
+    out
+}
+
+#[test]
+fn the_block_slides_down_the_incline_the_analytic_distance() {
+    let frames = run_example("incline", 1.0, 0.01);
+    let (t, end, _) = frames.last().copied().unwrap();
+    let theta = 30f64.to_radians();
+    let a = 9.81 * (theta.sin() - 0.25 * theta.cos());
+    let analytic = 0.5 * a * t * t;
+    let slid = end.x - frames[0].1.x;
+    assert!(
+        (slid - analytic).abs() < 0.01 * analytic,
+        "slid {slid} m, analytic {analytic} m"
+    );
+    // It slides on its face: no lift-off, no tipping into the plane.
+    assert!(
+        (end.z - frames[0].1.z).abs() < 1e-3,
+        "height changed by {}",
+        end.z - frames[0].1.z
+    );
+}
+
+#[test]
+fn below_the_friction_angle_the_block_creeps_only_at_the_continuous_laws_speed() {
+    // At 10°, tan θ = 0.176 < MU_STATIC: the continuous law (no true stiction) lets the block
+    // creep at the speed where |μ(v)| = tan θ, and no faster.
+    let adm = example("incline/incline.adm");
+    let mut loaded = dataset::read(&adm, None).unwrap();
+    let theta = 10f64.to_radians();
+    loaded.model.gravity = nalgebra::Vector3::new(9.81 * theta.sin(), 0.0, -9.81 * theta.cos());
+    let engine = engine_exact::ExactEngine;
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let settings = DynamicsSettings {
+        start: 0.0,
+        end: 1.0,
+        output_step: 0.05,
+        integrator: IntegratorSettings {
+            error: 1e-6,
+            ..IntegratorSettings::default()
+        },
+    };
+    let part = lowered.parts[0].0;
+    let mut last = nalgebra::Vector3::zeros();
+    simulate(
+        &mut lowered.system,
+        &lowered.contacts,
+        &settings,
+        &mut |frame| {
+            last = frame.parts[part.0].velocity_w;
+            Ok(())
+        },
+    )
+    .unwrap();
+    let friction = contact_core::laws::CoulombFriction::new(0.3, 0.25, 0.01, 0.02).unwrap();
+    let (mut lo, mut hi) = (0.0, 0.01);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if -friction.mu(mid).value < theta.tan() {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    let creep = 0.5 * (lo + hi);
+    assert!(
+        (last.x - creep).abs() < 0.02 * creep,
+        "creeping at {} m/s, the law permits {creep} m/s",
+        last.x
+    );
+}
