@@ -163,3 +163,47 @@ fn below_the_friction_angle_the_block_creeps_only_at_the_continuous_laws_speed()
         last.x
     );
 }
+
+#[test]
+fn the_spinning_disk_stops_in_the_flat_pivot_time() {
+    let adm = example("spinning_disk/spinning_disk.adm");
+    let loaded = dataset::read(&adm, None).unwrap();
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let engine = engine_exact::ExactEngine;
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let settings = DynamicsSettings {
+        start: 0.0,
+        end: 0.6,
+        output_step: 1e-3,
+        integrator: IntegratorSettings {
+            error: 1e-6,
+            ..IntegratorSettings::default()
+        },
+    };
+    let part = lowered.parts[0].0;
+    let (m, r, mu, g, omega0) = (2.0, 0.1, 0.2, 9.81, 10.0);
+    // "Stopped": the rim slips slower than FRICTION_TRANSITION_VELOCITY, where μ leaves μd.
+    let stopped_below = 2e-3 / r;
+    let mut stop_time = None;
+    simulate(
+        &mut lowered.system,
+        &lowered.contacts,
+        &settings,
+        &mut |frame| {
+            let w = frame.parts[part.0].angular_velocity_w.z;
+            if stop_time.is_none() && w < stopped_below {
+                stop_time = Some(frame.t);
+            }
+            Ok(())
+        },
+    )
+    .unwrap();
+    let inertia = 0.5 * m * r * r;
+    let analytic = (omega0 - stopped_below) * inertia / ((2.0 / 3.0) * r * mu * m * g);
+    let t = stop_time.expect("the disk stops within the run");
+    assert!(
+        (t - analytic).abs() < 0.02 * analytic,
+        "stopped at {t} s, analytic {analytic} s"
+    );
+}
