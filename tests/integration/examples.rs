@@ -207,3 +207,41 @@ fn the_spinning_disk_stops_in_the_flat_pivot_time() {
         "stopped at {t} s, analytic {analytic} s"
     );
 }
+
+/// The complete elliptic integral of the first kind K(k), by the arithmetic–geometric mean.
+fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    while (a - b).abs() > 1e-16 * a {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
+
+#[test]
+fn the_pendulum_keeps_the_large_amplitude_period_and_its_energy() {
+    let frames = run_example("pendulum", 5.0, 1e-3);
+    let (m, l, g, i_cm): (f64, f64, f64, f64) = (1.0, 1.0, 9.81, 1e-3);
+    let i_pivot = i_cm + m * l * l;
+    let period = 4.0 * (i_pivot / (m * g * l)).sqrt() * elliptic_k(30f64.to_radians().sin());
+    // Downward crossings of x = 0 (the bob passing under the pivot moving −x), interpolated.
+    let crossings: Vec<f64> = frames
+        .windows(2)
+        .filter(|w| w[0].1.x > 0.0 && w[1].1.x <= 0.0)
+        .map(|w| w[0].0 + (w[1].0 - w[0].0) * w[0].1.x / (w[0].1.x - w[1].1.x))
+        .collect();
+    assert!(crossings.len() >= 2, "{crossings:?}");
+    let measured = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+    assert!(
+        (measured - period).abs() < 1e-4 * period,
+        "period {measured} s, exact {period} s"
+    );
+    // Energy: the bob's speed is ω·L and the spin ω, so E = ½·I_O·ω² + m·g·z with ω = |v|/L.
+    let energy =
+        |v: nalgebra::Vector3<f64>, z: f64| 0.5 * i_pivot * (v.norm() / l).powi(2) + m * g * z;
+    let e0 = energy(frames[0].2, frames[0].1.z);
+    let drift = frames
+        .iter()
+        .map(|(_, p, v)| (energy(*v, p.z) - e0).abs())
+        .fold(0.0, f64::max);
+    assert!(drift < 1e-4 * m * g * l, "energy drift {drift} J");
+}

@@ -152,7 +152,13 @@ impl DaeSystem for MultibodySystem {
     fn variable_kinds(&self) -> Vec<VariableKind> {
         let layout = self.layout;
         let mut kinds = vec![VariableKind::Algebraic { index: 2 }; layout.size()];
-        kinds[..13 * layout.parts()].fill(VariableKind::Differential);
+        // Positions are always error-tested. Velocities too, except under I3 with constraints:
+        // there they are index-2 variables (Adams tests displacements only), and testing them
+        // makes the error test fail down to round-off right after a start.
+        let velocities_tested =
+            layout.formulation() == Formulation::Si2 || layout.constraint_rows() == 0;
+        let tested = if velocities_tested { 13 } else { 7 };
+        kinds[..tested * layout.parts()].fill(VariableKind::Differential);
         let lambda_index = match layout.formulation() {
             Formulation::I3 => 3,
             Formulation::Si2 => 2,

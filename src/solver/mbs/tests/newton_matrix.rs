@@ -82,11 +82,19 @@ fn variable_kinds_follow_the_layout() {
             0
         };
         assert_eq!(kinds.len(), 14 * 3 + m + eta_rows);
+        // Positions are always error-tested; velocities under SI2 only (under I3 with
+        // constraints they are index-2 variables, as in Adams).
         assert!(
-            kinds[..13 * 3]
+            kinds[..7 * 3]
                 .iter()
                 .all(|k| *k == VariableKind::Differential)
         );
+        let velocity = if formulation == Formulation::Si2 {
+            VariableKind::Differential
+        } else {
+            VariableKind::Algebraic { index: 2 }
+        };
+        assert!(kinds[7 * 3..13 * 3].iter().all(|k| *k == velocity));
         let lambda = &kinds[layout.lambda_offset()..layout.lambda_offset() + m];
         assert!(lambda.iter().all(|k| *k
             == VariableKind::Algebraic {
