@@ -56,6 +56,16 @@ pub enum ContactForceError {
         /// `library::function`.
         routine: String,
     },
+    /// AUGMENTED_LAGRANGIAN_FORMULATION: the inner iteration is not built yet (iterated to
+    /// convergence inside short steps it contracts too slowly at impacts, and carried over
+    /// steps it feeds energy into elastic bounces); rather than ignore it, the run refuses it.
+    #[error(
+        "{contact}: AUGMENTED_LAGRANGIAN_FORMULATION is not supported by the solver yet; remove it (POISSON alone runs)"
+    )]
+    AugmentedLagrangian {
+        /// The contact's name.
+        contact: String,
+    },
 }
 
 /// A CONTACT between two parts.
@@ -87,6 +97,15 @@ impl ContactForce {
             }
             _ => None,
         };
+        if matches!(
+            params.normal,
+            NormalModel::Poisson {
+                augmented_lagrangian: Some(_),
+                ..
+            }
+        ) {
+            return Err(ContactForceError::AugmentedLagrangian { contact: name });
+        }
         if let Some(routine) = routine {
             return Err(ContactForceError::UserRoutine {
                 contact: name,

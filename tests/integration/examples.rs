@@ -245,3 +245,95 @@ fn the_pendulum_keeps_the_large_amplitude_period_and_its_energy() {
         .fold(0.0, f64::max);
     assert!(drift < 1e-4 * m * g * l, "energy drift {drift} J");
 }
+
+/// Runs the POISSON ball with restitution `eps` (`augmented` adds the augmented Lagrangian) for
+/// `end` seconds; returns the apex heights of the ball's lowest point after each bounce and
+/// the largest penetration seen.
+fn poisson_ball(eps: f64, augmented: bool, end: f64) -> (Vec<f64>, f64) {
+    let adm = example("ball_poisson/ball_poisson.adm");
+    let mut loaded = dataset::read(&adm, None).unwrap();
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let args = contact_core::ContactArgs {
+        poisson: true,
+        penalty: Some(1e6),
+        restitution_coefficient: Some(eps),
+        augmented_lagrangian: augmented,
+        ..Default::default()
+    };
+    loaded.model.contacts[0].params = args.validate(&loaded.model.units).unwrap().0;
+    let engine = engine_exact::ExactEngine;
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let settings = DynamicsSettings {
+        start: 0.0,
+        end,
+        output_step: 1e-3,
+        integrator: IntegratorSettings {
+            error: loaded.model.integrator.error,
+            ..IntegratorSettings::default()
+        },
+    };
+    let ball = lowered.parts[0].0;
+    let (mut apexes, mut deepest, mut was_rising) = (Vec::new(), 0.0_f64, false);
+    simulate(
+        &mut lowered.system,
+        &lowered.contacts,
+        &settings,
+        &mut |frame| {
+            let s = frame.parts[ball.0];
+            let (z, v) = (s.pose_w.translation.z, s.velocity_w.z);
+            let free = frame.contacts[0].is_empty();
+            if was_rising && v <= 0.0 && free {
+                apexes.push(z + v * v / (2.0 * 9.81) - 0.1);
+            }
+            was_rising = v > 0.0 && free;
+            deepest = frame.contacts[0]
+                .iter()
+                .map(|r| r.contact.penetration)
+                .fold(deepest, f64::max);
+            Ok(())
+        },
+    )
+    .unwrap();
+    (apexes, deepest)
+}
+
+#[test]
+fn poisson_rebounds_at_the_restitution_coefficient() {
+    let (apexes, _) = poisson_ball(0.6, false, 1.6);
+    // Exit over entry speed = sqrt(rebound height / drop height).
+    let ratio = apexes[0].sqrt();
+    assert!((ratio - 0.6).abs() < 0.02 * 0.6, "rebound ratio {ratio}");
+}
+
+#[test]
+fn elastic_poisson_conserves_energy_over_ten_bounces() {
+    let (apexes, _) = poisson_ball(1.0, false, 9.2);
+    assert!(apexes.len() >= 10, "{apexes:?}");
+    let drift = apexes.iter().map(|h| (h - 1.0).abs()).fold(0.0, f64::max);
+    assert!(drift < 1e-3, "apexes drift {drift} (relative energy)");
+}
+
+#[test]
+fn augmented_lagrangian_is_refused_with_its_location_not_ignored() {
+    let adm = example("ball_poisson/ball_poisson.adm");
+    let mut loaded = dataset::read(&adm, None).unwrap();
+    let args = contact_core::ContactArgs {
+        poisson: true,
+        penalty: Some(1e6),
+        restitution_coefficient: Some(1.0),
+        augmented_lagrangian: true,
+        ..Default::default()
+    };
+    loaded.model.contacts[0].params = args.validate(&loaded.model.units).unwrap().0;
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let err = lower(
+        &loaded.model,
+        &engine_exact::ExactEngine,
+        Analysis::Dynamics,
+        &no_meshes,
+    )
+    .unwrap_err();
+    let text = err.to_string();
+    assert!(text.contains("ball_poisson.adm:19:1: error: CONTACT/1: AUGMENTED_LAGRANGIAN_FORMULATION is not supported"), "{text}");
+}
