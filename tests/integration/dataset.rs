@@ -250,6 +250,35 @@ fn degrees_and_radians_give_the_same_frame() {
 }
 
 #[test]
+fn zp_xp_frames_with_and_without_usexp() {
+    let text = |usexp: &str| {
+        format!(
+            "t\nPART/1, GROUND\nMARKER/3, PART = 1, QP = 1, 1, 1, ZP = 1, 1, 3, XP = 2, 1, 1.5{usexp}\nEND\n"
+        )
+    };
+    let plain = crate::inline("zp.adm", &text(""));
+    let r = rotation(&plain.model.markers[&3].pose_part_marker);
+    // z exactly towards ZP; x the part of XP − QP = (1, 0, 0.5) perpendicular to z.
+    assert_close(&r, &Matrix3::identity());
+    let exact_x = crate::inline("zp.adm", &text(", USEXP"));
+    let r = rotation(&exact_x.model.markers[&3].pose_part_marker);
+    // x exactly towards XP; z the part of ZP − QP = (0, 0, 2) perpendicular to x.
+    let x = Vector3::new(1.0, 0.0, 0.5).normalize();
+    let z = Vector3::new(-0.5, 0.0, 1.0).normalize();
+    assert_close(&r, &Matrix3::from_columns(&[x, z.cross(&x), z]));
+    let degenerate = crate::inline(
+        "zp.adm",
+        &text("").replace("XP = 2, 1, 1.5", "XP = 1, 1, 2"),
+    );
+    assert_eq!(
+        crate::errors(&degenerate),
+        [
+            "data/zp.adm:3:40: error: MARKER/3: ZP/XP do not define axes (coincident or collinear points)"
+        ]
+    );
+}
+
+#[test]
 fn graphics_and_contact_lower_to_instances() {
     let text = "contact model\n\
 UNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = MILLIMETER, TIME = SECOND\n\
