@@ -4,6 +4,22 @@
 //! statement it came from, so later stages (solver, outputs) can point back to the source.
 //! Frames follow contact-core's notation: `pose_world_part` is `X_WP`, `pose_part_marker` is
 //! `X_PM`; REULER angles are body-fixed 3-1-3, `R = Rz(ψ)·Rx(θ)·Rz(φ)`.
+//!
+//! # Units
+//! Every number stays in the model's units ([`Model::units`]): contact stiffness, damping and
+//! gravity arrive as the dataset wrote them. contact-core converts when needed; a contact
+//! stiffness scales as `k × f^e` when lengths change by `f`:
+//!
+//! ```
+//! use contact_core::{Dimension, Units, scale_stiffness};
+//! // 3800 N/mm^2 (IMPACT, EXPONENT = 2) in a N-mm-s model is 3.8e9 N/m^2 in SI.
+//! let k_si = Units::MKS.convert_from(3800.0, Dimension::stiffness(2.0), &Units::MMKS);
+//! assert!((k_si - 3.8e9).abs() < 1e-6 * 3.8e9);
+//! assert_eq!(scale_stiffness(3800.0, 1000.0, 2.0), 3.8e9);
+//! // Gravity in inches: 9.80665 m/s^2 is 386.09 in/s^2.
+//! let g = Units::IPS.convert_from(9.80665, Dimension::ACCELERATION, &Units::MKS);
+//! assert!((g - 386.0886).abs() < 1e-4);
+//! ```
 
 use crate::dataset::Origin;
 use crate::expr::Expr;

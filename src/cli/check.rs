@@ -226,6 +226,8 @@ pub fn run_with(
             )
         }
     };
+    // Dataset first, then the command file; each in line and column order.
+    diagnostics.sort_by_key(|d| (d.origin.file.as_ref() != args.model.as_path(), d.origin.loc));
     write!(out, "{}", summary(&model, &engine_line))?;
     let errors = diagnostics.iter().filter(|d| d.is_error()).count();
     for d in &diagnostics {

@@ -21,6 +21,7 @@ pub mod keywords;
 pub mod lexer;
 mod lower;
 pub mod parser;
+mod tables;
 
 pub use error::{DatasetError, Diagnostic, Loc, Origin, Severity};
 pub use lexer::FileKind;

@@ -18,7 +18,7 @@ mod parse;
 
 pub use ast::{BinOp, Callee, ElementKind, Expr, FUNCTIONS, MathFn, Measure};
 pub use eval::{Context, EvalError, TimeOnly};
-pub use parse::{ExprError, ExprErrorKind, parse_expr};
+pub use parse::{ExprError, ExprErrorKind, MAX_DEPTH, parse_expr};
 
 #[cfg(test)]
 mod tests {
@@ -60,6 +60,23 @@ mod tests {
         assert_eq!(parse_expr("1 # 2").unwrap_err().offset, 2);
         assert!(parse_expr("1.0d3").is_err());
         assert!(parse_expr("").is_err());
+    }
+
+    #[test]
+    fn depth_is_bounded_for_chains_and_nesting() {
+        let chain = vec!["1"; MAX_DEPTH / 2].join(" + ");
+        assert_eq!(at(&chain, 0.0), (MAX_DEPTH / 2) as f64);
+        let long = vec!["1"; 4 * MAX_DEPTH].join(" + ");
+        assert_eq!(parse_expr(&long).unwrap_err().kind, ExprErrorKind::TooDeep);
+        let nested = format!(
+            "{}1{}",
+            "(".repeat(4 * MAX_DEPTH),
+            ")".repeat(4 * MAX_DEPTH)
+        );
+        assert_eq!(
+            parse_expr(&nested).unwrap_err().kind,
+            ExprErrorKind::TooDeep
+        );
     }
 
     #[test]

@@ -9,6 +9,10 @@
 use super::ast::{BinOp, Callee, Expr, FUNCTIONS};
 use thiserror::Error;
 
+/// The deepest expression tree accepted (parentheses, calls and operator chains each add a
+/// level). Evaluation recurses over the tree, so this bounds its stack use.
+pub const MAX_DEPTH: usize = 500;
+
 /// Why an expression does not parse; `offset` is the character index in the source text.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[error("{kind}")]
@@ -67,6 +71,9 @@ pub enum ExprErrorKind {
         /// What was there.
         found: String,
     },
+    /// The tree would be deeper than [`MAX_DEPTH`] (nesting plus operator chains).
+    #[error("expression nested or chained deeper than {MAX_DEPTH} levels")]
+    TooDeep,
     /// USER(…) takes numbers only.
     #[error("USER(…) takes numeric constants only")]
     UserNotConstant,
@@ -195,15 +202,9 @@ impl Parser {
         Ok(t)
     }
 
-    fn expr(&mut self, min_bp: u8, depth: usize) -> Result<Expr, ExprError> {
-        if depth > 200 {
-            return Err(err(
-                self.offset(),
-                ExprErrorKind::Expected {
-                    expected: "a shallower expression (nesting over 200)",
-                    found: "deeper nesting".into(),
-                },
-            ));
+    fn expr(&mut self, min_bp: u8, mut depth: usize) -> Result<Expr, ExprError> {
+        if depth > MAX_DEPTH {
+            return Err(err(self.offset(), ExprErrorKind::TooDeep));
         }
         let (tok, at) = self.next("a number, name or '('")?;
         let mut lhs = match tok {
@@ -239,6 +240,12 @@ impl Parser {
                 break;
             }
             self.pos += 1;
+            // A chain `a + b + c …` deepens the tree on the left: count it like nesting, so
+            // evaluation (which recurses) stays within the stack.
+            depth += 1;
+            if depth > MAX_DEPTH {
+                return Err(err(self.offset(), ExprErrorKind::TooDeep));
+            }
             let rhs = self.expr(rbp, depth + 1)?;
             lhs = Expr::Binary(op, Box::new(lhs), Box::new(rhs));
         }

@@ -250,6 +250,35 @@ fn degrees_and_radians_give_the_same_frame() {
 }
 
 #[test]
+fn zp_xp_frames_with_and_without_usexp() {
+    let text = |usexp: &str| {
+        format!(
+            "t\nPART/1, GROUND\nMARKER/3, PART = 1, QP = 1, 1, 1, ZP = 1, 1, 3, XP = 2, 1, 1.5{usexp}\nEND\n"
+        )
+    };
+    let plain = crate::inline("zp.adm", &text(""));
+    let r = rotation(&plain.model.markers[&3].pose_part_marker);
+    // z exactly towards ZP; x the part of XP − QP = (1, 0, 0.5) perpendicular to z.
+    assert_close(&r, &Matrix3::identity());
+    let exact_x = crate::inline("zp.adm", &text(", USEXP"));
+    let r = rotation(&exact_x.model.markers[&3].pose_part_marker);
+    // x exactly towards XP; z the part of ZP − QP = (0, 0, 2) perpendicular to x.
+    let x = Vector3::new(1.0, 0.0, 0.5).normalize();
+    let z = Vector3::new(-0.5, 0.0, 1.0).normalize();
+    assert_close(&r, &Matrix3::from_columns(&[x, z.cross(&x), z]));
+    let degenerate = crate::inline(
+        "zp.adm",
+        &text("").replace("XP = 2, 1, 1.5", "XP = 1, 1, 2"),
+    );
+    assert_eq!(
+        crate::errors(&degenerate),
+        [
+            "data/zp.adm:3:40: error: MARKER/3: ZP/XP do not define axes (coincident or collinear points)"
+        ]
+    );
+}
+
+#[test]
 fn graphics_and_contact_lower_to_instances() {
     let text = "contact model\n\
 UNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = MILLIMETER, TIME = SECOND\n\
@@ -341,4 +370,64 @@ CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT\nEND\n";
             .any(|d| d.contains("STIFFNESS not given: using the default")),
         "{p:#?}"
     );
+}
+
+#[test]
+fn abbreviated_commands_and_ignored_statements() {
+    let adm = "t\nPART/1, GROUND\nSPLINE/1, X = 0, 1, Y = 0, 1\nGFORCE/2, I = 1\nEQUILIBRIUM/ DYNAMICS, ALIMIT = 3D\nEND\n";
+    let acf = "\nfile/model=t\nint/hht, err = 1e-5\nequil/stab = 1e-6, maxit = 40\naccg/kgrav = -9.8\n\
+sim/stat\nsim/dyn, dur = .5, dtout = .001\ndeact/contact, id = 3\nENVIRONMENT/NAME = X, VALUE = 1\nstop\nsim/dyn, end = 9\n";
+    let acf_path = data_dir().join("t.acf");
+    let loaded = contact::dataset::read_str(adm, data_dir().join("t.adm"), Some((acf, &acf_path)));
+    assert!(!loaded.has_errors(), "{:#?}", printed(&loaded));
+    let m = &loaded.model;
+    assert!(m.equilibrium.dynamic);
+    assert!((m.equilibrium.alimit - 3f64.to_radians()).abs() < 1e-15);
+    let commands: Vec<&Command> = m.commands.iter().map(|(_, c)| c).collect();
+    let Command::Integrator(i) = commands[0] else {
+        panic!("{commands:?}")
+    };
+    assert_eq!((i.method, i.error), (Some("HHT"), 1e-5));
+    let Command::Equilibrium(e) = commands[1] else {
+        panic!("{commands:?}")
+    };
+    assert_eq!((e.stability, e.maxit), (1e-6, 40));
+    assert_eq!(commands[2], &Command::Gravity(Vector3::new(0.0, 0.0, -9.8)));
+    assert_eq!(
+        commands[3],
+        &Command::Simulate {
+            analysis: Analysis::Statics,
+            span: None,
+            output: None
+        }
+    );
+    assert_eq!(
+        commands[4],
+        &Command::Simulate {
+            analysis: Analysis::Dynamics,
+            span: Some(SimulationSpan::Duration(0.5)),
+            output: Some(OutputSteps::Interval(0.001)),
+        }
+    );
+    assert_eq!(
+        commands[5],
+        &Command::Activate {
+            active: false,
+            class: "CONTACT",
+            ids: vec![3]
+        }
+    );
+    // Commands after STOP are not read.
+    assert_eq!(commands.len(), 7);
+    assert_eq!(commands[6], &Command::Stop);
+    // Statements the product does not model: one warning each, naming it.
+    let p = printed(&loaded);
+    for expected in [
+        "data/t.adm:3:1: warning: SPLINE is not modelled by contact: statement ignored",
+        "data/t.adm:4:1: warning: GFORCE is not modelled by contact: statement ignored",
+        "data/t.acf:3:5: warning: INTEGRATOR/HHT: the solver uses its own GSTIFF-style BDF; the method is ignored",
+        "data/t.acf:9:1: warning: ENVIRONMENT is not modelled by contact: statement ignored",
+    ] {
+        assert!(p.contains(&expected.to_string()), "{expected}\n{p:#?}");
+    }
 }

@@ -18,43 +18,51 @@ pub fn rotation_313(a: f64, b: f64, c: f64) -> UnitQuaternion {
         * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), c)
 }
 
-/// The rotation whose z axis points from `origin` to `zp` and whose x axis lies in the plane of
-/// z and `xp − origin` (towards `xp`). Without `xp`, x is the ground-axis (of the frame the
-/// points are in) least aligned with z, made perpendicular to it. `None` when the points are
-/// degenerate (coincident or collinear), relative to the distance `|zp − origin|`.
+/// The unit vector along `exact`, and the unit part of `hint` perpendicular to it; `None` when
+/// `exact` is zero or `hint` is parallel to it (relative to their lengths).
+fn orthonormal_pair(exact: Vector3, hint: Vector3) -> Option<(Vector3, Vector3)> {
+    let scale = exact.norm();
+    if scale.is_nan() || scale <= 0.0 {
+        return None;
+    }
+    let e = exact / scale;
+    let h = hint - e * hint.dot(&e);
+    let h_norm = h.norm();
+    if h_norm.is_nan() || h_norm <= 1e-9 * hint.norm().max(scale) {
+        return None;
+    }
+    Some((e, h / h_norm))
+}
+
+/// The rotation of a frame at `origin` given by points (Adams ZP/XP, ZG/XG): z points towards
+/// `zp` and x lies in the plane of z and `xp`, on `xp`'s side. With `x_exact` (USEXP), x passes
+/// exactly through `xp` and z is the one adjusted. Without `xp`, x is the coordinate axis least
+/// aligned with z, made perpendicular to it (Adams does not document its choice). `None` when
+/// the points are degenerate: coincident, or collinear with the origin.
 pub fn rotation_from_points(
     origin: Vector3,
     zp: Vector3,
     xp: Option<Vector3>,
+    x_exact: bool,
 ) -> Option<UnitQuaternion> {
     let dz = zp - origin;
-    let scale = dz.norm();
-    if scale.is_nan() || scale <= 0.0 {
-        return None;
-    }
-    let z = dz / scale;
-    let hint = match xp {
-        Some(p) => p - origin,
+    let (x, z) = match xp {
+        Some(p) if x_exact => orthonormal_pair(p - origin, dz)?,
+        Some(p) => {
+            let (z, x) = orthonormal_pair(dz, p - origin)?;
+            (x, z)
+        }
         None => {
-            let k = z.iamin();
-            let mut e = Vector3::zeros();
-            e[k] = 1.0;
-            e
+            let mut axis = Vector3::zeros();
+            axis[dz.iamin()] = 1.0;
+            let (z, x) = orthonormal_pair(dz, axis)?;
+            (x, z)
         }
     };
-    let x_raw = hint - z * hint.dot(&z);
-    let hint_scale = if xp.is_some() {
-        hint.norm().max(scale)
-    } else {
-        1.0
-    };
-    if x_raw.norm().is_nan() || x_raw.norm() <= 1e-9 * hint_scale {
-        return None;
-    }
-    let x = x_raw.normalize();
     let y = z.cross(&x);
-    let m = Matrix3::from_columns(&[x, y, z]);
-    Some(UnitQuaternion::from_matrix(&m))
+    Some(UnitQuaternion::from_matrix(&Matrix3::from_columns(&[
+        x, y, z,
+    ])))
 }
 
 fn unit_size(kind: &str, word: &str) -> Option<f64> {
@@ -349,19 +357,21 @@ fn orientation(
             }
             Ok(rotation_313(a, b, c))
         }
-        (None, Some(z)) => {
-            rotation_from_points(origin, Vector3::from(z), x_point.map(Vector3::from)).ok_or_else(
-                || {
-                    Problem::new(
-                        r.loc_of(zp),
-                        format!(
-                            "{}: {zp}/{xp} do not define axes (coincident or collinear points)",
-                            r.label()
-                        ),
-                    )
-                },
+        (None, Some(z)) => rotation_from_points(
+            origin,
+            Vector3::from(z),
+            x_point.map(Vector3::from),
+            r.flag("USEXP"),
+        )
+        .ok_or_else(|| {
+            Problem::new(
+                r.loc_of(zp),
+                format!(
+                    "{}: {zp}/{xp} do not define axes (coincident or collinear points)",
+                    r.label()
+                ),
             )
-        }
+        }),
         (None, None) => {
             if x_point.is_some() {
                 return Err(Problem::new(

@@ -31,6 +31,10 @@ const KINDS: [&str; 14] = [
     "OUTLINE",
 ];
 
+/// The largest MATRIX accepted (entries): a SPARSE matrix is stored dense, so this bounds the
+/// memory one statement can ask for (128 MiB of f64).
+const MAX_MATRIX_ENTRIES: usize = 1 << 24;
+
 /// A lowered MATRIX: rows × columns, row-major.
 struct MatrixData {
     rows: usize,
@@ -56,6 +60,17 @@ fn matrix(st: &Statement, id: u32) -> Result<MatrixData, Problem> {
         return Err(Problem::new(
             r.loc_of("ROWS"),
             format!("MATRIX/{id}: ROWS and COLUMNS must be >= 1"),
+        ));
+    }
+    if rows
+        .checked_mul(columns)
+        .is_none_or(|n| n > MAX_MATRIX_ENTRIES)
+    {
+        return Err(Problem::new(
+            r.loc_of("ROWS"),
+            format!(
+                "MATRIX/{id}: {rows} x {columns} is out of range: must have at most {MAX_MATRIX_ENTRIES} entries"
+            ),
         ));
     }
     let values = r
