@@ -15,20 +15,23 @@
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
+//! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, the
-//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded* plane, and the 2-D
-//! arc and curve pairs are not built yet; point–point, plane–plane and line–line are not
+//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded*
+//! plane, circles on a bounded line, every arc pair, curve–curve and curve–line are not built
+//! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
+use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
 use contact_core::{Geometry, GeometryKind, Unsupported};
 
 /// A pair's kernel and whether it runs with I and J exchanged (`swap`: the kernel's first
 /// geometry is J).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Selected {
     /// The computation.
     pub kernel: Kernel,
@@ -41,6 +44,8 @@ const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the
 const NOT_BUILT_BOUNDED: &str = "a curved solid against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
+const CURVE_KNOTS: &str =
+    "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
@@ -228,8 +233,28 @@ pub(crate) fn select(
                 )
             }
         }
-        (G::Point, G::Arc(_) | G::Curve(_))
-        | (G::Circle(_), G::Arc(_) | G::Curve(_))
+        (G::Point, G::Curve(curve)) => {
+            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            no_flip(
+                flip_a,
+                Kernel::PointCurve {
+                    curve,
+                    side: side(flip_b),
+                },
+            )
+        }
+        (G::Circle(circle), G::Curve(curve)) => {
+            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            no_flip(
+                flip_a,
+                Kernel::CircleCurve {
+                    radius: circle.radius(),
+                    curve,
+                    side: side(flip_b),
+                },
+            )
+        }
+        (G::Point | G::Circle(_), G::Arc(_))
         | (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
         | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
         (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
@@ -254,6 +279,10 @@ fn reversed(result: Result<Selected, Unsupported>) -> Result<Selected, Unsupport
             ..e
         }),
     }
+}
+
+fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<PlanarCurve>> {
+    PlanarCurve::new(curve).map(std::sync::Arc::new)
 }
 
 fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {

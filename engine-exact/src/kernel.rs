@@ -1,9 +1,11 @@
 //! The evaluated form of a pair: a [`Kernel`] chosen once by [`crate::dispatch::select`],
 //! holding a copy of the shape data it needs, evaluated at every query without allocation.
 
+use crate::planar::curve_eval::PlanarCurve;
 use crate::{pairs, planar};
 use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use std::sync::Arc;
 
 /// One contact between the pair's first geometry `a` and second `b`, in the world frame.
 /// The normal points from `b` into `a`.
@@ -47,7 +49,7 @@ pub(crate) enum PairError {
 
 /// A pair computation with its shape data. `side` is +1, or −1 for a flipped plane or line
 /// (the material then lies on the +z / +y side).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Kernel {
     /// Sphere `a` against an unbounded plane `b`.
     SpherePlane { radius: f64, side: f64 },
@@ -75,6 +77,14 @@ pub(crate) enum Kernel {
     CircleCircle { radius_a: f64, radius_b: f64 },
     /// Solid circle `a` inside the circular hole `b` (a flipped circle).
     CircleInHole { radius_a: f64, radius_b: f64 },
+    /// 2-D point `a` against curve `b`.
+    PointCurve { curve: Arc<PlanarCurve>, side: f64 },
+    /// Solid circle `a` against curve `b`.
+    CircleCurve {
+        radius: f64,
+        curve: Arc<PlanarCurve>,
+        side: f64,
+    },
     /// Solid circle `a` against an unbounded line `b`.
     CircleLine { radius: f64, side: f64 },
 }
@@ -127,6 +137,18 @@ impl Kernel {
             Self::CircleInHole { radius_a, radius_b } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::circles::circle_in_hole(&frame, radius_a, radius_b)
+            }
+            Self::PointCurve { ref curve, side } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_curve::point_curve(&frame, curve, side, work)
+            }
+            Self::CircleCurve {
+                radius,
+                ref curve,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_curve::circle_curve(&frame, radius, curve, side, work)
             }
             Self::CircleLine { radius, side } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;

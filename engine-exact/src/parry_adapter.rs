@@ -2,13 +2,14 @@
 //! pairs, for the side-by-side benches and accuracy comparisons. The engine's own answers
 //! never go through here.
 //!
-//! parry has no ellipsoid, so only spheres, boxes and unbounded planes are mapped; a box is a
-//! parry `Cuboid` centred on its own centre (the pose is shifted accordingly) and a plane a
-//! `HalfSpace` with normal +z (−z when flipped).
+//! parry has no ellipsoid, so only spheres, boxes, cylinders and unbounded planes are mapped;
+//! a box is a parry `Cuboid` centred on its own centre, a cylinder a parry `Cylinder` (axis y,
+//! centred) moved onto ours (the pose is shifted accordingly), and a plane a `HalfSpace` with
+//! normal +z (−z when flipped).
 
 use contact_core::{Geometry, Isometry3, Point3, Vector3};
 use parry3d_f64::query;
-use parry3d_f64::shape::{Ball, Cuboid, HalfSpace, Shape};
+use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape};
 
 /// One geometry as a parry shape, with the offset of the shape's origin in the geometry frame.
 #[derive(Debug)]
@@ -21,6 +22,7 @@ pub struct PeerShape {
 enum PeerKind {
     Ball(Ball),
     Cuboid(Cuboid),
+    Cylinder(Cylinder),
     HalfSpace(HalfSpace),
 }
 
@@ -51,6 +53,15 @@ impl PeerShape {
                 shape: PeerKind::Cuboid(Cuboid::new(b.half_extents())),
                 offset: Isometry3::translation(b.center().x, b.center().y, b.center().z),
             }),
+            // parry's cylinder is centred with its axis along y; ours starts at the origin
+            // along +z: shift by half the length and turn y onto z (a quarter turn about x).
+            Geometry::Cylinder(c) if !flip => Some(Self {
+                shape: PeerKind::Cylinder(Cylinder::new(0.5 * c.length(), c.radius())),
+                offset: Isometry3::new(
+                    Vector3::new(0.0, 0.0, 0.5 * c.length()),
+                    Vector3::new(std::f64::consts::FRAC_PI_2, 0.0, 0.0),
+                ),
+            }),
             Geometry::Plane(p) if p.is_unbounded() => {
                 let z = if flip { -Vector3::z() } else { Vector3::z() };
                 Some(Self {
@@ -66,6 +77,7 @@ impl PeerShape {
         match &self.shape {
             PeerKind::Ball(s) => s,
             PeerKind::Cuboid(s) => s,
+            PeerKind::Cylinder(s) => s,
             PeerKind::HalfSpace(s) => s,
         }
     }

@@ -11,6 +11,8 @@
 //! normal.
 
 pub mod circles;
+pub mod curve_eval;
+pub mod point_curve;
 pub mod point_line;
 
 use crate::kernel::PairError;

@@ -7,11 +7,17 @@
 
 use crate::common::{Expected, Rng, errors, instance, query};
 use crate::oracles;
-use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
+use contact_core::Point2;
+use contact_core::geometry::{
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Line, Plane,
+};
 use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, UnitQuaternion, Vector3};
 use nalgebra::Translation3;
+use std::sync::Arc as Shared;
 
 const SAMPLES: usize = 200;
+/// Curve rows are fewer: the oracle's evaluator allocates per call and runs unoptimized.
+const CURVE_SAMPLES: usize = 60;
 const CLOSED_FORM_BOUND: f64 = 1e-12;
 /// Quadrature pairs (and their Simpson oracles) are held to the iterative bound.
 const ITERATIVE_BOUND: f64 = 1e-9;
@@ -38,6 +44,7 @@ struct Case {
 
 fn run(
     rng: &mut Rng,
+    count: usize,
     pair: &'static str,
     family: &'static str,
     method: &'static str,
@@ -45,7 +52,7 @@ fn run(
 ) -> Row {
     let mut worst = [0.0f64; 3];
     let mut samples = 0;
-    while samples < SAMPLES {
+    while samples < count {
         let Some(case) = make(rng) else { continue };
         let world = rng.pose(2.0 * case.length);
         let found = query(
@@ -89,6 +96,7 @@ fn characterization_table() {
     let rows = vec![
         run(
             &mut rng,
+            SAMPLES,
             "sphere–plane",
             "r ∈ [0.5, 2], centre height d ∈ (−1.2r, r)",
             "closed form",
@@ -107,6 +115,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "sphere–sphere",
             "radii ∈ [0.2, 2], D ∈ (0.05, r_a + r_b), containment included",
             "closed form",
@@ -126,6 +135,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "sphere–cavity",
             "ball r_a in cavity r_b > r_a, D ∈ (r_b − r_a, r_b)",
             "closed form",
@@ -153,6 +163,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "ellipsoid–plane",
             "semi-axes ∈ [0.3, 2], any orientation, cap to beyond the centre",
             "closed form (affine cap); oracle by slicing",
@@ -178,6 +189,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "box–plane",
             "any orientation, one corner below the plane",
             "exact clipping; oracle: corner tetrahedron",
@@ -202,6 +214,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "box–plane",
             "face parallel to the plane, sunk by up to the full height",
             "exact clipping; oracle: slab",
@@ -231,6 +244,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "box–box",
             "faces parallel, partial overlap on every axis",
             "exact clipping; oracle: per-axis overlap",
@@ -272,6 +286,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "circle–circle (2-D)",
             "radii ∈ [0.2, 2], D ∈ (0.05, r_a + r_b)",
             "closed form",
@@ -295,6 +310,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "circle–line (2-D)",
             "r ∈ [0.5, 2], centre height ∈ (−1.2r, r)",
             "closed form",
@@ -318,6 +334,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "point–line (2-D)",
             "bounded line [−1, 2], point below it",
             "closed form",
@@ -340,6 +357,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "point–circle (2-D)",
             "point inside, D ∈ (0.01r, r)",
             "closed form",
@@ -365,6 +383,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "circle–hole (2-D)",
             "disc r_a in hole r_b > r_a, D ∈ (r_b − r_a, r_b)",
             "closed form",
@@ -393,6 +412,7 @@ fn characterization_table() {
             bound: ITERATIVE_BOUND,
             ..run(
                 &mut rng,
+                SAMPLES,
                 "cylinder–plane",
                 "R ∈ [0.3, 1.5], L ∈ [0.2, 3], axis tilted 12°–78° from the normal, cap corner to full immersion",
                 "quadrature of chords; oracle: Simpson over axial slices",
@@ -422,6 +442,7 @@ fn characterization_table() {
         },
         run(
             &mut rng,
+            SAMPLES,
             "cylinder–plane",
             "axis parallel to the plane (a wheel), centre height ∈ (−R, R)",
             "quadrature of chords; oracle: line of centres",
@@ -450,6 +471,7 @@ fn characterization_table() {
         ),
         run(
             &mut rng,
+            SAMPLES,
             "cylinder–plane",
             "standing on a cap, sunk by up to its length",
             "quadrature of chords; oracle: slab",
@@ -472,6 +494,141 @@ fn characterization_table() {
                 })
             },
         ),
+        run(
+            &mut rng,
+            CURVE_SAMPLES,
+            "point–curve (2-D)",
+            "open polyline (ORDER 2), 6 random vertices, point inside a segment's material side",
+            "closest point (Newton); oracle: segment projection",
+            |rng| {
+                let vertices: Vec<Point2> = (0..6)
+                    .map(|k| Point2::new(k as f64 + rng.uniform(-0.3, 0.3), rng.uniform(-0.5, 0.5)))
+                    .collect();
+                let curve = Curve::new(&vertices, 2, false, CurvePoints::Control).unwrap();
+                let p = Point2::new(rng.uniform(0.5, 4.5), rng.uniform(-0.8, 0.8));
+                // Oracle: the nearest segment by projection; skip vertices (normal undefined).
+                let mut best = (
+                    f64::INFINITY,
+                    Point2::origin(),
+                    nalgebra::Vector2::zeros(),
+                    0.0,
+                );
+                for w in vertices.windows(2) {
+                    let d = w[1] - w[0];
+                    let t = ((p - w[0]).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+                    let q = w[0] + t * d;
+                    if (p - q).norm() < best.0 {
+                        best = (
+                            (p - q).norm(),
+                            q,
+                            nalgebra::Vector2::new(d.y, -d.x).normalize(),
+                            t,
+                        );
+                    }
+                }
+                let (_, q, n, t) = best;
+                let s = (p - q).dot(&n);
+                if s >= -1e-3 || !(1e-6..=1.0 - 1e-6).contains(&t) {
+                    return None;
+                }
+                Some(Case {
+                    i: instance(Geometry::Point),
+                    j: instance(Geometry::Curve(Shared::new(curve))),
+                    pose_i: at(p.x, p.y, 0.0),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::new(p.x, p.y, 0.0),
+                        point_j: Point3::new(q.x, q.y, 0.0),
+                        normal: Vector3::new(n.x, n.y, 0.0),
+                        depth: -s,
+                    },
+                    length: 6.0,
+                })
+            },
+        ),
+        Row {
+            bound: ITERATIVE_BOUND,
+            ..run(
+                &mut rng,
+                CURVE_SAMPLES,
+                "point–curve (2-D)",
+                "cubic B-spline (ORDER 4), 7 control points, closed or open, point on the material side",
+                "closest point (Newton); oracle: sampling + bisection",
+                |rng| {
+                    let closed = rng.uniform(0.0, 1.0) < 0.5;
+                    let control: Vec<Point2> = (0..7)
+                        .map(|k| {
+                            let a = k as f64 * std::f64::consts::TAU / 7.0;
+                            let r = rng.uniform(1.5, 2.5);
+                            Point2::new(r * a.cos(), r * a.sin())
+                        })
+                        .collect();
+                    let curve = Curve::new(&control, 4, closed, CurvePoints::Control).unwrap();
+                    let angle = rng.uniform(0.3, 5.5);
+                    let p = Point2::new(1.5 * angle.cos(), 1.5 * angle.sin());
+                    let (s, q, n) = oracles::curve_closest(&curve, &p);
+                    if s >= -1e-3 || (!closed && (q - curve.point(curve.domain()[0])).norm() < 1e-3)
+                    {
+                        return None;
+                    }
+                    Some(Case {
+                        i: instance(Geometry::Point),
+                        j: instance(Geometry::Curve(Shared::new(curve))),
+                        pose_i: at(p.x, p.y, 0.0),
+                        pose_j: Isometry3::identity(),
+                        expected: Expected {
+                            point_i: Point3::new(p.x, p.y, 0.0),
+                            point_j: Point3::new(q.x, q.y, 0.0),
+                            normal: Vector3::new(n.x, n.y, 0.0),
+                            depth: -s,
+                        },
+                        length: 5.0,
+                    })
+                },
+            )
+        },
+        Row {
+            bound: ITERATIVE_BOUND,
+            ..run(
+                &mut rng,
+                CURVE_SAMPLES,
+                "circle–curve (2-D)",
+                "closed interpolated cubic (CURVE_POINTS) around the origin, disc of r ∈ [0.2, 0.6] crossing it",
+                "closest point (Newton); oracle: sampling + bisection",
+                |rng| {
+                    let points: Vec<Point2> = (0..8)
+                        .map(|k| {
+                            let a = k as f64 * std::f64::consts::TAU / 8.0;
+                            let r = rng.uniform(1.8, 2.2);
+                            Point2::new(r * a.cos(), r * a.sin())
+                        })
+                        .collect();
+                    let curve = Curve::new(&points, 4, true, CurvePoints::Interpolated).unwrap();
+                    let r = rng.uniform(0.2, 0.6);
+                    let angle = rng.uniform(0.0, std::f64::consts::TAU);
+                    let reach = rng.uniform(1.6, 2.3);
+                    let c = Point2::new(reach * angle.cos(), reach * angle.sin());
+                    let (s, q, n) = oracles::curve_closest(&curve, &c);
+                    if s >= r - 1e-3 {
+                        return None;
+                    }
+                    let deepest = c - r * n;
+                    Some(Case {
+                        i: instance(Geometry::Circle(Circle::new(r).unwrap())),
+                        j: instance(Geometry::Curve(Shared::new(curve))),
+                        pose_i: at(c.x, c.y, 0.0),
+                        pose_j: Isometry3::identity(),
+                        expected: Expected {
+                            point_i: Point3::new(deepest.x, deepest.y, 0.0),
+                            point_j: Point3::new(q.x, q.y, 0.0),
+                            normal: Vector3::new(n.x, n.y, 0.0),
+                            depth: r - s,
+                        },
+                        length: 5.0,
+                    })
+                },
+            )
+        },
     ];
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"

@@ -56,7 +56,9 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 12] = [
+const BUILT: [(&str, &str); 14] = [
+    ("point", "curve"),
+    ("circle", "curve"),
     ("cylinder", "plane"),
     ("sphere", "sphere"),
     ("sphere", "plane"),
@@ -79,6 +81,7 @@ fn name(g: &Geometry) -> &'static str {
             GeometryKind::Ellipsoid => "ellipsoid",
             GeometryKind::Cuboid => "box",
             GeometryKind::Cylinder => "cylinder",
+            GeometryKind::Curve => "curve",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
@@ -120,8 +123,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 11 distinct pairs, 8 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 8);
+    // 13 distinct pairs, 10 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 10);
 }
 
 #[test]

@@ -223,3 +223,42 @@ pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected 
         depth: t - centroid.z,
     }
 }
+
+/// The point of a curve closest to `p`, by dense sampling (64 per span) then bisection on the
+/// sign change of `(C(u) − p)·C′(u)` around the nearest sample (to 1e-15 of the span) — a
+/// different method from the engine's Newton, on `contact-core`'s own evaluator. Returns (signed distance along the
+/// outward normal, closest point, outward normal).
+pub fn curve_closest(
+    curve: &contact_core::geometry::Curve,
+    p: &contact_core::Point2,
+) -> (f64, contact_core::Point2, contact_core::Vector2) {
+    let dist = |u: f64| (curve.point(u) - p).norm_squared();
+    let spans = curve.breakpoints();
+    let mut best = (f64::INFINITY, 0.0, 0.0);
+    for w in spans.windows(2) {
+        let step = (w[1] - w[0]) / 64.0;
+        for k in 0..=64 {
+            let u = w[0] + k as f64 * step;
+            let d = dist(u);
+            if d < best.0 {
+                best = (d, u, step);
+            }
+        }
+    }
+    let [u0, u1] = curve.domain();
+    let slope = |u: f64| (curve.point(u) - p).dot(&curve.derivative(u));
+    let (mut a, mut b) = ((best.1 - best.2).max(u0), (best.1 + best.2).min(u1));
+    // A minimum strictly inside has slope < 0 before and > 0 after; at an end it stays put.
+    let u = if slope(a) < 0.0 && slope(b) > 0.0 {
+        while b - a > 1e-15 * (u1 - u0) {
+            let m = 0.5 * (a + b);
+            if slope(m) < 0.0 { a = m } else { b = m }
+        }
+        0.5 * (a + b)
+    } else {
+        best.1
+    };
+    let q = curve.point(u);
+    let n = curve.normal(u).unwrap();
+    ((p - q).dot(&n), q, n)
+}
