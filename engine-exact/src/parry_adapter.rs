@@ -85,7 +85,32 @@ impl PeerShape {
 
 /// parry's `contact` between `a` at `pose_a` and `b` at `pose_b` (geometry-frame poses
 /// `X_WG`), with zero prediction distance: `None` when separated or when parry cannot answer.
+///
+/// A half-space is always passed to parry first (and the answer flipped back): parry 0.25.3's
+/// `contact_support_map_halfspace` hands its `pos12` to `contact_halfspace_support_map`
+/// without inverting it, so a support map *followed by* a half-space gets a wrong depth
+/// (a ball 0.9 above the ground reports 1.9 instead of 0.1; [`contact_in_given_order`] shows
+/// it, and the test `parry_adapter::tests` pins it so an upgrade that fixes it is noticed).
 pub fn contact(
+    a: &PeerShape,
+    pose_a: &Isometry3,
+    b: &PeerShape,
+    pose_b: &Isometry3,
+) -> Option<PeerContact> {
+    if matches!(b.shape, PeerKind::HalfSpace(_)) && !matches!(a.shape, PeerKind::HalfSpace(_)) {
+        return contact_in_given_order(b, pose_b, a, pose_a).map(|c| PeerContact {
+            point_a: c.point_b,
+            point_b: c.point_a,
+            normal: -c.normal,
+            depth: c.depth,
+        });
+    }
+    contact_in_given_order(a, pose_a, b, pose_b)
+}
+
+/// parry's `contact` with the shapes in the order given (see [`contact`] for why the order
+/// matters in parry 0.25.3).
+pub fn contact_in_given_order(
     a: &PeerShape,
     pose_a: &Isometry3,
     b: &PeerShape,
@@ -101,4 +126,23 @@ pub fn contact(
         normal: -c.normal1.into_inner(),
         depth: -c.dist,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use contact_core::geometry::Plane;
+
+    #[test]
+    fn parry_answers_a_ball_on_the_ground_only_with_the_half_space_first() {
+        let ball = PeerShape::new(&Geometry::sphere(1.0).unwrap(), false).unwrap();
+        let ground = PeerShape::new(&Geometry::Plane(Plane::unbounded()), false).unwrap();
+        let above = Isometry3::translation(0.0, 0.0, 0.9);
+        let id = Isometry3::identity();
+        let good = contact(&ball, &above, &ground, &id).unwrap();
+        assert!((good.depth - 0.1).abs() < 1e-15 && good.normal == Vector3::z());
+        // The support-map-first path of parry 0.25.3 mistakes the pose direction.
+        let given = contact_in_given_order(&ball, &above, &ground, &id).unwrap();
+        assert!((given.depth - 1.9).abs() < 1e-15, "{given:?}");
+    }
 }

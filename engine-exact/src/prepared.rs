@@ -15,10 +15,11 @@ struct Entry {
     swap: bool,
     geometry_i: u32,
     geometry_j: u32,
-    /// `X_PG` of the kernel's first geometry (I's part frame, or J's when swapped).
-    pose_part_first: Isometry3,
-    /// `X_PG` of the kernel's second geometry.
-    pose_part_second: Isometry3,
+    /// `X_PG` of the kernel's first geometry (I's part frame, or J's when swapped); `None`
+    /// for the identity, which saves a pose product per query.
+    pose_part_first: Option<Isometry3>,
+    /// `X_PG` of the kernel's second geometry, `None` for the identity.
+    pose_part_second: Option<Isometry3>,
     /// The pair's length scale: the larger characteristic length of the two geometries, or 1
     /// model unit when neither has one (a point against an unbounded line).
     length: f64,
@@ -58,8 +59,8 @@ impl PreparedExact {
                     swap: selected.swap,
                     geometry_i: index_u32(index_i),
                     geometry_j: index_u32(index_j),
-                    pose_part_first: first.pose_part_geometry,
-                    pose_part_second: second.pose_part_geometry,
+                    pose_part_first: non_identity(&first.pose_part_geometry),
+                    pose_part_second: non_identity(&second.pose_part_geometry),
                     length,
                     kind_i: gi.geometry.kind(),
                     kind_j: gj.geometry.kind(),
@@ -72,6 +73,18 @@ impl PreparedExact {
             entries,
             geometries: i.len() + j.len(),
         })
+    }
+}
+
+fn non_identity(pose: &Isometry3) -> Option<Isometry3> {
+    (*pose != Isometry3::identity()).then_some(*pose)
+}
+
+/// `X_WG = X_WP · X_PG`, skipping the product when `X_PG` is the identity.
+fn compose(pose_world_part: &Isometry3, pose_part_geometry: &Option<Isometry3>) -> Isometry3 {
+    match pose_part_geometry {
+        Some(p) => pose_world_part * p,
+        None => *pose_world_part,
     }
 }
 
@@ -98,8 +111,8 @@ impl PreparedPair for PreparedExact {
             } else {
                 (pose_world_i, pose_world_j)
             };
-            let pose_a = pose_first * e.pose_part_first;
-            let pose_b = pose_second * e.pose_part_second;
+            let pose_a = compose(pose_first, &e.pose_part_first);
+            let pose_b = compose(pose_second, &e.pose_part_second);
             let found = e
                 .kernel
                 .evaluate(&pose_a, &pose_b, e.length, work)
