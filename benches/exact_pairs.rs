@@ -80,6 +80,22 @@ fn cases() -> Vec<Case> {
             depth: None,
         },
         Case {
+            name: "sphere_box_edge",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: cube(1.0),
+            pose_i: Isometry3::translation(1.2, 1.1, 0.3),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.5 - (0.04f64 + 0.01).sqrt()),
+        },
+        Case {
+            name: "sphere_cylinder_side",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: Geometry::Cylinder(Cylinder::new(1.0, 2.0).unwrap()),
+            pose_i: Isometry3::translation(1.3, 0.0, 1.0),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.2),
+        },
+        Case {
             name: "cylinder_plane_tilted",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
             j: ground.clone(),

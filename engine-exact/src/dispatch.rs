@@ -9,6 +9,7 @@
 //! | --- | --- | --- |
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
+//! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
@@ -17,14 +18,16 @@
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //!
-//! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, the
-//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded*
+//! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
+//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs,
+//! every mesh pair, curved solids on a *bounded*
 //! plane, circles on a bounded line, every arc pair, curve–curve and curve–line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
+use crate::pairs::sphere_solid::Solid;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
 use contact_core::{Geometry, GeometryKind, Unsupported};
@@ -174,10 +177,28 @@ pub(crate) fn select(
                 side: side(flip_b),
             },
         ),
-        (
-            G::Ellipsoid(_),
-            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
-        )
+        (G::Ellipsoid(e), G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_)) => {
+            let solid = match b {
+                G::Cylinder(c) => Solid::Cylinder(*c),
+                G::Cuboid(c) => Solid::Box(*c),
+                G::Frustum(f) => Solid::Frustum(*f),
+                G::Torus(t) => Solid::Torus(*t),
+                G::Ellipsoid(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Line(_)
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => return Err(no(NOT_BUILT)),
+            };
+            match e.sphere_radius() {
+                Some(radius) if !flip_b => no_flip(flip_a, Kernel::SphereSolid { radius, solid }),
+                Some(_) => Err(no(FLIP_NOT_BUILT)),
+                None => Err(no(NOT_BUILT)),
+            }
+        }
+        (G::Ellipsoid(_), G::Mesh(_))
         | (
             G::Cylinder(_),
             G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),

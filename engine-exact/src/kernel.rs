@@ -53,6 +53,11 @@ pub(crate) enum PairError {
 pub(crate) enum Kernel {
     /// Sphere `a` against an unbounded plane `b`.
     SpherePlane { radius: f64, side: f64 },
+    /// Sphere `a` against a box, cylinder, frustum or torus `b`.
+    SphereSolid {
+        radius: f64,
+        solid: pairs::sphere_solid::Solid,
+    },
     /// Two solid spheres.
     SphereSphere { radius_a: f64, radius_b: f64 },
     /// Solid sphere `a` inside the spherical cavity `b` (a flipped sphere).
@@ -103,6 +108,9 @@ impl Kernel {
         Ok(match *self {
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+            }
+            Self::SphereSolid { radius, ref solid } => {
+                pairs::sphere_solid::contact(radius, pose_a, solid, pose_b)
             }
             Self::SphereSphere { radius_a, radius_b } => {
                 pairs::sphere_sphere::contact(radius_a, pose_a, radius_b, pose_b)

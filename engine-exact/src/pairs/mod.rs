@@ -12,4 +12,5 @@ pub mod clipped;
 pub mod cylinder_plane;
 pub mod ellipsoid_plane;
 pub mod sphere_plane;
+pub mod sphere_solid;
 pub mod sphere_sphere;

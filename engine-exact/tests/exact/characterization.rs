@@ -2,16 +2,17 @@
 //! (see [`crate::oracles`]) over seeded random configurations, each seen from a random world
 //! frame. Run with `--nocapture` to print the table.
 //!
-//! Bounds: 1e-12 relative to the pair's size for closed forms and exact clipping (every
-//! built pair is one); depth, normal and points are each checked.
+//! Bounds: 1e-12 relative to the pair's size for closed forms and exact clipping, 1e-9 for
+//! quadrature and iterative pairs (cylinder–plane tilted, curves); depth, normal and points
+//! are each checked.
 
 use crate::common::{Expected, Rng, errors, instance, query};
 use crate::oracles;
-use contact_core::Point2;
 use contact_core::geometry::{
-    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Line, Plane,
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
 };
 use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, UnitQuaternion, Vector3};
+use contact_core::{Point2, Vector2};
 use nalgebra::Translation3;
 use std::sync::Arc as Shared;
 
@@ -629,6 +630,155 @@ fn characterization_table() {
                 },
             )
         },
+        run(
+            &mut rng,
+            SAMPLES,
+            "sphere–box",
+            "centre outside a face, an edge or a corner, 0 < distance < r",
+            "closed form (signed distance); oracle: clamping",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let r = rng.uniform(0.2, 1.0);
+                // A surface point with `outside` axes at ±h (1: face, 2: edge, 3: corner) and the
+                // others strictly inside; the outward direction in that feature's normal cone.
+                let outside = 1 + (rng.next_u64() % 3) as usize;
+                let mut point = Vector3::zeros();
+                let mut outward = Vector3::zeros();
+                for k in 0..3 {
+                    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+                        -1.0
+                    } else {
+                        1.0
+                    };
+                    if k < outside {
+                        point[k] = sign * h[k];
+                        outward[k] = sign * rng.uniform(0.2, 1.0);
+                    } else {
+                        point[k] = rng.uniform(-0.9, 0.9) * h[k];
+                    }
+                }
+                let d = rng.uniform(0.01, 0.99) * r;
+                let (centre, expected) =
+                    oracles::sphere_box(r, &h, &point, &outward.normalize(), d);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap())),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm().max(r),
+                })
+            },
+        ),
+        run(
+            &mut rng,
+            SAMPLES,
+            "sphere–cylinder",
+            "centre beside the side or above a cap, 0 < distance < r",
+            "closed form (signed distance); oracle: radial / axial",
+            |rng| {
+                let (big_r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 2.0));
+                let r = rng.uniform(0.1, 0.5);
+                let d = rng.uniform(0.01, 0.99) * r;
+                let angle = rng.uniform(0.0, std::f64::consts::TAU);
+                let radial = Vector3::new(angle.cos(), angle.sin(), 0.0);
+                let (centre, n, q) = if rng.uniform(0.0, 1.0) < 0.5 {
+                    let z = rng.uniform(0.05, 0.95) * len;
+                    let q = big_r * radial + Vector3::new(0.0, 0.0, z);
+                    (q + d * radial, radial, q)
+                } else {
+                    let q = rng.uniform(0.0, 0.95) * big_r * radial + Vector3::new(0.0, 0.0, len);
+                    (q + d * Vector3::z(), Vector3::z(), q)
+                };
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Cylinder(Cylinder::new(big_r, len).unwrap())),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from(centre - r * n),
+                        point_j: Point3::from(q),
+                        normal: n,
+                        depth: r - d,
+                    },
+                    length: big_r.max(len),
+                })
+            },
+        ),
+        run(
+            &mut rng,
+            SAMPLES,
+            "sphere–frustum",
+            "centre outside the slanted side, 0 < distance < r",
+            "closed form (signed distance); oracle: distance to the side line",
+            |rng| {
+                let (rb, rt, len) = (
+                    rng.uniform(0.5, 1.5),
+                    rng.uniform(0.0, 1.5),
+                    rng.uniform(0.5, 2.0),
+                );
+                let r = rng.uniform(0.05, 0.3);
+                // Outward normal of the side in the (ρ, z) half-plane, and a point of the side.
+                let side = Vector2::new(len, rb - rt).normalize();
+                let t = rng.uniform(0.2, 0.8);
+                let foot = Vector2::new(rb + t * (rt - rb), t * len);
+                let d = rng.uniform(0.01, 0.99) * r;
+                let c2 = foot + d * side;
+                let angle = rng.uniform(0.0, std::f64::consts::TAU);
+                let lift = |v: Vector2| Vector3::new(v.x * angle.cos(), v.x * angle.sin(), v.y);
+                let n = lift(side);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Frustum(Frustum::new(rb, rt, len).unwrap())),
+                    pose_i: Isometry3::from_parts(
+                        Translation3::from(lift(c2)),
+                        UnitQuaternion::identity(),
+                    ),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from(lift(c2) - r * n),
+                        point_j: Point3::from(lift(foot)),
+                        normal: n,
+                        depth: r - d,
+                    },
+                    length: rb.max(rt).max(len),
+                })
+            },
+        ),
+        run(
+            &mut rng,
+            SAMPLES,
+            "sphere–torus",
+            "centre around the tube, inside the hole or outside the ring",
+            "closed form (signed distance); oracle: nearest tube centre",
+            |rng| {
+                let big = rng.uniform(1.0, 2.0);
+                let small = rng.uniform(0.1, 0.8) * big;
+                let r = rng.uniform(0.1, 0.5);
+                let phi = rng.uniform(0.0, std::f64::consts::TAU);
+                let dist = small + rng.uniform(0.01, 0.99) * r;
+                let (rho, z) = (big + dist * phi.cos(), dist * phi.sin());
+                if rho <= 0.05 {
+                    return None;
+                }
+                let turn =
+                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.uniform(0.0, 6.0));
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Torus(Torus::new(big, small).unwrap())),
+                    pose_i: turn.inverse() * at(rho, 0.0, z),
+                    pose_j: Isometry3::from_parts(Translation3::identity(), turn.inverse()),
+                    expected: oracles::sphere_torus(r, big, small, rho, z).moved(
+                        &Isometry3::from_parts(Translation3::identity(), turn.inverse()),
+                    ),
+                    length: big + small,
+                })
+            },
+        ),
     ];
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"

@@ -56,7 +56,11 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 14] = [
+const BUILT: [(&str, &str); 18] = [
+    ("sphere", "box"),
+    ("sphere", "cylinder"),
+    ("sphere", "frustum"),
+    ("sphere", "torus"),
     ("point", "curve"),
     ("circle", "curve"),
     ("cylinder", "plane"),
@@ -82,6 +86,8 @@ fn name(g: &Geometry) -> &'static str {
             GeometryKind::Cuboid => "box",
             GeometryKind::Cylinder => "cylinder",
             GeometryKind::Curve => "curve",
+            GeometryKind::Frustum => "frustum",
+            GeometryKind::Torus => "torus",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
@@ -123,8 +129,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 13 distinct pairs, 10 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 10);
+    // 17 distinct pairs, 14 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 14);
 }
 
 #[test]

@@ -262,3 +262,48 @@ pub fn curve_closest(
     let n = curve.normal(u).unwrap();
     ((p - q).dot(&n), q, n)
 }
+
+/// A sphere of radius `r` near a box of half extents `h` centred at the origin: its centre
+/// at `face + d·(outward direction)` where the closest feature is a face, an edge or a
+/// corner, chosen by `feature` (1, 2 or 3 axes outside). The closest point of the box is the
+/// centre clamped to the box; the normal runs from it to the centre.
+pub fn sphere_box(
+    r: f64,
+    h: &Vector3,
+    inside_point: &Vector3,
+    outward: &Vector3,
+    d: f64,
+) -> (Point3, Expected) {
+    // `inside_point` lies on the box's surface feature; `outward` is a unit vector in the
+    // feature's normal cone.
+    let centre = Point3::from(inside_point + d * outward);
+    let q = Point3::new(
+        centre.x.clamp(-h.x, h.x),
+        centre.y.clamp(-h.y, h.y),
+        centre.z.clamp(-h.z, h.z),
+    );
+    let n = (centre - q).normalize();
+    (
+        centre,
+        Expected {
+            point_i: centre - r * n,
+            point_j: q,
+            normal: n,
+            depth: r - (centre - q).norm(),
+        },
+    )
+}
+
+/// A sphere of radius `r` with its centre at (ρ, 0, z) in a torus' frame (major `big`, minor
+/// `small`): the nearest tube centre is (big, 0, 0).
+pub fn sphere_torus(r: f64, big: f64, small: f64, rho: f64, z: f64) -> Expected {
+    let c = Vector3::new(rho, 0.0, z);
+    let tube = Vector3::new(big, 0.0, 0.0);
+    let n = (c - tube).normalize();
+    Expected {
+        point_i: Point3::from(c - r * n),
+        point_j: Point3::from(tube + small * n),
+        normal: n,
+        depth: r - ((c - tube).norm() - small),
+    }
+}

@@ -3,7 +3,7 @@
 //! 1e6 scales depth and points by the same factor.
 
 use crate::common::{Rng, assert_close, instance, query};
-use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
+use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
 
@@ -104,6 +104,34 @@ fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
+    let r = rng.uniform(0.3, 1.0);
+    let (solid, length) = match rng.next_u64() % 4 {
+        0 => (
+            Geometry::Cuboid(Cuboid::from_corner(1.2 * s, -0.8 * s, 1.5 * s).unwrap()),
+            2.2,
+        ),
+        1 => (
+            Geometry::Cylinder(Cylinder::new(0.7 * s, 1.5 * s).unwrap()),
+            1.5,
+        ),
+        2 => (
+            Geometry::Frustum(Frustum::new(0.9 * s, 0.3 * s, 1.2 * s).unwrap()),
+            1.2,
+        ),
+        _ => (Geometry::Torus(Torus::new(1.2 * s, 0.4 * s).unwrap()), 1.6),
+    };
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * rng.pose(1.8);
+    Scene {
+        i: instance(Geometry::sphere(r * s).unwrap()),
+        j: instance(solid),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: length * s,
+    }
+}
+
 fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
     let h = Vector3::new(
         rng.uniform(0.3, 1.5),
@@ -193,7 +221,8 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 9] = [
+const MAKERS: [(&str, Maker); 10] = [
+    ("sphere–box/cylinder/frustum/torus", sphere_solid),
     ("cylinder–plane", cylinder_plane),
     ("sphere–plane", sphere_plane),
     ("sphere–sphere", sphere_sphere),
