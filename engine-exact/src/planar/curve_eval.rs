@@ -158,9 +158,12 @@ impl PlanarCurve {
     pub fn closest(&self, p: &Point2, iterations: &mut u64) -> Closest {
         let target = p.coords;
         let tolerance = 1e-13 * self.length;
-        let mut best = (f64::INFINITY, self.domain()[0]);
+        let mut best = (f64::INFINITY, self.domain()[0], Vector2::zeros());
         for w in self.breakpoints.windows(2) {
             let (lo, hi) = (w[0], w[1]);
+            // Evaluate this span's polynomial even at its end `hi`, where the knot lookup
+            // would switch to the next span (a polyline's derivative jumps there).
+            let span = find_span(&self.knots, self.degree, self.control.len(), lo);
             let spacing = (hi - lo) / SAMPLES_PER_SPAN as f64;
             let mut start = (f64::INFINITY, lo);
             for k in 0..=SAMPLES_PER_SPAN {
@@ -169,7 +172,7 @@ impl PlanarCurve {
                 } else {
                     lo + k as f64 * spacing
                 };
-                let d = (self.point(u) - target).norm_squared();
+                let d = (self.point_in(span, u) - target).norm_squared();
                 if d < start.0 {
                     start = (d, u);
                 }
@@ -177,10 +180,10 @@ impl PlanarCurve {
             let mut u = start.1;
             for _ in 0..MAX_NEWTON_STEPS {
                 *iterations += 1;
-                let c = self.point(u) - target;
-                let d1 = self.derivative(u);
+                let c = self.point_in(span, u) - target;
+                let d1 = self.derivative_in(span, u);
                 let g = c.dot(&d1);
-                let dg = d1.norm_squared() + c.dot(&self.second_derivative(u));
+                let dg = d1.norm_squared() + c.dot(&self.second_derivative_in(span, u));
                 if dg <= 0.0 {
                     break;
                 }
@@ -191,19 +194,49 @@ impl PlanarCurve {
                     break;
                 }
             }
-            let d = (self.point(u) - target).norm_squared();
+            let d = (self.point_in(span, u) - target).norm_squared();
             if d < best.0 {
-                best = (d, u);
+                best = (d, u, self.derivative_in(span, u));
             }
         }
-        let u = best.1;
+        let (_, u, tangent) = best;
         let [u0, u1] = self.domain();
         Closest {
             u,
             point: Point2::from(self.point(u)),
-            tangent: self.derivative(u),
+            tangent,
             at_end: !self.closed && (u <= u0 || u >= u1),
         }
+    }
+
+    /// The point at `u` on the polynomial of knot span `span`.
+    fn point_in(&self, span: usize, u: f64) -> Vector2 {
+        de_boor_in(&self.control, &self.knots, self.degree, span, u)
+    }
+
+    /// The derivative at `u` on the polynomial of knot span `span`.
+    fn derivative_in(&self, span: usize, u: f64) -> Vector2 {
+        de_boor_in(
+            &self.d1,
+            &self.knots[1..self.knots.len() - 1],
+            self.degree - 1,
+            span - 1,
+            u,
+        )
+    }
+
+    /// The second derivative at `u` on the polynomial of knot span `span`.
+    fn second_derivative_in(&self, span: usize, u: f64) -> Vector2 {
+        if self.degree < 2 {
+            return Vector2::zeros();
+        }
+        de_boor_in(
+            &self.d2,
+            &self.knots[2..self.knots.len() - 2],
+            self.degree - 2,
+            span - 2,
+            u,
+        )
     }
 }
 
@@ -220,7 +253,11 @@ fn find_span(knots: &[f64], p: usize, n_ctrl: usize, u: f64) -> usize {
 }
 
 fn de_boor(ctrl: &[Vector2], knots: &[f64], p: usize, u: f64) -> Vector2 {
-    let s = find_span(knots, p, ctrl.len(), u);
+    de_boor_in(ctrl, knots, p, find_span(knots, p, ctrl.len(), u), u)
+}
+
+/// De Boor's algorithm on the polynomial of knot span `s` (valid for `u` in or near it).
+fn de_boor_in(ctrl: &[Vector2], knots: &[f64], p: usize, s: usize, u: f64) -> Vector2 {
     let mut d = [Vector2::zeros(); 4];
     d[..=p].copy_from_slice(&ctrl[s - p..=s]);
     for r in 1..=p {
