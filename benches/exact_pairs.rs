@@ -99,7 +99,7 @@ fn cases() -> Vec<Case> {
             name: "cylinder_plane_tilted",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
             j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
             pose_j: Isometry3::identity(),
             depth: None,
         },
