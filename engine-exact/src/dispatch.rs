@@ -1,6 +1,6 @@
 //! The one exhaustive `match` over geometry pairs.
 //!
-//! A pair is computed in the canonical order of [`GeometryKind`] (`a.kind() <= b.kind()`);
+//! A pair is computed in the canonical order of [`GeometryKind`](contact_core::GeometryKind) (`a.kind() <= b.kind()`);
 //! the reverse order is the same computation with the result [`swapped`](contact_core::Contact::swapped).
 //! There is no wildcard arm: a new geometry kind in `contact-core` is a compile error here.
 //!
@@ -30,7 +30,7 @@ use crate::kernel::Kernel;
 use crate::pairs::sphere_solid::Solid;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
-use contact_core::{Geometry, GeometryKind, Unsupported};
+use contact_core::{Geometry, Unsupported};
 
 /// A pair's kernel and whether it runs with I and J exchanged (`swap`: the kernel's first
 /// geometry is J).
@@ -319,19 +319,3 @@ fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Opti
         },
     }))
 }
-
-/// The kinds in canonical order, for tests and reports that walk every pair.
-pub const ALL_KINDS: [GeometryKind; 12] = [
-    GeometryKind::Ellipsoid,
-    GeometryKind::Cylinder,
-    GeometryKind::Cuboid,
-    GeometryKind::Frustum,
-    GeometryKind::Torus,
-    GeometryKind::Mesh,
-    GeometryKind::Plane,
-    GeometryKind::Point,
-    GeometryKind::Circle,
-    GeometryKind::Arc,
-    GeometryKind::Curve,
-    GeometryKind::Line,
-];
