@@ -12,6 +12,7 @@
 //! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
+//! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
@@ -20,13 +21,14 @@
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs,
-//! every mesh pair, curved solids on a *bounded*
+//! the other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved solids on a *bounded*
 //! plane, circles on a bounded line, every arc pair, curve–curve and curve–line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
+use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
@@ -49,6 +51,7 @@ const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to ov
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
     "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
+const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
 const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
@@ -206,7 +209,20 @@ pub(crate) fn select(
         | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_) | G::Plane(_))
         | (G::Torus(_), G::Torus(_) | G::Mesh(_) | G::Plane(_))
-        | (G::Mesh(_), G::Mesh(_) | G::Plane(_)) => Err(no(NOT_BUILT)),
+        | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
+        (G::Mesh(mesh), G::Plane(p)) => {
+            if !p.is_unbounded() {
+                return Err(no(NOT_BUILT_BOUNDED));
+            }
+            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            no_flip(
+                flip_a,
+                Kernel::MeshPlane {
+                    mesh: std::sync::Arc::new(prepared),
+                    side: side(flip_b),
+                },
+            )
+        }
         (G::Plane(_), G::Plane(_)) => Err(no(NOT_A_CONTACT)),
 
         // ---- 2-D, canonical order.

@@ -66,6 +66,11 @@ pub(crate) enum Kernel {
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
+    /// Closed mesh `a` against an unbounded plane `b`: one contact per region.
+    MeshPlane {
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+        side: f64,
+    },
     /// Box `a` against a (possibly bounded) plane `b`.
     BoxPlane {
         cuboid: Cuboid,
@@ -95,17 +100,24 @@ pub(crate) enum Kernel {
 }
 
 impl Kernel {
-    /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`).
-    /// `length` is the pair's length scale (for the 2-D in-plane tolerance).
+    /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`),
+    /// handing each contact to `emit`. `length` is the pair's length scale (for the 2-D
+    /// in-plane tolerance).
     pub fn evaluate(
         &self,
         pose_a: &Isometry3,
         pose_b: &Isometry3,
         length: f64,
         work: &mut WorkCounters,
-    ) -> Result<Option<PairContact>, PairError> {
+        emit: &mut dyn FnMut(PairContact),
+    ) -> Result<(), PairError> {
         work.primitive_tests += 1;
-        Ok(match *self {
+        if let Self::MeshPlane { mesh, side } = self {
+            pairs::mesh_plane::contacts(mesh, pose_a, pose_b, *side, work, emit);
+            return Ok(());
+        }
+        let found = match *self {
+            Self::MeshPlane { .. } => None,
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
             }
@@ -162,6 +174,10 @@ impl Kernel {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::point_line::circle_line(&frame, radius, side)
             }
-        })
+        };
+        if let Some(c) = found {
+            emit(c);
+        }
+        Ok(())
     }
 }

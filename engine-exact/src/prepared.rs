@@ -1,7 +1,7 @@
 //! A CONTACT prepared for the exact engine: one kernel per (I geometry, J geometry) pair.
 
 use crate::dispatch::select;
-use crate::kernel::{Kernel, PairError};
+use crate::kernel::{Kernel, PairContact, PairError};
 use contact_core::{
     Contact, GeometryInstance, GeometryKind, Isometry3, PrepareError, PreparedPair, PreparedStats,
     QueryError, WorkCounters, format_pose,
@@ -104,6 +104,7 @@ impl PreparedPair for PreparedExact {
         contacts.clear();
         QueryError::check_poses(pose_world_i, pose_world_j)?;
         work.queries += 1;
+        let mut work_contacts = 0;
         for e in &self.entries {
             work.geometry_pairs += 1;
             let (pose_first, pose_second) = if e.swap {
@@ -113,9 +114,21 @@ impl PreparedPair for PreparedExact {
             };
             let pose_a = compose(pose_first, &e.pose_part_first);
             let pose_b = compose(pose_second, &e.pose_part_second);
-            let found = e
-                .kernel
-                .evaluate(&pose_a, &pose_b, e.length, work)
+            let mut emit = |c: PairContact| {
+                let c = if e.swap { c.swapped() } else { c };
+                work_contacts += 1;
+                contacts.push(Contact {
+                    point_i_w: c.point_a,
+                    point_j_w: c.point_b,
+                    normal_w: c.normal,
+                    penetration: c.depth,
+                    area: c.area,
+                    geometry_i: e.geometry_i,
+                    geometry_j: e.geometry_j,
+                });
+            };
+            e.kernel
+                .evaluate(&pose_a, &pose_b, e.length, work, &mut emit)
                 .map_err(|err| match err {
                     PairError::OutOfPlane { angle_rad, offset } => QueryError::OutOfPlane {
                         i: e.kind_i,
@@ -128,20 +141,8 @@ impl PreparedPair for PreparedExact {
                         pose_j: format_pose(pose_world_j),
                     },
                 })?;
-            if let Some(c) = found {
-                let c = if e.swap { c.swapped() } else { c };
-                work.contacts += 1;
-                contacts.push(Contact {
-                    point_i_w: c.point_a,
-                    point_j_w: c.point_b,
-                    normal_w: c.normal,
-                    penetration: c.depth,
-                    area: c.area,
-                    geometry_i: e.geometry_i,
-                    geometry_j: e.geometry_j,
-                });
-            }
         }
+        work.contacts += work_contacts;
         Ok(())
     }
 

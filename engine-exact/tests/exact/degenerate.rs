@@ -1,7 +1,7 @@
 //! Degenerate and extreme input: every branch documented in the pair modules, each with a
 //! finite answer (no NaN, no panic) and the documented value.
 
-use crate::common::{instance, one, query};
+use crate::common::{boxes_mesh, instance, one, query};
 use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
 use contact_core::{
     Geometry, GeometryEngine, Isometry3, QueryError, Side, UnitQuaternion, Vector3, WorkCounters,
@@ -258,4 +258,39 @@ fn bad_poses_and_leaving_the_plane_are_typed_errors() {
         .unwrap();
     assert_eq!(out.len(), 1);
     assert!((out[0].penetration - 1.5).abs() < 1e-15, "{:?}", out[0]);
+}
+
+#[test]
+fn a_mesh_on_two_feet_gives_one_contact_per_foot() {
+    let id = Isometry3::identity();
+    let feet = [
+        (
+            contact_core::Point3::new(-2.0, 0.0, 0.0),
+            Vector3::new(0.5, 0.4, 1.0),
+        ),
+        (
+            contact_core::Point3::new(1.5, 0.5, 0.3),
+            Vector3::new(0.3, 0.6, 1.3),
+        ),
+    ];
+    let mesh = instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&feet))));
+    // Tilt and sink the part so both feet cross the plane by different amounts.
+    let pose = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.1, -0.2, 0.8),
+        UnitQuaternion::from_euler_angles(0.05, -0.08, 0.3),
+    );
+    let found = query(&mesh, &plane(), &pose, &id);
+    assert_eq!(found.len(), 2, "{found:?}");
+    // Each foot alone, as an exact box, answers the same.
+    for ((centre, half), got) in feet.iter().zip(&found) {
+        let foot = instance(Geometry::Cuboid(
+            Cuboid::centered(half.x, half.y, half.z).unwrap(),
+        ))
+        .at(Isometry3::translation(centre.x, centre.y, centre.z));
+        let expected = one(&foot, &plane(), &pose, &id);
+        crate::common::assert_close(got, &expected, 2.0, 4.0, 1e-12, "foot");
+    }
+    // Lifted clear, then resting exactly on the plane: no contact.
+    assert!(query(&mesh, &plane(), &at(0.0, 0.0, 5.0), &id).is_empty());
+    assert!(query(&mesh, &plane(), &at(0.0, 0.0, 1.0), &id).is_empty());
 }

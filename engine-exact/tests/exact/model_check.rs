@@ -56,7 +56,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 18] = [
+const BUILT: [(&str, &str); 19] = [
+    ("mesh", "plane"),
     ("sphere", "box"),
     ("sphere", "cylinder"),
     ("sphere", "frustum"),
@@ -88,6 +89,7 @@ fn name(g: &Geometry) -> &'static str {
             GeometryKind::Curve => "curve",
             GeometryKind::Frustum => "frustum",
             GeometryKind::Torus => "torus",
+            GeometryKind::Mesh => "mesh",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
@@ -129,8 +131,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 17 distinct pairs, 14 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 14);
+    // 18 distinct pairs, 15 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 15);
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! rigid motion of both bodies moves the contact with them; scaling the scene by 1e-6 and
 //! 1e6 scales depth and points by the same factor.
 
-use crate::common::{Rng, assert_close, instance, query};
+use crate::common::{Rng, assert_close, boxes_mesh, instance, query};
 use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
@@ -132,6 +132,32 @@ fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
+    let feet = [
+        (
+            Point3::new(-1.0 * s, 0.0, 0.0),
+            Vector3::new(0.5, 0.4, 0.8) * s,
+        ),
+        (
+            Point3::new(1.0 * s, 0.3 * s, 0.2 * s),
+            Vector3::new(0.3, 0.6, 1.0) * s,
+        ),
+    ];
+    let plane_pose = rng.pose(3.0);
+    let pose_i = plane_pose
+        * Isometry3::from_parts(
+            Translation3::new(0.0, 0.0, rng.uniform(0.3, 1.0)),
+            rng.rotation(),
+        );
+    Scene {
+        i: instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&feet)))),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: 2.5 * s,
+    }
+}
+
 fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
     let h = Vector3::new(
         rng.uniform(0.3, 1.5),
@@ -221,7 +247,8 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 10] = [
+const MAKERS: [(&str, Maker); 11] = [
+    ("mesh–plane", mesh_plane),
     ("sphere–box/cylinder/frustum/torus", sphere_solid),
     ("cylinder–plane", cylinder_plane),
     ("sphere–plane", sphere_plane),

@@ -1,7 +1,7 @@
 //! Characterization rows of the 3-D pairs.
 
 use super::{Case, ITERATIVE_BOUND, Row, SAMPLES, at, run};
-use crate::common::{Expected, Rng, instance};
+use crate::common::{Expected, Rng, boxes_mesh, instance};
 use crate::oracles;
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
 use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector2, Vector3};
@@ -153,6 +153,32 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                     i: instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap())),
                     j: plane(),
                     pose_i: at(x, y, z0),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm(),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "mesh–plane",
+            "a box as a 12-triangle mesh, any orientation, one corner below the plane",
+            "exact clipping (tetrahedra from the plane); oracle: corner tetrahedron",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let q = rng.rotation();
+                let e = rng.uniform(0.01, 0.3) * h.min();
+                let (centre, expected) = oracles::box_corner_plane(&h, &q, e)?;
+                let mesh = boxes_mesh(&[(Point3::origin(), h)]);
+                Some(Case {
+                    i: instance(Geometry::Mesh(std::sync::Arc::new(mesh))),
+                    j: plane(),
+                    pose_i: Isometry3::from_parts(Translation3::from(centre.coords), q),
                     pose_j: Isometry3::identity(),
                     expected,
                     length: h.norm(),
