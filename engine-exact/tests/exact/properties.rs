@@ -134,12 +134,9 @@ fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
 
 fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
     let feet = [
+        (Point3::new(-s, 0.0, 0.0), Vector3::new(0.5, 0.4, 0.8) * s),
         (
-            Point3::new(-1.0 * s, 0.0, 0.0),
-            Vector3::new(0.5, 0.4, 0.8) * s,
-        ),
-        (
-            Point3::new(1.0 * s, 0.3 * s, 0.2 * s),
+            Point3::new(s, 0.3 * s, 0.2 * s),
             Vector3::new(0.3, 0.6, 1.0) * s,
         ),
     ];
