@@ -17,12 +17,14 @@
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
+//! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs,
-//! the other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved solids on a *bounded*
-//! plane, circles on a bounded line, every arc pair, curve–curve and curve–line are not built
+//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs, the
+//! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
+//! solids on a *bounded* plane, circles on a bounded line, arc–arc, arc–curve, arc–line,
+//! curve–curve and curve–line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -291,8 +293,24 @@ pub(crate) fn select(
                 },
             )
         }
-        (G::Point | G::Circle(_), G::Arc(_))
-        | (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
+        (G::Point, G::Arc(arc)) => no_flip(
+            flip_a,
+            Kernel::PointArc {
+                radius: arc.radius(),
+                range: arc.range_angle(),
+                side: side(flip_b),
+            },
+        ),
+        (G::Circle(circle), G::Arc(arc)) => no_flip(
+            flip_a,
+            Kernel::CircleArc {
+                radius_a: circle.radius(),
+                radius: arc.radius(),
+                range: arc.range_angle(),
+                side: side(flip_b),
+            },
+        ),
+        (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
         | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
         (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
     }

@@ -87,6 +87,15 @@ pub(crate) enum Kernel {
     CircleCircle { radius_a: f64, radius_b: f64 },
     /// Solid circle `a` inside the circular hole `b` (a flipped circle).
     CircleInHole { radius_a: f64, radius_b: f64 },
+    /// 2-D point `a` against arc `b`.
+    PointArc { radius: f64, range: f64, side: f64 },
+    /// Solid circle `a` against arc `b`.
+    CircleArc {
+        radius_a: f64,
+        radius: f64,
+        range: f64,
+        side: f64,
+    },
     /// 2-D point `a` against curve `b`.
     PointCurve { curve: Arc<PlanarCurve>, side: f64 },
     /// Solid circle `a` against curve `b`.
@@ -157,6 +166,23 @@ impl Kernel {
             Self::CircleInHole { radius_a, radius_b } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::circles::circle_in_hole(&frame, radius_a, radius_b)
+            }
+            Self::PointArc {
+                radius,
+                range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::arc::point_arc(&frame, radius, range, side)
+            }
+            Self::CircleArc {
+                radius_a,
+                radius,
+                range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::arc::circle_arc(&frame, radius_a, radius, range, side)
             }
             Self::PointCurve { ref curve, side } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;

@@ -10,6 +10,7 @@
 //! The 2-D "area" of a contact is a length: the intersection region's extent across the
 //! normal.
 
+pub mod arc;
 pub mod circles;
 pub mod curve_eval;
 pub mod point_curve;

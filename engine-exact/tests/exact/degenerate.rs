@@ -294,3 +294,21 @@ fn a_mesh_on_two_feet_gives_one_contact_per_foot() {
     assert!(query(&mesh, &plane(), &at(0.0, 0.0, 5.0), &id).is_empty());
     assert!(query(&mesh, &plane(), &at(0.0, 0.0, 1.0), &id).is_empty());
 }
+
+#[test]
+fn an_arc_has_no_material_beyond_its_ends_and_a_middle_at_its_centre() {
+    let id = Isometry3::identity();
+    let arc = instance(Geometry::Arc(
+        contact_core::geometry::Arc::new(1.0, PI / 2.0).unwrap(),
+    ));
+    let point = instance(Geometry::Point);
+    // Inside the radius but at 135°, beyond the quarter arc: no contact.
+    assert!(query(&point, &arc, &at(-0.3, 0.3, 0.0), &id).is_empty());
+    // At the centre: the middle direction, 45°.
+    let c = one(&point, &arc, &id, &id);
+    let mid = Vector3::new(1.0, 1.0, 0.0).normalize();
+    assert!(
+        (c.normal_w - mid).norm() < 1e-15 && c.penetration == 1.0,
+        "{c:?}"
+    );
+}

@@ -56,7 +56,9 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 19] = [
+const BUILT: [(&str, &str); 21] = [
+    ("point", "arc"),
+    ("circle", "arc"),
     ("mesh", "plane"),
     ("sphere", "box"),
     ("sphere", "cylinder"),
@@ -90,11 +92,11 @@ fn name(g: &Geometry) -> &'static str {
             GeometryKind::Frustum => "frustum",
             GeometryKind::Torus => "torus",
             GeometryKind::Mesh => "mesh",
+            GeometryKind::Arc => "arc",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
             GeometryKind::Line => "line",
-            _ => "other",
         },
     }
 }
@@ -131,8 +133,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 18 distinct pairs, 15 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 15);
+    // 20 distinct pairs, 17 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 17);
 }
 
 #[test]

@@ -3,7 +3,9 @@
 //! 1e6 scales depth and points by the same factor.
 
 use crate::common::{Rng, assert_close, boxes_mesh, instance, query};
-use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus};
+use contact_core::geometry::{
+    Arc, Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
+};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
 
@@ -155,6 +157,34 @@ fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn circle_curve_or_arc(rng: &mut Rng, s: f64) -> Scene {
+    let j = if rng.uniform(0.0, 1.0) < 0.5 {
+        let points: Vec<contact_core::Point2> = (0..7)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::TAU / 7.0;
+                let r = rng.uniform(1.8, 2.2) * s;
+                contact_core::Point2::new(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        instance(Geometry::Curve(std::sync::Arc::new(
+            Curve::new(&points, 4, true, CurvePoints::Interpolated).unwrap(),
+        )))
+    } else {
+        instance(Geometry::Arc(Arc::new(2.0 * s, 5.0).unwrap()))
+    };
+    let pose_j = rng.pose(3.0);
+    let angle = rng.uniform(0.3, 4.7);
+    let reach = rng.uniform(1.7, 2.1);
+    let pose_i = pose_j * Isometry3::translation(reach * angle.cos(), reach * angle.sin(), 0.0);
+    Scene {
+        i: instance(Geometry::Circle(Circle::new(0.4 * s).unwrap())),
+        j,
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: 2.0 * s,
+    }
+}
+
 fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
     let h = Vector3::new(
         rng.uniform(0.3, 1.5),
@@ -244,7 +274,8 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 11] = [
+const MAKERS: [(&str, Maker); 12] = [
+    ("circle–curve/arc", circle_curve_or_arc),
     ("mesh–plane", mesh_plane),
     ("sphere–box/cylinder/frustum/torus", sphere_solid),
     ("cylinder–plane", cylinder_plane),

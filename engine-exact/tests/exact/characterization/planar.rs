@@ -3,7 +3,7 @@
 use super::{CURVE_SAMPLES, Case, ITERATIVE_BOUND, Row, SAMPLES, at, run};
 use crate::common::{Expected, Rng, instance};
 use crate::oracles;
-use contact_core::geometry::{Circle, Curve, CurvePoints, Line};
+use contact_core::geometry::{Arc, Circle, Curve, CurvePoints, Line};
 use contact_core::{Geometry, Isometry3, Point2, Point3, UnitQuaternion, Vector3};
 use nalgebra::Translation3;
 use std::sync::Arc as Shared;
@@ -270,5 +270,64 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 },
             )
         },
+        run(
+            rng,
+            SAMPLES,
+            "point–arc (2-D)",
+            "RANGLE ∈ [0.5, 2π], point inside the radius within the arc's angle",
+            "closed form",
+            |rng| {
+                let (radius, range) = (
+                    rng.uniform(0.5, 2.0),
+                    rng.uniform(0.5, std::f64::consts::TAU),
+                );
+                let theta = rng.uniform(0.01, 0.99) * range;
+                let d = rng.uniform(0.05, 0.99) * radius;
+                let u = Vector3::new(theta.cos(), theta.sin(), 0.0);
+                Some(Case {
+                    i: instance(Geometry::Point),
+                    j: instance(Geometry::Arc(Arc::new(radius, range).unwrap())),
+                    pose_i: at(d * u.x, d * u.y, 0.0),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from(d * u),
+                        point_j: Point3::from(radius * u),
+                        normal: u,
+                        depth: radius - d,
+                    },
+                    length: radius,
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "circle–arc (2-D)",
+            "flipped arc (material outside), disc crossing it within the arc's angle",
+            "closed form",
+            |rng| {
+                let (radius, range) = (
+                    rng.uniform(1.0, 2.0),
+                    rng.uniform(0.5, std::f64::consts::TAU),
+                );
+                let r = rng.uniform(0.1, 0.5);
+                let theta = rng.uniform(0.01, 0.99) * range;
+                let d = radius - rng.uniform(0.01, 0.99) * r;
+                let u = Vector3::new(theta.cos(), theta.sin(), 0.0);
+                Some(Case {
+                    i: instance(Geometry::Circle(Circle::new(r).unwrap())),
+                    j: instance(Geometry::Arc(Arc::new(radius, range).unwrap())).flipped(),
+                    pose_i: at(d * u.x, d * u.y, 0.0),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from((d + r) * u),
+                        point_j: Point3::from(radius * u),
+                        normal: -u,
+                        depth: r - (radius - d),
+                    },
+                    length: radius,
+                })
+            },
+        ),
     ]
 }
