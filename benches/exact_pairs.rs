@@ -12,11 +12,13 @@
     reason = "criterion_group! generates an undocumented public function"
 )]
 
-use contact_core::Point2;
-use contact_core::geometry::{Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Plane};
+use contact_core::geometry::{
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Plane, TriangleMesh,
+};
 use contact_core::{
     Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, UnitQuaternion, WorkCounters,
 };
+use contact_core::{Point2, Point3};
 use criterion::{Criterion, criterion_group, criterion_main};
 use engine_exact::ExactEngine;
 use engine_exact::parry_adapter::{self, PeerShape};
@@ -115,6 +117,22 @@ fn cases() -> Vec<Case> {
             depth: Some(0.1),
         },
         Case {
+            name: "mesh_plane_two_feet",
+            i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "sphere_mesh_box",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::translation(-1.0, 0.0, 1.3),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.2),
+        },
+        Case {
             name: "circle_curve",
             i: Geometry::Circle(Circle::new(0.3).unwrap()),
             j: Geometry::Curve(std::sync::Arc::new(
@@ -144,6 +162,31 @@ fn cases() -> Vec<Case> {
             depth: Some(1.5 - (1.44f64 + 0.09).sqrt()),
         },
     ]
+}
+
+/// A closed mesh of two boxes (two 'feet'): 24 triangles, two contact regions on a plane.
+fn two_feet() -> TriangleMesh {
+    let mut vertices = Vec::new();
+    let mut triangles = Vec::new();
+    for (cx, h) in [(-1.0, [0.5, 0.4, 1.0]), (1.0, [0.3, 0.6, 1.0])] {
+        let base = vertices.len() as u32;
+        for k in 0..8u32 {
+            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
+            vertices.push(Point3::new(cx + s(0) * h[0], s(1) * h[1], s(2) * h[2]));
+        }
+        for q in [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ] {
+            triangles.push([base + q[0], base + q[1], base + q[2]]);
+            triangles.push([base + q[0], base + q[2], base + q[3]]);
+        }
+    }
+    TriangleMesh::new(vertices, triangles).unwrap()
 }
 
 fn bench_pairs(c: &mut Criterion) {

@@ -10,6 +10,7 @@
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
 //! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
+//! | sphere–mesh (closed) | closed form (signed distance, winding number), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
@@ -203,8 +204,21 @@ pub(crate) fn select(
                 None => Err(no(NOT_BUILT)),
             }
         }
-        (G::Ellipsoid(_), G::Mesh(_))
-        | (
+        (G::Ellipsoid(e), G::Mesh(mesh)) => match e.sphere_radius() {
+            Some(radius) if !flip_b => {
+                let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+                no_flip(
+                    flip_a,
+                    Kernel::SphereMesh {
+                        radius,
+                        mesh: std::sync::Arc::new(prepared),
+                    },
+                )
+            }
+            Some(_) => Err(no(FLIP_NOT_BUILT)),
+            None => Err(no(NOT_BUILT)),
+        },
+        (
             G::Cylinder(_),
             G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
         )

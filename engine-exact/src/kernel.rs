@@ -58,6 +58,11 @@ pub(crate) enum Kernel {
         radius: f64,
         solid: pairs::sphere_solid::Solid,
     },
+    /// Sphere `a` against closed mesh `b`.
+    SphereMesh {
+        radius: f64,
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+    },
     /// Two solid spheres.
     SphereSphere { radius_a: f64, radius_b: f64 },
     /// Solid sphere `a` inside the spherical cavity `b` (a flipped sphere).
@@ -132,6 +137,9 @@ impl Kernel {
             }
             Self::SphereSolid { radius, ref solid } => {
                 pairs::sphere_solid::contact(radius, pose_a, solid, pose_b)
+            }
+            Self::SphereMesh { radius, ref mesh } => {
+                pairs::sphere_mesh::contact(radius, pose_a, mesh, pose_b, work)
             }
             Self::SphereSphere { radius_a, radius_b } => {
                 pairs::sphere_sphere::contact(radius_a, pose_a, radius_b, pose_b)

@@ -33,8 +33,8 @@ use std::collections::HashMap;
 /// A mesh with the triangle adjacency the region search needs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PreparedMesh {
-    vertices: Vec<Point3>,
-    triangles: Vec<[u32; 3]>,
+    pub(crate) vertices: Vec<Point3>,
+    pub(crate) triangles: Vec<[u32; 3]>,
     /// `neighbours[t][k]`: the triangle across edge `k` (vertices `k`, `k + 1`) of `t`.
     neighbours: Vec<[u32; 3]>,
 }

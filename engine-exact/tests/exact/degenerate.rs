@@ -312,3 +312,26 @@ fn an_arc_has_no_material_beyond_its_ends_and_a_middle_at_its_centre() {
         "{c:?}"
     );
 }
+
+#[test]
+fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
+    let id = Isometry3::identity();
+    let h = Vector3::new(1.0, 2.0, 3.0);
+    let mesh = instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+        contact_core::Point3::origin(),
+        h,
+    )]))));
+    let c = one(&sphere(0.5), &mesh, &at(0.7, 0.1, -0.2), &id);
+    // Nearest face +x at 0.3: δ = r + 0.3, normal +x, the same as the exact box (the
+    // closest point comes from barycentric weights on triangles of size ~3, the normal from
+    // its difference with a point 0.3 away: a few ulps times 10).
+    assert!(
+        (c.penetration - 0.8).abs() < 1e-14 && (c.normal_w - Vector3::x()).norm() < 1e-14,
+        "{c:?}"
+    );
+    let exact_box = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
+    let b = one(&sphere(0.5), &exact_box, &at(0.7, 0.1, -0.2), &id);
+    crate::common::assert_close(&c, &b, 3.0, 9.0, 1e-14, "mesh vs box");
+    // Far away: no contact; the winding number is 0 there.
+    assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
+}

@@ -56,7 +56,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 21] = [
+const BUILT: [(&str, &str); 22] = [
+    ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
     ("mesh", "plane"),
@@ -133,8 +134,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 20 distinct pairs, 17 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 17);
+    // 21 distinct pairs, 18 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 18);
 }
 
 #[test]

@@ -108,7 +108,14 @@ fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
 
 fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.3, 1.0);
-    let (solid, length) = match rng.next_u64() % 4 {
+    let (solid, length) = match rng.next_u64() % 5 {
+        4 => (
+            Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+                Point3::new(0.1 * s, 0.0, 0.2 * s),
+                Vector3::new(0.8, 0.6, 1.0) * s,
+            )]))),
+            2.0,
+        ),
         0 => (
             Geometry::Cuboid(Cuboid::from_corner(1.2 * s, -0.8 * s, 1.5 * s).unwrap()),
             2.2,
@@ -277,7 +284,7 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
 const MAKERS: [(&str, Maker); 12] = [
     ("circle–curve/arc", circle_curve_or_arc),
     ("mesh–plane", mesh_plane),
-    ("sphere–box/cylinder/frustum/torus", sphere_solid),
+    ("sphere–box/cylinder/frustum/torus/mesh", sphere_solid),
     ("cylinder–plane", cylinder_plane),
     ("sphere–plane", sphere_plane),
     ("sphere–sphere", sphere_sphere),

@@ -188,6 +188,51 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
         run(
             rng,
             SAMPLES,
+            "sphere–mesh",
+            "a box as a 12-triangle mesh; centre outside a face, an edge or a corner",
+            "closed form (signed distance, winding number); oracle: clamping",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let r = rng.uniform(0.2, 1.0);
+                let outside = 1 + (rng.next_u64() % 3) as usize;
+                let mut point = Vector3::zeros();
+                let mut outward = Vector3::zeros();
+                for k in 0..3 {
+                    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+                        -1.0
+                    } else {
+                        1.0
+                    };
+                    if k < outside {
+                        point[k] = sign * h[k];
+                        outward[k] = sign * rng.uniform(0.2, 1.0);
+                    } else {
+                        point[k] = rng.uniform(-0.9, 0.9) * h[k];
+                    }
+                }
+                let d = rng.uniform(0.01, 0.99) * r;
+                let (centre, expected) =
+                    oracles::sphere_box(r, &h, &point, &outward.normalize(), d);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+                        Point3::origin(),
+                        h,
+                    )])))),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm().max(r),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
             "box–box",
             "faces parallel, partial overlap on every axis",
             "exact clipping; oracle: per-axis overlap",
