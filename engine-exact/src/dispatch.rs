@@ -1,6 +1,6 @@
 //! The one exhaustive `match` over geometry pairs.
 //!
-//! A pair is computed in the canonical order of [`GeometryKind`] (`a.kind() <= b.kind()`);
+//! A pair is computed in the canonical order of [`GeometryKind`](contact_core::GeometryKind) (`a.kind() <= b.kind()`);
 //! the reverse order is the same computation with the result [`swapped`](contact_core::Contact::swapped).
 //! There is no wildcard arm: a new geometry kind in `contact-core` is a compile error here.
 //!
@@ -9,26 +9,37 @@
 //! | --- | --- | --- |
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
+//! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
+//! | sphere–mesh (closed) | closed form (signed distance, winding number), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
+//! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
+//! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
+//! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //!
-//! Everything else answers [`Unsupported`] with the reason: general ellipsoid pairs, the
-//! other cylinder pairs, every frustum, torus and mesh pair, curved solids on a *bounded* plane, and the 2-D
-//! arc and curve pairs are not built yet; point–point, plane–plane and line–line are not
+//! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
+//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs, the
+//! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
+//! solids on a *bounded* plane, circles on a bounded line, arc–arc, arc–curve, arc–line,
+//! curve–curve and curve–line are not built
+//! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
+use crate::pairs::mesh_plane::PreparedMesh;
+use crate::pairs::sphere_solid::Solid;
+use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
-use contact_core::{Geometry, GeometryKind, Unsupported};
+use contact_core::{Geometry, Unsupported};
 
 /// A pair's kernel and whether it runs with I and J exchanged (`swap`: the kernel's first
 /// geometry is J).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Selected {
     /// The computation.
     pub kernel: Kernel,
@@ -41,6 +52,9 @@ const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the
 const NOT_BUILT_BOUNDED: &str = "a curved solid against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
+const CURVE_KNOTS: &str =
+    "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
+const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
 const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
@@ -169,18 +183,62 @@ pub(crate) fn select(
                 side: side(flip_b),
             },
         ),
+        (G::Ellipsoid(e), G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_)) => {
+            let solid = match b {
+                G::Cylinder(c) => Solid::Cylinder(*c),
+                G::Cuboid(c) => Solid::Box(*c),
+                G::Frustum(f) => Solid::Frustum(*f),
+                G::Torus(t) => Solid::Torus(*t),
+                G::Ellipsoid(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Line(_)
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => return Err(no(NOT_BUILT)),
+            };
+            match e.sphere_radius() {
+                Some(radius) if !flip_b => no_flip(flip_a, Kernel::SphereSolid { radius, solid }),
+                Some(_) => Err(no(FLIP_NOT_BUILT)),
+                None => Err(no(NOT_BUILT)),
+            }
+        }
+        (G::Ellipsoid(e), G::Mesh(mesh)) => match e.sphere_radius() {
+            Some(radius) if !flip_b => {
+                let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+                no_flip(
+                    flip_a,
+                    Kernel::SphereMesh {
+                        radius,
+                        mesh: std::sync::Arc::new(prepared),
+                    },
+                )
+            }
+            Some(_) => Err(no(FLIP_NOT_BUILT)),
+            None => Err(no(NOT_BUILT)),
+        },
         (
-            G::Ellipsoid(_),
-            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
-        )
-        | (
             G::Cylinder(_),
             G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
         )
         | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_) | G::Plane(_))
         | (G::Torus(_), G::Torus(_) | G::Mesh(_) | G::Plane(_))
-        | (G::Mesh(_), G::Mesh(_) | G::Plane(_)) => Err(no(NOT_BUILT)),
+        | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
+        (G::Mesh(mesh), G::Plane(p)) => {
+            if !p.is_unbounded() {
+                return Err(no(NOT_BUILT_BOUNDED));
+            }
+            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            no_flip(
+                flip_a,
+                Kernel::MeshPlane {
+                    mesh: std::sync::Arc::new(prepared),
+                    side: side(flip_b),
+                },
+            )
+        }
         (G::Plane(_), G::Plane(_)) => Err(no(NOT_A_CONTACT)),
 
         // ---- 2-D, canonical order.
@@ -228,9 +286,45 @@ pub(crate) fn select(
                 )
             }
         }
-        (G::Point, G::Arc(_) | G::Curve(_))
-        | (G::Circle(_), G::Arc(_) | G::Curve(_))
-        | (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
+        (G::Point, G::Curve(curve)) => {
+            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            no_flip(
+                flip_a,
+                Kernel::PointCurve {
+                    curve,
+                    side: side(flip_b),
+                },
+            )
+        }
+        (G::Circle(circle), G::Curve(curve)) => {
+            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            no_flip(
+                flip_a,
+                Kernel::CircleCurve {
+                    radius: circle.radius(),
+                    curve,
+                    side: side(flip_b),
+                },
+            )
+        }
+        (G::Point, G::Arc(arc)) => no_flip(
+            flip_a,
+            Kernel::PointArc {
+                radius: arc.radius(),
+                range: arc.range_angle(),
+                side: side(flip_b),
+            },
+        ),
+        (G::Circle(circle), G::Arc(arc)) => no_flip(
+            flip_a,
+            Kernel::CircleArc {
+                radius_a: circle.radius(),
+                radius: arc.radius(),
+                range: arc.range_angle(),
+                side: side(flip_b),
+            },
+        ),
+        (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
         | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
         (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
     }
@@ -256,6 +350,10 @@ fn reversed(result: Result<Selected, Unsupported>) -> Result<Selected, Unsupport
     }
 }
 
+fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<PlanarCurve>> {
+    PlanarCurve::new(curve).map(std::sync::Arc::new)
+}
+
 fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {
     if flip_e || !p.is_unbounded() {
         return None;
@@ -269,19 +367,3 @@ fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Opti
         },
     }))
 }
-
-/// The kinds in canonical order, for tests and reports that walk every pair.
-pub const ALL_KINDS: [GeometryKind; 12] = [
-    GeometryKind::Ellipsoid,
-    GeometryKind::Cylinder,
-    GeometryKind::Cuboid,
-    GeometryKind::Frustum,
-    GeometryKind::Torus,
-    GeometryKind::Mesh,
-    GeometryKind::Plane,
-    GeometryKind::Point,
-    GeometryKind::Circle,
-    GeometryKind::Arc,
-    GeometryKind::Curve,
-    GeometryKind::Line,
-];

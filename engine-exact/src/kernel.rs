@@ -1,9 +1,11 @@
 //! The evaluated form of a pair: a [`Kernel`] chosen once by [`crate::dispatch::select`],
 //! holding a copy of the shape data it needs, evaluated at every query without allocation.
 
+use crate::planar::curve_eval::PlanarCurve;
 use crate::{pairs, planar};
 use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use std::sync::Arc;
 
 /// One contact between the pair's first geometry `a` and second `b`, in the world frame.
 /// The normal points from `b` into `a`.
@@ -47,10 +49,20 @@ pub(crate) enum PairError {
 
 /// A pair computation with its shape data. `side` is +1, or −1 for a flipped plane or line
 /// (the material then lies on the +z / +y side).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Kernel {
     /// Sphere `a` against an unbounded plane `b`.
     SpherePlane { radius: f64, side: f64 },
+    /// Sphere `a` against a box, cylinder, frustum or torus `b`.
+    SphereSolid {
+        radius: f64,
+        solid: pairs::sphere_solid::Solid,
+    },
+    /// Sphere `a` against closed mesh `b`.
+    SphereMesh {
+        radius: f64,
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+    },
     /// Two solid spheres.
     SphereSphere { radius_a: f64, radius_b: f64 },
     /// Solid sphere `a` inside the spherical cavity `b` (a flipped sphere).
@@ -59,6 +71,11 @@ pub(crate) enum Kernel {
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
+    /// Closed mesh `a` against an unbounded plane `b`: one contact per region.
+    MeshPlane {
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+        side: f64,
+    },
     /// Box `a` against a (possibly bounded) plane `b`.
     BoxPlane {
         cuboid: Cuboid,
@@ -75,24 +92,54 @@ pub(crate) enum Kernel {
     CircleCircle { radius_a: f64, radius_b: f64 },
     /// Solid circle `a` inside the circular hole `b` (a flipped circle).
     CircleInHole { radius_a: f64, radius_b: f64 },
+    /// 2-D point `a` against arc `b`.
+    PointArc { radius: f64, range: f64, side: f64 },
+    /// Solid circle `a` against arc `b`.
+    CircleArc {
+        radius_a: f64,
+        radius: f64,
+        range: f64,
+        side: f64,
+    },
+    /// 2-D point `a` against curve `b`.
+    PointCurve { curve: Arc<PlanarCurve>, side: f64 },
+    /// Solid circle `a` against curve `b`.
+    CircleCurve {
+        radius: f64,
+        curve: Arc<PlanarCurve>,
+        side: f64,
+    },
     /// Solid circle `a` against an unbounded line `b`.
     CircleLine { radius: f64, side: f64 },
 }
 
 impl Kernel {
-    /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`).
-    /// `length` is the pair's length scale (for the 2-D in-plane tolerance).
+    /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`),
+    /// handing each contact to `emit`. `length` is the pair's length scale (for the 2-D
+    /// in-plane tolerance).
     pub fn evaluate(
         &self,
         pose_a: &Isometry3,
         pose_b: &Isometry3,
         length: f64,
         work: &mut WorkCounters,
-    ) -> Result<Option<PairContact>, PairError> {
+        emit: &mut dyn FnMut(PairContact),
+    ) -> Result<(), PairError> {
         work.primitive_tests += 1;
-        Ok(match *self {
+        if let Self::MeshPlane { mesh, side } = self {
+            pairs::mesh_plane::contacts(mesh, pose_a, pose_b, *side, work, emit);
+            return Ok(());
+        }
+        let found = match *self {
+            Self::MeshPlane { .. } => None,
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+            }
+            Self::SphereSolid { radius, ref solid } => {
+                pairs::sphere_solid::contact(radius, pose_a, solid, pose_b)
+            }
+            Self::SphereMesh { radius, ref mesh } => {
+                pairs::sphere_mesh::contact(radius, pose_a, mesh, pose_b, work)
             }
             Self::SphereSphere { radius_a, radius_b } => {
                 pairs::sphere_sphere::contact(radius_a, pose_a, radius_b, pose_b)
@@ -128,10 +175,43 @@ impl Kernel {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::circles::circle_in_hole(&frame, radius_a, radius_b)
             }
+            Self::PointArc {
+                radius,
+                range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::arc::point_arc(&frame, radius, range, side)
+            }
+            Self::CircleArc {
+                radius_a,
+                radius,
+                range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::arc::circle_arc(&frame, radius_a, radius, range, side)
+            }
+            Self::PointCurve { ref curve, side } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_curve::point_curve(&frame, curve, side, work)
+            }
+            Self::CircleCurve {
+                radius,
+                ref curve,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::point_curve::circle_curve(&frame, radius, curve, side, work)
+            }
             Self::CircleLine { radius, side } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::point_line::circle_line(&frame, radius, side)
             }
-        })
+        };
+        if let Some(c) = found {
+            emit(c);
+        }
+        Ok(())
     }
 }

@@ -17,33 +17,36 @@
 //! ## Capacity
 //! A box has 6 faces and each clipping plane adds at most one, so box–box (6 planes) has at
 //! most 12 faces and box–bounded-plane (5 planes) at most 11; a face gains at most one vertex
-//! per plane. [`MAX_FACES`] and [`MAX_FACE_VERTICES`] hold those bounds with a margin.
+//! per plane. [`MAX_FACES`] and [`MAX_FACE_VERTICES`] hold those bounds with a margin; the
+//! capacities are const parameters so a smaller problem (a box and one plane: 7 faces of at
+//! most 6 vertices) uses a smaller, cheaper polyhedron.
 
 use contact_core::{Point3, Vector3};
 
-/// Faces a polyhedron can hold.
+/// Faces a polyhedron can hold by default (box–box: at most 12).
 pub const MAX_FACES: usize = 14;
-/// Vertices a face can hold.
+/// Vertices a face can hold by default (box–box: at most 4 + 6 on a box face, 12 + 5 on a
+/// cut face).
 pub const MAX_FACE_VERTICES: usize = 18;
 
 /// A convex polygon, counter-clockwise seen from outside the polyhedron.
 #[derive(Debug, Clone, Copy)]
-struct Face {
-    vertices: [Point3; MAX_FACE_VERTICES],
+struct Face<const V: usize> {
+    vertices: [Point3; V],
     len: usize,
     from_clip: bool,
 }
 
-impl Face {
+impl<const V: usize> Face<V> {
     const EMPTY: Self = Self {
-        vertices: [Point3::new(0.0, 0.0, 0.0); MAX_FACE_VERTICES],
+        vertices: [Point3::new(0.0, 0.0, 0.0); V],
         len: 0,
         from_clip: false,
     };
 
     fn push(&mut self, p: Point3) {
-        debug_assert!(self.len < MAX_FACE_VERTICES, "face capacity exceeded");
-        if self.len < MAX_FACE_VERTICES {
+        debug_assert!(self.len < V, "face capacity exceeded");
+        if self.len < V {
             self.vertices[self.len] = p;
             self.len += 1;
         }
@@ -60,10 +63,11 @@ impl Face {
     }
 }
 
-/// A convex polyhedron as a list of outward-oriented faces.
+/// A convex polyhedron as a list of outward-oriented faces: at most `F` faces of at most
+/// `V` vertices each.
 #[derive(Debug, Clone)]
-pub struct ConvexPolyhedron {
-    faces: [Face; MAX_FACES],
+pub struct ConvexPolyhedron<const F: usize = MAX_FACES, const V: usize = MAX_FACE_VERTICES> {
+    faces: [Face<V>; F],
     len: usize,
 }
 
@@ -82,7 +86,7 @@ pub struct MassProperties {
     pub clipped_area: f64,
 }
 
-impl ConvexPolyhedron {
+impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
     /// The box with centre `center` and half-axes `axes` (three orthogonal vectors, right
     /// handed: `axes[0] × axes[1]` along `axes[2]`, each as long as that half extent).
     pub fn cuboid(center: &Point3, axes: &[Vector3; 3]) -> Self {
@@ -112,7 +116,7 @@ impl ConvexPolyhedron {
             ],
         ];
         let mut poly = Self {
-            faces: [Face::EMPTY; MAX_FACES],
+            faces: [Face::EMPTY; F],
             len: 6,
         };
         for (face, quad) in poly.faces.iter_mut().zip(quads.iter()) {
@@ -131,9 +135,9 @@ impl ConvexPolyhedron {
     /// Keeps the part with `normal·x ≤ offset`. Returns true when some vertex lay strictly
     /// outside (something was cut away).
     pub fn clip(&mut self, normal: &Vector3, offset: f64) -> bool {
-        let mut cap = Face::EMPTY;
+        let mut cap: Face<V> = Face::EMPTY;
         cap.from_clip = true;
-        let mut scratch = Face::EMPTY;
+        let mut scratch: Face<V> = Face::EMPTY;
         let mut cut = false;
         let mut write = 0;
         for index in 0..self.len {
@@ -170,12 +174,14 @@ impl ConvexPolyhedron {
             }
         }
         self.len = write;
-        if cut && cap.len >= 3 && self.len < MAX_FACES {
-            order_counter_clockwise(&mut cap, normal);
-            self.faces[self.len] = cap;
-            self.len += 1;
+        if cut && cap.len >= 3 {
+            debug_assert!(self.len < F, "polyhedron capacity exceeded");
+            if self.len < F {
+                order_counter_clockwise(&mut cap, normal);
+                self.faces[self.len] = cap;
+                self.len += 1;
+            }
         }
-        debug_assert!(self.len < MAX_FACES || !cut, "polyhedron capacity exceeded");
         cut
     }
 
@@ -242,14 +248,14 @@ fn crossing(p: Point3, dp: f64, q: Point3, dq: f64) -> Point3 {
     p + (q - p) * (dp / (dp - dq))
 }
 
-fn push_unique(face: &mut Face, p: Point3) {
+fn push_unique<const V: usize>(face: &mut Face<V>, p: Point3) {
     if !face.vertices[..face.len].contains(&p) {
         face.push(p);
     }
 }
 
 /// Sorts the (convex, coplanar) vertices counter-clockwise seen from +`normal`.
-fn order_counter_clockwise(face: &mut Face, normal: &Vector3) {
+fn order_counter_clockwise<const V: usize>(face: &mut Face<V>, normal: &Vector3) {
     let n = face.len;
     let mean = face.vertices[..n]
         .iter()
@@ -262,12 +268,12 @@ fn order_counter_clockwise(face: &mut Face, normal: &Vector3) {
     };
     let u = normal.cross(&helper).normalize();
     let v = normal.cross(&u);
-    let mut keys = [0.0; MAX_FACE_VERTICES];
+    let mut keys = [0.0; V];
     for (key, p) in keys.iter_mut().zip(&face.vertices[..n]) {
         let d = p.coords - mean;
         *key = pseudo_angle(d.dot(&u), d.dot(&v));
     }
-    // Insertion sort: at most MAX_FACE_VERTICES entries.
+    // Insertion sort: at most V entries.
     for i in 1..n {
         let mut j = i;
         while j > 0 && keys[j - 1] > keys[j] {

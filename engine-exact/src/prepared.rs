@@ -1,7 +1,7 @@
 //! A CONTACT prepared for the exact engine: one kernel per (I geometry, J geometry) pair.
 
 use crate::dispatch::select;
-use crate::kernel::{Kernel, PairError};
+use crate::kernel::{Kernel, PairContact, PairError};
 use contact_core::{
     Contact, GeometryInstance, GeometryKind, Isometry3, PrepareError, PreparedPair, PreparedStats,
     QueryError, WorkCounters, format_pose,
@@ -15,10 +15,11 @@ struct Entry {
     swap: bool,
     geometry_i: u32,
     geometry_j: u32,
-    /// `X_PG` of the kernel's first geometry (I's part frame, or J's when swapped).
-    pose_part_first: Isometry3,
-    /// `X_PG` of the kernel's second geometry.
-    pose_part_second: Isometry3,
+    /// `X_PG` of the kernel's first geometry (I's part frame, or J's when swapped); `None`
+    /// for the identity, which saves a pose product per query.
+    pose_part_first: Option<Isometry3>,
+    /// `X_PG` of the kernel's second geometry, `None` for the identity.
+    pose_part_second: Option<Isometry3>,
     /// The pair's length scale: the larger characteristic length of the two geometries, or 1
     /// model unit when neither has one (a point against an unbounded line).
     length: f64,
@@ -58,8 +59,8 @@ impl PreparedExact {
                     swap: selected.swap,
                     geometry_i: index_u32(index_i),
                     geometry_j: index_u32(index_j),
-                    pose_part_first: first.pose_part_geometry,
-                    pose_part_second: second.pose_part_geometry,
+                    pose_part_first: non_identity(&first.pose_part_geometry),
+                    pose_part_second: non_identity(&second.pose_part_geometry),
                     length,
                     kind_i: gi.geometry.kind(),
                     kind_j: gj.geometry.kind(),
@@ -72,6 +73,18 @@ impl PreparedExact {
             entries,
             geometries: i.len() + j.len(),
         })
+    }
+}
+
+fn non_identity(pose: &Isometry3) -> Option<Isometry3> {
+    (*pose != Isometry3::identity()).then_some(*pose)
+}
+
+/// `X_WG = X_WP · X_PG`, skipping the product when `X_PG` is the identity.
+fn compose(pose_world_part: &Isometry3, pose_part_geometry: &Option<Isometry3>) -> Isometry3 {
+    match pose_part_geometry {
+        Some(p) => pose_world_part * p,
+        None => *pose_world_part,
     }
 }
 
@@ -91,6 +104,7 @@ impl PreparedPair for PreparedExact {
         contacts.clear();
         QueryError::check_poses(pose_world_i, pose_world_j)?;
         work.queries += 1;
+        let mut work_contacts = 0;
         for e in &self.entries {
             work.geometry_pairs += 1;
             let (pose_first, pose_second) = if e.swap {
@@ -98,11 +112,23 @@ impl PreparedPair for PreparedExact {
             } else {
                 (pose_world_i, pose_world_j)
             };
-            let pose_a = pose_first * e.pose_part_first;
-            let pose_b = pose_second * e.pose_part_second;
-            let found = e
-                .kernel
-                .evaluate(&pose_a, &pose_b, e.length, work)
+            let pose_a = compose(pose_first, &e.pose_part_first);
+            let pose_b = compose(pose_second, &e.pose_part_second);
+            let mut emit = |c: PairContact| {
+                let c = if e.swap { c.swapped() } else { c };
+                work_contacts += 1;
+                contacts.push(Contact {
+                    point_i_w: c.point_a,
+                    point_j_w: c.point_b,
+                    normal_w: c.normal,
+                    penetration: c.depth,
+                    area: c.area,
+                    geometry_i: e.geometry_i,
+                    geometry_j: e.geometry_j,
+                });
+            };
+            e.kernel
+                .evaluate(&pose_a, &pose_b, e.length, work, &mut emit)
                 .map_err(|err| match err {
                     PairError::OutOfPlane { angle_rad, offset } => QueryError::OutOfPlane {
                         i: e.kind_i,
@@ -115,20 +141,8 @@ impl PreparedPair for PreparedExact {
                         pose_j: format_pose(pose_world_j),
                     },
                 })?;
-            if let Some(c) = found {
-                let c = if e.swap { c.swapped() } else { c };
-                work.contacts += 1;
-                contacts.push(Contact {
-                    point_i_w: c.point_a,
-                    point_j_w: c.point_b,
-                    normal_w: c.normal,
-                    penetration: c.depth,
-                    area: c.area,
-                    geometry_i: e.geometry_i,
-                    geometry_j: e.geometry_j,
-                });
-            }
         }
+        work.contacts += work_contacts;
         Ok(())
     }
 

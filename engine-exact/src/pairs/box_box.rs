@@ -56,7 +56,7 @@ pub(crate) fn contact(
     }) {
         return None;
     }
-    let poly = ConvexPolyhedron::cuboid(&center, &half_axes);
+    let poly = ConvexPolyhedron::<14, 18>::cuboid(&center, &half_axes);
     let planes_a = box_planes(&center, &unit_axes, &ha);
     let planes_b = box_planes(
         &Point3::origin(),

@@ -68,7 +68,14 @@ pub(crate) fn contact(
             count += 1;
         }
     }
-    let poly = ConvexPolyhedron::cuboid(&center, &half_axes);
     let planes_box = box_planes(&center, &unit_axes, &half);
-    clipped::contact(poly, &planes_box, &prism[..count], pose_plane, unit)
+    if count == 1 {
+        // One cutting plane: at most 7 faces of at most 6 vertices.
+        let poly = ConvexPolyhedron::<7, 6>::cuboid(&center, &half_axes);
+        clipped::contact(poly, &planes_box, &prism[..count], pose_plane, unit)
+    } else {
+        // Up to five planes: at most 11 faces; a box face gains one vertex per plane.
+        let poly = ConvexPolyhedron::<11, 12>::cuboid(&center, &half_axes);
+        clipped::contact(poly, &planes_box, &prism[..count], pose_plane, unit)
+    }
 }

@@ -75,8 +75,8 @@ pub(crate) fn box_planes(center: &Point3, axes: &[Vector3; 3], half: &Vector3) -
 
 /// Clips `poly` (solid `a`, in the working frame) by `planes_b` and turns the intersection
 /// into a contact in the world: `frame` maps working coordinates times `unit` to the world.
-pub(crate) fn contact(
-    mut poly: ConvexPolyhedron,
+pub(crate) fn contact<const F: usize, const V: usize>(
+    mut poly: ConvexPolyhedron<F, V>,
     planes_a: &[HalfSpace],
     planes_b: &[HalfSpace],
     frame: &Isometry3,

@@ -11,5 +11,8 @@ pub mod box_plane;
 pub mod clipped;
 pub mod cylinder_plane;
 pub mod ellipsoid_plane;
+pub mod mesh_plane;
+pub mod sphere_mesh;
 pub mod sphere_plane;
+pub mod sphere_solid;
 pub mod sphere_sphere;

@@ -1,6 +1,6 @@
 //! 2-D pairs, computed in the plane of the second (canonical) geometry `b`.
 //!
-//! Both geometries lie in the x-y planes of their frames. [`InPlane::new`] checks the two
+//! Both geometries lie in the x-y planes of their frames. Each query first checks the two
 //! planes coincide — the angle between their normals (either orientation: a marker whose z
 //! axis is reversed still spans the same plane) at most [`PLANE_ANGLE_TOLERANCE`] rad, and
 //! `a`'s origin within `PLANE_OFFSET_TOLERANCE · L` of `b`'s plane, `L` the pair's length
@@ -10,7 +10,10 @@
 //! The 2-D "area" of a contact is a length: the intersection region's extent across the
 //! normal.
 
+pub mod arc;
 pub mod circles;
+pub mod curve_eval;
+pub mod point_curve;
 pub mod point_line;
 
 use crate::kernel::PairError;

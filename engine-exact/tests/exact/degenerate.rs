@@ -1,7 +1,7 @@
 //! Degenerate and extreme input: every branch documented in the pair modules, each with a
 //! finite answer (no NaN, no panic) and the documented value.
 
-use crate::common::{instance, one, query};
+use crate::common::{boxes_mesh, instance, one, query};
 use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
 use contact_core::{
     Geometry, GeometryEngine, Isometry3, QueryError, Side, UnitQuaternion, Vector3, WorkCounters,
@@ -258,4 +258,80 @@ fn bad_poses_and_leaving_the_plane_are_typed_errors() {
         .unwrap();
     assert_eq!(out.len(), 1);
     assert!((out[0].penetration - 1.5).abs() < 1e-15, "{:?}", out[0]);
+}
+
+#[test]
+fn a_mesh_on_two_feet_gives_one_contact_per_foot() {
+    let id = Isometry3::identity();
+    let feet = [
+        (
+            contact_core::Point3::new(-2.0, 0.0, 0.0),
+            Vector3::new(0.5, 0.4, 1.0),
+        ),
+        (
+            contact_core::Point3::new(1.5, 0.5, 0.3),
+            Vector3::new(0.3, 0.6, 1.3),
+        ),
+    ];
+    let mesh = instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&feet))));
+    // Tilt and sink the part so both feet cross the plane by different amounts.
+    let pose = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.1, -0.2, 0.8),
+        UnitQuaternion::from_euler_angles(0.05, -0.08, 0.3),
+    );
+    let found = query(&mesh, &plane(), &pose, &id);
+    assert_eq!(found.len(), 2, "{found:?}");
+    // Each foot alone, as an exact box, answers the same.
+    for ((centre, half), got) in feet.iter().zip(&found) {
+        let foot = instance(Geometry::Cuboid(
+            Cuboid::centered(half.x, half.y, half.z).unwrap(),
+        ))
+        .at(Isometry3::translation(centre.x, centre.y, centre.z));
+        let expected = one(&foot, &plane(), &pose, &id);
+        crate::common::assert_close(got, &expected, 2.0, 4.0, 1e-12, "foot");
+    }
+    // Lifted clear, then resting exactly on the plane: no contact.
+    assert!(query(&mesh, &plane(), &at(0.0, 0.0, 5.0), &id).is_empty());
+    assert!(query(&mesh, &plane(), &at(0.0, 0.0, 1.0), &id).is_empty());
+}
+
+#[test]
+fn an_arc_has_no_material_beyond_its_ends_and_a_middle_at_its_centre() {
+    let id = Isometry3::identity();
+    let arc = instance(Geometry::Arc(
+        contact_core::geometry::Arc::new(1.0, PI / 2.0).unwrap(),
+    ));
+    let point = instance(Geometry::Point);
+    // Inside the radius but at 135°, beyond the quarter arc: no contact.
+    assert!(query(&point, &arc, &at(-0.3, 0.3, 0.0), &id).is_empty());
+    // At the centre: the middle direction, 45°.
+    let c = one(&point, &arc, &id, &id);
+    let mid = Vector3::new(1.0, 1.0, 0.0).normalize();
+    assert!(
+        (c.normal_w - mid).norm() < 1e-15 && c.penetration == 1.0,
+        "{c:?}"
+    );
+}
+
+#[test]
+fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
+    let id = Isometry3::identity();
+    let h = Vector3::new(1.0, 2.0, 3.0);
+    let mesh = instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+        contact_core::Point3::origin(),
+        h,
+    )]))));
+    let c = one(&sphere(0.5), &mesh, &at(0.7, 0.1, -0.2), &id);
+    // Nearest face +x at 0.3: δ = r + 0.3, normal +x, the same as the exact box (the
+    // closest point comes from barycentric weights on triangles of size ~3, the normal from
+    // its difference with a point 0.3 away: a few ulps times 10).
+    assert!(
+        (c.penetration - 0.8).abs() < 1e-14 && (c.normal_w - Vector3::x()).norm() < 1e-14,
+        "{c:?}"
+    );
+    let exact_box = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
+    let b = one(&sphere(0.5), &exact_box, &at(0.7, 0.1, -0.2), &id);
+    crate::common::assert_close(&c, &b, 3.0, 9.0, 1e-14, "mesh vs box");
+    // Far away: no contact; the winding number is 0 there.
+    assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
 }

@@ -5,7 +5,8 @@
 //! - [`characterization`]: the accuracy contract, one row per pair;
 //! - [`properties`]: I/J swap, rigid motion and scale covariance;
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
-//! - [`model_check`]: what `supports`/`prepare` accept and refuse.
+//! - [`model_check`]: what `supports`/`prepare` accept and refuse;
+//! - [`regressions`]: bugs found, with their reproducers.
 
 mod characterization;
 mod common;
@@ -13,3 +14,4 @@ mod degenerate;
 mod model_check;
 mod oracles;
 mod properties;
+mod regressions;

@@ -56,7 +56,17 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 12] = [
+const BUILT: [(&str, &str); 22] = [
+    ("sphere", "mesh"),
+    ("point", "arc"),
+    ("circle", "arc"),
+    ("mesh", "plane"),
+    ("sphere", "box"),
+    ("sphere", "cylinder"),
+    ("sphere", "frustum"),
+    ("sphere", "torus"),
+    ("point", "curve"),
+    ("circle", "curve"),
     ("cylinder", "plane"),
     ("sphere", "sphere"),
     ("sphere", "plane"),
@@ -79,11 +89,15 @@ fn name(g: &Geometry) -> &'static str {
             GeometryKind::Ellipsoid => "ellipsoid",
             GeometryKind::Cuboid => "box",
             GeometryKind::Cylinder => "cylinder",
+            GeometryKind::Curve => "curve",
+            GeometryKind::Frustum => "frustum",
+            GeometryKind::Torus => "torus",
+            GeometryKind::Mesh => "mesh",
+            GeometryKind::Arc => "arc",
             GeometryKind::Plane => "plane",
             GeometryKind::Point => "point",
             GeometryKind::Circle => "circle",
             GeometryKind::Line => "line",
-            _ => "other",
         },
     }
 }
@@ -120,8 +134,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 11 distinct pairs, 8 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 8);
+    // 21 distinct pairs, 18 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 18);
 }
 
 #[test]

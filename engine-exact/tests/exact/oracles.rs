@@ -223,3 +223,87 @@ pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected 
         depth: t - centroid.z,
     }
 }
+
+/// The point of a curve closest to `p`, by dense sampling (64 per span) then bisection on the
+/// sign change of `(C(u) − p)·C′(u)` around the nearest sample (to 1e-15 of the span) — a
+/// different method from the engine's Newton, on `contact-core`'s own evaluator. Returns (signed distance along the
+/// outward normal, closest point, outward normal).
+pub fn curve_closest(
+    curve: &contact_core::geometry::Curve,
+    p: &contact_core::Point2,
+) -> (f64, contact_core::Point2, contact_core::Vector2) {
+    let dist = |u: f64| (curve.point(u) - p).norm_squared();
+    let spans = curve.breakpoints();
+    let mut best = (f64::INFINITY, 0.0, 0.0);
+    for w in spans.windows(2) {
+        let step = (w[1] - w[0]) / 64.0;
+        for k in 0..=64 {
+            let u = w[0] + k as f64 * step;
+            let d = dist(u);
+            if d < best.0 {
+                best = (d, u, step);
+            }
+        }
+    }
+    let [u0, u1] = curve.domain();
+    let slope = |u: f64| (curve.point(u) - p).dot(&curve.derivative(u));
+    let (mut a, mut b) = ((best.1 - best.2).max(u0), (best.1 + best.2).min(u1));
+    // A minimum strictly inside has slope < 0 before and > 0 after; at an end it stays put.
+    let u = if slope(a) < 0.0 && slope(b) > 0.0 {
+        while b - a > 1e-15 * (u1 - u0) {
+            let m = 0.5 * (a + b);
+            if slope(m) < 0.0 { a = m } else { b = m }
+        }
+        0.5 * (a + b)
+    } else {
+        best.1
+    };
+    let q = curve.point(u);
+    let n = curve.normal(u).unwrap();
+    ((p - q).dot(&n), q, n)
+}
+
+/// A sphere of radius `r` near a box of half extents `h` centred at the origin: its centre
+/// at `face + d·(outward direction)` where the closest feature is a face, an edge or a
+/// corner, chosen by `feature` (1, 2 or 3 axes outside). The closest point of the box is the
+/// centre clamped to the box; the normal runs from it to the centre.
+pub fn sphere_box(
+    r: f64,
+    h: &Vector3,
+    inside_point: &Vector3,
+    outward: &Vector3,
+    d: f64,
+) -> (Point3, Expected) {
+    // `inside_point` lies on the box's surface feature; `outward` is a unit vector in the
+    // feature's normal cone.
+    let centre = Point3::from(inside_point + d * outward);
+    let q = Point3::new(
+        centre.x.clamp(-h.x, h.x),
+        centre.y.clamp(-h.y, h.y),
+        centre.z.clamp(-h.z, h.z),
+    );
+    let n = (centre - q).normalize();
+    (
+        centre,
+        Expected {
+            point_i: centre - r * n,
+            point_j: q,
+            normal: n,
+            depth: r - (centre - q).norm(),
+        },
+    )
+}
+
+/// A sphere of radius `r` with its centre at (ρ, 0, z) in a torus' frame (major `big`, minor
+/// `small`): the nearest tube centre is (big, 0, 0).
+pub fn sphere_torus(r: f64, big: f64, small: f64, rho: f64, z: f64) -> Expected {
+    let c = Vector3::new(rho, 0.0, z);
+    let tube = Vector3::new(big, 0.0, 0.0);
+    let n = (c - tube).normalize();
+    Expected {
+        point_i: Point3::from(c - r * n),
+        point_j: Point3::from(tube + small * n),
+        normal: n,
+        depth: r - ((c - tube).norm() - small),
+    }
+}

@@ -2,8 +2,10 @@
 //! rigid motion of both bodies moves the contact with them; scaling the scene by 1e-6 and
 //! 1e6 scales depth and points by the same factor.
 
-use crate::common::{Rng, assert_close, instance, query};
-use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
+use crate::common::{Rng, assert_close, boxes_mesh, instance, query};
+use contact_core::geometry::{
+    Arc, Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
+};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
 
@@ -104,6 +106,92 @@ fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
+    let r = rng.uniform(0.3, 1.0);
+    let (solid, length) = match rng.next_u64() % 5 {
+        4 => (
+            Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+                Point3::new(0.1 * s, 0.0, 0.2 * s),
+                Vector3::new(0.8, 0.6, 1.0) * s,
+            )]))),
+            2.0,
+        ),
+        0 => (
+            Geometry::Cuboid(Cuboid::from_corner(1.2 * s, -0.8 * s, 1.5 * s).unwrap()),
+            2.2,
+        ),
+        1 => (
+            Geometry::Cylinder(Cylinder::new(0.7 * s, 1.5 * s).unwrap()),
+            1.5,
+        ),
+        2 => (
+            Geometry::Frustum(Frustum::new(0.9 * s, 0.3 * s, 1.2 * s).unwrap()),
+            1.2,
+        ),
+        _ => (Geometry::Torus(Torus::new(1.2 * s, 0.4 * s).unwrap()), 1.6),
+    };
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * rng.pose(1.8);
+    Scene {
+        i: instance(Geometry::sphere(r * s).unwrap()),
+        j: instance(solid),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: length * s,
+    }
+}
+
+fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
+    let feet = [
+        (Point3::new(-s, 0.0, 0.0), Vector3::new(0.5, 0.4, 0.8) * s),
+        (
+            Point3::new(s, 0.3 * s, 0.2 * s),
+            Vector3::new(0.3, 0.6, 1.0) * s,
+        ),
+    ];
+    let plane_pose = rng.pose(3.0);
+    let pose_i = plane_pose
+        * Isometry3::from_parts(
+            Translation3::new(0.0, 0.0, rng.uniform(0.3, 1.0)),
+            rng.rotation(),
+        );
+    Scene {
+        i: instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&feet)))),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: 2.5 * s,
+    }
+}
+
+fn circle_curve_or_arc(rng: &mut Rng, s: f64) -> Scene {
+    let j = if rng.uniform(0.0, 1.0) < 0.5 {
+        let points: Vec<contact_core::Point2> = (0..7)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::TAU / 7.0;
+                let r = rng.uniform(1.8, 2.2) * s;
+                contact_core::Point2::new(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        instance(Geometry::Curve(std::sync::Arc::new(
+            Curve::new(&points, 4, true, CurvePoints::Interpolated).unwrap(),
+        )))
+    } else {
+        instance(Geometry::Arc(Arc::new(2.0 * s, 5.0).unwrap()))
+    };
+    let pose_j = rng.pose(3.0);
+    let angle = rng.uniform(0.3, 4.7);
+    let reach = rng.uniform(1.7, 2.1);
+    let pose_i = pose_j * Isometry3::translation(reach * angle.cos(), reach * angle.sin(), 0.0);
+    Scene {
+        i: instance(Geometry::Circle(Circle::new(0.4 * s).unwrap())),
+        j,
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: 2.0 * s,
+    }
+}
+
 fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
     let h = Vector3::new(
         rng.uniform(0.3, 1.5),
@@ -193,7 +281,10 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 9] = [
+const MAKERS: [(&str, Maker); 12] = [
+    ("circle–curve/arc", circle_curve_or_arc),
+    ("mesh–plane", mesh_plane),
+    ("sphere–box/cylinder/frustum/torus/mesh", sphere_solid),
     ("cylinder–plane", cylinder_plane),
     ("sphere–plane", sphere_plane),
     ("sphere–sphere", sphere_sphere),

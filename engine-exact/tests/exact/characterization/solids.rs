@@ -1,94 +1,19 @@
-//! The accuracy contract: one row per pair, measured against an independent closed form
-//! (see [`crate::oracles`]) over seeded random configurations, each seen from a random world
-//! frame. Run with `--nocapture` to print the table.
-//!
-//! Bounds: 1e-12 relative to the pair's size for closed forms and exact clipping (every
-//! built pair is one); depth, normal and points are each checked.
+//! Characterization rows of the 3-D pairs.
 
-use crate::common::{Expected, Rng, errors, instance, query};
+use super::{Case, ITERATIVE_BOUND, Row, SAMPLES, at, run};
+use crate::common::{Expected, Rng, boxes_mesh, instance};
 use crate::oracles;
-use contact_core::geometry::{Circle, Cuboid, Cylinder, Ellipsoid, Line, Plane};
-use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, UnitQuaternion, Vector3};
+use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
+use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector2, Vector3};
 use nalgebra::Translation3;
 
-const SAMPLES: usize = 200;
-const CLOSED_FORM_BOUND: f64 = 1e-12;
-/// Quadrature pairs (and their Simpson oracles) are held to the iterative bound.
-const ITERATIVE_BOUND: f64 = 1e-9;
-
-struct Row {
-    bound: f64,
-    pair: &'static str,
-    family: &'static str,
-    method: &'static str,
-    worst: [f64; 3],
-    samples: usize,
-}
-
-/// One case: the I and J instances, the part poses in the canonical frame, the expected
-/// answer there, and the pair's size.
-struct Case {
-    i: GeometryInstance,
-    j: GeometryInstance,
-    pose_i: Isometry3,
-    pose_j: Isometry3,
-    expected: Expected,
-    length: f64,
-}
-
-fn run(
-    rng: &mut Rng,
-    pair: &'static str,
-    family: &'static str,
-    method: &'static str,
-    mut make: impl FnMut(&mut Rng) -> Option<Case>,
-) -> Row {
-    let mut worst = [0.0f64; 3];
-    let mut samples = 0;
-    while samples < SAMPLES {
-        let Some(case) = make(rng) else { continue };
-        let world = rng.pose(2.0 * case.length);
-        let found = query(
-            &case.i,
-            &case.j,
-            &(world * case.pose_i),
-            &(world * case.pose_j),
-        );
-        assert_eq!(
-            found.len(),
-            1,
-            "{pair} ({family}): {found:?} for {:?}",
-            case.expected
-        );
-        let got = found[0];
-        let e = errors(&got, &case.expected.moved(&world), case.length);
-        for k in 0..3 {
-            // NaN must fail the row, so it counts as infinite.
-            worst[k] = worst[k].max(if e[k].is_nan() { f64::INFINITY } else { e[k] });
-        }
-        samples += 1;
-    }
-    Row {
-        bound: CLOSED_FORM_BOUND,
-        pair,
-        family,
-        method,
-        worst,
-        samples,
-    }
-}
-
-fn at(x: f64, y: f64, z: f64) -> Isometry3 {
-    Isometry3::translation(x, y, z)
-}
-
-#[test]
-fn characterization_table() {
-    let mut rng = Rng::new(0x5EED_0003);
+/// The rows, in table order.
+pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
     let plane = || instance(Geometry::Plane(Plane::unbounded()));
-    let rows = vec![
+    vec![
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "sphere–plane",
             "r ∈ [0.5, 2], centre height d ∈ (−1.2r, r)",
             "closed form",
@@ -106,7 +31,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "sphere–sphere",
             "radii ∈ [0.2, 2], D ∈ (0.05, r_a + r_b), containment included",
             "closed form",
@@ -125,7 +51,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "sphere–cavity",
             "ball r_a in cavity r_b > r_a, D ∈ (r_b − r_a, r_b)",
             "closed form",
@@ -152,7 +79,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "ellipsoid–plane",
             "semi-axes ∈ [0.3, 2], any orientation, cap to beyond the centre",
             "closed form (affine cap); oracle by slicing",
@@ -177,7 +105,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "box–plane",
             "any orientation, one corner below the plane",
             "exact clipping; oracle: corner tetrahedron",
@@ -201,7 +130,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "box–plane",
             "face parallel to the plane, sunk by up to the full height",
             "exact clipping; oracle: slab",
@@ -230,7 +160,79 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
+            "mesh–plane",
+            "a box as a 12-triangle mesh, any orientation, one corner below the plane",
+            "exact clipping (tetrahedra from the plane); oracle: corner tetrahedron",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let q = rng.rotation();
+                let e = rng.uniform(0.01, 0.3) * h.min();
+                let (centre, expected) = oracles::box_corner_plane(&h, &q, e)?;
+                let mesh = boxes_mesh(&[(Point3::origin(), h)]);
+                Some(Case {
+                    i: instance(Geometry::Mesh(std::sync::Arc::new(mesh))),
+                    j: plane(),
+                    pose_i: Isometry3::from_parts(Translation3::from(centre.coords), q),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm(),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "sphere–mesh",
+            "a box as a 12-triangle mesh; centre outside a face, an edge or a corner",
+            "closed form (signed distance, winding number); oracle: clamping",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let r = rng.uniform(0.2, 1.0);
+                let outside = 1 + (rng.next_u64() % 3) as usize;
+                let mut point = Vector3::zeros();
+                let mut outward = Vector3::zeros();
+                for k in 0..3 {
+                    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+                        -1.0
+                    } else {
+                        1.0
+                    };
+                    if k < outside {
+                        point[k] = sign * h[k];
+                        outward[k] = sign * rng.uniform(0.2, 1.0);
+                    } else {
+                        point[k] = rng.uniform(-0.9, 0.9) * h[k];
+                    }
+                }
+                let d = rng.uniform(0.01, 0.99) * r;
+                let (centre, expected) =
+                    oracles::sphere_box(r, &h, &point, &outward.normalize(), d);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+                        Point3::origin(),
+                        h,
+                    )])))),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm().max(r),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
             "box–box",
             "faces parallel, partial overlap on every axis",
             "exact clipping; oracle: per-axis overlap",
@@ -270,129 +272,11 @@ fn characterization_table() {
                 })
             },
         ),
-        run(
-            &mut rng,
-            "circle–circle (2-D)",
-            "radii ∈ [0.2, 2], D ∈ (0.05, r_a + r_b)",
-            "closed form",
-            |rng| {
-                let (ra, rb) = (rng.uniform(0.2, 2.0), rng.uniform(0.2, 2.0));
-                let d = rng.uniform(0.05, ra + rb);
-                let angle = rng.uniform(0.0, std::f64::consts::TAU);
-                let u = Vector3::new(angle.cos(), angle.sin(), 0.0);
-                Some(Case {
-                    i: instance(Geometry::Circle(Circle::new(ra).unwrap())),
-                    j: instance(Geometry::Circle(Circle::new(rb).unwrap())),
-                    pose_i: Isometry3::from_parts(
-                        Translation3::from(d * u),
-                        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.uniform(0.0, 6.0)),
-                    ),
-                    pose_j: Isometry3::identity(),
-                    expected: oracles::sphere_sphere(ra, rb, d, &u),
-                    length: ra.max(rb),
-                })
-            },
-        ),
-        run(
-            &mut rng,
-            "circle–line (2-D)",
-            "r ∈ [0.5, 2], centre height ∈ (−1.2r, r)",
-            "closed form",
-            |rng| {
-                let r = rng.uniform(0.5, 2.0);
-                let (x, d) = (rng.uniform(-3.0, 3.0), rng.uniform(-1.2 * r, r));
-                Some(Case {
-                    i: instance(Geometry::Circle(Circle::new(r).unwrap())),
-                    j: instance(Geometry::Line(Line::unbounded())),
-                    pose_i: at(x, d, 0.0),
-                    pose_j: Isometry3::identity(),
-                    expected: Expected {
-                        point_i: Point3::new(x, d - r, 0.0),
-                        point_j: Point3::new(x, 0.0, 0.0),
-                        normal: Vector3::y(),
-                        depth: r - d,
-                    },
-                    length: r,
-                })
-            },
-        ),
-        run(
-            &mut rng,
-            "point–line (2-D)",
-            "bounded line [−1, 2], point below it",
-            "closed form",
-            |rng| {
-                let (x, y) = (rng.uniform(-1.0, 2.0), rng.uniform(-1.0, -1e-3));
-                Some(Case {
-                    i: instance(Geometry::Point),
-                    j: instance(Geometry::Line(Line::bounded(-1.0, 2.0).unwrap())),
-                    pose_i: at(x, y, 0.0),
-                    pose_j: Isometry3::identity(),
-                    expected: Expected {
-                        point_i: Point3::new(x, y, 0.0),
-                        point_j: Point3::new(x, 0.0, 0.0),
-                        normal: Vector3::y(),
-                        depth: -y,
-                    },
-                    length: 3.0,
-                })
-            },
-        ),
-        run(
-            &mut rng,
-            "point–circle (2-D)",
-            "point inside, D ∈ (0.01r, r)",
-            "closed form",
-            |rng| {
-                let r = rng.uniform(0.5, 2.0);
-                let d = rng.uniform(0.01 * r, r);
-                let angle = rng.uniform(0.0, std::f64::consts::TAU);
-                let u = Vector3::new(angle.cos(), angle.sin(), 0.0);
-                Some(Case {
-                    i: instance(Geometry::Point),
-                    j: instance(Geometry::Circle(Circle::new(r).unwrap())),
-                    pose_i: at(d * u.x, d * u.y, 0.0),
-                    pose_j: Isometry3::identity(),
-                    expected: Expected {
-                        point_i: Point3::from(d * u),
-                        point_j: Point3::from(r * u),
-                        normal: u,
-                        depth: r - d,
-                    },
-                    length: r,
-                })
-            },
-        ),
-        run(
-            &mut rng,
-            "circle–hole (2-D)",
-            "disc r_a in hole r_b > r_a, D ∈ (r_b − r_a, r_b)",
-            "closed form",
-            |rng| {
-                let rb = rng.uniform(1.0, 2.0);
-                let ra = rng.uniform(0.2, 0.9 * rb);
-                let d = rng.uniform(rb - ra, rb);
-                let angle = rng.uniform(0.0, std::f64::consts::TAU);
-                let u = Vector3::new(angle.cos(), angle.sin(), 0.0);
-                Some(Case {
-                    i: instance(Geometry::Circle(Circle::new(ra).unwrap())),
-                    j: instance(Geometry::Circle(Circle::new(rb).unwrap())).flipped(),
-                    pose_i: at(d * u.x, d * u.y, 0.0),
-                    pose_j: Isometry3::identity(),
-                    expected: Expected {
-                        point_i: Point3::from(u * (d + ra)),
-                        point_j: Point3::from(u * rb),
-                        normal: -u,
-                        depth: d + ra - rb,
-                    },
-                    length: rb,
-                })
-            },
-        ),
         Row {
             bound: ITERATIVE_BOUND,
             ..run(
-                &mut rng,
+                rng,
+                SAMPLES,
                 "cylinder–plane",
                 "R ∈ [0.3, 1.5], L ∈ [0.2, 3], axis tilted 12°–78° from the normal, cap corner to full immersion",
                 "quadrature of chords; oracle: Simpson over axial slices",
@@ -421,7 +305,8 @@ fn characterization_table() {
             )
         },
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "cylinder–plane",
             "axis parallel to the plane (a wheel), centre height ∈ (−R, R)",
             "quadrature of chords; oracle: line of centres",
@@ -449,7 +334,8 @@ fn characterization_table() {
             },
         ),
         run(
-            &mut rng,
+            rng,
+            SAMPLES,
             "cylinder–plane",
             "standing on a cap, sunk by up to its length",
             "quadrature of chords; oracle: slab",
@@ -472,25 +358,154 @@ fn characterization_table() {
                 })
             },
         ),
-    ];
-    println!(
-        "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
-    );
-    println!("| --- | --- | --- | --- | --- | --- | --- | --- |");
-    for r in &rows {
-        println!(
-            "| {} | {} | {} | {} | {:.1e} | {:.1e} | {:.1e} | {:.0e} |",
-            r.pair, r.family, r.method, r.samples, r.worst[0], r.worst[1], r.worst[2], r.bound
-        );
-    }
-    for r in &rows {
-        assert!(
-            r.worst.iter().all(|&e| e <= r.bound),
-            "{} ({}): errors {:?} exceed {:e}",
-            r.pair,
-            r.family,
-            r.worst,
-            r.bound
-        );
-    }
+        run(
+            rng,
+            SAMPLES,
+            "sphere–box",
+            "centre outside a face, an edge or a corner, 0 < distance < r",
+            "closed form (signed distance); oracle: clamping",
+            |rng| {
+                let h = Vector3::new(
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                    rng.uniform(0.3, 1.5),
+                );
+                let r = rng.uniform(0.2, 1.0);
+                // A surface point with `outside` axes at ±h (1: face, 2: edge, 3: corner) and the
+                // others strictly inside; the outward direction in that feature's normal cone.
+                let outside = 1 + (rng.next_u64() % 3) as usize;
+                let mut point = Vector3::zeros();
+                let mut outward = Vector3::zeros();
+                for k in 0..3 {
+                    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+                        -1.0
+                    } else {
+                        1.0
+                    };
+                    if k < outside {
+                        point[k] = sign * h[k];
+                        outward[k] = sign * rng.uniform(0.2, 1.0);
+                    } else {
+                        point[k] = rng.uniform(-0.9, 0.9) * h[k];
+                    }
+                }
+                let d = rng.uniform(0.01, 0.99) * r;
+                let (centre, expected) =
+                    oracles::sphere_box(r, &h, &point, &outward.normalize(), d);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap())),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected,
+                    length: h.norm().max(r),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "sphere–cylinder",
+            "centre beside the side or above a cap, 0 < distance < r",
+            "closed form (signed distance); oracle: radial / axial",
+            |rng| {
+                let (big_r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 2.0));
+                let r = rng.uniform(0.1, 0.5);
+                let d = rng.uniform(0.01, 0.99) * r;
+                let angle = rng.uniform(0.0, std::f64::consts::TAU);
+                let radial = Vector3::new(angle.cos(), angle.sin(), 0.0);
+                let (centre, n, q) = if rng.uniform(0.0, 1.0) < 0.5 {
+                    let z = rng.uniform(0.05, 0.95) * len;
+                    let q = big_r * radial + Vector3::new(0.0, 0.0, z);
+                    (q + d * radial, radial, q)
+                } else {
+                    let q = rng.uniform(0.0, 0.95) * big_r * radial + Vector3::new(0.0, 0.0, len);
+                    (q + d * Vector3::z(), Vector3::z(), q)
+                };
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Cylinder(Cylinder::new(big_r, len).unwrap())),
+                    pose_i: at(centre.x, centre.y, centre.z),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from(centre - r * n),
+                        point_j: Point3::from(q),
+                        normal: n,
+                        depth: r - d,
+                    },
+                    length: big_r.max(len),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "sphere–frustum",
+            "centre outside the slanted side, 0 < distance < r",
+            "closed form (signed distance); oracle: distance to the side line",
+            |rng| {
+                let (rb, rt, len) = (
+                    rng.uniform(0.5, 1.5),
+                    rng.uniform(0.0, 1.5),
+                    rng.uniform(0.5, 2.0),
+                );
+                let r = rng.uniform(0.05, 0.3);
+                // Outward normal of the side in the (ρ, z) half-plane, and a point of the side.
+                let side = Vector2::new(len, rb - rt).normalize();
+                let t = rng.uniform(0.2, 0.8);
+                let foot = Vector2::new(rb + t * (rt - rb), t * len);
+                let d = rng.uniform(0.01, 0.99) * r;
+                let c2 = foot + d * side;
+                let angle = rng.uniform(0.0, std::f64::consts::TAU);
+                let lift = |v: Vector2| Vector3::new(v.x * angle.cos(), v.x * angle.sin(), v.y);
+                let n = lift(side);
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Frustum(Frustum::new(rb, rt, len).unwrap())),
+                    pose_i: Isometry3::from_parts(
+                        Translation3::from(lift(c2)),
+                        UnitQuaternion::identity(),
+                    ),
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: Point3::from(lift(c2) - r * n),
+                        point_j: Point3::from(lift(foot)),
+                        normal: n,
+                        depth: r - d,
+                    },
+                    length: rb.max(rt).max(len),
+                })
+            },
+        ),
+        run(
+            rng,
+            SAMPLES,
+            "sphere–torus",
+            "centre around the tube, inside the hole or outside the ring",
+            "closed form (signed distance); oracle: nearest tube centre",
+            |rng| {
+                let big = rng.uniform(1.0, 2.0);
+                let small = rng.uniform(0.1, 0.8) * big;
+                let r = rng.uniform(0.1, 0.5);
+                let phi = rng.uniform(0.0, std::f64::consts::TAU);
+                let dist = small + rng.uniform(0.01, 0.99) * r;
+                let (rho, z) = (big + dist * phi.cos(), dist * phi.sin());
+                if rho <= 0.05 {
+                    return None;
+                }
+                let turn =
+                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.uniform(0.0, 6.0));
+                Some(Case {
+                    i: instance(Geometry::sphere(r).unwrap()),
+                    j: instance(Geometry::Torus(Torus::new(big, small).unwrap())),
+                    pose_i: turn.inverse() * at(rho, 0.0, z),
+                    pose_j: Isometry3::from_parts(Translation3::identity(), turn.inverse()),
+                    expected: oracles::sphere_torus(r, big, small, rho, z).moved(
+                        &Isometry3::from_parts(Translation3::identity(), turn.inverse()),
+                    ),
+                    length: big + small,
+                })
+            },
+        ),
+    ]
 }

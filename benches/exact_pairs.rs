@@ -1,0 +1,252 @@
+//! Per-pair query cost of the exact engine, side by side with parry's `contact` query on the
+//! same pair where parry has the shapes (spheres, boxes, unbounded planes).
+//!
+//! `cargo bench --bench exact_pairs` (release). Each group `contact/<pair>` has the ids
+//! `exact` (a prepared pair's full `query`: pose composition, dispatch, the kernel, the push
+//! into a reused buffer) and `parry` (`parry3d_f64::query::contact` on pre-built shapes, pose
+//! composition included). Before timing, each group prints both answers' depth against the
+//! closed form, so speed and accuracy are read together. Inputs are fixed configurations.
+
+#![expect(
+    missing_docs,
+    reason = "criterion_group! generates an undocumented public function"
+)]
+
+use contact_core::geometry::{
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Plane, TriangleMesh,
+};
+use contact_core::{
+    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, UnitQuaternion, WorkCounters,
+};
+use contact_core::{Point2, Point3};
+use criterion::{Criterion, criterion_group, criterion_main};
+use engine_exact::ExactEngine;
+use engine_exact::parry_adapter::{self, PeerShape};
+use std::hint::black_box;
+use std::time::Duration;
+
+/// One benchmarked configuration with its closed-form depth (`None` where no short closed
+/// form exists; the characterization test checks those pairs against independent oracles).
+struct Case {
+    name: &'static str,
+    i: Geometry,
+    j: Geometry,
+    pose_i: Isometry3,
+    pose_j: Isometry3,
+    depth: Option<f64>,
+}
+
+fn cases() -> Vec<Case> {
+    let tilt = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
+    let cube = |h: f64| Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap());
+    let ground = Geometry::Plane(Plane::unbounded());
+    vec![
+        Case {
+            name: "sphere_plane",
+            i: Geometry::sphere(1.0).unwrap(),
+            j: ground.clone(),
+            pose_i: Isometry3::translation(0.3, -0.2, 0.9),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.1),
+        },
+        Case {
+            name: "sphere_sphere",
+            i: Geometry::sphere(1.0).unwrap(),
+            j: Geometry::sphere(0.5).unwrap(),
+            pose_i: Isometry3::translation(0.8, 0.6, 0.7),
+            pose_j: Isometry3::identity(),
+            depth: Some(1.5 - (0.64f64 + 0.36 + 0.49).sqrt()),
+        },
+        Case {
+            name: "ellipsoid_plane",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "box_plane",
+            i: cube(0.5),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.6), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "box_box",
+            i: cube(0.5),
+            j: Geometry::Cuboid(Cuboid::centered(1.0, 0.7, 0.4).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.2, 0.1, 0.95), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "sphere_box_edge",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: cube(1.0),
+            pose_i: Isometry3::translation(1.2, 1.1, 0.3),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.5 - (0.04f64 + 0.01).sqrt()),
+        },
+        Case {
+            name: "sphere_cylinder_side",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: Geometry::Cylinder(Cylinder::new(1.0, 2.0).unwrap()),
+            pose_i: Isometry3::translation(1.3, 0.0, 1.0),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.2),
+        },
+        Case {
+            name: "cylinder_plane_tilted",
+            i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "cylinder_plane_on_side",
+            i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::new(
+                nalgebra::Vector3::new(-1.0, 0.0, 0.4),
+                nalgebra::Vector3::new(0.0, std::f64::consts::FRAC_PI_2, 0.0),
+            ),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.1),
+        },
+        Case {
+            name: "mesh_plane_two_feet",
+            i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "sphere_mesh_box",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::translation(-1.0, 0.0, 1.3),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.2),
+        },
+        Case {
+            name: "circle_curve",
+            i: Geometry::Circle(Circle::new(0.3).unwrap()),
+            j: Geometry::Curve(std::sync::Arc::new(
+                Curve::new(
+                    &(0..8)
+                        .map(|k| {
+                            let a = k as f64 * std::f64::consts::TAU / 8.0;
+                            Point2::new(2.0 * a.cos(), 1.5 * a.sin())
+                        })
+                        .collect::<Vec<_>>(),
+                    4,
+                    true,
+                    CurvePoints::Interpolated,
+                )
+                .unwrap(),
+            )),
+            pose_i: Isometry3::translation(1.9, 0.2, 0.0),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "circle_circle",
+            i: Geometry::Circle(Circle::new(1.0).unwrap()),
+            j: Geometry::Circle(Circle::new(0.5).unwrap()),
+            pose_i: Isometry3::translation(1.2, 0.3, 0.0),
+            pose_j: Isometry3::identity(),
+            depth: Some(1.5 - (1.44f64 + 0.09).sqrt()),
+        },
+    ]
+}
+
+/// A closed mesh of two boxes (two 'feet'): 24 triangles, two contact regions on a plane.
+fn two_feet() -> TriangleMesh {
+    let mut vertices = Vec::new();
+    let mut triangles = Vec::new();
+    for (cx, h) in [(-1.0, [0.5, 0.4, 1.0]), (1.0, [0.3, 0.6, 1.0])] {
+        let base = vertices.len() as u32;
+        for k in 0..8u32 {
+            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
+            vertices.push(Point3::new(cx + s(0) * h[0], s(1) * h[1], s(2) * h[2]));
+        }
+        for q in [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ] {
+            triangles.push([base + q[0], base + q[1], base + q[2]]);
+            triangles.push([base + q[0], base + q[2], base + q[3]]);
+        }
+    }
+    TriangleMesh::new(vertices, triangles).unwrap()
+}
+
+fn bench_pairs(c: &mut Criterion) {
+    for case in cases() {
+        let i = GeometryInstance::new(case.i.clone());
+        let j = GeometryInstance::new(case.j.clone());
+        let pair = ExactEngine.prepare(&[i], &[j]).unwrap();
+        let mut buffer: Vec<Contact> = Vec::with_capacity(4);
+        let mut work = WorkCounters::default();
+        pair.query(&case.pose_i, &case.pose_j, &mut buffer, &mut work)
+            .unwrap();
+        let Some(&exact) = buffer.first() else {
+            panic!("{}: the benchmark configuration must touch", case.name);
+        };
+        let peers = PeerShape::new(&case.i, false).zip(PeerShape::new(&case.j, false));
+        let peer = peers
+            .as_ref()
+            .and_then(|(a, b)| parry_adapter::contact(a, &case.pose_i, b, &case.pose_j));
+        let reference = case.depth.map_or(
+            "none here (see the characterization test)".to_string(),
+            |d| format!("{d:.17}"),
+        );
+        eprintln!(
+            "{}: closed form {reference}; exact depth {:.17} normal {:?}; parry {}",
+            case.name,
+            exact.penetration,
+            exact.normal_w.as_slice(),
+            peer.map_or("n/a".to_string(), |p| format!(
+                "depth {:.17} normal {:?}",
+                p.depth,
+                p.normal.as_slice()
+            )),
+        );
+        let mut group = c.benchmark_group(format!("contact/{}", case.name));
+        group
+            .warm_up_time(Duration::from_millis(500))
+            .measurement_time(Duration::from_secs(2))
+            .sample_size(30);
+        group.bench_function("exact", |b| {
+            b.iter(|| {
+                pair.query(
+                    black_box(&case.pose_i),
+                    black_box(&case.pose_j),
+                    &mut buffer,
+                    &mut work,
+                )
+                .unwrap();
+                black_box(buffer.len())
+            })
+        });
+        if let Some((a, b)) = &peers {
+            group.bench_function("parry", |bench| {
+                bench.iter(|| {
+                    parry_adapter::contact(a, black_box(&case.pose_i), b, black_box(&case.pose_j))
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, bench_pairs);
+criterion_main!(benches);

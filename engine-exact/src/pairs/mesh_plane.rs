@@ -1,0 +1,257 @@
+//! A closed triangle mesh (taken as exact) against an unbounded plane: exact clipping, one
+//! contact per connected region below the plane.
+//!
+//! In the mesh's frame, with `d(v) = n·v − h` each vertex's height above the plane (the
+//! plane's solid is `d ≤ 0`):
+//! - **Regions.** A triangle with a vertex strictly below is *active*; two active triangles
+//!   sharing an edge that dips below (`min(d_a, d_b) < 0`) belong to one region (union–find
+//!   over the edge adjacency built at prepare time). A mesh resting on several feet gives one
+//!   contact per foot.
+//! - **Volume and centroid** of each region: the divergence theorem over its triangles'
+//!   parts below the plane, with tetrahedra from a point *on* the plane (the foot of one of
+//!   the region's vertices, so round-off is relative to the region's size), so the flat cap
+//!   where the plane cuts the mesh contributes nothing and need not be built. The cap's area
+//!   vector is minus the clipped triangles' (a closed surface sums to zero).
+//! - **Normal:** the plane's. **Points:** the foot of the centroid on the plane, and the
+//!   first mesh triangle of the region hit by the ray from the centroid along `−n` (the
+//!   centroid itself if the ray misses, possible only for a region whose centroid lies
+//!   outside the mesh). δ is their distance. **Area:** `½ Σ |A·n|` over the region's closed
+//!   surface (clipped triangles and cap) — the shadow on the plane for a convex region, the
+//!   same estimate the box pairs give; an overestimate where a region overhangs itself.
+//! - Touching (no vertex strictly below) is not a contact; a region of zero volume is skipped.
+//!
+//! Work is `O(vertices + triangles)` per query. The per-query arrays (heights, union–find,
+//! per-region sums) live in a thread-local scratch that grows to the largest mesh seen and is
+//! then reused: no allocation once warm.
+
+use crate::kernel::PairContact;
+use contact_core::geometry::TriangleMesh;
+use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+/// A mesh with the triangle adjacency the region search needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PreparedMesh {
+    pub(crate) vertices: Vec<Point3>,
+    pub(crate) triangles: Vec<[u32; 3]>,
+    /// `neighbours[t][k]`: the triangle across edge `k` (vertices `k`, `k + 1`) of `t`.
+    neighbours: Vec<[u32; 3]>,
+}
+
+impl PreparedMesh {
+    /// Builds the adjacency; `None` unless every edge has exactly one neighbour across it
+    /// (a closed 2-manifold, which `TriangleMesh::new` guarantees).
+    pub fn new(mesh: &TriangleMesh) -> Option<Self> {
+        let triangles = mesh.triangles().to_vec();
+        let mut by_edge: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * triangles.len());
+        for (t, tri) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                by_edge.insert((tri[k], tri[(k + 1) % 3]), u32::try_from(t).ok()?);
+            }
+        }
+        let mut neighbours = Vec::with_capacity(triangles.len());
+        for tri in &triangles {
+            let mut n = [0u32; 3];
+            for k in 0..3 {
+                n[k] = *by_edge.get(&(tri[(k + 1) % 3], tri[k]))?;
+            }
+            neighbours.push(n);
+        }
+        Some(Self {
+            vertices: mesh.vertices().to_vec(),
+            triangles,
+            neighbours,
+        })
+    }
+}
+
+#[derive(Debug, Clone, Copy, Default)]
+struct RegionSums {
+    /// The region's own point on the plane the tetrahedra start from (set by its first
+    /// triangle), so the sums cancel on the region's scale, not the mesh's.
+    anchor: Option<Point3>,
+    six_volume: f64,
+    moment: Vector3,
+    /// `Σ |A·n|` over the clipped triangles: with the cap, twice the shadow of a convex region.
+    shadow_twice: f64,
+    area: Vector3,
+}
+
+#[derive(Debug, Default)]
+struct Scratch {
+    height: Vec<f64>,
+    parent: Vec<u32>,
+    sums: Vec<RegionSums>,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+fn find(parent: &mut [u32], mut t: u32) -> u32 {
+    while parent[t as usize] != t {
+        let up = parent[parent[t as usize] as usize];
+        parent[t as usize] = up;
+        t = up;
+    }
+    t
+}
+
+/// Contacts of `mesh` at `pose_mesh` with the plane at `pose_plane` (flipped when
+/// `side < 0`), one per region, handed to `emit` in the order of each region's first triangle.
+pub(crate) fn contacts(
+    mesh: &PreparedMesh,
+    pose_mesh: &Isometry3,
+    pose_plane: &Isometry3,
+    side: f64,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let normal_w = side * (pose_plane.rotation * Vector3::z());
+    let n = pose_mesh.rotation.inverse_transform_vector(&normal_w);
+    let h = n.dot(
+        &pose_mesh
+            .inverse_transform_point(&Point3::from(pose_plane.translation.vector))
+            .coords,
+    );
+    SCRATCH.with(|cell| {
+        let mut guard = cell.borrow_mut();
+        let scratch = &mut *guard;
+        scratch.height.clear();
+        scratch
+            .height
+            .extend(mesh.vertices.iter().map(|v| n.dot(&v.coords) - h));
+        if scratch.height.iter().all(|&d| d >= 0.0) {
+            return;
+        }
+        let count = mesh.triangles.len();
+        scratch.parent.clear();
+        scratch.parent.extend(0..count as u32);
+        scratch.sums.clear();
+        scratch.sums.resize(count, RegionSums::default());
+        let height = &scratch.height;
+        let below = |tri: &[u32; 3]| tri.iter().any(|&v| height[v as usize] < 0.0);
+        // Regions: union across edges that dip below the plane.
+        for (t, tri) in mesh.triangles.iter().enumerate() {
+            if !below(tri) {
+                continue;
+            }
+            for k in 0..3 {
+                let (a, b) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
+                if height[a].min(height[b]) < 0.0 {
+                    let (ra, rb) = (
+                        find(&mut scratch.parent, t as u32),
+                        find(&mut scratch.parent, mesh.neighbours[t][k]),
+                    );
+                    if ra != rb {
+                        scratch.parent[ra.max(rb) as usize] = ra.min(rb);
+                    }
+                }
+            }
+        }
+        // Sums over each triangle's part below the plane, tetrahedra from the region's anchor
+        // on the plane.
+        for (t, tri) in mesh.triangles.iter().enumerate() {
+            if !below(tri) {
+                continue;
+            }
+            work.primitive_tests += 1;
+            let mut poly = [Point3::origin(); 4];
+            let mut len = 0;
+            for k in 0..3 {
+                let (i, j) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
+                let (p, q) = (mesh.vertices[i], mesh.vertices[j]);
+                let (dp, dq) = (height[i], height[j]);
+                if dp <= 0.0 {
+                    poly[len] = p;
+                    len += 1;
+                }
+                if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
+                    poly[len] = p + (q - p) * (dp / (dp - dq));
+                    len += 1;
+                }
+            }
+            let root = find(&mut scratch.parent, t as u32) as usize;
+            let sums = &mut scratch.sums[root];
+            let o = *sums.anchor.get_or_insert_with(|| {
+                // The foot of a vertex below the plane.
+                let v = tri
+                    .iter()
+                    .copied()
+                    .find(|&v| height[v as usize] < 0.0)
+                    .unwrap_or(tri[0]);
+                mesh.vertices[v as usize] - height[v as usize] * n
+            });
+            let a = poly[0] - o;
+            for k in 1..len.saturating_sub(1) {
+                let (b, c) = (poly[k] - o, poly[k + 1] - o);
+                let v6 = a.dot(&b.cross(&c));
+                sums.six_volume += v6;
+                sums.moment += v6 * (a + b + c);
+                let piece = 0.5 * (poly[k] - poly[0]).cross(&(poly[k + 1] - poly[0]));
+                sums.area += piece;
+                sums.shadow_twice += piece.dot(&n).abs();
+            }
+        }
+        // One contact per region, in the order of its first triangle (its root).
+        for root in 0..count {
+            if scratch.parent[root] as usize != root || scratch.sums[root].six_volume <= 0.0 {
+                continue;
+            }
+            let sums = scratch.sums[root];
+            let Some(o) = sums.anchor else { continue };
+            let centroid = o + sums.moment / (4.0 * sums.six_volume);
+            let to_plane = (h - n.dot(&centroid.coords)).max(0.0);
+            let mut to_mesh = f64::INFINITY;
+            for (t, tri) in mesh.triangles.iter().enumerate() {
+                if find(&mut scratch.parent, t as u32) as usize != root {
+                    continue;
+                }
+                let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
+                if let Some(t_hit) = ray_triangle(&centroid, &-n, &a, &b, &c) {
+                    to_mesh = to_mesh.min(t_hit);
+                }
+            }
+            if !to_mesh.is_finite() {
+                to_mesh = 0.0;
+            }
+            emit(PairContact {
+                point_a: pose_mesh * (centroid - to_mesh * n),
+                point_b: pose_mesh * (centroid + to_plane * n),
+                normal: normal_w,
+                depth: to_plane + to_mesh,
+                area: 0.5 * (sums.shadow_twice + sums.area.dot(&n).abs()),
+            });
+        }
+    });
+}
+
+/// Möller–Trumbore: the ray parameter `t > 0` where `origin + t·direction` meets triangle
+/// `a b c` (either side), if it does.
+fn ray_triangle(
+    origin: &Point3,
+    direction: &Vector3,
+    a: &Point3,
+    b: &Point3,
+    c: &Point3,
+) -> Option<f64> {
+    let (e1, e2) = (b - a, c - a);
+    let p = direction.cross(&e2);
+    let det = e1.dot(&p);
+    if det == 0.0 {
+        return None;
+    }
+    let s = origin - a;
+    let u = s.dot(&p) / det;
+    if !(0.0..=1.0).contains(&u) {
+        return None;
+    }
+    let q = s.cross(&e1);
+    let v = direction.dot(&q) / det;
+    if v < 0.0 || u + v > 1.0 {
+        return None;
+    }
+    let t = e2.dot(&q) / det;
+    (t > 0.0).then_some(t)
+}
