@@ -1,0 +1,4 @@
+//! Integration tests of the faceted engine (one binary, modules inside).
+
+mod common;
+mod convergence;
