@@ -18,8 +18,9 @@
 //!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes of
 //!    the triangles it crosses), as tetrahedra from the loop's centroid, gives its volume and
 //!    centroid `g` (the loop's open lid cancels between the two sides). The contact points are
-//!    the closest points to `g` on each side's region triangles; the penetration is their
-//!    distance.
+//!    the closest points to `g` on each side's region triangles, lifted from the facet onto the
+//!    curved PN triangle through the facet's corners and true corner normals
+//!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from the closest point on the
@@ -30,7 +31,8 @@
 //! Every facet lies within `δ = L/FT` of the true surface (tessellation), so the faceted
 //! intersection volume differs from the true one within a band of width `δ` around each
 //! boundary; the penetration and contact points therefore carry an error of order `δ` (first
-//! order in `1/FT`), the normal (from the loop's vector area, an average over the loop) an error
+//! order in `1/FT`) from the closest-point search on the facets, reduced by the PN lift where
+//! the facets approximate a smooth primitive, and the normal (from the loop's vector area, an average over the loop) an error
 //! of order `δ/ℓ` with `ℓ` the loop's size. Clipping by the crossed triangles' planes is exact
 //! where the other surface is locally convex and underestimates the volume where it is concave.
 
@@ -215,7 +217,13 @@ fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3
 
 /// The plane (unit normal, point) in A's frame of the triangle on the other side of hit `h`.
 #[inline]
-fn other_plane(a: &FacetMesh, b: &FacetMesh, side: u8, hit: &Hit, x: &RelativePose) -> (Vector3, Vector3) {
+fn other_plane(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    side: u8,
+    hit: &Hit,
+    x: &RelativePose,
+) -> (Vector3, Vector3) {
     if side == 0 {
         let v0 = b.vertices[b.triangles[hit.tb as usize][0] as usize].coords;
         (x.rot * b.face_normals[hit.tb as usize], x.apply(&v0))
@@ -266,7 +274,14 @@ fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     }
 }
 
-fn visit_neighbor(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, from: u32, tri: u32) {
+fn visit_neighbor(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    x: &RelativePose,
+    s: &mut Scratch,
+    from: u32,
+    tri: u32,
+) {
     if tri == crate::facet_mesh::NO_NEIGHBOR {
         return;
     }
@@ -328,8 +343,8 @@ fn sum_loops(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
             sums.seen = true;
             sums.reference = hit.s0;
             // J's outward facet normal: the fallback direction of the force on I.
-            sums.fallback_normal = x.rot * b.face_normals[hit.tb as usize]
-                - a.face_normals[hit.ta as usize];
+            sums.fallback_normal =
+                x.rot * b.face_normals[hit.tb as usize] - a.face_normals[hit.ta as usize];
         }
         let (p0, p1) = (hit.s0 - sums.reference, hit.s1 - sums.reference);
         sums.vector_area += 0.5 * p0.cross(&p1);
@@ -434,6 +449,16 @@ fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratc
             }
         }
     }
+    // Lift the facet points back onto the curved surfaces the facets approximate.
+    for r in s.regions.iter_mut() {
+        if r.best_i.2 != u32::MAX {
+            r.best_i.1 = a.lift_to_surface(r.best_i.2, &r.best_i.1);
+        }
+        if r.best_j.2 != u32::MAX {
+            let pb = x.inverse_apply(&r.best_j.1);
+            r.best_j.1 = x.apply(&b.lift_to_surface(r.best_j.2, &pb));
+        }
+    }
 }
 
 fn finish_region(r: &RegionSums) -> LocalContact {
@@ -445,7 +470,9 @@ fn finish_region(r: &RegionSums) -> LocalContact {
     } else if let Some(n) = (pj - pi).try_normalize(1e-300) {
         n
     } else {
-        r.fallback_normal.try_normalize(0.0).unwrap_or_else(Vector3::z)
+        r.fallback_normal
+            .try_normalize(0.0)
+            .unwrap_or_else(Vector3::z)
     };
     LocalContact {
         point_i: pi,

@@ -67,7 +67,11 @@ impl FacetEngine {
             return Err(PrepareError::InvalidArgument {
                 label: g.label.clone(),
                 source: InvalidArgument::with_text(
-                    if side == Side::I { "IFLIP_NORMAL" } else { "JFLIP_NORMAL" },
+                    if side == Side::I {
+                        "IFLIP_NORMAL"
+                    } else {
+                        "JFLIP_NORMAL"
+                    },
                     "set on a 3-D solid",
                     "unset for the faceted engine (a flipped solid, the space outside it, is not meshed)",
                 ),

@@ -215,7 +215,12 @@ mod tests {
         let obb = Obb::fit(pts.iter().copied());
         for p in &pts {
             let q = obb.axes.transpose() * (p.coords - obb.center);
-            assert!(q.abs().iter().zip(obb.half_extents.iter()).all(|(x, h)| *x <= h + 1e-12));
+            assert!(
+                q.abs()
+                    .iter()
+                    .zip(obb.half_extents.iter())
+                    .all(|(x, h)| *x <= h + 1e-12)
+            );
         }
         // The thin direction is found: the smallest extent is ≈ 0.01, not the slab's length.
         assert!(obb.half_extents.min() < 0.02, "{:?}", obb.half_extents);

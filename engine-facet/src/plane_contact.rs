@@ -6,8 +6,8 @@
 //! region gives one contact: the normal is the plane's (exact), the intersection volume's
 //! centroid `g` comes from the divergence theorem over the clipped triangles as tetrahedra from
 //! a point on the plane (the plane's lid then adds nothing), `point_j` is `g` projected on the
-//! plane, `point_i` the closest point to `g` on the region's triangles, the penetration their
-//! distance (for a faceted sphere, the depth of its lowest facet point). The area is the area
+//! plane, `point_i` the closest point to `g` on the region's triangles lifted onto the curved
+//! PN triangle of that facet ([`FacetMesh::lift_to_surface`]), the penetration their distance. The area is the area
 //! enclosed by the waterline loop (for a body wholly under the plane: its downward-facing area
 //! projected on the plane).
 //!
@@ -166,7 +166,11 @@ pub(crate) fn mesh_plane(
     for r in regions.iter() {
         let g = r.centroid;
         let point_j = g - n * height(&g);
-        let point_i = r.best_i.1;
+        let point_i = if r.best_i.2 == u32::MAX {
+            r.best_i.1
+        } else {
+            a.lift_to_surface(r.best_i.2, &r.best_i.1)
+        };
         let loop_area = r.vector_area.norm();
         out.push(LocalContact {
             point_i,

@@ -1,8 +1,8 @@
 //! Shared helpers: a seeded RNG, scenes, and engine shortcuts.
 
 use contact_core::{
-    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, UnitQuaternion, Vector3,
-    WorkCounters,
+    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, PreparedPair, UnitQuaternion,
+    Vector3, WorkCounters,
 };
 use engine_facet::FacetEngine;
 
@@ -36,6 +36,27 @@ impl Rng {
     }
 }
 
+pub fn prepare(engine: &FacetEngine, i: Geometry, j: Geometry) -> Box<dyn PreparedPair> {
+    engine
+        .prepare(&[GeometryInstance::new(i)], &[GeometryInstance::new(j)])
+        .unwrap()
+}
+
+pub fn query_pair(
+    pair: &dyn PreparedPair,
+    pose_i: Isometry3,
+    pose_j: Isometry3,
+) -> (Vec<Contact>, WorkCounters) {
+    let mut contacts = Vec::new();
+    let mut work = WorkCounters::default();
+    pair.query(&pose_i, &pose_j, &mut contacts, &mut work)
+        .unwrap();
+    for c in &contacts {
+        assert!(c.is_well_formed(), "{c:?}");
+    }
+    (contacts, work)
+}
+
 pub fn query(
     engine: &FacetEngine,
     i: Geometry,
@@ -43,16 +64,7 @@ pub fn query(
     pose_i: Isometry3,
     pose_j: Isometry3,
 ) -> (Vec<Contact>, WorkCounters) {
-    let pair = engine
-        .prepare(&[GeometryInstance::new(i)], &[GeometryInstance::new(j)])
-        .unwrap();
-    let mut contacts = Vec::new();
-    let mut work = WorkCounters::default();
-    pair.query(&pose_i, &pose_j, &mut contacts, &mut work).unwrap();
-    for c in &contacts {
-        assert!(c.is_well_formed(), "{c:?}");
-    }
-    (contacts, work)
+    query_pair(prepare(engine, i, j).as_ref(), pose_i, pose_j)
 }
 
 pub fn engine(ft: f64) -> FacetEngine {

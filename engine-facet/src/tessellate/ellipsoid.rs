@@ -39,7 +39,10 @@ pub fn ellipsoid(e: &Ellipsoid, deviation: f64) -> Tessellation {
         }
     }
     unit.push(Vector3::new(0.0, 0.0, 1.0));
-    let vertices: Vec<Point3> = unit.iter().map(|u| Point3::from(u.component_mul(&s))).collect();
+    let vertices: Vec<Point3> = unit
+        .iter()
+        .map(|u| Point3::from(u.component_mul(&s)))
+        .collect();
     // The normal of x²/a² + … = 1 at a point is the gradient (x/a², y/b², z/c²).
     let inv2 = Vector3::new(1.0 / (s.x * s.x), 1.0 / (s.y * s.y), 1.0 / (s.z * s.z));
     let normals: Vec<Vector3> = vertices

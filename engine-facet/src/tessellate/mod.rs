@@ -137,4 +137,3 @@ pub fn flat_corner_normals(vertices: &[Point3], triangles: &[[u32; 3]]) -> Vec<[
         })
         .collect()
 }
-

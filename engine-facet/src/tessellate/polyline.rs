@@ -64,7 +64,9 @@ pub fn curve_polyline(c: &Curve, deviation: f64) -> Polyline {
             .fold(0.0, f64::max);
         let span = u1 - u0;
         let chords = if second > 0.0 && deviation > 0.0 {
-            (span * (second / (8.0 * deviation)).sqrt()).ceil().clamp(1.0, 1e6) as usize
+            (span * (second / (8.0 * deviation)).sqrt())
+                .ceil()
+                .clamp(1.0, 1e6) as usize
         } else {
             1
         };
