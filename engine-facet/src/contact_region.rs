@@ -40,6 +40,7 @@ use crate::facet_mesh::FacetMesh;
 use crate::obb::boxes_overlap;
 use crate::obb_tree::descend_pair;
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
+use crate::surface_sums::SurfaceSums;
 use crate::triangle_pair::{TrianglePair, intersect};
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
@@ -79,8 +80,26 @@ impl RelativePose {
     }
 
     #[inline]
-    fn inverse_apply(&self, v: &Vector3) -> Vector3 {
+    pub(crate) fn inverse_apply(&self, v: &Vector3) -> Vector3 {
         self.rot.tr_mul(&(v - self.t))
+    }
+
+    /// A box of B's mesh frame expressed in A's.
+    pub(crate) fn box_in_a(&self, o: &crate::obb::Obb) -> crate::obb::Obb {
+        crate::obb::Obb {
+            center: self.apply(&o.center),
+            axes: self.rot * o.axes,
+            half_extents: o.half_extents,
+        }
+    }
+
+    /// A box of A's mesh frame expressed in B's.
+    pub(crate) fn box_in_b(&self, o: &crate::obb::Obb) -> crate::obb::Obb {
+        crate::obb::Obb {
+            center: self.inverse_apply(&o.center),
+            axes: self.rot.tr_mul(&o.axes),
+            half_extents: o.half_extents,
+        }
     }
 }
 
@@ -121,17 +140,38 @@ fn find_crossings(
     s: &mut Scratch,
     work: &mut WorkCounters,
 ) {
-    let Scratch { stack, hits, .. } = s;
+    let Scratch {
+        stack,
+        hits,
+        box_cache,
+        ..
+    } = s;
     hits.clear();
     let mut tests = 0;
-    descend_pair(&a.tree, &b.tree, &x.rot, &x.t, stack, work, |ta, tb| {
-        tests += 1;
-        let p = a.corners(ta);
-        let q = b.corners(tb).map(|v| x.apply(&v));
-        if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
-            hits.push(Hit { ta, tb, s0, s1 });
-        }
-    });
+    descend_pair(
+        &a.tree,
+        &b.tree,
+        &x.rot,
+        &x.t,
+        stack,
+        box_cache,
+        work,
+        |ta, tb| {
+            tests += 1;
+            let p = a.corners(ta);
+            let q = b.corners(tb).map(|v| x.apply(&v));
+            if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
+                hits.push(Hit {
+                    ta,
+                    tb,
+                    s0,
+                    s1,
+                    plane_a: (a.face_normals[ta as usize], p[0]),
+                    plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
+                });
+            }
+        },
+    );
     work.primitive_tests += tests;
 }
 
@@ -146,6 +186,7 @@ pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u
         hit_start: 0,
         hit_count: 0,
         inside_corners: 0,
+        inside: SurfaceSums::default(),
     });
     s.slots[side as usize].insert(tri, id);
     id
@@ -217,23 +258,12 @@ fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3
 
 /// The plane (unit normal, point) in A's frame of the triangle on the other side of hit `h`.
 #[inline]
-fn other_plane(
-    a: &FacetMesh,
-    b: &FacetMesh,
-    side: u8,
-    hit: &Hit,
-    x: &RelativePose,
-) -> (Vector3, Vector3) {
-    if side == 0 {
-        let v0 = b.vertices[b.triangles[hit.tb as usize][0] as usize].coords;
-        (x.rot * b.face_normals[hit.tb as usize], x.apply(&v0))
-    } else {
-        let v0 = a.vertices[a.triangles[hit.ta as usize][0] as usize].coords;
-        (a.face_normals[hit.ta as usize], v0)
-    }
+fn other_plane(side: u8, hit: &Hit) -> (Vector3, Vector3) {
+    if side == 0 { hit.plane_b } else { hit.plane_a }
 }
 
-/// Floods each surface from its crossing triangles into the triangles inside the other solid.
+/// Floods each surface from its crossing triangles into the triangles inside the other solid,
+/// summing them (in their own mesh frame) into the seed node's `inside` sums.
 fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     let crossing_count = s.nodes.len();
     // Corners of crossing triangles: inside when strictly behind every crossed plane.
@@ -246,65 +276,64 @@ fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
         for (k, v) in c.iter().enumerate() {
             let inside = (0..node.hit_count).all(|i| {
                 let hit = s.hits[s.node_hits[(node.hit_start + i) as usize] as usize];
-                let (n, p0) = other_plane(a, b, node.side, &hit, x);
+                let (n, p0) = other_plane(node.side, &hit);
                 n.dot(&(v - p0)) < -eps
             });
             bits |= u8::from(inside) << k;
         }
         s.nodes[id].inside_corners = bits;
     }
-    s.queue.clear();
-    for id in 0..crossing_count {
-        let node = s.nodes[id];
-        let mesh = if node.side == 0 { a } else { b };
+    for id in 0..crossing_count as u32 {
+        let node = s.nodes[id as usize];
+        let (mesh, other) = if node.side == 0 { (a, b) } else { (b, a) };
+        // The other mesh's root box in this mesh's frame: the leak guard.
+        let guard = if node.side == 0 {
+            x.box_in_a(other.tree.root())
+        } else {
+            x.box_in_b(other.tree.root())
+        };
+        s.queue.clear();
         for k in 0..3 {
             let both_inside = node.inside_corners & (1 << k) != 0
                 && node.inside_corners & (1 << ((k + 1) % 3)) != 0;
             if both_inside {
-                visit_neighbor(a, b, x, s, id as u32, mesh.neighbors[node.tri as usize][k]);
+                let t = mesh.neighbors[node.tri as usize][k];
+                visit(mesh, &guard, s, id, t);
             }
         }
-    }
-    while let Some(id) = s.queue.pop() {
-        let node = s.nodes[id as usize];
-        let mesh = if node.side == 0 { a } else { b };
-        for k in 0..3 {
-            visit_neighbor(a, b, x, s, id, mesh.neighbors[node.tri as usize][k]);
+        while let Some(t) = s.queue.pop() {
+            for k in 0..3 {
+                let next = mesh.neighbors[t as usize][k];
+                visit(mesh, &guard, s, id, next);
+            }
         }
     }
 }
 
-fn visit_neighbor(
-    a: &FacetMesh,
-    b: &FacetMesh,
-    x: &RelativePose,
-    s: &mut Scratch,
-    from: u32,
-    tri: u32,
-) {
+/// Flood mark: an inside triangle's slot holds its seed node with this bit set.
+const INSIDE_BIT: u32 = 1 << 31;
+
+#[inline]
+fn visit(mesh: &FacetMesh, guard: &crate::obb::Obb, s: &mut Scratch, seed: u32, tri: u32) {
     if tri == crate::facet_mesh::NO_NEIGHBOR {
         return;
     }
-    let side = s.nodes[from as usize].side;
-    if let Some(other) = s.slots[side as usize].get(tri) {
-        union(&mut s.nodes, from, other);
+    let side = s.nodes[seed as usize].side as usize;
+    if let Some(mark) = s.slots[side].get(tri) {
+        let owner = mark & !INSIDE_BIT;
+        if owner != seed {
+            union(&mut s.nodes, seed, owner);
+        }
         return;
     }
+    let [p, q, r] = mesh.corners(tri);
     // Leak guard: an inside triangle lies in the other mesh's root box.
-    let within = if side == 0 {
-        a.corners(tri)
-            .iter()
-            .all(|v| b.tree.root().contains(&Point3::from(x.inverse_apply(v))))
-    } else {
-        b.corners(tri)
-            .iter()
-            .all(|v| a.tree.root().contains(&Point3::from(x.apply(v))))
-    };
-    if within {
-        let id = new_node(s, side, tri, false);
-        union(&mut s.nodes, from, id);
-        s.queue.push(id);
+    if !guard.contains(&Point3::from(p)) {
+        return;
     }
+    s.slots[side].insert(tri, seed | INSIDE_BIT);
+    s.nodes[seed as usize].inside.add_triangle(&p, &q, &r);
+    s.queue.push(tri);
 }
 
 /// Sets each node's `region` to the index of its set, numbered in order of first appearance;
@@ -385,26 +414,33 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
     } = s;
     for node in nodes.iter() {
         let mesh = if node.side == 0 { a } else { b };
-        let c = corners_in_a(mesh, node.side, node.tri, x);
         polygon.clear();
-        polygon.extend_from_slice(&c);
-        if node.crossing {
-            for i in 0..node.hit_count {
-                let hit = hits[node_hits[(node.hit_start + i) as usize] as usize];
-                let (n, p0) = other_plane(a, b, node.side, &hit, x);
-                clip(polygon, polygon_next, &n, &p0);
-                std::mem::swap(polygon, polygon_next);
-                if polygon.len() < 3 {
-                    break;
-                }
+        polygon.extend_from_slice(&corners_in_a(mesh, node.side, node.tri, x));
+        for i in 0..node.hit_count {
+            let hit = hits[node_hits[(node.hit_start + i) as usize] as usize];
+            let (n, p0) = other_plane(node.side, &hit);
+            clip(polygon, polygon_next, &n, &p0);
+            std::mem::swap(polygon, polygon_next);
+            if polygon.len() < 3 {
+                break;
             }
         }
-        add_polygon(&mut regions[node.region as usize], polygon);
+        let r = &mut regions[node.region as usize];
+        r.sums_a.add_polygon(polygon);
+        if node.side == 0 {
+            r.sums_a.merge(&node.inside);
+        } else {
+            r.sums_b.merge(&node.inside);
+        }
     }
     for r in regions.iter_mut() {
+        let (va, ma) = r.sums_a.volume_moment(&r.apex);
+        let (vb, mb) = r.sums_b.volume_moment(&x.inverse_apply(&r.apex));
+        r.volume = va + vb;
+        r.volume_moment = ma + x.rot * mb + x.t * vb;
         let scale = r.loop_length.max(1e-300);
         r.centroid = if r.volume > 1e-15 * scale * scale * scale {
-            r.apex + r.volume_moment / r.volume
+            r.volume_moment / r.volume
         } else {
             r.apex
         };
@@ -427,37 +463,17 @@ pub(crate) fn clip(poly: &[Vector3], out: &mut Vec<Vector3>, n: &Vector3, p0: &V
     }
 }
 
+/// The closest points to each region's centroid on the two whole surfaces (through the
+/// trees), lifted onto the curved surfaces the facets approximate.
 fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
-    for r in s.regions.iter_mut() {
-        r.best_i = (f64::INFINITY, r.centroid, u32::MAX);
-        r.best_j = (f64::INFINITY, r.centroid, u32::MAX);
-    }
-    for node in &s.nodes {
-        let r = &mut s.regions[node.region as usize];
+    let Scratch { regions, stack, .. } = s;
+    for r in regions.iter_mut() {
         let g = r.centroid;
-        if node.side == 0 {
-            let p = a.closest_on_triangle(node.tri, &g);
-            let d = (p - g).norm_squared();
-            if d < r.best_i.0 {
-                r.best_i = (d, p, node.tri);
-            }
-        } else {
-            let p = x.apply(&b.closest_on_triangle(node.tri, &x.inverse_apply(&g)));
-            let d = (p - g).norm_squared();
-            if d < r.best_j.0 {
-                r.best_j = (d, p, node.tri);
-            }
-        }
-    }
-    // Lift the facet points back onto the curved surfaces the facets approximate.
-    for r in s.regions.iter_mut() {
-        if r.best_i.2 != u32::MAX {
-            r.best_i.1 = a.lift_to_surface(r.best_i.2, &r.best_i.1);
-        }
-        if r.best_j.2 != u32::MAX {
-            let pb = x.inverse_apply(&r.best_j.1);
-            r.best_j.1 = x.apply(&b.lift_to_surface(r.best_j.2, &pb));
-        }
+        let (ti, pi) = a.closest_point(&g, stack);
+        r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
+        let gb = x.inverse_apply(&g);
+        let (tj, pj) = b.closest_point(&gb, stack);
+        r.best_j = (0.0, x.apply(&b.lift_to_surface(tj, &pj)), tj);
     }
 }
 
@@ -503,7 +519,7 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
     if b.contains(&Point3::from(x.inverse_apply(&a0))) {
         let g = a.centroid.coords;
         let gb = x.inverse_apply(&g);
-        let pj = x.apply(&closest_on_mesh(b, &gb));
+        let pj = x.apply(&b.closest_point(&gb, &mut Vec::new()).1);
         let n = (pj - g).try_normalize(0.0).unwrap_or_else(Vector3::z);
         let pi = support(a.vertices.iter().map(|v| v.coords), &(-n));
         return Some(LocalContact {
@@ -517,7 +533,7 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
     let b0 = x.apply(&b.vertices[0].coords);
     if a.contains(&Point3::from(b0)) {
         let g = x.apply(&b.centroid.coords);
-        let pi = closest_on_mesh(a, &g);
+        let pi = a.closest_point(&g, &mut Vec::new()).1;
         let n = (g - pi).try_normalize(0.0).unwrap_or_else(Vector3::z);
         let pj = support(b.vertices.iter().map(|v| x.apply(&v.coords)), &n);
         return Some(LocalContact {
@@ -529,13 +545,6 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         });
     }
     None
-}
-
-fn closest_on_mesh(m: &FacetMesh, p: &Vector3) -> Vector3 {
-    (0..m.triangles.len() as u32)
-        .map(|t| m.closest_on_triangle(t, p))
-        .min_by(|u, v| (u - p).norm_squared().total_cmp(&(v - p).norm_squared()))
-        .unwrap_or(*p)
 }
 
 fn support(points: impl Iterator<Item = Vector3>, dir: &Vector3) -> Vector3 {

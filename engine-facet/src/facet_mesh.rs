@@ -174,12 +174,57 @@ impl FacetMesh {
         self.ray_crossings(p, dir).0 % 2 == 1
     }
 
+    /// The closest point of the whole surface to `p` (mesh frame) and its triangle: a
+    /// branch-and-bound descent of the tree, nearer child first, pruning boxes farther than the
+    /// best point so far. `stack` is scratch space.
+    pub fn closest_point(&self, p: &Vector3, stack: &mut Vec<(u32, u32)>) -> (u32, Vector3) {
+        let nodes = self.tree.nodes();
+        let (mut best_d, mut best_t, mut best_p) = (f64::INFINITY, 0u32, *p);
+        stack.clear();
+        stack.push((0, 0));
+        while let Some((i, _)) = stack.pop() {
+            let node = &nodes[i as usize];
+            if box_distance_squared(&node.obb, p) >= best_d {
+                continue;
+            }
+            if node.count > 0 {
+                for &t in self.tree.leaf_triangles(node) {
+                    let q = self.closest_on_triangle(t, p);
+                    let d = (q - p).norm_squared();
+                    if d < best_d {
+                        (best_d, best_t, best_p) = (d, t, q);
+                    }
+                }
+            } else {
+                let (l, r) = (i + 1, node.index);
+                let dl = box_distance_squared(&nodes[l as usize].obb, p);
+                let dr = box_distance_squared(&nodes[r as usize].obb, p);
+                if dl <= dr {
+                    stack.push((r, 0));
+                    stack.push((l, 0));
+                } else {
+                    stack.push((l, 0));
+                    stack.push((r, 0));
+                }
+            }
+        }
+        (best_t, best_p)
+    }
+
     /// The closest point of triangle `t` to `p`.
     #[inline]
     pub fn closest_on_triangle(&self, t: u32, p: &Vector3) -> Vector3 {
         let [a, b, c] = self.corners(t);
         closest_point_triangle(p, &a, &b, &c)
     }
+}
+
+/// Squared distance from `p` to an oriented box (0 inside).
+#[inline]
+fn box_distance_squared(obb: &crate::obb::Obb, p: &Vector3) -> f64 {
+    let q = obb.axes.tr_mul(&(p - obb.center));
+    let d = (q.abs() - obb.half_extents).sup(&Vector3::zeros());
+    d.norm_squared()
 }
 
 /// Slab test of the ray `p + s·dir`, `s ≥ 0`, against an oriented box.

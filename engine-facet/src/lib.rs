@@ -50,6 +50,7 @@ mod plane_contact;
 mod prepared;
 mod scratch;
 pub mod stl;
+pub mod surface_sums;
 pub mod tessellate;
 pub mod triangle_pair;
 

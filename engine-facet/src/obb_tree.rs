@@ -57,7 +57,24 @@ impl ObbTree {
             let points = range
                 .iter()
                 .flat_map(|&t| triangles[t as usize].iter().map(|&v| vertices[v as usize]));
-            let obb = Obb::fit(points);
+            let obb = if range.len() <= LEAF_TRIANGLES {
+                // A leaf: the first triangle's own frame (edge, in-plane normal, facet normal)
+                // gives a flat box, tighter than principal axes and with no eigen solve.
+                let [p, q, r] = triangles[range[0] as usize].map(|v| vertices[v as usize]);
+                let e = (q - p).try_normalize(0.0).unwrap_or_else(Vector3::x);
+                let n = (q - p)
+                    .cross(&(r - p))
+                    .try_normalize(0.0)
+                    .unwrap_or_else(|| {
+                        e.cross(&Vector3::y())
+                            .try_normalize(0.0)
+                            .unwrap_or_else(Vector3::z)
+                    });
+                let axes = Matrix3::from_columns(&[e, n.cross(&e), n]);
+                Obb::fit_with_axes(points, axes)
+            } else {
+                Obb::fit(points)
+            };
             if range.len() <= LEAF_TRIANGLES {
                 nodes.push(Node {
                     obb,
@@ -150,29 +167,63 @@ fn partition(items: &mut [u32], left: impl Fn(&u32) -> bool) -> usize {
     k
 }
 
+/// B's node boxes moved into A's frame, computed at most once per node per query (a node of B
+/// meets several nodes of A during a descent).
+#[derive(Debug, Default)]
+pub struct BoxCache {
+    stamp: Vec<u32>,
+    axes: Vec<Matrix3>,
+    center: Vec<Vector3>,
+    generation: u32,
+}
+
+impl BoxCache {
+    fn reset(&mut self, n: usize) {
+        if self.stamp.len() < n {
+            self.stamp.resize(n, 0);
+            self.axes.resize(n, Matrix3::zeros());
+            self.center.resize(n, Vector3::zeros());
+        }
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.stamp.fill(0);
+            self.generation = 1;
+        }
+    }
+}
+
 /// Descends two trees at once and calls `on_pair` with every pair of triangles (indices into
 /// the meshes) whose leaf boxes overlap. `rot_ab`, `t_ab`: the pose of B's mesh frame in A's
 /// (`X_AB`). The larger box of a pair is split first. Counts box tests in `work`.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "scratch buffers are passed in to avoid allocation"
+)]
 pub fn descend_pair(
     a: &ObbTree,
     b: &ObbTree,
     rot_ab: &Matrix3,
     t_ab: &Vector3,
     stack: &mut Vec<(u32, u32)>,
+    cache: &mut BoxCache,
     work: &mut WorkCounters,
     mut on_pair: impl FnMut(u32, u32),
 ) {
     stack.clear();
     stack.push((0, 0));
+    cache.reset(b.nodes.len());
+    let mut tests = 0;
     while let Some((ia, ib)) = stack.pop() {
         let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
-        work.bounding_volume_tests += 1;
-        let axes_b_in_a = rot_ab * nb.obb.axes;
-        let r = na.obb.axes.tr_mul(&axes_b_in_a);
-        let t = na
-            .obb
-            .axes
-            .tr_mul(&(rot_ab * nb.obb.center + t_ab - na.obb.center));
+        tests += 1;
+        let k = ib as usize;
+        if cache.stamp[k] != cache.generation {
+            cache.stamp[k] = cache.generation;
+            cache.axes[k] = rot_ab * nb.obb.axes;
+            cache.center[k] = rot_ab * nb.obb.center + t_ab;
+        }
+        let r = na.obb.axes.tr_mul(&cache.axes[k]);
+        let t = na.obb.axes.tr_mul(&(cache.center[k] - na.obb.center));
         if !boxes_overlap(&na.obb.half_extents, &nb.obb.half_extents, &r, &t) {
             continue;
         }
@@ -203,4 +254,5 @@ pub fn descend_pair(
             }
         }
     }
+    work.bounding_volume_tests += tests;
 }

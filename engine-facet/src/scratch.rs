@@ -46,6 +46,10 @@ pub(crate) struct Hit {
     pub tb: u32,
     pub s0: Vector3,
     pub s1: Vector3,
+    /// Unit normal and a point of A's triangle, in A's frame.
+    pub plane_a: (Vector3, Vector3),
+    /// Unit normal and a point of B's triangle, in A's frame.
+    pub plane_b: (Vector3, Vector3),
 }
 
 /// A triangle taking part in a contact: crossing the other surface, or inside the other solid.
@@ -64,6 +68,8 @@ pub(crate) struct RegionNode {
     pub hit_count: u32,
     /// Bit k set: corner k lies inside the other solid (crossing triangles only).
     pub inside_corners: u8,
+    /// Sums over the inside triangles flooded from this node, in its mesh's frame.
+    pub inside: crate::surface_sums::SurfaceSums,
 }
 
 /// Running sums of one region.
@@ -84,6 +90,8 @@ pub(crate) struct RegionSums {
     pub best_j: (f64, Vector3, u32),
     pub fallback_normal: Vector3,
     pub down_area: f64,
+    pub sums_a: crate::surface_sums::SurfaceSums,
+    pub sums_b: crate::surface_sums::SurfaceSums,
 }
 
 /// Everything a query reuses.
@@ -99,6 +107,7 @@ pub(crate) struct Scratch {
     pub polygon: Vec<Vector3>,
     pub polygon_next: Vec<Vector3>,
     pub local: Vec<crate::contact_region::LocalContact>,
+    pub box_cache: crate::obb_tree::BoxCache,
 }
 
 thread_local! {
