@@ -23,8 +23,8 @@
 //!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
-//!    contact: `g` is the inner body's centroid, the normal points from the closest point on the
-//!    outer surface... (see [`containment`]), the area is a quarter of the inner body's surface
+//!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
+//!    on the outer surface (see [`containment`]), the area is a quarter of the inner body's surface
 //!    (Cauchy: its mean projected area).
 //!
 //! ## Error bound
@@ -503,8 +503,9 @@ fn finish_region(r: &RegionSums) -> LocalContact {
 ///
 /// I inside J: `g` is I's centroid, `p_j` the closest point to it on J, the normal `(p_j − g)`
 /// normalised (the way out), `p_i` I's vertex deepest along `−n`, penetration `(p_j − p_i)·n`:
-/// how far I must move along `n` to leave J. J inside I mirrors this. Closest points here scan
-/// the whole surface (a rare, one-off state).
+/// how far I must move along `n` to leave J. J inside I mirrors this. The normal comes from the
+/// closest point on the outer mesh's facets, so it is accurate to about one facet angle of the
+/// outer mesh (the crossing path's loop normal is far better); the penetration to `O(δ)`.
 pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Option<LocalContact> {
     if !(a.closed && b.closed) {
         return None;

@@ -2,3 +2,8 @@
 
 mod common;
 mod convergence;
+mod engine;
+mod stl_files;
+mod tessellation;
+mod threads;
+mod triangles;
