@@ -24,7 +24,7 @@
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
-//!    on the outer surface (see [`containment`]), the area is a quarter of the inner body's surface
+//!    on the outer surface (see `containment`), the area is a quarter of the inner body's surface
 //!    (Cauchy: its mean projected area).
 //!
 //! ## Error bound
@@ -286,12 +286,12 @@ fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     for id in 0..crossing_count as u32 {
         let node = s.nodes[id as usize];
         let (mesh, other) = if node.side == 0 { (a, b) } else { (b, a) };
-        // The other mesh's root box in this mesh's frame: the leak guard.
-        let guard = if node.side == 0 {
+        // The other mesh's root box in this mesh's frame, as an axis-aligned box: the leak guard.
+        let guard = aabb(&if node.side == 0 {
             x.box_in_a(other.tree.root())
         } else {
             x.box_in_b(other.tree.root())
-        };
+        });
         s.queue.clear();
         for k in 0..3 {
             let both_inside = node.inside_corners & (1 << k) != 0
@@ -313,8 +313,14 @@ fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
 /// Flood mark: an inside triangle's slot holds its seed node with this bit set.
 const INSIDE_BIT: u32 = 1 << 31;
 
+/// The axis-aligned box `(min, max)` around an oriented box.
+fn aabb(o: &crate::obb::Obb) -> (Vector3, Vector3) {
+    let reach = o.axes.abs() * o.half_extents;
+    (o.center - reach, o.center + reach)
+}
+
 #[inline]
-fn visit(mesh: &FacetMesh, guard: &crate::obb::Obb, s: &mut Scratch, seed: u32, tri: u32) {
+fn visit(mesh: &FacetMesh, guard: &(Vector3, Vector3), s: &mut Scratch, seed: u32, tri: u32) {
     if tri == crate::facet_mesh::NO_NEIGHBOR {
         return;
     }
@@ -328,7 +334,13 @@ fn visit(mesh: &FacetMesh, guard: &crate::obb::Obb, s: &mut Scratch, seed: u32, 
     }
     let [p, q, r] = mesh.corners(tri);
     // Leak guard: an inside triangle lies in the other mesh's root box.
-    if !guard.contains(&Point3::from(p)) {
+    if p.x < guard.0.x
+        || p.y < guard.0.y
+        || p.z < guard.0.z
+        || p.x > guard.1.x
+        || p.y > guard.1.y
+        || p.z > guard.1.z
+    {
         return;
     }
     s.slots[side].insert(tri, seed | INSIDE_BIT);

@@ -125,10 +125,11 @@ impl FacetMesh {
         if !self.closed || !self.tree.root().contains(p) {
             return false;
         }
+        // Skew directions (normalised below) unlikely to run along edges of tessellated meshes.
         const DIRECTIONS: [[f64; 3]; 3] = [
-            [0.577_215_664_9, 0.318_309_886_2, 0.751_988_568_1],
-            [-0.267_949_192_4, 0.854_101_966_2, -0.445_041_867_9],
-            [0.141_421_356_2, -0.693_147_180_6, 0.706_858_347_1],
+            [0.577_2, 0.318_4, 0.751_9],
+            [-0.267_9, 0.854_1, -0.445_0],
+            [0.141_4, -0.693_2, 0.706_8],
         ];
         let mut votes = 0;
         for (k, d) in DIRECTIONS.iter().enumerate() {

@@ -118,6 +118,39 @@ pub fn boxes_overlap(a: &Vector3, b: &Vector3, r: &Matrix3, t: &Vector3) -> bool
     true
 }
 
+/// The same test as [`boxes_overlap`] from the boxes' frames directly: box A's axes (columns)
+/// and centre, box B's axes and centre already in A's frame. `R = Aᵀ·B` and `T = Aᵀ·(c_B − c_A)`
+/// are formed one row at a time, so a pair separated along one of A's axes (the common case
+/// deep in a descent) costs a third of the full product.
+#[inline]
+pub fn boxes_overlap_in_frame(
+    a_axes: &Matrix3,
+    a_center: &Vector3,
+    a_half: &Vector3,
+    b_axes: &Matrix3,
+    b_center: &Vector3,
+    b_half: &Vector3,
+) -> bool {
+    const ABS_EPS: f64 = 1e-12;
+    let d = b_center - a_center;
+    let mut r = Matrix3::zeros();
+    let mut t = Vector3::zeros();
+    for i in 0..3 {
+        let ai = a_axes.column(i);
+        t[i] = ai.dot(&d);
+        let mut rb = 0.0;
+        for j in 0..3 {
+            let rij = ai.dot(&b_axes.column(j));
+            r[(i, j)] = rij;
+            rb += b_half[j] * (rij.abs() + ABS_EPS);
+        }
+        if t[i].abs() > a_half[i] + rb {
+            return false;
+        }
+    }
+    boxes_overlap(a_half, b_half, &r, &t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -191,11 +224,20 @@ mod tests {
                     .into_inner(),
                 half_extents: Vector3::new(rnd() + 0.01, rnd() + 0.01, rnd() + 0.01) * 0.5,
             };
-            let (a, b) = (random_box(3.0), random_box(3.0));
+            let (a, b) = (random_box(1.5), random_box(1.5));
             let r = a.axes.transpose() * b.axes;
             let t = a.axes.transpose() * (b.center - a.center);
             let sat = boxes_overlap(&a.half_extents, &b.half_extents, &r, &t);
             assert_eq!(sat, overlap_by_corners(&a, &b), "{a:?} {b:?}");
+            let lazy = boxes_overlap_in_frame(
+                &a.axes,
+                &a.center,
+                &a.half_extents,
+                &b.axes,
+                &b.center,
+                &b.half_extents,
+            );
+            assert_eq!(lazy, sat);
             agree += 1;
             overlaps += usize::from(sat);
         }

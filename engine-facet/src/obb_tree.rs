@@ -5,12 +5,19 @@
 //! forward. Build: fit a box to the node's triangles (principal axes of the vertex covariance),
 //! split the triangles at the mean of their centroids along the box's longest axis (at the
 //! median when that leaves a side empty), recurse until at most [`LEAF_TRIANGLES`] remain.
+//! Nodes of at most [`EIGEN_MIN_TRIANGLES`] triangles reuse their parent's axes; a leaf's box
+//! takes its first triangle's own frame (edge, in-plane perpendicular, facet normal), which is
+//! flat and tight.
 
-use crate::obb::{Obb, boxes_overlap};
+use crate::obb::{Obb, boxes_overlap_in_frame};
 use contact_core::{Matrix3, Point3, Vector3, WorkCounters};
 
 /// Triangles per leaf at most.
 pub const LEAF_TRIANGLES: usize = 2;
+
+/// Nodes with more triangles than this get their own principal axes (an eigen solve of the
+/// vertex covariance); smaller ones inherit their parent's axes.
+pub const EIGEN_MIN_TRIANGLES: usize = 32;
 
 /// One node: its box and either its right child (internal) or its triangle range (leaf).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,9 +52,10 @@ impl ObbTree {
             .collect();
         let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
         let mut nodes = Vec::with_capacity(2 * triangles.len() / LEAF_TRIANGLES + 1);
-        // Explicit stack of (node slot, range start, range end) to build depth-first.
-        let mut pending = vec![(usize::MAX, 0usize, order.len())];
-        while let Some((parent, start, end)) = pending.pop() {
+        // Explicit stack of (node slot, range start, range end, parent's axes) to build
+        // depth-first.
+        let mut pending = vec![(usize::MAX, 0usize, order.len(), None::<Matrix3>)];
+        while let Some((parent, start, end, parent_axes)) = pending.pop() {
             let slot = nodes.len();
             if parent != usize::MAX {
                 let p: &mut Node = &mut nodes[parent];
@@ -72,8 +80,15 @@ impl ObbTree {
                     });
                 let axes = Matrix3::from_columns(&[e, n.cross(&e), n]);
                 Obb::fit_with_axes(points, axes)
-            } else {
+            } else if range.len() > EIGEN_MIN_TRIANGLES {
                 Obb::fit(points)
+            } else {
+                // Small nodes keep their ancestor's principal axes: no covariance pass and no
+                // eigen solve, at the price of slightly looser boxes near the leaves.
+                match parent_axes {
+                    Some(axes) => Obb::fit_with_axes(points, axes),
+                    None => Obb::fit(points),
+                }
             };
             if range.len() <= LEAF_TRIANGLES {
                 nodes.push(Node {
@@ -98,8 +113,8 @@ impl ObbTree {
                 count: 0,
             });
             // Right pushed first so the left child is built next, right after its parent.
-            pending.push((slot, start + split, end));
-            pending.push((usize::MAX, start, start + split));
+            pending.push((slot, start + split, end, Some(obb.axes)));
+            pending.push((usize::MAX, start, start + split, Some(obb.axes)));
         }
         Self { nodes, order }
     }
@@ -222,9 +237,14 @@ pub fn descend_pair(
             cache.axes[k] = rot_ab * nb.obb.axes;
             cache.center[k] = rot_ab * nb.obb.center + t_ab;
         }
-        let r = na.obb.axes.tr_mul(&cache.axes[k]);
-        let t = na.obb.axes.tr_mul(&(cache.center[k] - na.obb.center));
-        if !boxes_overlap(&na.obb.half_extents, &nb.obb.half_extents, &r, &t) {
+        if !boxes_overlap_in_frame(
+            &na.obb.axes,
+            &na.obb.center,
+            &na.obb.half_extents,
+            &cache.axes[k],
+            &cache.center[k],
+            &nb.obb.half_extents,
+        ) {
             continue;
         }
         match (na.count > 0, nb.count > 0) {

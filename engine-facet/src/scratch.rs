@@ -5,37 +5,36 @@
 use contact_core::Vector3;
 use std::cell::RefCell;
 
-/// A triangle → slot map cleared in O(1) by bumping a generation stamp.
+/// A triangle → slot map cleared in O(1) by bumping a generation stamp (stamp and slot side
+/// by side: one cache line per lookup).
 #[derive(Debug, Default)]
 pub(crate) struct SlotMap {
-    stamp: Vec<u32>,
-    slot: Vec<u32>,
+    entries: Vec<(u32, u32)>,
     generation: u32,
 }
 
 impl SlotMap {
     /// Empties the map and makes room for `n` triangles.
     pub(crate) fn reset(&mut self, n: usize) {
-        if self.stamp.len() < n {
-            self.stamp.resize(n, 0);
-            self.slot.resize(n, 0);
+        if self.entries.len() < n {
+            self.entries.resize(n, (0, 0));
         }
         self.generation = self.generation.wrapping_add(1);
         if self.generation == 0 {
-            self.stamp.fill(0);
+            self.entries.fill((0, 0));
             self.generation = 1;
         }
     }
 
     #[inline]
     pub(crate) fn get(&self, t: u32) -> Option<u32> {
-        (self.stamp[t as usize] == self.generation).then(|| self.slot[t as usize])
+        let (stamp, slot) = self.entries[t as usize];
+        (stamp == self.generation).then_some(slot)
     }
 
     #[inline]
     pub(crate) fn insert(&mut self, t: u32, slot: u32) {
-        self.stamp[t as usize] = self.generation;
-        self.slot[t as usize] = slot;
+        self.entries[t as usize] = (self.generation, slot);
     }
 }
 

@@ -11,7 +11,7 @@ pub fn segments_for_circle(radius: f64, deviation: f64) -> u64 {
     if ratio >= 1.0 {
         return 3;
     }
-    if !(ratio > 0.0) || !ratio.is_finite() {
+    if ratio.is_nan() || ratio <= 0.0 || !ratio.is_finite() {
         return u64::MAX;
     }
     let half_angle = (1.0 - ratio).acos();
