@@ -237,6 +237,11 @@ pub fn descend_pair(
             cache.axes[k] = rot_ab * nb.obb.axes;
             cache.center[k] = rot_ab * nb.obb.center + t_ab;
         }
+        // Bounding spheres first: one distance, and most far pairs end here.
+        let reach = na.obb.half_extents.norm() + nb.obb.half_extents.norm();
+        if (cache.center[k] - na.obb.center).norm_squared() > reach * reach {
+            continue;
+        }
         if !boxes_overlap_in_frame(
             &na.obb.axes,
             &na.obb.center,
