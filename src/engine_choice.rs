@@ -139,7 +139,7 @@ fn first<T>(over: Option<T>, env: Option<T>, dataset: Option<T>, default: T) -> 
 /// Builds the engine for a library and model-wide tolerance.
 pub fn build_engine(library: GeometryLibrary, tolerance: FacetingTolerance) -> Box<dyn GeometryEngine> {
     match library {
-        GeometryLibrary::Exact => Box::new(engine_exact::ExactEngine::new()),
+        GeometryLibrary::Exact => Box::new(engine_exact::ExactEngine),
         GeometryLibrary::Faceted => Box::new(engine_facet::FacetEngine::new(tolerance)),
     }
 }

@@ -11,6 +11,8 @@
 //! - [`solver`] — the DAE interface ([`solver::dae`]), the multibody equations ([`solver::mbs`])
 //!   and the BDF integrator;
 //! - [`output`] — plots;
+//! - [`engine_choice`] — PREFERENCES (or an override) to one `Box<dyn GeometryEngine>`;
+//! - [`run`] — a model lowered onto the solver, and its results written;
 //! - [`cli`] — the `contact` command-line subcommands.
 //!
 //! ```
@@ -41,6 +43,7 @@
 
 pub mod cli;
 pub mod dataset;
+pub mod engine_choice;
 pub mod expr;
 pub mod model;
 pub mod output;

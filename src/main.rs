@@ -1,6 +1,8 @@
 //! The `contact` command line: a thin clap front end over [`contact::cli`].
 
 use clap::{Parser, Subcommand};
+use contact::cli;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Compliant contact between rigid parts, as the Adams CONTACT statement, with an exact and a
@@ -14,8 +16,33 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Run a model's dynamics (Adams dataset and command file) and write its results.
+    Run(cli::run::RunArgs),
     /// Read an Adams dataset (and command file), check it, and report every problem.
-    Check(contact::cli::check::CheckArgs),
+    Check(cli::check::CheckArgs),
+    /// Contacts between two geometries at a list of relative poses, with timings.
+    Query(cli::query::QueryArgs),
+    /// The accuracy-against-speed sweep over the reference scenes.
+    Tradeoff {
+        /// Scene names (default: the whole suite; `contact scenes` lists them).
+        #[arg(long = "scene")]
+        scenes: Vec<String>,
+        /// Faceting tolerances to sweep (default 100, 300.0028, 1000, 3000, 10000).
+        #[arg(long = "faceting-tolerance")]
+        tolerances: Vec<f64>,
+        /// Timed passes over the poses (default 5).
+        #[arg(long)]
+        rounds: Option<usize>,
+        /// Write the rows as JSON (schema in the README).
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Write the rows as CSV.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw depth error against query time (SVG).
+        #[arg(long)]
+        plot: Option<PathBuf>,
+    },
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {
         /// Scene names (default: the whole suite).
@@ -26,26 +53,46 @@ enum Command {
     },
 }
 
+fn exit(code: std::io::Result<u8>) -> ExitCode {
+    match code {
+        Ok(code) => ExitCode::from(code),
+        Err(e) => {
+            eprintln!("error: cannot write the report: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let mut stdout = std::io::stdout().lock();
-    match &cli.command {
-        Command::Check(args) => match contact::cli::check::run(args, &mut stdout) {
-            Ok(0) => ExitCode::SUCCESS,
-            Ok(_) => ExitCode::from(1),
+    match cli.command {
+        Command::Run(args) => exit(cli::run::run(&args, &mut stdout, &mut std::io::stderr())),
+        Command::Check(args) => exit(cli::check::run(&args, &mut stdout).map(|c| u8::from(c != 0))),
+        Command::Query(args) => match cli::query::run(&args, &mut stdout, &mut std::io::stderr()) {
+            Ok(_) => ExitCode::SUCCESS,
             Err(e) => {
-                eprintln!("error: cannot write the report: {e}");
+                eprintln!("error: {e}");
                 ExitCode::from(1)
             }
         },
-        Command::Scenes { names, answers } => {
-            match contact::cli::scenes::run(names, *answers, &mut stdout) {
-                Ok(()) => ExitCode::SUCCESS,
+        Command::Tradeoff { scenes, tolerances, rounds, json, csv, plot } => {
+            let args = cli::tradeoff::TradeoffArgs { scenes, tolerances, rounds, json, csv, plot };
+            let mut progress = |label: &str| eprintln!("measuring {label}");
+            match cli::tradeoff::run(&args, &contact::engine_choice::build_engine, &[], &mut stdout, &mut progress) {
+                Ok(_) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
                     ExitCode::from(1)
                 }
             }
         }
+        Command::Scenes { names, answers } => match cli::scenes::run(&names, answers, &mut stdout) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(1)
+            }
+        },
     }
 }

@@ -1,0 +1,567 @@
+//! Mesh against mesh: intersecting triangle pairs → connected regions → one contact each, by the
+//! SPEC §4 definition.
+//!
+//! ## Method (all in A's = I's mesh frame)
+//! 1. **Crossings.** The two OBB trees are descended together; leaf triangle pairs go to the
+//!    exact triangle–triangle test ([`crate::triangle_pair`]), which returns each crossing
+//!    segment oriented along `n_I × n_J`.
+//! 2. **Regions.** Each triangle that crosses is a node; a crossing unites its two triangles
+//!    (union-find). Then each surface is flooded from its crossing triangles into the triangles
+//!    that lie wholly inside the other solid (a neighbour across an edge whose two corners are
+//!    inside — behind every plane of the triangles it crosses — is inside; so is any
+//!    non-crossing neighbour of an inside triangle). Flooding unites too, so the two loops of an
+//!    annular contact (a torus pressed into a plane) make one region. A flood never leaves the
+//!    other mesh's root box, so a gap in a loop cannot spread over a whole surface.
+//! 3. **Per region.** The oriented loop gives the vector area `S = ½ Σ s₀ × s₁`: the normal is
+//!    `−S/|S|` (from J into I) and the area is `|S|`, the patch's area projected on the contact
+//!    plane. The intersection volume is bounded by I's surface inside J and J's surface inside
+//!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes of
+//!    the triangles it crosses), as tetrahedra from the loop's centroid, gives its volume and
+//!    centroid `g` (the loop's open lid cancels between the two sides). The contact points are
+//!    the closest points to `g` on each side's region triangles, lifted from the facet onto the
+//!    curved PN triangle through the facet's corners and true corner normals
+//!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance.
+//! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
+//!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
+//!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
+//!    on the outer surface (see `containment`), the area is a quarter of the inner body's surface
+//!    (Cauchy: its mean projected area).
+//!
+//! ## Error bound
+//! Every facet lies within `δ = L/FT` of the true surface (tessellation), so the faceted
+//! intersection volume differs from the true one within a band of width `δ` around each
+//! boundary; the penetration and contact points therefore carry an error of order `δ` (first
+//! order in `1/FT`) from the closest-point search on the facets, reduced by the PN lift where
+//! the facets approximate a smooth primitive, and the normal (from the loop's vector area, an average over the loop) an error
+//! of order `δ/ℓ` with `ℓ` the loop's size. Clipping by the crossed triangles' planes is exact
+//! where the other surface is locally convex and underestimates the volume where it is concave.
+
+use crate::facet_mesh::FacetMesh;
+use crate::obb::boxes_overlap;
+use crate::obb_tree::descend_pair;
+use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
+use crate::surface_sums::SurfaceSums;
+use crate::triangle_pair::{TrianglePair, intersect};
+use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
+
+/// One contact in A's mesh frame, before it is moved to the world.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalContact {
+    /// Point on I's (A's) surface.
+    pub point_i: Vector3,
+    /// Point on J's (B's) surface.
+    pub point_j: Vector3,
+    /// Unit normal from J into I.
+    pub normal: Vector3,
+    /// Penetration ≥ 0.
+    pub penetration: f64,
+    /// Area estimate ≥ 0.
+    pub area: f64,
+}
+
+/// The pose of B's mesh frame in A's, as a matrix and a vector.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RelativePose {
+    pub rot: Matrix3,
+    pub t: Vector3,
+}
+
+impl RelativePose {
+    pub(crate) fn new(pose_ab: &Isometry3) -> Self {
+        Self {
+            rot: pose_ab.rotation.to_rotation_matrix().into_inner(),
+            t: pose_ab.translation.vector,
+        }
+    }
+
+    #[inline]
+    pub(crate) fn apply(&self, v: &Vector3) -> Vector3 {
+        self.rot * v + self.t
+    }
+
+    #[inline]
+    pub(crate) fn inverse_apply(&self, v: &Vector3) -> Vector3 {
+        self.rot.tr_mul(&(v - self.t))
+    }
+
+    /// A box of B's mesh frame expressed in A's.
+    pub(crate) fn box_in_a(&self, o: &crate::obb::Obb) -> crate::obb::Obb {
+        crate::obb::Obb {
+            center: self.apply(&o.center),
+            axes: self.rot * o.axes,
+            half_extents: o.half_extents,
+        }
+    }
+
+    /// A box of A's mesh frame expressed in B's.
+    pub(crate) fn box_in_b(&self, o: &crate::obb::Obb) -> crate::obb::Obb {
+        crate::obb::Obb {
+            center: self.inverse_apply(&o.center),
+            axes: self.rot.tr_mul(&o.axes),
+            half_extents: o.half_extents,
+        }
+    }
+}
+
+/// All contacts between meshes A (I) and B (J), B at `pose_ab` in A's frame; appends to `out`.
+pub(crate) fn mesh_mesh(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    pose_ab: &Isometry3,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+    out: &mut Vec<LocalContact>,
+) {
+    let x = RelativePose::new(pose_ab);
+    find_crossings(a, b, &x, s, work);
+    if s.hits.is_empty() {
+        if let Some(c) = containment(a, b, &x) {
+            out.push(c);
+        }
+        return;
+    }
+    build_nodes(a, b, s);
+    flood(a, b, &x, s);
+    let region_count = label_regions(s);
+    s.regions.clear();
+    s.regions.resize(region_count, RegionSums::default());
+    sum_loops(a, b, &x, s);
+    sum_volumes(a, b, &x, s);
+    closest_points(a, b, &x, s);
+    for r in &s.regions {
+        out.push(finish_region(r));
+    }
+}
+
+fn find_crossings(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    x: &RelativePose,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+) {
+    let Scratch {
+        stack,
+        hits,
+        box_cache,
+        ..
+    } = s;
+    hits.clear();
+    let mut tests = 0;
+    descend_pair(
+        &a.tree,
+        &b.tree,
+        &x.rot,
+        &x.t,
+        stack,
+        box_cache,
+        work,
+        |ta, tb| {
+            tests += 1;
+            let p = a.corners(ta);
+            let q = b.corners(tb).map(|v| x.apply(&v));
+            if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
+                hits.push(Hit {
+                    ta,
+                    tb,
+                    s0,
+                    s1,
+                    plane_a: (a.face_normals[ta as usize], p[0]),
+                    plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
+                });
+            }
+        },
+    );
+    work.primitive_tests += tests;
+}
+
+pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u32 {
+    let id = s.nodes.len() as u32;
+    s.nodes.push(RegionNode {
+        side,
+        tri,
+        crossing,
+        parent: id,
+        region: 0,
+        hit_start: 0,
+        hit_count: 0,
+        inside_corners: 0,
+        inside: SurfaceSums::default(),
+    });
+    s.slots[side as usize].insert(tri, id);
+    id
+}
+
+fn find(nodes: &mut [RegionNode], mut i: u32) -> u32 {
+    while nodes[i as usize].parent != i {
+        let p = nodes[i as usize].parent;
+        nodes[i as usize].parent = nodes[p as usize].parent;
+        i = p;
+    }
+    i
+}
+
+pub(crate) fn union(nodes: &mut [RegionNode], i: u32, j: u32) {
+    let (ri, rj) = (find(nodes, i), find(nodes, j));
+    // The smaller index becomes the root: labels then follow first appearance, deterministically.
+    if ri < rj {
+        nodes[rj as usize].parent = ri;
+    } else if rj < ri {
+        nodes[ri as usize].parent = rj;
+    }
+}
+
+/// One node per crossing triangle, united across each crossing; hit lists per node (CSR).
+fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
+    s.nodes.clear();
+    s.slots[0].reset(a.triangles.len());
+    s.slots[1].reset(b.triangles.len());
+    for h in 0..s.hits.len() {
+        let Hit { ta, tb, .. } = s.hits[h];
+        let na = match s.slots[0].get(ta) {
+            Some(n) => n,
+            None => new_node(s, 0, ta, true),
+        };
+        let nb = match s.slots[1].get(tb) {
+            Some(n) => n,
+            None => new_node(s, 1, tb, true),
+        };
+        s.nodes[na as usize].hit_count += 1;
+        s.nodes[nb as usize].hit_count += 1;
+        union(&mut s.nodes, na, nb);
+    }
+    let mut start = 0;
+    for n in s.nodes.iter_mut() {
+        n.hit_start = start;
+        start += n.hit_count;
+        n.hit_count = 0;
+    }
+    s.node_hits.clear();
+    s.node_hits.resize(start as usize, 0);
+    for (h, hit) in s.hits.iter().enumerate() {
+        for (side, tri) in [(0, hit.ta), (1, hit.tb)] {
+            if let Some(id) = s.slots[side].get(tri) {
+                let n = &mut s.nodes[id as usize];
+                s.node_hits[(n.hit_start + n.hit_count) as usize] = h as u32;
+                n.hit_count += 1;
+            }
+        }
+    }
+}
+
+/// A triangle's corners in A's frame.
+#[inline]
+fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3; 3] {
+    let c = m.corners(tri);
+    if side == 0 { c } else { c.map(|v| x.apply(&v)) }
+}
+
+/// The plane (unit normal, point) in A's frame of the triangle on the other side of hit `h`.
+#[inline]
+fn other_plane(side: u8, hit: &Hit) -> (Vector3, Vector3) {
+    if side == 0 { hit.plane_b } else { hit.plane_a }
+}
+
+/// Floods each surface from its crossing triangles into the triangles inside the other solid,
+/// summing them (in their own mesh frame) into the seed node's `inside` sums.
+fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    let crossing_count = s.nodes.len();
+    // Corners of crossing triangles: inside when strictly behind every crossed plane.
+    for id in 0..crossing_count {
+        let node = s.nodes[id];
+        let mesh = if node.side == 0 { a } else { b };
+        let c = corners_in_a(mesh, node.side, node.tri, x);
+        let eps = 1e-12 * mesh.size;
+        let mut bits = 0u8;
+        for (k, v) in c.iter().enumerate() {
+            let inside = (0..node.hit_count).all(|i| {
+                let hit = s.hits[s.node_hits[(node.hit_start + i) as usize] as usize];
+                let (n, p0) = other_plane(node.side, &hit);
+                n.dot(&(v - p0)) < -eps
+            });
+            bits |= u8::from(inside) << k;
+        }
+        s.nodes[id].inside_corners = bits;
+    }
+    for id in 0..crossing_count as u32 {
+        let node = s.nodes[id as usize];
+        let (mesh, other) = if node.side == 0 { (a, b) } else { (b, a) };
+        // The other mesh's root box in this mesh's frame, as an axis-aligned box: the leak guard.
+        let guard = aabb(&if node.side == 0 {
+            x.box_in_a(other.tree.root())
+        } else {
+            x.box_in_b(other.tree.root())
+        });
+        s.queue.clear();
+        for k in 0..3 {
+            let both_inside = node.inside_corners & (1 << k) != 0
+                && node.inside_corners & (1 << ((k + 1) % 3)) != 0;
+            if both_inside {
+                let t = mesh.neighbors[node.tri as usize][k];
+                visit(mesh, &guard, s, id, t);
+            }
+        }
+        while let Some(t) = s.queue.pop() {
+            for k in 0..3 {
+                let next = mesh.neighbors[t as usize][k];
+                visit(mesh, &guard, s, id, next);
+            }
+        }
+    }
+}
+
+/// Flood mark: an inside triangle's slot holds its seed node with this bit set.
+const INSIDE_BIT: u32 = 1 << 31;
+
+/// The axis-aligned box `(min, max)` around an oriented box.
+fn aabb(o: &crate::obb::Obb) -> (Vector3, Vector3) {
+    let reach = o.axes.abs() * o.half_extents;
+    (o.center - reach, o.center + reach)
+}
+
+#[inline]
+fn visit(mesh: &FacetMesh, guard: &(Vector3, Vector3), s: &mut Scratch, seed: u32, tri: u32) {
+    if tri == crate::facet_mesh::NO_NEIGHBOR {
+        return;
+    }
+    let side = s.nodes[seed as usize].side as usize;
+    if let Some(mark) = s.slots[side].get(tri) {
+        let owner = mark & !INSIDE_BIT;
+        if owner != seed {
+            union(&mut s.nodes, seed, owner);
+        }
+        return;
+    }
+    let [p, q, r] = mesh.corners(tri);
+    // Leak guard: an inside triangle lies in the other mesh's root box.
+    if p.x < guard.0.x
+        || p.y < guard.0.y
+        || p.z < guard.0.z
+        || p.x > guard.1.x
+        || p.y > guard.1.y
+        || p.z > guard.1.z
+    {
+        return;
+    }
+    s.slots[side].insert(tri, seed | INSIDE_BIT);
+    s.nodes[seed as usize].inside.add_triangle(&p, &q, &r);
+    s.queue.push(tri);
+}
+
+/// Sets each node's `region` to the index of its set, numbered in order of first appearance;
+/// returns the number of regions. A set's root is its smallest index (see [`union`]).
+pub(crate) fn label_regions(s: &mut Scratch) -> usize {
+    let n = s.nodes.len();
+    for i in 0..n {
+        let r = find(&mut s.nodes, i as u32);
+        s.nodes[i].parent = r;
+    }
+    let mut count = 0u32;
+    for i in 0..n {
+        let root = s.nodes[i].parent as usize;
+        if root == i {
+            s.nodes[i].region = count;
+            count += 1;
+        } else {
+            s.nodes[i].region = s.nodes[root].region;
+        }
+    }
+    count as usize
+}
+
+fn region_of_hit(s: &Scratch, hit: &Hit) -> usize {
+    s.slots[0]
+        .get(hit.ta)
+        .map_or(0, |id| s.nodes[id as usize].region as usize)
+}
+
+fn sum_loops(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    for h in 0..s.hits.len() {
+        let hit = s.hits[h];
+        let r = region_of_hit(s, &hit);
+        let sums = &mut s.regions[r];
+        if !sums.seen {
+            sums.seen = true;
+            sums.reference = hit.s0;
+            // J's outward facet normal: the fallback direction of the force on I.
+            sums.fallback_normal =
+                x.rot * b.face_normals[hit.tb as usize] - a.face_normals[hit.ta as usize];
+        }
+        let (p0, p1) = (hit.s0 - sums.reference, hit.s1 - sums.reference);
+        sums.vector_area += 0.5 * p0.cross(&p1);
+        let len = (hit.s1 - hit.s0).norm();
+        sums.loop_length += len;
+        sums.loop_moment += len * 0.5 * (hit.s0 + hit.s1);
+        sums.loop_points += 2;
+        sums.loop_point_sum += hit.s0 + hit.s1;
+    }
+    for r in s.regions.iter_mut() {
+        r.apex = if r.loop_length > 0.0 {
+            r.loop_moment / r.loop_length
+        } else {
+            r.loop_point_sum / r.loop_points.max(1) as f64
+        };
+    }
+}
+
+pub(crate) fn add_polygon(sums: &mut RegionSums, poly: &[Vector3]) {
+    let o = sums.apex;
+    for k in 1..poly.len().saturating_sub(1) {
+        let (p, q, r) = (poly[0] - o, poly[k] - o, poly[k + 1] - o);
+        let v = p.dot(&q.cross(&r)) / 6.0;
+        sums.volume += v;
+        sums.volume_moment += v * (p + q + r) / 4.0;
+    }
+}
+
+fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    let Scratch {
+        nodes,
+        regions,
+        hits,
+        node_hits,
+        polygon,
+        polygon_next,
+        ..
+    } = s;
+    for node in nodes.iter() {
+        let mesh = if node.side == 0 { a } else { b };
+        polygon.clear();
+        polygon.extend_from_slice(&corners_in_a(mesh, node.side, node.tri, x));
+        for i in 0..node.hit_count {
+            let hit = hits[node_hits[(node.hit_start + i) as usize] as usize];
+            let (n, p0) = other_plane(node.side, &hit);
+            clip(polygon, polygon_next, &n, &p0);
+            std::mem::swap(polygon, polygon_next);
+            if polygon.len() < 3 {
+                break;
+            }
+        }
+        let r = &mut regions[node.region as usize];
+        r.sums_a.add_polygon(polygon);
+        if node.side == 0 {
+            r.sums_a.merge(&node.inside);
+        } else {
+            r.sums_b.merge(&node.inside);
+        }
+    }
+    for r in regions.iter_mut() {
+        let (va, ma) = r.sums_a.volume_moment(&r.apex);
+        let (vb, mb) = r.sums_b.volume_moment(&x.inverse_apply(&r.apex));
+        r.volume = va + vb;
+        r.volume_moment = ma + x.rot * mb + x.t * vb;
+        let scale = r.loop_length.max(1e-300);
+        r.centroid = if r.volume > 1e-15 * scale * scale * scale {
+            r.volume_moment / r.volume
+        } else {
+            r.apex
+        };
+    }
+}
+
+/// Sutherland–Hodgman: keeps the part of `poly` with `n·(v − p0) ≤ 0`.
+pub(crate) fn clip(poly: &[Vector3], out: &mut Vec<Vector3>, n: &Vector3, p0: &Vector3) {
+    out.clear();
+    let len = poly.len();
+    for k in 0..len {
+        let (u, v) = (poly[k], poly[(k + 1) % len]);
+        let (du, dv) = (n.dot(&(u - p0)), n.dot(&(v - p0)));
+        if du <= 0.0 {
+            out.push(u);
+        }
+        if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
+            out.push(u + (v - u) * (du / (du - dv)));
+        }
+    }
+}
+
+/// The closest points to each region's centroid on the two whole surfaces (through the
+/// trees), lifted onto the curved surfaces the facets approximate.
+fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    let Scratch { regions, stack, .. } = s;
+    for r in regions.iter_mut() {
+        let g = r.centroid;
+        let (ti, pi) = a.closest_point(&g, stack);
+        r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
+        let gb = x.inverse_apply(&g);
+        let (tj, pj) = b.closest_point(&gb, stack);
+        r.best_j = (0.0, x.apply(&b.lift_to_surface(tj, &pj)), tj);
+    }
+}
+
+fn finish_region(r: &RegionSums) -> LocalContact {
+    let (pi, pj) = (r.best_i.1, r.best_j.1);
+    let area = r.vector_area.norm();
+    let scale = r.loop_length.max(f64::MIN_POSITIVE);
+    let normal = if area > 1e-12 * scale * scale {
+        -r.vector_area / area
+    } else if let Some(n) = (pj - pi).try_normalize(1e-300) {
+        n
+    } else {
+        r.fallback_normal
+            .try_normalize(0.0)
+            .unwrap_or_else(Vector3::z)
+    };
+    LocalContact {
+        point_i: pi,
+        point_j: pj,
+        normal,
+        penetration: (pj - pi).norm(),
+        area,
+    }
+}
+
+/// No crossings: one body may lie wholly inside the other (both closed, root boxes overlapping).
+///
+/// I inside J: `g` is I's centroid, `p_j` the closest point to it on J, the normal `(p_j − g)`
+/// normalised (the way out), `p_i` I's vertex deepest along `−n`, penetration `(p_j − p_i)·n`:
+/// how far I must move along `n` to leave J. J inside I mirrors this. The normal comes from the
+/// closest point on the outer mesh's facets, so it is accurate to about one facet angle of the
+/// outer mesh (the crossing path's loop normal is far better); the penetration to `O(δ)`.
+pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Option<LocalContact> {
+    if !(a.closed && b.closed) {
+        return None;
+    }
+    let (ra, rb) = (a.tree.root(), b.tree.root());
+    let r = ra.axes.tr_mul(&(x.rot * rb.axes));
+    let t = ra.axes.tr_mul(&(x.apply(&rb.center) - ra.center));
+    if !boxes_overlap(&ra.half_extents, &rb.half_extents, &r, &t) {
+        return None;
+    }
+    let a0 = a.vertices[0].coords;
+    if b.contains(&Point3::from(x.inverse_apply(&a0))) {
+        let g = a.centroid.coords;
+        let gb = x.inverse_apply(&g);
+        let pj = x.apply(&b.closest_point(&gb, &mut Vec::new()).1);
+        let n = (pj - g).try_normalize(0.0).unwrap_or_else(Vector3::z);
+        let pi = support(a.vertices.iter().map(|v| v.coords), &(-n));
+        return Some(LocalContact {
+            point_i: pi,
+            point_j: pj,
+            normal: n,
+            penetration: (pj - pi).dot(&n).max(0.0),
+            area: 0.25 * a.area,
+        });
+    }
+    let b0 = x.apply(&b.vertices[0].coords);
+    if a.contains(&Point3::from(b0)) {
+        let g = x.apply(&b.centroid.coords);
+        let pi = a.closest_point(&g, &mut Vec::new()).1;
+        let n = (g - pi).try_normalize(0.0).unwrap_or_else(Vector3::z);
+        let pj = support(b.vertices.iter().map(|v| x.apply(&v.coords)), &n);
+        return Some(LocalContact {
+            point_i: pi,
+            point_j: pj,
+            normal: n,
+            penetration: (pj - pi).dot(&n).max(0.0),
+            area: 0.25 * b.area,
+        });
+    }
+    None
+}
+
+fn support(points: impl Iterator<Item = Vector3>, dir: &Vector3) -> Vector3 {
+    points
+        .max_by(|u, v| u.dot(dir).total_cmp(&v.dot(dir)))
+        .unwrap_or_else(Vector3::zeros)
+}

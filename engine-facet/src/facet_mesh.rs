@@ -1,0 +1,362 @@
+//! A prepared mesh: triangles, their neighbours across each edge, exact corner normals, mass
+//! properties and the OBB tree — everything a query reads, built once by `prepare`.
+
+use crate::obb_tree::ObbTree;
+use crate::tessellate::Tessellation;
+use contact_core::{Point3, Vector3};
+use std::collections::HashMap;
+
+/// No neighbour across an edge (open meshes only).
+pub const NO_NEIGHBOR: u32 = u32::MAX;
+
+/// A triangle mesh ready for queries, in its geometry frame `G`.
+#[derive(Debug, Clone)]
+pub struct FacetMesh {
+    /// Vertices.
+    pub vertices: Vec<Point3>,
+    /// Counter-clockwise triangles seen from outside.
+    pub triangles: Vec<[u32; 3]>,
+    /// Across edge `k` (from corner `k` to corner `k+1`) of each triangle: the neighbour, or
+    /// [`NO_NEIGHBOR`].
+    pub neighbors: Vec<[u32; 3]>,
+    /// Unit facet normals.
+    pub face_normals: Vec<Vector3>,
+    /// The true surface normal at each triangle corner (facet normals for meshes read from files).
+    pub corner_normals: Vec<[Vector3; 3]>,
+    /// The OBB tree.
+    pub tree: ObbTree,
+    /// Enclosed volume (0 for an open mesh).
+    pub volume: f64,
+    /// Centroid of the enclosed volume (of the vertices for an open mesh).
+    pub centroid: Point3,
+    /// Surface area.
+    pub area: f64,
+    /// Bounding-box diagonal: the mesh's length scale.
+    pub size: f64,
+    /// True when closed and outward oriented (inside tests are meaningful).
+    pub closed: bool,
+}
+
+impl FacetMesh {
+    /// Builds the neighbours, mass properties and tree of a tessellation.
+    pub fn build(t: Tessellation, closed: bool) -> Self {
+        let Tessellation {
+            vertices,
+            triangles,
+            corner_normals,
+        } = t;
+        let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(triangles.len() * 3);
+        for (i, tri) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                edges.insert((tri[k], tri[(k + 1) % 3]), i as u32);
+            }
+        }
+        let neighbors = triangles
+            .iter()
+            .map(|tri| {
+                [0, 1, 2].map(|k| {
+                    edges
+                        .get(&(tri[(k + 1) % 3], tri[k]))
+                        .copied()
+                        .unwrap_or(NO_NEIGHBOR)
+                })
+            })
+            .collect();
+        let mut lo = Vector3::repeat(f64::INFINITY);
+        let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+        for v in &vertices {
+            lo = lo.inf(&v.coords);
+            hi = hi.sup(&v.coords);
+        }
+        let origin = 0.5 * (lo + hi);
+        let (mut volume, mut moment, mut area) = (0.0, Vector3::zeros(), 0.0);
+        let mut face_normals = Vec::with_capacity(triangles.len());
+        for tri in &triangles {
+            let [a, b, c] = tri.map(|v| vertices[v as usize].coords - origin);
+            let n = (b - a).cross(&(c - a));
+            area += 0.5 * n.norm();
+            face_normals.push(n.try_normalize(0.0).unwrap_or_else(Vector3::z));
+            let v = a.dot(&b.cross(&c)) / 6.0;
+            volume += v;
+            moment += v * (a + b + c) / 4.0;
+        }
+        let centroid = if closed && volume > 0.0 {
+            Point3::from(origin + moment / volume)
+        } else {
+            let sum: Vector3 = vertices.iter().map(|v| v.coords).sum();
+            Point3::from(sum / vertices.len().max(1) as f64)
+        };
+        let tree = ObbTree::build(&vertices, &triangles);
+        Self {
+            vertices,
+            triangles,
+            neighbors,
+            face_normals,
+            corner_normals,
+            tree,
+            volume: if closed { volume } else { 0.0 },
+            centroid,
+            area,
+            size: (hi - lo).norm(),
+            closed,
+        }
+    }
+
+    /// The corners of triangle `t`.
+    #[inline]
+    pub fn corners(&self, t: u32) -> [Vector3; 3] {
+        self.triangles[t as usize].map(|v| self.vertices[v as usize].coords)
+    }
+
+    /// Heap bytes held.
+    pub fn heap_bytes(&self) -> usize {
+        self.vertices.capacity() * std::mem::size_of::<Point3>()
+            + self.triangles.capacity() * 12
+            + self.neighbors.capacity() * 12
+            + self.face_normals.capacity() * std::mem::size_of::<Vector3>()
+            + self.corner_normals.capacity() * 3 * std::mem::size_of::<Vector3>()
+            + self.tree.heap_bytes()
+    }
+
+    /// Whether `p` (mesh frame) is inside the closed mesh: parity of ray crossings, cast along
+    /// up to three fixed skew directions until one meets no edge or vertex within a relative
+    /// 1e-9 (then the parity is unambiguous); the majority of the three otherwise.
+    pub fn contains(&self, p: &Point3) -> bool {
+        if !self.closed || !self.tree.root().contains(p) {
+            return false;
+        }
+        // Skew directions (normalised below) unlikely to run along edges of tessellated meshes.
+        const DIRECTIONS: [[f64; 3]; 3] = [
+            [0.577_2, 0.318_4, 0.751_9],
+            [-0.267_9, 0.854_1, -0.445_0],
+            [0.141_4, -0.693_2, 0.706_8],
+        ];
+        let mut votes = 0;
+        for (k, d) in DIRECTIONS.iter().enumerate() {
+            let dir = Vector3::new(d[0], d[1], d[2]).normalize();
+            match self.ray_parity(p, &dir) {
+                Some(inside) => return inside,
+                None => votes += usize::from(self.ray_parity_loose(p, &dir)),
+            }
+            if k == 2 {
+                return votes >= 2;
+            }
+        }
+        false
+    }
+
+    fn ray_crossings(&self, p: &Point3, dir: &Vector3) -> (usize, bool) {
+        let (mut count, mut ambiguous) = (0, false);
+        let tol = 1e-9;
+        self.tree.visit(
+            |obb| ray_hits_box(obb, p, dir),
+            |t| {
+                let [a, b, c] = self.corners(t);
+                if let Some((s, u, v)) = ray_triangle(&p.coords, dir, &a, &b, &c) {
+                    let w = 1.0 - u - v;
+                    if s > 0.0 {
+                        count += 1;
+                        if u < tol || v < tol || w < tol {
+                            ambiguous = true;
+                        }
+                    }
+                }
+            },
+        );
+        (count, ambiguous)
+    }
+
+    fn ray_parity(&self, p: &Point3, dir: &Vector3) -> Option<bool> {
+        let (count, ambiguous) = self.ray_crossings(p, dir);
+        (!ambiguous).then_some(count % 2 == 1)
+    }
+
+    fn ray_parity_loose(&self, p: &Point3, dir: &Vector3) -> bool {
+        self.ray_crossings(p, dir).0 % 2 == 1
+    }
+
+    /// The closest point of the whole surface to `p` (mesh frame) and its triangle: a
+    /// branch-and-bound descent of the tree, nearer child first, pruning boxes farther than the
+    /// best point so far. `stack` is scratch space.
+    pub fn closest_point(&self, p: &Vector3, stack: &mut Vec<(u32, u32)>) -> (u32, Vector3) {
+        let nodes = self.tree.nodes();
+        let (mut best_d, mut best_t, mut best_p) = (f64::INFINITY, 0u32, *p);
+        stack.clear();
+        stack.push((0, 0));
+        while let Some((i, _)) = stack.pop() {
+            let node = &nodes[i as usize];
+            if box_distance_squared(&node.obb, p) >= best_d {
+                continue;
+            }
+            if node.count > 0 {
+                for &t in self.tree.leaf_triangles(node) {
+                    let q = self.closest_on_triangle(t, p);
+                    let d = (q - p).norm_squared();
+                    if d < best_d {
+                        (best_d, best_t, best_p) = (d, t, q);
+                    }
+                }
+            } else {
+                let (l, r) = (i + 1, node.index);
+                let dl = box_distance_squared(&nodes[l as usize].obb, p);
+                let dr = box_distance_squared(&nodes[r as usize].obb, p);
+                if dl <= dr {
+                    stack.push((r, 0));
+                    stack.push((l, 0));
+                } else {
+                    stack.push((l, 0));
+                    stack.push((r, 0));
+                }
+            }
+        }
+        (best_t, best_p)
+    }
+
+    /// The closest point of triangle `t` to `p`.
+    #[inline]
+    pub fn closest_on_triangle(&self, t: u32, p: &Vector3) -> Vector3 {
+        let [a, b, c] = self.corners(t);
+        closest_point_triangle(p, &a, &b, &c)
+    }
+}
+
+/// Squared distance from `p` to an oriented box (0 inside).
+#[inline]
+fn box_distance_squared(obb: &crate::obb::Obb, p: &Vector3) -> f64 {
+    let q = obb.axes.tr_mul(&(p - obb.center));
+    let d = (q.abs() - obb.half_extents).sup(&Vector3::zeros());
+    d.norm_squared()
+}
+
+/// Slab test of the ray `p + s·dir`, `s ≥ 0`, against an oriented box.
+fn ray_hits_box(obb: &crate::obb::Obb, p: &Point3, dir: &Vector3) -> bool {
+    let o = obb.axes.tr_mul(&(p.coords - obb.center));
+    let d = obb.axes.tr_mul(dir);
+    let (mut lo, mut hi) = (0.0_f64, f64::INFINITY);
+    for i in 0..3 {
+        let h = obb.half_extents[i] * (1.0 + 1e-9) + 1e-300;
+        if d[i].abs() < 1e-300 {
+            if o[i].abs() > h {
+                return false;
+            }
+        } else {
+            let (s0, s1) = ((-h - o[i]) / d[i], (h - o[i]) / d[i]);
+            lo = lo.max(s0.min(s1));
+            hi = hi.min(s0.max(s1));
+            if lo > hi {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Möller–Trumbore: `(s, u, v)` with the hit at `p + s·dir = a + u(b − a) + v(c − a)`, or `None`.
+fn ray_triangle(
+    p: &Vector3,
+    dir: &Vector3,
+    a: &Vector3,
+    b: &Vector3,
+    c: &Vector3,
+) -> Option<(f64, f64, f64)> {
+    let (e1, e2) = (b - a, c - a);
+    let h = dir.cross(&e2);
+    let det = e1.dot(&h);
+    if det.abs() <= 1e-14 * e1.norm() * e2.norm() {
+        return None;
+    }
+    let inv = 1.0 / det;
+    let s = p - a;
+    let u = s.dot(&h) * inv;
+    if !(0.0..=1.0).contains(&u) {
+        return None;
+    }
+    let q = s.cross(&e1);
+    let v = dir.dot(&q) * inv;
+    if v < 0.0 || u + v > 1.0 {
+        return None;
+    }
+    Some((e2.dot(&q) * inv, u, v))
+}
+
+/// The closest point of triangle `abc` to `p` (Ericson, Real-Time Collision Detection §5.1.5).
+pub fn closest_point_triangle(p: &Vector3, a: &Vector3, b: &Vector3, c: &Vector3) -> Vector3 {
+    let (ab, ac, ap) = (b - a, c - a, p - a);
+    let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return *a;
+    }
+    let bp = p - b;
+    let (d3, d4) = (ab.dot(&bp), ac.dot(&bp));
+    if d3 >= 0.0 && d4 <= d3 {
+        return *b;
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        return a + ab * (d1 / (d1 - d3));
+    }
+    let cp = p - c;
+    let (d5, d6) = (ab.dot(&cp), ac.dot(&cp));
+    if d6 >= 0.0 && d5 <= d6 {
+        return *c;
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        return a + ac * (d2 / (d2 - d6));
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    }
+    let denom = 1.0 / (va + vb + vc);
+    a + ab * (vb * denom) + ac * (vc * denom)
+}
+
+impl FacetMesh {
+    /// Lifts a point `p` of triangle `t` (mesh frame) onto the curved PN triangle (Vlachos et al.
+    /// 2001, "Curved PN Triangles") through the triangle's corners and their true normals: the
+    /// cubic patch that interpolates both. On a flat face (three equal corner normals) the patch
+    /// is the triangle itself and `p` is returned unchanged; on a curved primitive it moves `p`
+    /// from the chord back to within `O(h⁴/ρ³)` of the true surface (h the edge length, ρ the
+    /// curvature radius), which removes the chord deviation from depths and contact points.
+    pub fn lift_to_surface(&self, t: u32, p: &Vector3) -> Vector3 {
+        let [p1, p2, p3] = self.corners(t);
+        let [n1, n2, n3] = self.corner_normals[t as usize];
+        if n1 == n2 && n2 == n3 {
+            return *p;
+        }
+        // Barycentric coordinates of p (on the triangle's plane).
+        let (e1, e2, ep) = (p2 - p1, p3 - p1, p - p1);
+        let (d11, d12, d22) = (e1.dot(&e1), e1.dot(&e2), e2.dot(&e2));
+        let (dp1, dp2) = (ep.dot(&e1), ep.dot(&e2));
+        let denom = d11 * d22 - d12 * d12;
+        if denom <= 0.0 {
+            return *p;
+        }
+        let u = (d22 * dp1 - d12 * dp2) / denom;
+        let v = (d11 * dp2 - d12 * dp1) / denom;
+        let w = 1.0 - u - v;
+        let edge = |pi: &Vector3, pj: &Vector3, ni: &Vector3| {
+            (2.0 * pi + pj - (pj - pi).dot(ni) * ni) / 3.0
+        };
+        let b210 = edge(&p1, &p2, &n1);
+        let b120 = edge(&p2, &p1, &n2);
+        let b021 = edge(&p2, &p3, &n2);
+        let b012 = edge(&p3, &p2, &n3);
+        let b102 = edge(&p3, &p1, &n3);
+        let b201 = edge(&p1, &p3, &n1);
+        let e = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0;
+        let centre = (p1 + p2 + p3) / 3.0;
+        let b111 = e + 0.5 * (e - centre);
+        p1 * (w * w * w)
+            + p2 * (u * u * u)
+            + p3 * (v * v * v)
+            + b210 * (3.0 * w * w * u)
+            + b120 * (3.0 * w * u * u)
+            + b201 * (3.0 * w * w * v)
+            + b021 * (3.0 * u * u * v)
+            + b102 * (3.0 * w * v * v)
+            + b012 * (3.0 * u * v * v)
+            + b111 * (6.0 * w * u * v)
+    }
+}

@@ -1,0 +1,283 @@
+//! A top-down OBB tree over a triangle mesh, and the simultaneous descent of two trees.
+//!
+//! Nodes sit in one flat array in depth-first order (a node's first child follows it), each
+//! holding its box axes, centre and half extents in the mesh frame, so a descent walks memory
+//! forward. Build: fit a box to the node's triangles (principal axes of the vertex covariance),
+//! split the triangles at the mean of their centroids along the box's longest axis (at the
+//! median when that leaves a side empty), recurse until at most [`LEAF_TRIANGLES`] remain.
+//! Nodes of at most [`EIGEN_MIN_TRIANGLES`] triangles reuse their parent's axes; a leaf's box
+//! takes its first triangle's own frame (edge, in-plane perpendicular, facet normal), which is
+//! flat and tight.
+
+use crate::obb::{Obb, boxes_overlap_in_frame};
+use contact_core::{Matrix3, Point3, Vector3, WorkCounters};
+
+/// Triangles per leaf at most.
+pub const LEAF_TRIANGLES: usize = 2;
+
+/// Nodes with more triangles than this get their own principal axes (an eigen solve of the
+/// vertex covariance); smaller ones inherit their parent's axes.
+pub const EIGEN_MIN_TRIANGLES: usize = 32;
+
+/// One node: its box and either its right child (internal) or its triangle range (leaf).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Node {
+    /// The box.
+    pub obb: Obb,
+    /// Internal: index of the right child (the left child is the next node). Leaf: the first
+    /// entry in [`ObbTree::order`].
+    pub index: u32,
+    /// Triangles in a leaf; 0 for an internal node.
+    pub count: u32,
+}
+
+/// The tree: nodes in depth-first order and the triangle order its leaves refer to.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ObbTree {
+    nodes: Vec<Node>,
+    order: Vec<u32>,
+}
+
+impl ObbTree {
+    /// Builds the tree over `triangles` (vertex indices into `vertices`).
+    pub fn build(vertices: &[Point3], triangles: &[[u32; 3]]) -> Self {
+        let centroids: Vec<Vector3> = triangles
+            .iter()
+            .map(|t| {
+                (vertices[t[0] as usize].coords
+                    + vertices[t[1] as usize].coords
+                    + vertices[t[2] as usize].coords)
+                    / 3.0
+            })
+            .collect();
+        let mut order: Vec<u32> = (0..triangles.len() as u32).collect();
+        let mut nodes = Vec::with_capacity(2 * triangles.len() / LEAF_TRIANGLES + 1);
+        // Explicit stack of (node slot, range start, range end, parent's axes) to build
+        // depth-first.
+        let mut pending = vec![(usize::MAX, 0usize, order.len(), None::<Matrix3>)];
+        while let Some((parent, start, end, parent_axes)) = pending.pop() {
+            let slot = nodes.len();
+            if parent != usize::MAX {
+                let p: &mut Node = &mut nodes[parent];
+                p.index = slot as u32;
+            }
+            let range = &mut order[start..end];
+            let points = range
+                .iter()
+                .flat_map(|&t| triangles[t as usize].iter().map(|&v| vertices[v as usize]));
+            let obb = if range.len() <= LEAF_TRIANGLES {
+                // A leaf: the first triangle's own frame (edge, in-plane normal, facet normal)
+                // gives a flat box, tighter than principal axes and with no eigen solve.
+                let [p, q, r] = triangles[range[0] as usize].map(|v| vertices[v as usize]);
+                let e = (q - p).try_normalize(0.0).unwrap_or_else(Vector3::x);
+                let n = (q - p)
+                    .cross(&(r - p))
+                    .try_normalize(0.0)
+                    .unwrap_or_else(|| {
+                        e.cross(&Vector3::y())
+                            .try_normalize(0.0)
+                            .unwrap_or_else(Vector3::z)
+                    });
+                let axes = Matrix3::from_columns(&[e, n.cross(&e), n]);
+                Obb::fit_with_axes(points, axes)
+            } else if range.len() > EIGEN_MIN_TRIANGLES {
+                Obb::fit(points)
+            } else {
+                // Small nodes keep their ancestor's principal axes: no covariance pass and no
+                // eigen solve, at the price of slightly looser boxes near the leaves.
+                match parent_axes {
+                    Some(axes) => Obb::fit_with_axes(points, axes),
+                    None => Obb::fit(points),
+                }
+            };
+            if range.len() <= LEAF_TRIANGLES {
+                nodes.push(Node {
+                    obb,
+                    index: start as u32,
+                    count: range.len() as u32,
+                });
+                continue;
+            }
+            let axis_index = obb.half_extents.imax();
+            let axis = obb.axes.column(axis_index).into_owned();
+            let key = |t: &u32| centroids[*t as usize].dot(&axis);
+            let mean = range.iter().map(key).sum::<f64>() / range.len() as f64;
+            let mut split = partition(range, |t| key(t) < mean);
+            if split == 0 || split == range.len() {
+                split = range.len() / 2;
+                range.select_nth_unstable_by(split, |x, y| key(x).total_cmp(&key(y)));
+            }
+            nodes.push(Node {
+                obb,
+                index: 0,
+                count: 0,
+            });
+            // Right pushed first so the left child is built next, right after its parent.
+            pending.push((slot, start + split, end, Some(obb.axes)));
+            pending.push((usize::MAX, start, start + split, Some(obb.axes)));
+        }
+        Self { nodes, order }
+    }
+
+    /// The nodes, root first.
+    pub fn nodes(&self) -> &[Node] {
+        &self.nodes
+    }
+
+    /// Triangle indices in leaf order.
+    pub fn order(&self) -> &[u32] {
+        &self.order
+    }
+
+    /// The root box.
+    pub fn root(&self) -> &Obb {
+        &self.nodes[0].obb
+    }
+
+    /// Triangles of a leaf node.
+    pub fn leaf_triangles(&self, node: &Node) -> &[u32] {
+        &self.order[node.index as usize..(node.index + node.count) as usize]
+    }
+
+    /// Heap bytes held.
+    pub fn heap_bytes(&self) -> usize {
+        self.nodes.capacity() * std::mem::size_of::<Node>() + self.order.capacity() * 4
+    }
+
+    /// Visits every node whose box passes `keep` (given the box; a failing node's subtree is
+    /// skipped) and calls `leaf` with each triangle of a kept leaf.
+    pub fn visit(&self, mut keep: impl FnMut(&Obb) -> bool, mut leaf: impl FnMut(u32)) {
+        let mut i = 0;
+        let mut stack: Vec<usize> = Vec::new();
+        loop {
+            let node = &self.nodes[i];
+            if keep(&node.obb) {
+                if node.count > 0 {
+                    for &t in self.leaf_triangles(node) {
+                        leaf(t);
+                    }
+                } else {
+                    stack.push(node.index as usize);
+                    i += 1;
+                    continue;
+                }
+            }
+            match stack.pop() {
+                Some(next) => i = next,
+                None => return,
+            }
+        }
+    }
+}
+
+/// Moves the elements satisfying `left` to the front; returns how many there are.
+fn partition(items: &mut [u32], left: impl Fn(&u32) -> bool) -> usize {
+    let mut k = 0;
+    for i in 0..items.len() {
+        if left(&items[i]) {
+            items.swap(i, k);
+            k += 1;
+        }
+    }
+    k
+}
+
+/// B's node boxes moved into A's frame, computed at most once per node per query (a node of B
+/// meets several nodes of A during a descent).
+#[derive(Debug, Default)]
+pub struct BoxCache {
+    stamp: Vec<u32>,
+    axes: Vec<Matrix3>,
+    center: Vec<Vector3>,
+    generation: u32,
+}
+
+impl BoxCache {
+    fn reset(&mut self, n: usize) {
+        if self.stamp.len() < n {
+            self.stamp.resize(n, 0);
+            self.axes.resize(n, Matrix3::zeros());
+            self.center.resize(n, Vector3::zeros());
+        }
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.stamp.fill(0);
+            self.generation = 1;
+        }
+    }
+}
+
+/// Descends two trees at once and calls `on_pair` with every pair of triangles (indices into
+/// the meshes) whose leaf boxes overlap. `rot_ab`, `t_ab`: the pose of B's mesh frame in A's
+/// (`X_AB`). The larger box of a pair is split first. Counts box tests in `work`.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "scratch buffers are passed in to avoid allocation"
+)]
+pub fn descend_pair(
+    a: &ObbTree,
+    b: &ObbTree,
+    rot_ab: &Matrix3,
+    t_ab: &Vector3,
+    stack: &mut Vec<(u32, u32)>,
+    cache: &mut BoxCache,
+    work: &mut WorkCounters,
+    mut on_pair: impl FnMut(u32, u32),
+) {
+    stack.clear();
+    stack.push((0, 0));
+    cache.reset(b.nodes.len());
+    let mut tests = 0;
+    while let Some((ia, ib)) = stack.pop() {
+        let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
+        tests += 1;
+        let k = ib as usize;
+        if cache.stamp[k] != cache.generation {
+            cache.stamp[k] = cache.generation;
+            cache.axes[k] = rot_ab * nb.obb.axes;
+            cache.center[k] = rot_ab * nb.obb.center + t_ab;
+        }
+        // Bounding spheres first: one distance, and most far pairs end here.
+        let reach = na.obb.half_extents.norm() + nb.obb.half_extents.norm();
+        if (cache.center[k] - na.obb.center).norm_squared() > reach * reach {
+            continue;
+        }
+        if !boxes_overlap_in_frame(
+            &na.obb.axes,
+            &na.obb.center,
+            &na.obb.half_extents,
+            &cache.axes[k],
+            &cache.center[k],
+            &nb.obb.half_extents,
+        ) {
+            continue;
+        }
+        match (na.count > 0, nb.count > 0) {
+            (true, true) => {
+                for &ta in a.leaf_triangles(na) {
+                    for &tb in b.leaf_triangles(nb) {
+                        on_pair(ta, tb);
+                    }
+                }
+            }
+            (false, true) => {
+                stack.push((na.index, ib));
+                stack.push((ia + 1, ib));
+            }
+            (true, false) => {
+                stack.push((ia, nb.index));
+                stack.push((ia, ib + 1));
+            }
+            (false, false) => {
+                if na.obb.size() >= nb.obb.size() {
+                    stack.push((na.index, ib));
+                    stack.push((ia + 1, ib));
+                } else {
+                    stack.push((ia, nb.index));
+                    stack.push((ia, ib + 1));
+                }
+            }
+        }
+    }
+    work.bounding_volume_tests += tests;
+}

@@ -1,0 +1,76 @@
+//! Every parry call of this crate, in one place: parry's trimesh–trimesh contact manifolds on
+//! the same meshes and poses, so `contact query --peer parry` and the benches can time the
+//! library people use today beside ours. parry returns per-triangle contact points (no regions,
+//! no volume-based depths); only its timing and point count are compared.
+
+use crate::facet_mesh::FacetMesh;
+use contact_core::Isometry3;
+use parry3d_f64::query::{
+    ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher,
+};
+use parry3d_f64::shape::TriMesh;
+use thiserror::Error;
+
+/// parry refused a mesh or a query.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("parry: {message}")]
+pub struct ParryError {
+    /// parry's message.
+    pub message: String,
+}
+
+/// A mesh as parry's `TriMesh` (with its BVH), plus reusable manifold buffers.
+pub struct ParryPeer {
+    a: TriMesh,
+    b: TriMesh,
+    manifolds: Vec<ContactManifold<(), ()>>,
+    workspace: Option<ContactManifoldsWorkspace>,
+}
+
+impl std::fmt::Debug for ParryPeer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ParryPeer")
+            .field("triangles_a", &self.a.num_triangles())
+            .field("triangles_b", &self.b.num_triangles())
+            .finish()
+    }
+}
+
+fn trimesh(m: &FacetMesh) -> Result<TriMesh, ParryError> {
+    TriMesh::new(m.vertices.clone(), m.triangles.clone()).map_err(|e| ParryError {
+        message: format!("{e:?}"),
+    })
+}
+
+impl ParryPeer {
+    /// Builds parry's meshes (and their trees) from two prepared meshes.
+    pub fn new(a: &FacetMesh, b: &FacetMesh) -> Result<Self, ParryError> {
+        Ok(Self {
+            a: trimesh(a)?,
+            b: trimesh(b)?,
+            manifolds: Vec::new(),
+            workspace: None,
+        })
+    }
+
+    /// All contact points parry finds between A and B (B at `pose_ab` in A's frame) with zero
+    /// prediction distance; returns the number of points over all manifolds. The workspace is
+    /// reset first so every call does the full work (no temporal coherence), as ours does.
+    pub fn contact_points(&mut self, pose_ab: &Isometry3) -> Result<usize, ParryError> {
+        self.workspace = None;
+        self.manifolds.clear();
+        DefaultQueryDispatcher
+            .contact_manifolds(
+                pose_ab,
+                &self.a,
+                &self.b,
+                0.0,
+                &mut self.manifolds,
+                &mut self.workspace,
+            )
+            .map_err(|e| ParryError {
+                message: format!("{e:?}"),
+            })?;
+        Ok(self.manifolds.iter().map(|m| m.points.len()).sum())
+    }
+}

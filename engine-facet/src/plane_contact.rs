@@ -1,0 +1,187 @@
+//! Mesh against a half-space (a 3-D PLANE): exact triangle-against-plane clipping, no
+//! tessellation of the plane.
+//!
+//! The triangles with a corner at or below the plane are found through the mesh's OBB tree
+//! (a box wholly above the plane is skipped), grouped into regions by edge adjacency, and each
+//! region gives one contact: the normal is the plane's (exact), the intersection volume's
+//! centroid `g` comes from the divergence theorem over the clipped triangles as tetrahedra from
+//! a point on the plane (the plane's lid then adds nothing), `point_j` is `g` projected on the
+//! plane, `point_i` the closest point to `g` on the region's triangles lifted onto the curved
+//! PN triangle of that facet ([`FacetMesh::lift_to_surface`]), the penetration their distance. The area is the area
+//! enclosed by the waterline loop (for a body wholly under the plane: its downward-facing area
+//! projected on the plane).
+//!
+//! A bounded plane (finite XMIN…YMAX) ignores triangles whose corners all lie beyond one of its
+//! edges; a triangle straddling an edge counts whole (an error within one facet of the edge).
+
+use crate::contact_region::{LocalContact, add_polygon, clip, label_regions, new_node, union};
+use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
+use crate::scratch::{RegionSums, Scratch};
+use contact_core::geometry::Plane;
+use contact_core::{Isometry3, Vector3, WorkCounters};
+
+/// All contacts of mesh A (taken as I) with the half-space whose frame is at `pose_a_plane`
+/// (`X_AP`) in A's frame; appends them in A's frame to `out`.
+pub(crate) fn mesh_plane(
+    a: &FacetMesh,
+    plane: &Plane,
+    pose_a_plane: &Isometry3,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+    out: &mut Vec<LocalContact>,
+) {
+    let rot = pose_a_plane.rotation.to_rotation_matrix().into_inner();
+    let origin = pose_a_plane.translation.vector;
+    let n = rot.column(2).into_owned();
+    let height = |v: &Vector3| n.dot(&(v - origin));
+    let [x0, x1] = plane.x_range();
+    let [y0, y1] = plane.y_range();
+    let bounded = !plane.is_unbounded();
+    let (ex, ey) = (rot.column(0).into_owned(), rot.column(1).into_owned());
+    let beyond = |c: &[Vector3; 3]| {
+        let xs = c.map(|v| ex.dot(&(v - origin)));
+        let ys = c.map(|v| ey.dot(&(v - origin)));
+        xs.iter().all(|&u| u < x0)
+            || xs.iter().all(|&u| u > x1)
+            || ys.iter().all(|&u| u < y0)
+            || ys.iter().all(|&u| u > y1)
+    };
+    s.nodes.clear();
+    s.slots[0].reset(a.triangles.len());
+    let mut below: Vec<u32> = std::mem::take(&mut s.queue);
+    below.clear();
+    let mut box_tests = 0;
+    a.tree.visit(
+        |obb| {
+            box_tests += 1;
+            let reach: f64 = (0..3)
+                .map(|i| obb.half_extents[i] * n.dot(&obb.axes.column(i)).abs())
+                .sum();
+            height(&obb.center) - reach <= 0.0
+        },
+        |t| below.push(t),
+    );
+    work.bounding_volume_tests += box_tests;
+    for &t in &below {
+        work.primitive_tests += 1;
+        let c = a.corners(t);
+        if c.iter().any(|v| height(v) <= 0.0) && !(bounded && beyond(&c)) {
+            let crossing = c.iter().any(|v| height(v) > 0.0);
+            new_node(s, 0, t, crossing);
+        }
+    }
+    s.queue = below;
+    for id in 0..s.nodes.len() {
+        let tri = s.nodes[id].tri;
+        for &nb in &a.neighbors[tri as usize] {
+            if nb != NO_NEIGHBOR {
+                if let Some(other) = s.slots[0].get(nb) {
+                    union(&mut s.nodes, id as u32, other);
+                }
+            }
+        }
+    }
+    let count = label_regions(s);
+    s.regions.clear();
+    s.regions.resize(count, RegionSums::default());
+    // Waterline loops, oriented along n_tri × n_plane as mesh–mesh segments are.
+    for node in &s.nodes {
+        if !node.crossing {
+            continue;
+        }
+        let c = a.corners(node.tri);
+        let h = c.map(|v| height(&v));
+        let mut pts = [Vector3::zeros(); 2];
+        let mut k = 0;
+        for i in 0..3 {
+            let j = (i + 1) % 3;
+            if (h[i] <= 0.0) != (h[j] <= 0.0) && k < 2 {
+                pts[k] = c[i] + (c[j] - c[i]) * (h[i] / (h[i] - h[j]));
+                k += 1;
+            }
+        }
+        if k < 2 {
+            continue;
+        }
+        let dir = a.face_normals[node.tri as usize].cross(&n);
+        if (pts[1] - pts[0]).dot(&dir) < 0.0 {
+            pts.swap(0, 1);
+        }
+        let r = &mut s.regions[node.region as usize];
+        if !r.seen {
+            r.seen = true;
+            r.reference = pts[0];
+        }
+        r.vector_area += 0.5 * (pts[0] - r.reference).cross(&(pts[1] - r.reference));
+        let len = (pts[1] - pts[0]).norm();
+        r.loop_length += len;
+        r.loop_moment += len * 0.5 * (pts[0] + pts[1]);
+    }
+    let Scratch {
+        nodes,
+        regions,
+        polygon,
+        polygon_next,
+        ..
+    } = s;
+    for r in regions.iter_mut() {
+        let a_point = if r.loop_length > 0.0 {
+            r.loop_moment / r.loop_length
+        } else {
+            a.centroid.coords
+        };
+        r.apex = a_point - n * height(&a_point);
+    }
+    for node in nodes.iter() {
+        polygon.clear();
+        polygon.extend_from_slice(&a.corners(node.tri));
+        if node.crossing {
+            clip(polygon, polygon_next, &n, &origin);
+            std::mem::swap(polygon, polygon_next);
+        }
+        let r = &mut regions[node.region as usize];
+        add_polygon(r, polygon);
+        let mut vector_area = Vector3::zeros();
+        for k in 1..polygon.len().saturating_sub(1) {
+            vector_area += 0.5 * (polygon[k] - polygon[0]).cross(&(polygon[k + 1] - polygon[0]));
+        }
+        r.down_area += (-vector_area.dot(&n)).max(0.0);
+    }
+    for r in regions.iter_mut() {
+        r.centroid = if r.volume > 0.0 {
+            r.apex + r.volume_moment / r.volume
+        } else {
+            r.apex
+        };
+        r.best_i = (f64::INFINITY, r.centroid, u32::MAX);
+    }
+    for node in nodes.iter() {
+        let r = &mut regions[node.region as usize];
+        let p = a.closest_on_triangle(node.tri, &r.centroid);
+        let d = (p - r.centroid).norm_squared();
+        if d < r.best_i.0 {
+            r.best_i = (d, p, node.tri);
+        }
+    }
+    for r in regions.iter() {
+        let g = r.centroid;
+        let point_j = g - n * height(&g);
+        let point_i = if r.best_i.2 == u32::MAX {
+            r.best_i.1
+        } else {
+            a.lift_to_surface(r.best_i.2, &r.best_i.1)
+        };
+        let loop_area = r.vector_area.norm();
+        out.push(LocalContact {
+            point_i,
+            point_j,
+            normal: n,
+            penetration: (point_j - point_i).norm(),
+            area: if r.loop_length > 0.0 {
+                loop_area
+            } else {
+                r.down_area
+            },
+        });
+    }
+}

@@ -1,0 +1,130 @@
+//! A prepared CONTACT: the I and J lists' meshes and half-spaces, queried at poses.
+
+use crate::contact_region::{LocalContact, mesh_mesh};
+use crate::facet_mesh::FacetMesh;
+use crate::plane_contact::mesh_plane;
+use crate::scratch::with_scratch;
+use contact_core::geometry::Plane;
+use contact_core::{
+    Contact, Isometry3, Point3, PreparedPair, PreparedStats, QueryError, WorkCounters,
+};
+use std::sync::Arc;
+
+/// What one geometry became.
+#[derive(Debug, Clone)]
+pub enum Shape {
+    /// A closed (or accepted open) triangle mesh with its tree.
+    Mesh(Arc<FacetMesh>),
+    /// A half-space, kept exact.
+    HalfSpace(Plane),
+}
+
+/// One prepared entry of an I or J list.
+#[derive(Debug, Clone)]
+pub struct PreparedGeometry {
+    /// The mesh or half-space, in the geometry frame `G`.
+    pub shape: Shape,
+    /// `X_PG`.
+    pub pose_part_geometry: Isometry3,
+    /// The label for messages.
+    pub label: String,
+}
+
+/// The faceted engine's [`PreparedPair`].
+#[derive(Debug, Clone)]
+pub struct PreparedFacetPair {
+    i: Vec<PreparedGeometry>,
+    j: Vec<PreparedGeometry>,
+}
+
+impl PreparedFacetPair {
+    /// Wraps prepared lists (see [`crate::FacetEngine`]).
+    pub fn new(i: Vec<PreparedGeometry>, j: Vec<PreparedGeometry>) -> Self {
+        Self { i, j }
+    }
+
+    /// The prepared I list.
+    pub fn i_list(&self) -> &[PreparedGeometry] {
+        &self.i
+    }
+
+    /// The prepared J list.
+    pub fn j_list(&self) -> &[PreparedGeometry] {
+        &self.j
+    }
+}
+
+fn to_world(pose: &Isometry3, c: &LocalContact, gi: usize, gj: usize) -> Contact {
+    Contact {
+        point_i_w: pose * Point3::from(c.point_i),
+        point_j_w: pose * Point3::from(c.point_j),
+        normal_w: pose.rotation * c.normal,
+        penetration: c.penetration,
+        area: c.area,
+        geometry_i: gi as u32,
+        geometry_j: gj as u32,
+    }
+}
+
+impl PreparedPair for PreparedFacetPair {
+    fn query(
+        &self,
+        pose_world_i: &Isometry3,
+        pose_world_j: &Isometry3,
+        contacts: &mut Vec<Contact>,
+        work: &mut WorkCounters,
+    ) -> Result<(), QueryError> {
+        QueryError::check_poses(pose_world_i, pose_world_j)?;
+        contacts.clear();
+        work.queries += 1;
+        with_scratch(|s| {
+            let mut local = std::mem::take(&mut s.local);
+            for (gi, a) in self.i.iter().enumerate() {
+                let pose_wa = pose_world_i * a.pose_part_geometry;
+                for (gj, b) in self.j.iter().enumerate() {
+                    work.geometry_pairs += 1;
+                    let pose_wb = pose_world_j * b.pose_part_geometry;
+                    local.clear();
+                    match (&a.shape, &b.shape) {
+                        (Shape::Mesh(ma), Shape::Mesh(mb)) => {
+                            let pose_ab = pose_wa.inv_mul(&pose_wb);
+                            mesh_mesh(ma, mb, &pose_ab, s, work, &mut local);
+                            contacts.extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
+                        }
+                        (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
+                            let pose_ab = pose_wa.inv_mul(&pose_wb);
+                            mesh_plane(ma, p, &pose_ab, s, work, &mut local);
+                            contacts.extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
+                        }
+                        (Shape::HalfSpace(p), Shape::Mesh(mb)) => {
+                            let pose_ba = pose_wb.inv_mul(&pose_wa);
+                            mesh_plane(mb, p, &pose_ba, s, work, &mut local);
+                            contacts.extend(
+                                local
+                                    .iter()
+                                    .map(|c| to_world(&pose_wb, c, gj, gi).swapped()),
+                            );
+                        }
+                        // `supports` rejects PLANE against PLANE before prepare builds anything.
+                        (Shape::HalfSpace(_), Shape::HalfSpace(_)) => {}
+                    }
+                }
+            }
+            s.local = local;
+        });
+        work.contacts += contacts.len() as u64;
+        Ok(())
+    }
+
+    fn stats(&self) -> PreparedStats {
+        let mut stats = PreparedStats::default();
+        for g in self.i.iter().chain(&self.j) {
+            stats.geometries += 1;
+            if let Shape::Mesh(m) = &g.shape {
+                stats.triangles += m.triangles.len();
+                stats.bytes += m.heap_bytes();
+            }
+        }
+        stats
+    }
+}

@@ -1,0 +1,130 @@
+//! STL input (ascii and binary, through `stl_io`): weld, then check the mesh bounds a solid.
+//!
+//! STL stores every triangle with its own three f32 corners. Corners closer than
+//! [`WELD_RELATIVE`] × the bounding-box diagonal are merged into one vertex (grid hashing with a
+//! cell of that size, checking the 27 neighbouring cells), then
+//! [`TriangleMesh::new`](contact_core::geometry::TriangleMesh::new) checks the mesh is closed,
+//! 2-manifold, consistently and outward oriented and free of zero-area facets (a facet whose
+//! corners weld together has zero area). Errors name the file.
+
+use contact_core::Point3;
+use contact_core::geometry::{MeshError, TriangleMesh};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+/// Corners within this fraction of the mesh's bounding-box diagonal are one vertex.
+pub const WELD_RELATIVE: f64 = 1e-7;
+
+/// Why an STL file could not be used.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum StlError {
+    /// The file could not be opened or parsed.
+    #[error("STL file '{path}': cannot read: {message}")]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// The reader's message.
+        message: String,
+    },
+    /// The triangles do not bound a solid (open, non-manifold, inconsistently oriented, inside
+    /// out, zero-area facets, too few triangles).
+    #[error("STL file '{path}': {source}")]
+    Mesh {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with the mesh.
+        source: MeshError,
+    },
+}
+
+/// A mesh read from STL, with any warnings (an accepted open mesh).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StlMesh {
+    /// The welded mesh.
+    pub mesh: TriangleMesh,
+    /// Warnings to show the user.
+    pub warnings: Vec<String>,
+}
+
+/// Reads an ascii or binary STL file. With `accept_open`, a mesh that is not closed is accepted
+/// with a warning (it then cannot be "inside" anything); every other defect is an error.
+pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
+    let read_error = |message: String| StlError::Read {
+        path: path.to_path_buf(),
+        message,
+    };
+    let mut file = std::fs::File::open(path).map_err(|e| read_error(e.to_string()))?;
+    let reader = stl_io::create_stl_reader(&mut file).map_err(|e| read_error(e.to_string()))?;
+    let mut corners: Vec<[Point3; 3]> = Vec::new();
+    for t in reader {
+        let t = t.map_err(|e| read_error(e.to_string()))?;
+        corners.push(
+            t.vertices
+                .map(|v| Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))),
+        );
+    }
+    let (vertices, triangles) = weld(&corners);
+    let mesh_error = |source| StlError::Mesh {
+        path: path.to_path_buf(),
+        source,
+    };
+    match TriangleMesh::new(vertices.clone(), triangles.clone()) {
+        Ok(mesh) => Ok(StlMesh {
+            mesh,
+            warnings: Vec::new(),
+        }),
+        Err(e @ MeshError::Open { .. }) if accept_open => {
+            let mesh = TriangleMesh::new_open(vertices, triangles).map_err(mesh_error)?;
+            Ok(StlMesh {
+                mesh,
+                warnings: vec![format!(
+                    "STL file '{}': accepted although {e}; it cannot contain another body",
+                    path.display()
+                )],
+            })
+        }
+        Err(e) => Err(mesh_error(e)),
+    }
+}
+
+/// Merges corners closer than [`WELD_RELATIVE`] × the bounding-box diagonal.
+pub fn weld(corners: &[[Point3; 3]]) -> (Vec<Point3>, Vec<[u32; 3]>) {
+    let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
+    let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for p in corners.iter().flatten() {
+        lo = lo.inf(p);
+        hi = hi.sup(p);
+    }
+    let tol = (WELD_RELATIVE * (hi - lo).norm()).max(f64::MIN_POSITIVE);
+    let cell = |p: &Point3| -> [i64; 3] {
+        [0, 1, 2].map(|k| ((p[k] - lo[k]) / tol).floor().clamp(-1e18, 1e18) as i64)
+    };
+    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+    let mut vertices: Vec<Point3> = Vec::new();
+    let mut triangles = Vec::with_capacity(corners.len());
+    for tri in corners {
+        let ids = tri.map(|p| {
+            let c = cell(&p);
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    for dz in -1..=1 {
+                        if let Some(list) = grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]) {
+                            for &v in list {
+                                if (vertices[v as usize] - p).norm() <= tol {
+                                    return v;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            let id = vertices.len() as u32;
+            vertices.push(p);
+            grid.entry(c).or_default().push(id);
+            id
+        });
+        triangles.push(ids);
+    }
+    (vertices, triangles)
+}

@@ -1,0 +1,160 @@
+//! Triangle–triangle intersection with the intersection segment (Möller 1997, "A fast
+//! triangle-triangle intersection test", with the interval step done on points).
+//!
+//! Each triangle's vertices are classified against the other's plane by signed distance. A
+//! distance within `PLANE_EPS · |edge|max` of zero counts as *on* the plane, so vertices on a
+//! plane, shared edges and touching vertices all take the on-plane branch consistently (the
+//! same tolerance for both triangles, relative to the pair's size). Degenerate outcomes:
+//! - both triangles in one plane: [`TrianglePair::Coplanar`] when their 2-D projections overlap
+//!   (an area contact; it bounds no volume, so contact regions ignore it);
+//! - a single touching point: a zero-length segment.
+
+use contact_core::Vector3;
+
+/// Relative tolerance for "on the plane": 1e-12 of the pair's longest edge.
+pub const PLANE_EPS: f64 = 1e-12;
+
+/// The outcome of a triangle–triangle test.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TrianglePair {
+    /// The closed triangles do not meet.
+    Disjoint,
+    /// They cross along this segment, oriented along `n_p × n_q` (the normals of the first and
+    /// second triangle, counter-clockwise).
+    Segment(Vector3, Vector3),
+    /// They lie in one plane and overlap.
+    Coplanar,
+}
+
+/// Signed distances of `p`'s vertices to the plane of `q` (normal `n`, through `q0`), with values
+/// within `eps` snapped to zero.
+#[inline]
+fn distances(p: &[Vector3; 3], n: &Vector3, q0: &Vector3, eps: f64) -> [f64; 3] {
+    p.map(|v| {
+        let d = n.dot(&(v - q0));
+        if d.abs() <= eps { 0.0 } else { d }
+    })
+}
+
+#[inline]
+fn same_side(d: &[f64; 3]) -> bool {
+    (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0)
+}
+
+/// Intersects triangles `p` and `q` (vertices in one frame).
+pub fn intersect(p: &[Vector3; 3], q: &[Vector3; 3]) -> TrianglePair {
+    let np = (p[1] - p[0]).cross(&(p[2] - p[0]));
+    let nq = (q[1] - q[0]).cross(&(q[2] - q[0]));
+    let scale = [
+        p[1] - p[0],
+        p[2] - p[1],
+        p[0] - p[2],
+        q[1] - q[0],
+        q[2] - q[1],
+        q[0] - q[2],
+    ]
+    .iter()
+    .map(|e| e.norm_squared())
+    .fold(0.0, f64::max)
+    .sqrt();
+    let dp = distances(p, &nq, &q[0], PLANE_EPS * scale * nq.norm());
+    if same_side(&dp) {
+        return TrianglePair::Disjoint;
+    }
+    let dq = distances(q, &np, &p[0], PLANE_EPS * scale * np.norm());
+    if same_side(&dq) {
+        return TrianglePair::Disjoint;
+    }
+    if dp == [0.0; 3] || dq == [0.0; 3] {
+        return if coplanar_overlap(p, q, &np) {
+            TrianglePair::Coplanar
+        } else {
+            TrianglePair::Disjoint
+        };
+    }
+    let dir = np.cross(&nq);
+    let (Some((a0, a1)), Some((b0, b1))) = (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
+    else {
+        return TrianglePair::Disjoint;
+    };
+    // Both cuts lie on the line of the two planes: overlap their intervals along `dir`.
+    let (sa0, sa1, sb0, sb1) = (a0.dot(&dir), a1.dot(&dir), b0.dot(&dir), b1.dot(&dir));
+    if sa1 < sb0 || sb1 < sa0 {
+        return TrianglePair::Disjoint;
+    }
+    let start = if sa0 >= sb0 { a0 } else { b0 };
+    let end = if sa1 <= sb1 { a1 } else { b1 };
+    TrianglePair::Segment(start, end)
+}
+
+/// The segment where a triangle meets a plane, given its vertices' signed distances (not all
+/// zero, not all of one strict sign), ordered along `dir`.
+#[inline]
+fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(Vector3, Vector3)> {
+    let mut pts = [Vector3::zeros(); 4];
+    let mut n = 0;
+    for i in 0..3 {
+        let j = (i + 1) % 3;
+        if d[i] == 0.0 {
+            pts[n] = t[i];
+            n += 1;
+        }
+        if (d[i] > 0.0 && d[j] < 0.0) || (d[i] < 0.0 && d[j] > 0.0) {
+            pts[n] = t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j]));
+            n += 1;
+        }
+    }
+    if n == 0 {
+        return None;
+    }
+    let (mut lo, mut hi) = (pts[0], pts[0]);
+    let (mut slo, mut shi) = (lo.dot(dir), lo.dot(dir));
+    for p in &pts[1..n] {
+        let s = p.dot(dir);
+        if s < slo {
+            slo = s;
+            lo = *p;
+        }
+        if s > shi {
+            shi = s;
+            hi = *p;
+        }
+    }
+    Some((lo, hi))
+}
+
+/// Overlap of two triangles in one plane (normal `n`): project on the plane's dominant axes and
+/// test edges for crossings, then containment of one vertex.
+fn coplanar_overlap(p: &[Vector3; 3], q: &[Vector3; 3], n: &Vector3) -> bool {
+    let drop = n.abs().imax();
+    let (i, j) = ((drop + 1) % 3, (drop + 2) % 3);
+    let pp = p.map(|v| [v[i], v[j]]);
+    let qq = q.map(|v| [v[i], v[j]]);
+    for a in 0..3 {
+        for b in 0..3 {
+            if segments_cross(pp[a], pp[(a + 1) % 3], qq[b], qq[(b + 1) % 3]) {
+                return true;
+            }
+        }
+    }
+    inside_2d(&pp, qq[0]) || inside_2d(&qq, pp[0])
+}
+
+fn orient_2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+fn segments_cross(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let (o1, o2) = (orient_2d(a, b, c), orient_2d(a, b, d));
+    let (o3, o4) = (orient_2d(c, d, a), orient_2d(c, d, b));
+    o1 * o2 <= 0.0 && o3 * o4 <= 0.0 && !(o1 == 0.0 && o2 == 0.0 && o3 == 0.0 && o4 == 0.0)
+}
+
+fn inside_2d(t: &[[f64; 2]; 3], p: [f64; 2]) -> bool {
+    let s = [
+        orient_2d(t[0], t[1], p),
+        orient_2d(t[1], t[2], p),
+        orient_2d(t[2], t[0], p),
+    ];
+    (s[0] >= 0.0 && s[1] >= 0.0 && s[2] >= 0.0) || (s[0] <= 0.0 && s[1] <= 0.0 && s[2] <= 0.0)
+}

@@ -1,0 +1,9 @@
+//! Integration tests of the faceted engine (one binary, modules inside).
+
+mod common;
+mod convergence;
+mod engine;
+mod stl_files;
+mod tessellation;
+mod threads;
+mod triangles;
