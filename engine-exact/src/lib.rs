@@ -50,6 +50,7 @@
 //! - [`dispatch`]: geometry pair → kernel, in the canonical order of `GeometryKind`.
 //! - [`pairs`]: 3-D pair families, one file each; [`polyhedron`]: exact convex clipping.
 //! - [`planar`]: 2-D pairs, computed in J's plane.
+//! - [`quadrature`]: Gauss–Legendre rules for the pairs without a short closed form.
 //! - [`parry_adapter`]: every parry call, for the side-by-side benches only.
 #![cfg_attr(
     not(test),
