@@ -15,7 +15,9 @@
 //! the model-wide value is. Every run reports the [`EngineSelection`] it used, with where each
 //! value came from.
 
-use contact_core::{FacetingTolerance, GeometryEngine, GeometryLibrary, InvalidArgument, Preferences};
+use contact_core::{
+    FacetingTolerance, GeometryEngine, GeometryLibrary, InvalidArgument, Preferences,
+};
 use std::fmt;
 
 /// The environment variable naming the geometry library.
@@ -71,7 +73,12 @@ pub struct EngineSelection {
 
 impl fmt::Display for EngineSelection {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "engine: {} ({})", self.library.name(), self.library_source)?;
+        write!(
+            f,
+            "engine: {} ({})",
+            self.library.name(),
+            self.library_source
+        )?;
         if self.library == GeometryLibrary::Faceted {
             write!(
                 f,
@@ -104,7 +111,10 @@ pub fn resolve(
     let env_library = environment(LIBRARY_VARIABLE)
         .map(|v| GeometryLibrary::parse(&v))
         .transpose()
-        .map_err(|source| EnvironmentError { variable: LIBRARY_VARIABLE, source })?;
+        .map_err(|source| EnvironmentError {
+            variable: LIBRARY_VARIABLE,
+            source,
+        })?;
     let env_tolerance = environment(TOLERANCE_VARIABLE)
         .map(|v| {
             let number: f64 = v.trim().parse().map_err(|_| {
@@ -113,7 +123,10 @@ pub fn resolve(
             FacetingTolerance::new(number)
         })
         .transpose()
-        .map_err(|source| EnvironmentError { variable: TOLERANCE_VARIABLE, source })?;
+        .map_err(|source| EnvironmentError {
+            variable: TOLERANCE_VARIABLE,
+            source,
+        })?;
     let (library, library_source) = first(
         overrides.library,
         env_library,
@@ -126,7 +139,12 @@ pub fn resolve(
         dataset.map(|p| p.faceting_tolerance),
         FacetingTolerance::DEFAULT,
     );
-    Ok(EngineSelection { library, library_source, faceting_tolerance, tolerance_source })
+    Ok(EngineSelection {
+        library,
+        library_source,
+        faceting_tolerance,
+        tolerance_source,
+    })
 }
 
 fn first<T>(over: Option<T>, env: Option<T>, dataset: Option<T>, default: T) -> (T, Source) {
@@ -137,7 +155,10 @@ fn first<T>(over: Option<T>, env: Option<T>, dataset: Option<T>, default: T) -> 
 }
 
 /// Builds the engine for a library and model-wide tolerance.
-pub fn build_engine(library: GeometryLibrary, tolerance: FacetingTolerance) -> Box<dyn GeometryEngine> {
+pub fn build_engine(
+    library: GeometryLibrary,
+    tolerance: FacetingTolerance,
+) -> Box<dyn GeometryEngine> {
     match library {
         GeometryLibrary::Exact => Box::new(engine_exact::ExactEngine),
         GeometryLibrary::Faceted => Box::new(engine_facet::FacetEngine::new(tolerance)),
@@ -149,7 +170,12 @@ mod tests {
     use super::*;
 
     fn env(pairs: &'static [(&'static str, &'static str)]) -> impl Fn(&str) -> Option<String> {
-        move |k| pairs.iter().find(|(name, _)| *name == k).map(|(_, v)| v.to_string())
+        move |k| {
+            pairs
+                .iter()
+                .find(|(name, _)| *name == k)
+                .map(|(_, v)| v.to_string())
+        }
     }
 
     #[test]
@@ -160,29 +186,62 @@ mod tests {
             threads: None,
         };
         let none = resolve(&Overrides::default(), &env(&[]), None).unwrap();
-        assert_eq!((none.library, none.library_source), (GeometryLibrary::Faceted, Source::Default));
+        assert_eq!(
+            (none.library, none.library_source),
+            (GeometryLibrary::Faceted, Source::Default)
+        );
         assert_eq!(none.faceting_tolerance, FacetingTolerance::DEFAULT);
         let from_dataset = resolve(&Overrides::default(), &env(&[]), Some(&dataset)).unwrap();
-        assert_eq!((from_dataset.library, from_dataset.library_source), (GeometryLibrary::Exact, Source::Dataset));
-        let e = env(&[("CONTACT_GEOMETRY_LIBRARY", "rapid"), ("MDI_FACETING_TOLERANCE", "500")]);
+        assert_eq!(
+            (from_dataset.library, from_dataset.library_source),
+            (GeometryLibrary::Exact, Source::Dataset)
+        );
+        let e = env(&[
+            ("CONTACT_GEOMETRY_LIBRARY", "rapid"),
+            ("MDI_FACETING_TOLERANCE", "500"),
+        ]);
         let from_env = resolve(&Overrides::default(), &e, Some(&dataset)).unwrap();
-        assert_eq!((from_env.library, from_env.library_source), (GeometryLibrary::Faceted, Source::Environment));
+        assert_eq!(
+            (from_env.library, from_env.library_source),
+            (GeometryLibrary::Faceted, Source::Environment)
+        );
         assert_eq!(from_env.faceting_tolerance.value(), 500.0);
-        let over = Overrides { library: Some(GeometryLibrary::Exact), faceting_tolerance: None };
+        let over = Overrides {
+            library: Some(GeometryLibrary::Exact),
+            faceting_tolerance: None,
+        };
         let from_override = resolve(&over, &e, Some(&dataset)).unwrap();
-        assert_eq!((from_override.library, from_override.library_source), (GeometryLibrary::Exact, Source::Override));
+        assert_eq!(
+            (from_override.library, from_override.library_source),
+            (GeometryLibrary::Exact, Source::Override)
+        );
         assert_eq!(from_override.tolerance_source, Source::Environment);
-        assert_eq!(from_env.to_string(), "engine: faceted (environment), faceting tolerance 500 (environment)");
+        assert_eq!(
+            from_env.to_string(),
+            "engine: faceted (environment), faceting tolerance 500 (environment)"
+        );
     }
 
     #[test]
     fn bad_environment_values_are_errors_naming_the_variable() {
-        let e = resolve(&Overrides::default(), &env(&[("MDI_FACETING_TOLERANCE", "fine")]), None).unwrap_err();
+        let e = resolve(
+            &Overrides::default(),
+            &env(&[("MDI_FACETING_TOLERANCE", "fine")]),
+            None,
+        )
+        .unwrap_err();
         assert_eq!(
             e.to_string(),
             "environment variable MDI_FACETING_TOLERANCE: FACETING_TOLERANCE = fine is out of range: must be a number > 0"
         );
-        let e = resolve(&Overrides::default(), &env(&[("CONTACT_GEOMETRY_LIBRARY", "acis")]), None).unwrap_err();
-        assert!(e.to_string().starts_with("environment variable CONTACT_GEOMETRY_LIBRARY: CONTACT_GEOMETRY_LIBRARY = acis"));
+        let e = resolve(
+            &Overrides::default(),
+            &env(&[("CONTACT_GEOMETRY_LIBRARY", "acis")]),
+            None,
+        )
+        .unwrap_err();
+        assert!(e.to_string().starts_with(
+            "environment variable CONTACT_GEOMETRY_LIBRARY: CONTACT_GEOMETRY_LIBRARY = acis"
+        ));
     }
 }

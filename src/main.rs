@@ -10,8 +10,10 @@ use std::process::ExitCode;
 #[derive(Debug, Parser)]
 #[command(name = "contact", version, about)]
 struct Cli {
+    /// What to do; without a subcommand, `contact` runs the built-in example (a ball dropped on
+    /// a plane) and says where its results are.
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -66,7 +68,27 @@ fn exit(code: std::io::Result<u8>) -> ExitCode {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let mut stdout = std::io::stdout().lock();
-    match cli.command {
+    let command = cli.command.unwrap_or_else(|| {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("examples")
+            .join("ball");
+        eprintln!(
+            "contact: no subcommand given; running the built-in example {}",
+            dir.join("ball.adm").display()
+        );
+        eprintln!("(`contact --help` lists the commands)");
+        Command::Run(cli::run::RunArgs {
+            model: dir.join("ball.adm"),
+            commands: Some(dir.join("ball.acf")),
+            engine: None,
+            faceting_tolerance: None,
+            end: None,
+            dtout: None,
+            steps: None,
+            out: Some(std::path::PathBuf::from("out").join("ball")),
+        })
+    });
+    match command {
         Command::Run(args) => exit(cli::run::run(&args, &mut stdout, &mut std::io::stderr())),
         Command::Check(args) => exit(cli::check::run(&args, &mut stdout).map(|c| u8::from(c != 0))),
         Command::Query(args) => match cli::query::run(&args, &mut stdout, &mut std::io::stderr()) {
@@ -76,10 +98,30 @@ fn main() -> ExitCode {
                 ExitCode::from(1)
             }
         },
-        Command::Tradeoff { scenes, tolerances, rounds, json, csv, plot } => {
-            let args = cli::tradeoff::TradeoffArgs { scenes, tolerances, rounds, json, csv, plot };
+        Command::Tradeoff {
+            scenes,
+            tolerances,
+            rounds,
+            json,
+            csv,
+            plot,
+        } => {
+            let args = cli::tradeoff::TradeoffArgs {
+                scenes,
+                tolerances,
+                rounds,
+                json,
+                csv,
+                plot,
+            };
             let mut progress = |label: &str| eprintln!("measuring {label}");
-            match cli::tradeoff::run(&args, &contact::engine_choice::build_engine, &[], &mut stdout, &mut progress) {
+            match cli::tradeoff::run(
+                &args,
+                &contact::engine_choice::build_engine,
+                &[],
+                &mut stdout,
+                &mut progress,
+            ) {
                 Ok(_) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -87,12 +129,14 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::Scenes { names, answers } => match cli::scenes::run(&names, answers, &mut stdout) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(1)
+        Command::Scenes { names, answers } => {
+            match cli::scenes::run(&names, answers, &mut stdout) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(1)
+                }
             }
-        },
+        }
     }
 }

@@ -24,16 +24,14 @@ pub struct CheckArgs {
     pub engine: Option<String>,
 }
 
-/// The geometry engine for `library`, or `None` while no engine is linked into this build.
-///
-/// The engines (`engine-exact`, `engine-facet`) are built on other branches; this function is
-/// the one place to wire them in. Until then `contact check` reports that pair support was not
-/// checked (a warning), and tests check the logic with their own engine through
-/// [`check_contacts`].
+/// The geometry engine for `library` (the model-wide tolerance does not change which pairs an
+/// engine supports, so the default is used). `None` is kept for callers that check without an
+/// engine: the report then says pair checking needs one.
 pub fn engine_for(library: GeometryLibrary) -> Option<Box<dyn GeometryEngine>> {
-    match library {
-        GeometryLibrary::Exact | GeometryLibrary::Faceted => None,
-    }
+    Some(crate::engine_choice::build_engine(
+        library,
+        contact_core::FacetingTolerance::DEFAULT,
+    ))
 }
 
 /// A closed tetrahedron standing in for a mesh file that is not read here. Engines decide

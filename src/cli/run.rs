@@ -56,7 +56,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     for d in &loaded.diagnostics {
         writeln!(err, "{d}")?;
     }
-    if loaded.diagnostics.iter().any(|d| d.severity == Severity::Error) {
+    if loaded
+        .diagnostics
+        .iter()
+        .any(|d| d.severity == Severity::Error)
+    {
         writeln!(err, "the model has errors: nothing was run")?;
         return Ok(1);
     }
@@ -68,7 +72,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
             return Ok(1);
         }
     };
-    let selection = match engine_choice::resolve(&overrides, &|k| std::env::var(k).ok(), Some(&model.preferences)) {
+    let selection = match engine_choice::resolve(
+        &overrides,
+        &|k| std::env::var(k).ok(),
+        Some(&model.preferences),
+    ) {
         Ok(s) => s,
         Err(e) => {
             writeln!(err, "error: {e}")?;
@@ -90,14 +98,20 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     let prepare_started = Instant::now();
     let meshes = |file: &crate::model::MeshFile| -> Result<GeometryInstance, String> {
         let stl = engine_facet::stl::read_stl(&file.path, false).map_err(|e| e.to_string())?;
-        let mut instance = GeometryInstance::new(contact_core::Geometry::Mesh(std::sync::Arc::new(stl.mesh)))
-            .at(file.pose_part_geometry)
-            .labeled(file.label.clone());
+        let mut instance =
+            GeometryInstance::new(contact_core::Geometry::Mesh(std::sync::Arc::new(stl.mesh)))
+                .at(file.pose_part_geometry)
+                .labeled(file.label.clone());
         instance.flip_normal = file.flip_normal;
         instance.faceting_tolerance = file.faceting_tolerance;
         Ok(instance)
     };
-    let LoweredModel { mut system, contacts, parts, .. } = match lower(model, engine.as_ref(), Analysis::Dynamics, &meshes) {
+    let LoweredModel {
+        mut system,
+        contacts,
+        parts,
+        ..
+    } = match lower(model, engine.as_ref(), Analysis::Dynamics, &meshes) {
         Ok(l) => l,
         Err(e) => {
             writeln!(err, "{e}")?;
@@ -106,14 +120,24 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     };
     let prepare_s = prepare_started.elapsed().as_secs_f64();
     let dir = args.out.clone().unwrap_or_else(|| {
-        PathBuf::from("out").join(args.model.file_stem().map_or_else(|| "model".into(), |s| s.to_string_lossy().into_owned()))
+        PathBuf::from("out").join(
+            args.model
+                .file_stem()
+                .map_or_else(|| "model".into(), |s| s.to_string_lossy().into_owned()),
+        )
     });
-    let names: Vec<String> = model.contacts.iter().map(|c| format!("CONTACT/{}", c.id)).collect();
+    let names: Vec<String> = model
+        .contacts
+        .iter()
+        .map(|c| format!("CONTACT/{}", c.id))
+        .collect();
     let mut writer = ResultWriter::create(&dir, parts, names)?;
     let started = Instant::now();
     let mut write_error = None;
     let result = simulate(&mut system, &contacts, &settings, &mut |frame| {
-        writer.write(frame).inspect_err(|e| write_error = Some(e.to_string()))
+        writer
+            .write(frame)
+            .inspect_err(|e| write_error = Some(e.to_string()))
     });
     let wall = started.elapsed().as_secs_f64();
     let mut work = WorkCounters::default();
@@ -164,7 +188,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
                 summary.integrator.jacobian_evaluations,
                 summary.largest_entry_penetration
             )?;
-            writeln!(out, "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg)", writer.dir().display())?;
+            writeln!(
+                out,
+                "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg)",
+                writer.dir().display()
+            )?;
             Ok(0)
         }
         Err(e) => {
@@ -172,22 +200,41 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
             if let Some(w) = write_error {
                 writeln!(err, "error: writing results: {w}")?;
             }
-            writeln!(err, "results up to the failure are in {} ({} files)", writer.dir().display(), files.len() + 3)?;
+            writeln!(
+                err,
+                "results up to the failure are in {} ({} files)",
+                writer.dir().display(),
+                files.len() + 3
+            )?;
             Ok(1)
         }
     }
 }
 
 fn overrides(args: &RunArgs) -> Result<Overrides, String> {
-    let library = args.engine.as_deref().map(GeometryLibrary::parse).transpose().map_err(|e| format!("--engine: {e}"))?;
-    let faceting_tolerance =
-        args.faceting_tolerance.map(FacetingTolerance::new).transpose().map_err(|e| format!("--faceting-tolerance: {e}"))?;
-    Ok(Overrides { library, faceting_tolerance })
+    let library = args
+        .engine
+        .as_deref()
+        .map(GeometryLibrary::parse)
+        .transpose()
+        .map_err(|e| format!("--engine: {e}"))?;
+    let faceting_tolerance = args
+        .faceting_tolerance
+        .map(FacetingTolerance::new)
+        .transpose()
+        .map_err(|e| format!("--faceting-tolerance: {e}"))?;
+    Ok(Overrides {
+        library,
+        faceting_tolerance,
+    })
 }
 
 /// The dynamics span and integrator settings from the command file's SIMULATE commands (or
 /// the flags), with notes on anything interpreted.
-fn dynamics_settings(model: &Model, args: &RunArgs) -> Result<(DynamicsSettings, Vec<String>), String> {
+fn dynamics_settings(
+    model: &Model,
+    args: &RunArgs,
+) -> Result<(DynamicsSettings, Vec<String>), String> {
     let mut notes = Vec::new();
     let mut integrator = convert(&model.integrator)?;
     let mut end = None;
@@ -196,10 +243,18 @@ fn dynamics_settings(model: &Model, args: &RunArgs) -> Result<(DynamicsSettings,
     for (origin, command) in &model.commands {
         match command {
             Command::Integrator(s) => integrator = convert(s)?,
-            Command::Simulate { analysis, span, output: steps } => {
+            Command::Simulate {
+                analysis,
+                span,
+                output: steps,
+            } => {
                 match analysis {
                     ModelAnalysis::Dynamics | ModelAnalysis::Transient => {}
-                    other => return Err(format!("{origin}: SIMULATE/{other:?} is not supported yet: only dynamics runs")),
+                    other => {
+                        return Err(format!(
+                            "{origin}: SIMULATE/{other:?} is not supported yet: only dynamics runs"
+                        ));
+                    }
                 }
                 let stop = match span {
                     Some(SimulationSpan::End(t)) => *t,
@@ -207,17 +262,24 @@ fn dynamics_settings(model: &Model, args: &RunArgs) -> Result<(DynamicsSettings,
                     None => return Err(format!("{origin}: SIMULATE needs END or DURATION")),
                 };
                 if end.is_some() {
-                    notes.push(format!("{origin}: consecutive SIMULATE commands run as one span to END = {stop}"));
+                    notes.push(format!(
+                        "{origin}: consecutive SIMULATE commands run as one span to END = {stop}"
+                    ));
                 }
                 time = stop;
                 end = Some(stop);
                 output = output.or(*steps);
             }
             Command::Stop => break,
-            other => notes.push(format!("{origin}: {other:?} is not applied by this solver yet: it is ignored")),
+            other => notes.push(format!(
+                "{origin}: {other:?} is not applied by this solver yet: it is ignored"
+            )),
         }
     }
-    let end = args.end.or(end).ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
+    let end = args
+        .end
+        .or(end)
+        .ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
     let output_step = match (args.dtout, args.steps, output) {
         (Some(dt), _, _) => dt,
         (None, Some(n), _) => end / f64::from(n.max(1)),
@@ -228,14 +290,26 @@ fn dynamics_settings(model: &Model, args: &RunArgs) -> Result<(DynamicsSettings,
             end / 100.0
         }
     };
-    Ok((DynamicsSettings { start: 0.0, end, output_step, integrator }, notes))
+    Ok((
+        DynamicsSettings {
+            start: 0.0,
+            end,
+            output_step,
+            integrator,
+        },
+        notes,
+    ))
 }
 
 fn convert(s: &crate::model::IntegratorSettings) -> Result<IntegratorSettings, String> {
     let corrector = match s.corrector.as_deref() {
         None | Some("MODIFIED") => Corrector::Modified,
         Some("ORIGINAL") | Some("FULL") => Corrector::Full,
-        Some(other) => return Err(format!("INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)")),
+        Some(other) => {
+            return Err(format!(
+                "INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)"
+            ));
+        }
     };
     let settings = IntegratorSettings {
         error: s.error,
@@ -246,6 +320,8 @@ fn convert(s: &crate::model::IntegratorSettings) -> Result<IntegratorSettings, S
         maxit: s.maxit as usize,
         corrector,
     };
-    settings.validate().map_err(|e| format!("INTEGRATOR: {e}"))?;
+    settings
+        .validate()
+        .map_err(|e| format!("INTEGRATOR: {e}"))?;
     Ok(settings)
 }

@@ -227,11 +227,19 @@ fn check_prints_a_summary_and_exits_1_on_errors() {
         run_with(&args(path.clone()), &mut out, &engines).unwrap(),
         0
     );
-    // Without a linked engine the report says pair checking needs one.
+    // Without an engine the report says pair checking needs one.
+    let mut out = Vec::new();
+    assert_eq!(
+        run_with(&args(path.clone()), &mut out, &|_| None).unwrap(),
+        0
+    );
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("pair checking needs an engine"), "{text}");
+    // With the linked engines the pairs are checked.
     let mut out = Vec::new();
     assert_eq!(run(&args(path.clone()), &mut out).unwrap(), 0);
     let text = String::from_utf8(out).unwrap();
-    assert!(text.contains("pair checking needs an engine"), "{text}");
+    assert!(!text.contains("not checked"), "{text}");
     let mut out = Vec::new();
     let bad_engine = CheckArgs {
         engine: Some("ACIS".into()),
