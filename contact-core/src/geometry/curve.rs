@@ -41,6 +41,8 @@ pub struct Curve {
     order: usize,
     closed: bool,
     control: Vec<Point2>,
+    /// The control points as vectors, for allocation-free evaluation.
+    coords: Vec<Vector2>,
     knots: Vec<f64>,
     /// Control points of the first derivative (degree p − 1, knots `knots[1..len − 1]`).
     d1: Vec<Vector2>,
@@ -116,6 +118,7 @@ impl Curve {
             }
             (true, CurvePoints::Interpolated) => interpolate_closed(points, p)?,
         };
+        let coords: Vec<Vector2> = control.iter().map(|q| q.coords).collect();
         let d1 = derivative_points(
             &control.iter().map(|q| q.coords).collect::<Vec<_>>(),
             &knots,
@@ -130,6 +133,7 @@ impl Curve {
             order,
             closed,
             control,
+            coords,
             knots,
             d1,
             d2,
@@ -172,8 +176,12 @@ impl Curve {
 
     /// The point at parameter `u` (clamped to the domain).
     pub fn point(&self, u: f64) -> Point2 {
-        let coords: Vec<Vector2> = self.control.iter().map(|q| q.coords).collect();
-        Point2::from(de_boor(&coords, &self.knots, self.order - 1, self.clamp(u)))
+        Point2::from(de_boor(
+            &self.coords,
+            &self.knots,
+            self.order - 1,
+            self.clamp(u),
+        ))
     }
 
     /// The first derivative dC/du at `u` (clamped to the domain).
