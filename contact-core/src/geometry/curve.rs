@@ -119,11 +119,7 @@ impl Curve {
             (true, CurvePoints::Interpolated) => interpolate_closed(points, p)?,
         };
         let coords: Vec<Vector2> = control.iter().map(|q| q.coords).collect();
-        let d1 = derivative_points(
-            &control.iter().map(|q| q.coords).collect::<Vec<_>>(),
-            &knots,
-            p,
-        );
+        let d1 = derivative_points(&coords, &knots, p);
         let d2 = if p >= 2 {
             derivative_points(&d1, &knots[1..knots.len() - 1], p - 1)
         } else {
