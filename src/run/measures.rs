@@ -1,5 +1,5 @@
-//! Adams measures (DX … AZ) and VARVAL evaluated on the solver's state: the
-//! [`Context`](crate::expr::Context) SFORCE and VARIABLE expressions read.
+//! Adams measures (DX … AZ) and VARVAL evaluated on the solver's state: the expression
+//! [`crate::expr::Context`] that SFORCE and VARIABLE expressions read.
 //!
 //! Conventions (Adams): `DX(i, j, k)` is the x component of marker i's origin relative to
 //! marker j's, in marker k's axes (j and k default to ground); `VX(i, j, k)` the same for the

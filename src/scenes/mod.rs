@@ -66,7 +66,7 @@ pub const RELATIVE_DEPTHS: [f64; 7] = [-0.05, -1e-3, 1e-12, 1e-3, 0.01, 0.03, 0.
 pub const POSES_PER_DEPTH: usize = 3;
 
 /// The names of every scene in the suite, in order.
-pub const NAMES: [&str; 17] = [
+pub const NAMES: [&str; 20] = [
     "sphere_plane",
     "sphere_sphere",
     "ellipsoid_plane",
@@ -84,6 +84,9 @@ pub const NAMES: [&str; 17] = [
     "point_curve",
     "circle_curve",
     "curve_curve",
+    "mesh_sphere_10k",
+    "mesh_sphere_100k",
+    "mesh_torus",
 ];
 
 /// Every scene of the suite.
@@ -252,9 +255,84 @@ pub fn scene(name: &str) -> Option<Scene> {
             single(Geometry::Curve(Arc::new(cam()))),
             0.3,
         ),
+        "mesh_sphere_10k" => Scene::pair(
+            name,
+            "two triangle-mesh spheres of 9,800 triangles each (closed form of the true spheres)",
+            single(sphere_mesh(1.0, 100)),
+            single(sphere_mesh(0.7, 100)),
+            0.7,
+            free,
+        )
+        .with_closed_form(mesh_spheres),
+        "mesh_sphere_100k" => Scene::pair(
+            name,
+            "two triangle-mesh spheres of 99,224 triangles each (closed form of the true spheres)",
+            single(sphere_mesh(1.0, 316)),
+            single(sphere_mesh(0.7, 316)),
+            0.7,
+            free,
+        )
+        .with_closed_form(mesh_spheres),
+        "mesh_torus" => Scene::pair(
+            name,
+            "two triangle-mesh tori (no exact reference: timing and work only)",
+            single(torus_mesh(1.0, 0.3)),
+            single(torus_mesh(0.8, 0.25)),
+            0.25,
+            free,
+        ),
         _ => return None,
     };
     Some(s)
+}
+
+/// The radii of the mesh-sphere scenes' true spheres, I's first.
+const MESH_SPHERE_RADII: [f64; 2] = [1.0, 0.7];
+
+/// The true spheres' closed form for the mesh-sphere scenes (the meshes are inscribed in them,
+/// so their error is the faceting's).
+fn mesh_spheres(scene: &Scene, pose: &ScenePose) -> Vec<Contact> {
+    let [ri, rj] = MESH_SPHERE_RADII;
+    let spheres = Scene {
+        i: vec![GeometryInstance::new(Geometry::Ellipsoid(
+            Ellipsoid::sphere(ri).unwrap_or_else(|_| unreachable!()),
+        ))],
+        j: vec![GeometryInstance::new(Geometry::Ellipsoid(
+            Ellipsoid::sphere(rj).unwrap_or_else(|_| unreachable!()),
+        ))],
+        ..scene.clone()
+    };
+    sphere_sphere(&spheres, pose)
+}
+
+/// A UV-sphere mesh of radius `r` with `n` segments around (`2n(⌈n/2⌉ − 1)` triangles), from
+/// the faceted engine's tessellation.
+#[expect(
+    clippy::expect_used,
+    reason = "literal radii and segment counts, always a valid mesh"
+)]
+fn sphere_mesh(r: f64, n: u32) -> Geometry {
+    let sphere = Ellipsoid::sphere(r).expect("valid literal");
+    // The ellipsoid tessellation uses n(r, δ/2) segments: this δ gives exactly n.
+    let deviation = 2.0 * r * (1.0 - (std::f64::consts::PI / f64::from(n)).cos()) * (1.0 + 1e-9);
+    let t = engine_facet::tessellate::ellipsoid(&sphere, deviation);
+    let mesh = contact_core::geometry::TriangleMesh::new(t.vertices, t.triangles)
+        .expect("a closed tessellation");
+    Geometry::Mesh(Arc::new(mesh))
+}
+
+/// A torus mesh at the default faceting tolerance.
+#[expect(clippy::expect_used, reason = "literal radii, always a valid mesh")]
+fn torus_mesh(major: f64, minor: f64) -> Geometry {
+    let torus = Geometry::Torus(Torus::new(major, minor).expect("valid literal"));
+    let t = engine_facet::tessellate::tessellate(
+        &torus,
+        contact_core::FacetingTolerance::new(1000.0).expect("valid literal"),
+    )
+    .expect("a torus tessellates");
+    let mesh = contact_core::geometry::TriangleMesh::new(t.vertices, t.triangles)
+        .expect("a closed tessellation");
+    Geometry::Mesh(Arc::new(mesh))
 }
 
 fn single(g: Geometry) -> Vec<GeometryInstance> {
