@@ -7,7 +7,10 @@
 //! centred) moved onto ours (the pose is shifted accordingly), and a plane a `HalfSpace` with
 //! normal +z (−z when flipped).
 
-use contact_core::{Geometry, Isometry3, Point3, Vector3};
+use contact_core::{
+    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3, PrepareError, PreparedPair,
+    PreparedStats, QueryError, Unsupported, Vector3, WorkCounters,
+};
 use parry3d_f64::query;
 use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape};
 
@@ -126,6 +129,108 @@ pub fn contact_in_given_order(
         normal: -c.normal1.into_inner(),
         depth: -c.dist,
     })
+}
+
+/// parry as a peer engine: its `contact` query behind the same [`GeometryEngine`] trait, so the
+/// trade report measures it on the same scenes, poses and error definitions as ours. It
+/// answers what [`PeerShape`] can represent (spheres, boxes, cylinders, unbounded planes) with
+/// one contact per geometry pair: parry's deepest-point depth and normal, and no area (0).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ParryEngine;
+
+const PARRY: &str = "parry";
+
+impl GeometryEngine for ParryEngine {
+    fn name(&self) -> &'static str {
+        PARRY
+    }
+
+    fn supports(&self, i: &Geometry, j: &Geometry) -> Result<(), Unsupported> {
+        if PeerShape::new(i, false).is_some() && PeerShape::new(j, false).is_some() {
+            Ok(())
+        } else {
+            Err(Unsupported {
+                engine: PARRY,
+                i: i.kind(),
+                j: j.kind(),
+                reason: "parry's contact query has no exact shape for this geometry",
+            })
+        }
+    }
+
+    fn prepare(
+        &self,
+        i: &[GeometryInstance],
+        j: &[GeometryInstance],
+    ) -> Result<Box<dyn PreparedPair>, PrepareError> {
+        contact_core::check_lists(self, i, j)?;
+        let shapes = |list: &[GeometryInstance]| -> Result<Vec<(PeerShape, Isometry3)>, PrepareError> {
+            list.iter()
+                .map(|g| {
+                    let shape = PeerShape::new(&g.geometry, g.flip_normal).ok_or(Unsupported {
+                        engine: PARRY,
+                        i: g.geometry.kind(),
+                        j: g.geometry.kind(),
+                        reason: "parry's contact query has no exact shape for this geometry",
+                    })?;
+                    Ok((shape, g.pose_part_geometry))
+                })
+                .collect()
+        };
+        Ok(Box::new(PreparedParry { i: shapes(i)?, j: shapes(j)? }))
+    }
+}
+
+/// The shapes of one CONTACT for [`ParryEngine`].
+#[derive(Debug)]
+struct PreparedParry {
+    i: Vec<(PeerShape, Isometry3)>,
+    j: Vec<(PeerShape, Isometry3)>,
+}
+
+impl PreparedPair for PreparedParry {
+    fn query(
+        &self,
+        pose_world_i: &Isometry3,
+        pose_world_j: &Isometry3,
+        contacts: &mut Vec<Contact>,
+        work: &mut WorkCounters,
+    ) -> Result<(), QueryError> {
+        QueryError::check_poses(pose_world_i, pose_world_j)?;
+        contacts.clear();
+        work.queries += 1;
+        for (gi, (si, xi)) in self.i.iter().enumerate() {
+            for (gj, (sj, xj)) in self.j.iter().enumerate() {
+                work.geometry_pairs += 1;
+                work.primitive_tests += 1;
+                let Some(c) = contact(si, &(pose_world_i * xi), sj, &(pose_world_j * xj)) else {
+                    continue;
+                };
+                if c.depth < 0.0 {
+                    continue;
+                }
+                contacts.push(Contact {
+                    point_i_w: c.point_a,
+                    point_j_w: c.point_b,
+                    normal_w: c.normal,
+                    penetration: c.depth,
+                    area: 0.0,
+                    geometry_i: gi as u32,
+                    geometry_j: gj as u32,
+                });
+                work.contacts += 1;
+            }
+        }
+        Ok(())
+    }
+
+    fn stats(&self) -> PreparedStats {
+        PreparedStats {
+            geometries: self.i.len() + self.j.len(),
+            triangles: 0,
+            bytes: (self.i.capacity() + self.j.capacity()) * std::mem::size_of::<(PeerShape, Isometry3)>(),
+        }
+    }
 }
 
 #[cfg(test)]
