@@ -19,8 +19,9 @@
 //!    the triangles it crosses), as tetrahedra from one apex (the first crossing point), gives
 //!    its volume and centroid `g` (the loop's open lid cancels between the two sides). The
 //!    contact points are the closest points to `g` on each whole surface (a branch-and-bound
-//!    search of the tree), lifted from the facet onto the curved PN triangle through the facet's corners and true corner normals
-//!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance.
+//!    search of the tree), lifted from the facet onto the curved PN triangle through the
+//!    facet's corners and true corner normals ([`FacetMesh::lift_to_surface`]); the penetration
+//!    is their distance.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
