@@ -16,11 +16,12 @@
 //!    `−S/|S|` (from J into I) and the area is `|S|`, the patch's area projected on the contact
 //!    plane. The intersection volume is bounded by I's surface inside J and J's surface inside
 //!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes of
-//!    the triangles it crosses), as tetrahedra from the loop's centroid, gives its volume and
-//!    centroid `g` (the loop's open lid cancels between the two sides). The contact points are
-//!    the closest points to `g` on each side's region triangles, lifted from the facet onto the
-//!    curved PN triangle through the facet's corners and true corner normals
-//!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance.
+//!    the triangles it crosses), as tetrahedra from one apex (the first crossing point), gives
+//!    its volume and centroid `g` (the loop's open lid cancels between the two sides). The
+//!    contact points are the closest points to `g` on each whole surface (a branch-and-bound
+//!    search of the tree), lifted from the facet onto the curved PN triangle through the
+//!    facet's corners and true corner normals ([`FacetMesh::lift_to_surface`]); the penetration
+//!    is their distance.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
@@ -120,6 +121,8 @@ pub(crate) fn mesh_mesh(
         }
         return;
     }
+    // One apex for every cone of this query, in each mesh's frame: the first crossing point.
+    s.apex = [s.hits[0].s0, x.inverse_apply(&s.hits[0].s0)];
     build_nodes(a, b, s);
     flood(a, b, &x, s);
     let region_count = label_regions(s);
@@ -344,7 +347,10 @@ fn visit(mesh: &FacetMesh, guard: &(Vector3, Vector3), s: &mut Scratch, seed: u3
         return;
     }
     s.slots[side].insert(tri, seed | INSIDE_BIT);
-    s.nodes[seed as usize].inside.add_triangle(&p, &q, &r);
+    let apex = s.apex[side];
+    s.nodes[seed as usize]
+        .inside
+        .add_triangle(&p, &q, &r, &apex);
     s.queue.push(tri);
 }
 
@@ -422,6 +428,7 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         node_hits,
         polygon,
         polygon_next,
+        apex,
         ..
     } = s;
     for node in nodes.iter() {
@@ -438,7 +445,7 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
             }
         }
         let r = &mut regions[node.region as usize];
-        r.sums_a.add_polygon(polygon);
+        r.sums_a.add_polygon(polygon, &apex[0]);
         if node.side == 0 {
             r.sums_a.merge(&node.inside);
         } else {
@@ -446,13 +453,12 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         }
     }
     for r in regions.iter_mut() {
-        let (va, ma) = r.sums_a.volume_moment(&r.apex);
-        let (vb, mb) = r.sums_b.volume_moment(&x.inverse_apply(&r.apex));
-        r.volume = va + vb;
-        r.volume_moment = ma + x.rot * mb + x.t * vb;
+        // B's sums are about the same physical apex: only their moment turns into A's frame.
+        r.volume = r.sums_a.volume + r.sums_b.volume;
+        r.volume_moment = r.sums_a.moment + x.rot * r.sums_b.moment;
         let scale = r.loop_length.max(1e-300);
         r.centroid = if r.volume > 1e-15 * scale * scale * scale {
-            r.volume_moment / r.volume
+            apex[0] + r.volume_moment / r.volume
         } else {
             r.apex
         };

@@ -16,6 +16,27 @@
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
 //! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for timing comparisons.
 //!
+//! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)
+//! Worst case over four mesh orientations; depth error relative to the exact depth, normal error in
+//! degrees, `point_i` error relative to the depth. Exact depths: 0.2 (sphere r = 1 on a plane;
+//! spheres r = 1 and 0.5), 0.05 (cylinder r = 0.5 lying on a plane), 0.1 (box on box; torus
+//! R = 2, r = 0.5 standing on a plane). Order: the observed order of the depth error from FT = 100
+//! to 3000.
+//!
+//! | pair | FT = 100 | 300.0028 (default) | 1000 | 3000 | order |
+//! |---|---|---|---|---|---|
+//! | sphere–plane depth / normal | 5.3e-3 / 0° | 1.2e-3 / 0° | 6.3e-4 / 0° | 1.7e-4 / 0° | 1.0 |
+//! | sphere–sphere depth / normal | 5.0e-3 / 1.08° | 1.5e-3 / 0.22° | 1.7e-4 / 0.07° | 7.1e-5 / 0.02° | 1.25 |
+//! | cylinder–plane depth | 3.2e-2 | 3.4e-3 | 3.5e-4 | 4.5e-4 | 1.25 |
+//! | box–box depth | 3e-16 | 3e-16 | 3e-16 | 3e-16 | exact |
+//! | torus–plane depth | 4.2e-3 | 8.9e-3 | 2.6e-3 | 8.7e-4 | 0.46 |
+//! | sphere–plane `point_i` | 9.2e-2 | 6.6e-2 | 4.5e-2 | 2.3e-2 | 0.4 |
+//!
+//! Depths are far better than the chord deviation `L/FT` because the closest points are lifted onto
+//! curved PN triangles through the exact corner normals (see [`contact_region`]); the contact point
+//! follows the faceted intersection volume's centroid and converges more slowly (about
+//! `O(FT^-0.4)`).
+//!
 //! ## Example: a sphere resting 0.1 deep on a plane
 //! ```
 //! use contact_core::{Geometry, GeometryEngine, GeometryInstance, Isometry3, WorkCounters};

@@ -29,6 +29,8 @@ pub struct Node {
     pub index: u32,
     /// Triangles in a leaf; 0 for an internal node.
     pub count: u32,
+    /// Radius of the box's bounding sphere (the half-diagonal), for a cheap first test.
+    pub radius: f64,
 }
 
 /// The tree: nodes in depth-first order and the triangle order its leaves refer to.
@@ -95,6 +97,7 @@ impl ObbTree {
                     obb,
                     index: start as u32,
                     count: range.len() as u32,
+                    radius: obb.half_extents.norm(),
                 });
                 continue;
             }
@@ -111,6 +114,7 @@ impl ObbTree {
                 obb,
                 index: 0,
                 count: 0,
+                radius: obb.half_extents.norm(),
             });
             // Right pushed first so the left child is built next, right after its parent.
             pending.push((slot, start + split, end, Some(obb.axes)));
@@ -199,8 +203,9 @@ impl BoxCache {
             self.axes.resize(n, Matrix3::zeros());
             self.center.resize(n, Vector3::zeros());
         }
-        self.generation = self.generation.wrapping_add(1);
-        if self.generation == 0 {
+        // Stamps use 2g − 1 and 2g, so generations stay below 2³¹.
+        self.generation += 1;
+        if self.generation >= 1 << 31 {
             self.stamp.fill(0);
             self.generation = 1;
         }
@@ -232,15 +237,20 @@ pub fn descend_pair(
         let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
         tests += 1;
         let k = ib as usize;
-        if cache.stamp[k] != cache.generation {
-            cache.stamp[k] = cache.generation;
-            cache.axes[k] = rot_ab * nb.obb.axes;
+        // Stamp 2g − 1: centre moved into A's frame; 2g: axes too.
+        let (centre_done, axes_done) = (cache.generation * 2 - 1, cache.generation * 2);
+        if cache.stamp[k] != centre_done && cache.stamp[k] != axes_done {
+            cache.stamp[k] = centre_done;
             cache.center[k] = rot_ab * nb.obb.center + t_ab;
         }
         // Bounding spheres first: one distance, and most far pairs end here.
-        let reach = na.obb.half_extents.norm() + nb.obb.half_extents.norm();
+        let reach = na.radius + nb.radius;
         if (cache.center[k] - na.obb.center).norm_squared() > reach * reach {
             continue;
+        }
+        if cache.stamp[k] != axes_done {
+            cache.stamp[k] = axes_done;
+            cache.axes[k] = rot_ab * nb.obb.axes;
         }
         if !boxes_overlap_in_frame(
             &na.obb.axes,

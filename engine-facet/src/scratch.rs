@@ -67,7 +67,8 @@ pub(crate) struct RegionNode {
     pub hit_count: u32,
     /// Bit k set: corner k lies inside the other solid (crossing triangles only).
     pub inside_corners: u8,
-    /// Sums over the inside triangles flooded from this node, in its mesh's frame.
+    /// Cones over the inside triangles flooded from this node, in its mesh's frame, about the
+    /// query's apex.
     pub inside: crate::surface_sums::SurfaceSums,
 }
 
@@ -107,6 +108,8 @@ pub(crate) struct Scratch {
     pub polygon_next: Vec<Vector3>,
     pub local: Vec<crate::contact_region::LocalContact>,
     pub box_cache: crate::obb_tree::BoxCache,
+    /// The query's cone apex in A's and in B's mesh frame.
+    pub apex: [Vector3; 2],
 }
 
 thread_local! {
