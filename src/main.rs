@@ -44,6 +44,9 @@ enum Command {
         /// Draw depth error against query time (SVG).
         #[arg(long)]
         plot: Option<PathBuf>,
+        /// Add a peer library's rows, measured the same way (`parry`).
+        #[arg(long, value_parser = ["parry"])]
+        peer: Option<String>,
     },
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {
@@ -105,6 +108,7 @@ fn main() -> ExitCode {
             json,
             csv,
             plot,
+            peer,
         } => {
             let args = cli::tradeoff::TradeoffArgs {
                 scenes,
@@ -115,10 +119,16 @@ fn main() -> ExitCode {
                 plot,
             };
             let mut progress = |label: &str| eprintln!("measuring {label}");
+            let parry = engine_exact::parry_adapter::ParryEngine;
+            let peers: Vec<&dyn contact_core::GeometryEngine> = if peer.is_some() {
+                vec![&parry]
+            } else {
+                Vec::new()
+            };
             match cli::tradeoff::run(
                 &args,
                 &contact::engine_choice::build_engine,
-                &[],
+                &peers,
                 &mut stdout,
                 &mut progress,
             ) {

@@ -8,8 +8,8 @@
 //! normal +z (−z when flipped).
 
 use contact_core::{
-    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3, PrepareError, PreparedPair,
-    PreparedStats, QueryError, Unsupported, Vector3, WorkCounters,
+    Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3, PrepareError,
+    PreparedPair, PreparedStats, QueryError, Unsupported, Vector3, WorkCounters,
 };
 use parry3d_f64::query;
 use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape};
@@ -164,20 +164,24 @@ impl GeometryEngine for ParryEngine {
         j: &[GeometryInstance],
     ) -> Result<Box<dyn PreparedPair>, PrepareError> {
         contact_core::check_lists(self, i, j)?;
-        let shapes = |list: &[GeometryInstance]| -> Result<Vec<(PeerShape, Isometry3)>, PrepareError> {
-            list.iter()
-                .map(|g| {
-                    let shape = PeerShape::new(&g.geometry, g.flip_normal).ok_or(Unsupported {
+        let shapes =
+            |list: &[GeometryInstance]| -> Result<Vec<(PeerShape, Isometry3)>, PrepareError> {
+                list.iter()
+                    .map(|g| {
+                        let shape = PeerShape::new(&g.geometry, g.flip_normal).ok_or(Unsupported {
                         engine: PARRY,
                         i: g.geometry.kind(),
                         j: g.geometry.kind(),
                         reason: "parry's contact query has no exact shape for this geometry",
                     })?;
-                    Ok((shape, g.pose_part_geometry))
-                })
-                .collect()
-        };
-        Ok(Box::new(PreparedParry { i: shapes(i)?, j: shapes(j)? }))
+                        Ok((shape, g.pose_part_geometry))
+                    })
+                    .collect()
+            };
+        Ok(Box::new(PreparedParry {
+            i: shapes(i)?,
+            j: shapes(j)?,
+        }))
     }
 }
 
@@ -228,7 +232,8 @@ impl PreparedPair for PreparedParry {
         PreparedStats {
             geometries: self.i.len() + self.j.len(),
             triangles: 0,
-            bytes: (self.i.capacity() + self.j.capacity()) * std::mem::size_of::<(PeerShape, Isometry3)>(),
+            bytes: (self.i.capacity() + self.j.capacity())
+                * std::mem::size_of::<(PeerShape, Isometry3)>(),
         }
     }
 }

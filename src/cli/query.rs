@@ -105,9 +105,6 @@ pub enum QueryCliError {
     /// A query failed.
     #[error(transparent)]
     Query(#[from] QueryError),
-    /// The chosen engine is not part of this build.
-    #[error("the {0} engine is not available in this build; use --engine faceted")]
-    EngineUnavailable(&'static str),
     /// `--peer parry` needs two meshes.
     #[error("--peer parry compares mesh against mesh; '{0}' is a plane")]
     PeerNeedsMeshes(String),
@@ -229,7 +226,7 @@ fn make_engine(
 ) -> Result<Box<dyn GeometryEngine>, QueryCliError> {
     match name {
         EngineName::Faceted => Ok(Box::new(FacetEngine::new(tolerance))),
-        EngineName::Exact => Err(QueryCliError::EngineUnavailable("exact")),
+        EngineName::Exact => Ok(Box::new(engine_exact::ExactEngine)),
     }
 }
 
@@ -542,12 +539,14 @@ mod tests {
         assert!(e.to_string().contains("missing z"), "{e}");
         assert_eq!(parse_poses("1 2 3\n").unwrap_err().0, 1);
         assert_eq!(parse_poses("# c\n1 2 3 0 0 0 0\n").unwrap_err().0, 2);
+        // The exact engine answers the same query: a unit sphere 0.1 deep in the plane.
         let path = poses_file("one", "0 0 0.9 1 0 0 0\n");
         let (mut out, mut warn) = (Vec::new(), Vec::new());
-        let e = run(&args(&path, EngineName::Exact, false), &mut out, &mut warn).unwrap_err();
-        assert!(
-            matches!(e, QueryCliError::EngineUnavailable("exact")),
-            "{e}"
-        );
+        run(&args(&path, EngineName::Exact, false), &mut out, &mut warn).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+        let depth: f64 = row[4].parse().unwrap();
+        assert!((depth - 0.1).abs() < 1e-15, "{text}");
+        assert_eq!(&row[5..8], &["0.0", "0.0", "1.0"], "{text}");
     }
 }
