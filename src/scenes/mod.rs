@@ -616,15 +616,23 @@ fn orient(orientation: Orientation, rng: &mut SplitMix64) -> UnitQuaternion {
     let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
     match orientation {
         Orientation::Random | Orientation::RandomInPlane => rng.rotation(),
+        // A random roll about I's own axis too, so faceted shapes show every facet phase.
         Orientation::AxisParallelToPlane => {
-            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2)
+            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2) * roll(rng)
         }
         Orientation::Tilted(angle) => {
-            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), angle)
+            spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), angle) * roll(rng)
         }
-        Orientation::ParallelAxes => spin,
-        Orientation::CrossedAxes => UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2),
+        Orientation::ParallelAxes => spin * roll(rng),
+        Orientation::CrossedAxes => {
+            UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2) * roll(rng)
+        }
     }
+}
+
+/// A random rotation about z (a shape's own axis).
+fn roll(rng: &mut SplitMix64) -> UnitQuaternion {
+    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU))
 }
 
 /// The support of a list placed at part pose `pose` (the largest over its members).

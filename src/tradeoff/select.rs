@@ -33,32 +33,44 @@ pub struct ModelChoice {
     pub worst_depth_error: f64,
 }
 
-/// True when a row meets the target: it has a reference, its depth error is within
-/// `max_depth_error`, and it missed no contact.
+/// True when a row meets the target: it has a reference and its depth error is within
+/// `max_depth_error`. A missed or extra contact already counts its whole depth in that error,
+/// so a miss on a pose shallower than the target is acceptable and a deeper one is not.
 pub fn meets(record: &TradeRecord, max_depth_error: f64) -> bool {
-    record.depth_error.is_some_and(|e| e <= max_depth_error) && record.missed_contacts == 0
+    record.depth_error.is_some_and(|e| e <= max_depth_error)
 }
 
-/// The fastest selectable row (exact or faceted; peers are for comparison only) of `contact`
-/// that meets the target; ties go to the smaller tolerance, then to the exact engine.
+/// The recommendation for `contact`: the exact engine if it meets the target, and the faceted
+/// engine at its *smallest* tolerance that meets it (a finer tolerance never costs less: more
+/// triangles); of those two candidates, the faster. Timing noise therefore never picks a finer
+/// tolerance than needed. Peers are for comparison only.
 pub fn select(records: &[TradeRecord], contact: &str, max_depth_error: f64) -> Option<Choice> {
-    records
-        .iter()
-        .filter(|r| r.scene == contact && selectable(r) && meets(r, max_depth_error))
-        .min_by(|a, b| {
-            a.query_ns_median.total_cmp(&b.query_ns_median).then(
-                a.faceting_tolerance
-                    .unwrap_or(0.0)
-                    .total_cmp(&b.faceting_tolerance.unwrap_or(0.0)),
-            )
-        })
-        .map(|r| Choice {
-            contact: r.scene.clone(),
-            engine: r.engine.clone(),
-            faceting_tolerance: r.faceting_tolerance,
-            query_ns_median: r.query_ns_median,
-            depth_error: r.depth_error.unwrap_or(f64::NAN),
-        })
+    let meeting = |engine: &'static str| {
+        records
+            .iter()
+            .filter(move |r| r.scene == contact && r.engine == engine && meets(r, max_depth_error))
+    };
+    let exact = meeting("exact").next();
+    let faceted = meeting("faceted").min_by(|a, b| {
+        a.faceting_tolerance
+            .unwrap_or(0.0)
+            .total_cmp(&b.faceting_tolerance.unwrap_or(0.0))
+    });
+    let best = match (exact, faceted) {
+        (Some(e), Some(f)) => Some(if f.query_ns_median < e.query_ns_median {
+            f
+        } else {
+            e
+        }),
+        (e, f) => e.or(f),
+    }?;
+    Some(Choice {
+        contact: best.scene.clone(),
+        engine: best.engine.clone(),
+        faceting_tolerance: best.faceting_tolerance,
+        query_ns_median: best.query_ns_median,
+        depth_error: best.depth_error.unwrap_or(f64::NAN),
+    })
 }
 
 /// The engine and tolerance meeting the target on every contact in `contacts` at the least

@@ -9,6 +9,7 @@ mod fuzz_seeds;
 mod malformed;
 mod scenes_cli;
 mod trade_schema;
+mod tradeoff;
 
 use contact::dataset::{Loaded, read_str};
 use std::path::{Path, PathBuf};
