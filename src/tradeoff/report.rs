@@ -1,6 +1,6 @@
 //! Writing the trade: a text table, CSV, JSON and an error-against-time plot.
 
-use super::measure::TradeRecord;
+use super::measure::{ReferenceSource, TradeRecord};
 use crate::output::svg_plot::{Plot, Scale, Series};
 use std::fmt::Write;
 
@@ -8,15 +8,18 @@ fn opt(v: Option<f64>) -> String {
     v.map_or_else(|| "-".to_string(), |x| format!("{x:.2e}"))
 }
 
-/// A fixed-width table, one row per record, for terminals and the README.
+/// A fixed-width table, one row per record, for terminals and the README. `ref` says what the
+/// errors are measured against: the scene's closed form, the exact engine (whose own errors are
+/// then 0 by definition), or nothing.
 pub fn table(records: &[TradeRecord]) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{:<27} {:<8} {:>9} {:>10} {:>10} {:>10} {:>6} {:>11} {:>11} {:>9} {:>9}",
+        "{:<27} {:<8} {:>9} {:<7} {:>10} {:>10} {:>10} {:>6} {:>11} {:>11} {:>9} {:>9}",
         "scene",
         "engine",
         "FT",
+        "ref",
         "depth err",
         "normal °",
         "point err",
@@ -32,10 +35,15 @@ pub fn table(records: &[TradeRecord]) -> String {
             .map_or_else(|| "-".to_string(), |t| format!("{t}"));
         let _ = writeln!(
             out,
-            "{:<27} {:<8} {:>9} {:>10} {:>10} {:>10} {:>6} {:>11.0} {:>11.0} {:>9.3} {:>9}",
+            "{:<27} {:<8} {:>9} {:<7} {:>10} {:>10} {:>10} {:>6} {:>11.0} {:>11.0} {:>9.3} {:>9}",
             r.scene,
             r.engine,
             ft,
+            match r.reference {
+                ReferenceSource::ClosedForm => "closed",
+                ReferenceSource::ExactEngine => "exact",
+                ReferenceSource::None => "none",
+            },
             opt(r.depth_error),
             opt(r.normal_error_deg),
             opt(r.point_error),

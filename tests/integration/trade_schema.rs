@@ -98,3 +98,11 @@ fn the_validator_rejects_what_the_schema_forbids() {
     bad[0]["triangles"] = "many".into();
     assert!(validate(&bad).unwrap_err().contains("'triangles'"));
 }
+
+#[test]
+fn the_published_trade_json_follows_the_schema() {
+    let text = include_str!("../../docs/tradeoff.json");
+    let json: Value = serde_json::from_str(text).expect("docs/tradeoff.json is JSON");
+    validate(&json).unwrap();
+    assert!(json.as_array().is_some_and(|rows| rows.len() > 50));
+}
