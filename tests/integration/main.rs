@@ -5,6 +5,7 @@ mod check;
 mod dataset;
 mod examples;
 mod expressions;
+mod extremes;
 mod fuzz_seeds;
 mod malformed;
 mod scenes_cli;
