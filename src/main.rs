@@ -89,6 +89,7 @@ fn main() -> ExitCode {
             dtout: None,
             steps: None,
             out: Some(std::path::PathBuf::from("out").join("ball")),
+            threads: None,
         })
     });
     match command {

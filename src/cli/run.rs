@@ -41,6 +41,10 @@ pub struct RunArgs {
     /// The directory results go to (default `out/<model name>`).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Threads evaluating contacts and forces (default PREFERENCES/NTHREADS, else 1); the
+    /// results are the same bits at every count.
+    #[arg(long)]
+    pub threads: Option<usize>,
 }
 
 /// Runs the command; returns the process exit code (0 success, 1 failure). Problems go to
@@ -119,6 +123,17 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         }
     };
     let prepare_s = prepare_started.elapsed().as_secs_f64();
+    let threads = args
+        .threads
+        .or(model.preferences.threads.map(|n| n.get()))
+        .unwrap_or(1);
+    match crate::solver::parallel::Parallelism::with_threads(threads) {
+        Ok(p) => system.set_parallelism(p),
+        Err(e) => {
+            writeln!(err, "error: --threads {threads}: {e}")?;
+            return Ok(1);
+        }
+    }
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out").join(
             args.model
@@ -153,6 +168,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         "model": args.model.display().to_string(),
         "engine": selection.library.name(),
         "engine_source": selection.library_source.to_string(),
+        "threads": threads,
         "faceting_tolerance": (selection.library == GeometryLibrary::Faceted).then_some(selection.faceting_tolerance.value()),
         "status": status,
         "start": settings.start,

@@ -7,12 +7,14 @@
 //! - [`mbs`] — the multibody equations: parts, joints, JPRIMs, MOTIONs and force elements as an
 //!   index-3 (or stabilized index-2) DAE.
 //! - [`contact_force`] — a CONTACT as a force element: engine kinematics and force laws.
+//! - [`parallel`] — force elements evaluated on several threads with serial-identical bits.
 //! - [`simulate`] — transient dynamics with contact prediction and output frames.
 
 pub mod bdf;
 pub mod contact_force;
 pub mod dae;
 pub mod mbs;
+pub mod parallel;
 pub mod simulate;
 
 pub use dae::{DaeSystem, EvaluationError, VariableKind};

@@ -337,3 +337,102 @@ fn augmented_lagrangian_is_refused_with_its_location_not_ignored() {
     let text = err.to_string();
     assert!(text.contains("ball_poisson.adm:19:1: error: CONTACT/1: AUGMENTED_LAGRANGIAN_FORMULATION is not supported"), "{text}");
 }
+
+#[test]
+fn one_and_two_threads_give_identical_runs() {
+    // Three balls on the plane, each its own CONTACT, so contacts are evaluated in parallel.
+    let text = std::fs::read_to_string(example("ball/ball.adm")).unwrap();
+    let more = text.replace(
+        "ACCGRAV/",
+        "PART/3, MASS = 1, CM = 30, IP = 0.004, 0.004, 0.004, VX = 0.3\n\
+         MARKER/30, PART = 3, QP = 0.5, 0, 0.7\n\
+         GRAPHICS/3, ELLIPSOID, CM = 30, XSCALE = 0.2, YSCALE = 0.2, ZSCALE = 0.2\n\
+         CONTACT/2, IGEOM = 3, JGEOM = 2, IMPACT, STIFFNESS = 1E6, EXPONENT = 1.5, DAMPING = 50, DMAX = 1E-4\n\
+         , COULOMB_FRICTION = ON, MU_STATIC = 0.3, MU_DYNAMIC = 0.2\n\
+         , STICTION_TRANSITION_VELOCITY = 0.01, FRICTION_TRANSITION_VELOCITY = 0.02\n\
+         PART/4, MASS = 2, CM = 40, IP = 0.008, 0.008, 0.008, WY = 3\n\
+         MARKER/40, PART = 4, QP = -0.5, 0, 0.5\n\
+         GRAPHICS/4, ELLIPSOID, CM = 40, XSCALE = 0.2, YSCALE = 0.2, ZSCALE = 0.2\n\
+         CONTACT/3, IGEOM = 4, JGEOM = 2, IMPACT, STIFFNESS = 1E6, EXPONENT = 1.5, DAMPING = 50, DMAX = 1E-4\n\
+         ACCGRAV/",
+    );
+    let loaded = dataset::read_str(&more, example("ball/three_balls.adm"), None);
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    // `contact run --threads 1` and `--threads 2` write identical result files.
+    let dir = std::env::temp_dir().join(format!("contact-threads-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = dir.join("three_balls.adm");
+    std::fs::write(&model, &more).unwrap();
+    let files = |threads: usize| {
+        let out = dir.join(format!("out{threads}"));
+        let args = contact::cli::run::RunArgs {
+            model: model.clone(),
+            commands: None,
+            engine: None,
+            faceting_tolerance: None,
+            end: Some(0.8),
+            dtout: Some(0.01),
+            steps: None,
+            out: Some(out.clone()),
+            threads: Some(threads),
+        };
+        let code = contact::cli::run::run(&args, &mut Vec::new(), &mut Vec::new()).unwrap();
+        assert_eq!(code, 0);
+        ["parts.csv", "contacts.csv", "frames.jsonl"].map(|f| std::fs::read(out.join(f)).unwrap())
+    };
+    assert_eq!(
+        files(1),
+        files(2),
+        "result files differ between 1 and 2 threads"
+    );
+    let run = |threads: usize| {
+        let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+        let mut lowered = lower(
+            &loaded.model,
+            &engine_exact::ExactEngine,
+            Analysis::Dynamics,
+            &no_meshes,
+        )
+        .unwrap();
+        lowered.system.set_parallelism(
+            contact::solver::parallel::Parallelism::with_threads(threads).unwrap(),
+        );
+        let settings = DynamicsSettings {
+            start: 0.0,
+            end: 0.8,
+            output_step: 0.01,
+            integrator: IntegratorSettings {
+                error: 1e-5,
+                ..IntegratorSettings::default()
+            },
+        };
+        let mut bits = Vec::new();
+        simulate(
+            &mut lowered.system,
+            &lowered.contacts,
+            &settings,
+            &mut |frame| {
+                for s in &frame.parts {
+                    bits.extend(
+                        s.pose_w
+                            .translation
+                            .vector
+                            .iter()
+                            .chain(s.velocity_w.iter())
+                            .map(|x| x.to_bits()),
+                    );
+                }
+                for r in frame.contacts.iter().flatten() {
+                    bits.push(r.normal_force.to_bits());
+                    bits.extend(r.friction_force_w.iter().map(|x| x.to_bits()));
+                }
+                Ok(())
+            },
+        )
+        .unwrap();
+        bits
+    };
+    let (one, two) = (run(1), run(2));
+    assert!(one.len() > 1000, "{}", one.len());
+    assert_eq!(one, two, "1 and 2 threads differ");
+}

@@ -300,6 +300,7 @@ impl MultibodyBuilder {
             parts,
             constraints,
             forces: self.forces,
+            parallelism: crate::solver::parallel::Parallelism::serial(),
             gravity_w: self.gravity_w,
             layout,
             length_scale,

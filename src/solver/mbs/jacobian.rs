@@ -78,11 +78,17 @@ impl MultibodySystem {
         let layout = self.layout;
         let view = StateView::new(states);
         let all_loads = self.element_loads(t, states)?;
-        for (element, loads) in self.forces.iter().zip(all_loads) {
-            let partials = match element.partials(t, &view) {
-                Some(result) => result?,
-                None => difference_partials(element.as_ref(), t, states, self.length_scale)?,
-            };
+        // The partials, each element into its own slot (in parallel when configured), are
+        // assembled below in index order: the same matrix at every thread count.
+        let all_partials = self.parallelism.map_indexed(self.forces.len(), |k| {
+            let element = &self.forces[k];
+            match element.partials(t, &view) {
+                Some(result) => result,
+                None => difference_partials(element.as_ref(), t, states, self.length_scale),
+            }
+        });
+        for ((element, loads), partials) in self.forces.iter().zip(all_loads).zip(all_partials) {
+            let partials = partials?;
             let parts = element.parts();
             for (row_slot, &row_part) in parts.iter().enumerate() {
                 if row_part.is_ground() {

@@ -42,6 +42,8 @@ pub struct MultibodySystem {
     pub(crate) length_scale: f64,
     /// Initial `y` from the builder (positions and velocities as given, multipliers zero).
     pub(crate) initial_y: DVector<f64>,
+    /// Threads for force-element evaluation.
+    pub(crate) parallelism: crate::solver::parallel::Parallelism,
 }
 
 impl std::fmt::Debug for MultibodySystem {
@@ -156,9 +158,11 @@ impl MultibodySystem {
         states: &[PartState],
     ) -> Result<Vec<Vec<Load>>, EvaluationError> {
         let view = StateView::new(states);
-        self.forces
-            .iter()
-            .map(|element| {
+        // Each element into its own slot (in parallel when configured), then the first error
+        // in index order: the same answer at every thread count.
+        let results = self.parallelism.map_indexed(self.forces.len(), |k| {
+            let element = &self.forces[k];
+            {
                 let mut loads = vec![Load::default(); element.parts().len()];
                 element.evaluate(t, &view, &mut loads)?;
                 if let Some(bad) = loads.iter().find(|l| {
@@ -173,8 +177,14 @@ impl MultibodySystem {
                     });
                 }
                 Ok(loads)
-            })
-            .collect()
+            }
+        });
+        results.into_iter().collect()
+    }
+
+    /// Uses `parallelism` to evaluate force elements from now on (results do not depend on it).
+    pub fn set_parallelism(&mut self, parallelism: crate::solver::parallel::Parallelism) {
+        self.parallelism = parallelism;
     }
 
     /// The generalized applied forces minus gyroscopic terms, `[f + m g, Aᵀn − ω′ × Jω′]` per
