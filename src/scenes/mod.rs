@@ -228,12 +228,13 @@ pub fn scene(name: &str) -> Option<Scene> {
             0.3,
             Orientation::RandomInPlane,
         ),
-        "circle_circle" => Scene::planar(
+        "circle_circle" => Scene::pair(
             name,
             "two circles in one plane",
             single(circle(0.6)),
             single(circle(1.0)),
             0.6,
+            Orientation::Planar,
         )
         .with_closed_form(circle_circle),
         "point_curve" => Scene::on_curve(
@@ -248,12 +249,13 @@ pub fn scene(name: &str) -> Option<Scene> {
             single(circle(0.2)),
             0.2,
         ),
-        "curve_curve" => Scene::planar(
+        "curve_curve" => Scene::pair(
             name,
             "two closed B-spline curves",
             single(Geometry::Curve(Arc::new(blob(0.5, 5, 0.15)))),
             single(Geometry::Curve(Arc::new(cam()))),
             0.3,
+            Orientation::Planar,
         ),
         "mesh_sphere_10k" => Scene::pair(
             name,
@@ -387,6 +389,8 @@ enum Orientation {
     CrossedAxes,
     /// Random rotation; approach direction in J's x-y plane.
     RandomInPlane,
+    /// 2-D shapes: rotation about J's z only; approach direction in J's x-y plane.
+    Planar,
 }
 
 impl Scene {
@@ -465,42 +469,15 @@ impl Scene {
             for _ in 0..POSES_PER_DEPTH {
                 let rotation = orient(orientation, &mut rng);
                 let u = match orientation {
-                    Orientation::ParallelAxes | Orientation::RandomInPlane => {
+                    Orientation::ParallelAxes
+                    | Orientation::RandomInPlane
+                    | Orientation::Planar => {
                         let a = rng.range(0.0, TAU);
                         Vector3::new(a.cos(), a.sin(), 0.0)
                     }
                     Orientation::CrossedAxes => Vector3::x(),
                     _ => rng.unit_vector(),
                 };
-                let placed = Isometry3::from_parts(Default::default(), rotation);
-                let reach = support_of(&scene.j, &Isometry3::identity(), &u)
-                    + support_of(&scene.i, &placed, &-u);
-                scene.push(
-                    depth,
-                    Isometry3::from_parts((u * (reach - depth)).into(), rotation),
-                    &mut rng,
-                );
-            }
-        }
-        scene
-    }
-
-    /// Two 2-D shapes in J's x-y plane, I approaching along a direction in that plane.
-    fn planar(
-        name: &'static str,
-        description: &'static str,
-        i: Vec<GeometryInstance>,
-        j: Vec<GeometryInstance>,
-        scale: f64,
-    ) -> Self {
-        let mut scene = Self::base(name, description, i, j, scale);
-        let mut rng = SplitMix64::new(seed(name));
-        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
-            for _ in 0..POSES_PER_DEPTH {
-                let rotation =
-                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
-                let a = rng.range(0.0, TAU);
-                let u = Vector3::new(a.cos(), a.sin(), 0.0);
                 let placed = Isometry3::from_parts(Default::default(), rotation);
                 let reach = support_of(&scene.j, &Isometry3::identity(), &u)
                     + support_of(&scene.i, &placed, &-u);
@@ -624,6 +601,7 @@ fn orient(orientation: Orientation, rng: &mut SplitMix64) -> UnitQuaternion {
             spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), angle) * roll(rng)
         }
         Orientation::ParallelAxes => spin * roll(rng),
+        Orientation::Planar => spin,
         Orientation::CrossedAxes => {
             UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2) * roll(rng)
         }
