@@ -14,22 +14,37 @@ fn example(name: &str) -> std::path::PathBuf {
         .join(name)
 }
 
+/// The model lowered onto the solver with the exact engine (the examples have no meshes).
+fn lowered(model: &contact::model::Model) -> contact::run::lower::LoweredModel {
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    lower(
+        model,
+        &engine_exact::ExactEngine,
+        Analysis::Dynamics,
+        &no_meshes,
+    )
+    .unwrap()
+}
+
+/// Dynamics from 0 to `end`, a frame every `output_step`, at integrator ERROR `error`.
+fn span(end: f64, output_step: f64, error: f64) -> DynamicsSettings {
+    DynamicsSettings {
+        start: 0.0,
+        end,
+        output_step,
+        integrator: IntegratorSettings {
+            error,
+            ..IntegratorSettings::default()
+        },
+    }
+}
+
 #[test]
 fn the_ball_example_bounces_as_the_one_dof_reference() {
     let loaded = dataset::read(&example("ball/ball.adm"), Some(&example("ball/ball.acf"))).unwrap();
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let engine = engine_exact::ExactEngine;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
-    let settings = DynamicsSettings {
-        start: 0.0,
-        end: 1.6,
-        output_step: 1e-3,
-        integrator: IntegratorSettings {
-            error: loaded.model.integrator.error,
-            ..IntegratorSettings::default()
-        },
-    };
+    let mut lowered = lowered(&loaded.model);
+    let settings = span(1.6, 1e-3, loaded.model.integrator.error);
     let ball = lowered.parts[0].0;
     let mut apexes = Vec::new();
     let mut was_rising = false;
@@ -66,9 +81,7 @@ fn run_example(
     let adm = example(&format!("{name}/{name}.adm"));
     let loaded = dataset::read(&adm, None).unwrap();
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let engine = engine_exact::ExactEngine;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let mut lowered = lowered(&loaded.model);
     let settings = DynamicsSettings {
         start: 0.0,
         end,
@@ -122,18 +135,8 @@ fn below_the_friction_angle_the_block_creeps_only_at_the_continuous_laws_speed()
     let mut loaded = dataset::read(&adm, None).unwrap();
     let theta = 10f64.to_radians();
     loaded.model.gravity = nalgebra::Vector3::new(9.81 * theta.sin(), 0.0, -9.81 * theta.cos());
-    let engine = engine_exact::ExactEngine;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
-    let settings = DynamicsSettings {
-        start: 0.0,
-        end: 1.0,
-        output_step: 0.05,
-        integrator: IntegratorSettings {
-            error: 1e-6,
-            ..IntegratorSettings::default()
-        },
-    };
+    let mut lowered = lowered(&loaded.model);
+    let settings = span(1.0, 0.05, 1e-6);
     let part = lowered.parts[0].0;
     let mut last = nalgebra::Vector3::zeros();
     simulate(
@@ -169,18 +172,8 @@ fn the_spinning_disk_stops_in_the_flat_pivot_time() {
     let adm = example("spinning_disk/spinning_disk.adm");
     let loaded = dataset::read(&adm, None).unwrap();
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let engine = engine_exact::ExactEngine;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
-    let settings = DynamicsSettings {
-        start: 0.0,
-        end: 0.6,
-        output_step: 1e-3,
-        integrator: IntegratorSettings {
-            error: 1e-6,
-            ..IntegratorSettings::default()
-        },
-    };
+    let mut lowered = lowered(&loaded.model);
+    let settings = span(0.6, 1e-3, 1e-6);
     let part = lowered.parts[0].0;
     let (m, r, mu, g, omega0) = (2.0, 0.1, 0.2, 9.81, 10.0);
     // "Stopped": the rim slips slower than FRICTION_TRANSITION_VELOCITY, where μ leaves μd.
@@ -261,9 +254,7 @@ fn poisson_ball(eps: f64, augmented: bool, end: f64) -> (Vec<f64>, f64) {
         ..Default::default()
     };
     loaded.model.contacts[0].params = args.validate(&loaded.model.units).unwrap().0;
-    let engine = engine_exact::ExactEngine;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let mut lowered = lower(&loaded.model, &engine, Analysis::Dynamics, &no_meshes).unwrap();
+    let mut lowered = lowered(&loaded.model);
     let settings = DynamicsSettings {
         start: 0.0,
         end,
@@ -397,15 +388,7 @@ fn one_and_two_threads_give_identical_runs() {
         lowered.system.set_parallelism(
             contact::solver::parallel::Parallelism::with_threads(threads).unwrap(),
         );
-        let settings = DynamicsSettings {
-            start: 0.0,
-            end: 0.8,
-            output_step: 0.01,
-            integrator: IntegratorSettings {
-                error: 1e-5,
-                ..IntegratorSettings::default()
-            },
-        };
+        let settings = span(0.8, 0.01, 1e-5);
         let mut bits = Vec::new();
         simulate(
             &mut lowered.system,
