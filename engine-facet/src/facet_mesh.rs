@@ -3,6 +3,7 @@
 
 use crate::obb_tree::ObbTree;
 use crate::tessellate::Tessellation;
+use contact_core::geometry::closest_point_on_triangle;
 use contact_core::{Point3, Vector3};
 use std::collections::HashMap;
 
@@ -216,7 +217,13 @@ impl FacetMesh {
     #[inline]
     pub fn closest_on_triangle(&self, t: u32, p: &Vector3) -> Vector3 {
         let [a, b, c] = self.corners(t);
-        closest_point_triangle(p, &a, &b, &c)
+        closest_point_on_triangle(
+            &Point3::from(*p),
+            &Point3::from(a),
+            &Point3::from(b),
+            &Point3::from(c),
+        )
+        .coords
     }
 }
 
@@ -277,39 +284,6 @@ fn ray_triangle(
         return None;
     }
     Some((e2.dot(&q) * inv, u, v))
-}
-
-/// The closest point of triangle `abc` to `p` (Ericson, Real-Time Collision Detection §5.1.5).
-pub fn closest_point_triangle(p: &Vector3, a: &Vector3, b: &Vector3, c: &Vector3) -> Vector3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return *a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(&bp), ac.dot(&bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return *b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(&cp), ac.dot(&cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return *c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
 }
 
 impl FacetMesh {

@@ -8,11 +8,13 @@ mod curve;
 mod mesh;
 mod planar;
 mod solids;
+mod triangle;
 
 pub use curve::{Curve, CurvePoints};
 pub use mesh::{MeshError, TriangleMesh, ZERO_AREA_RELATIVE};
 pub use planar::{Arc, Circle, Line};
 pub use solids::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
+pub use triangle::closest_point_on_triangle;
 
 use crate::{Point3, Vector3};
 use std::sync::Arc as Shared;

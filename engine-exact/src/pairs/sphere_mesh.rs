@@ -14,41 +14,9 @@
 
 use super::mesh_plane::PreparedMesh;
 use crate::kernel::PairContact;
+use contact_core::geometry::closest_point_on_triangle;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::PI;
-
-/// The point of triangle `a b c` closest to `p`.
-fn closest_on_triangle(p: &Point3, a: &Point3, b: &Point3, c: &Point3) -> Point3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return *a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(&bp), ac.dot(&bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return *b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(&cp), ac.dot(&cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return *c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
-}
 
 /// The solid angle of triangle `a b c` seen from `p` (signed by orientation).
 fn solid_angle(p: &Point3, a: &Point3, b: &Point3, c: &Point3) -> f64 {
@@ -72,7 +40,7 @@ pub(crate) fn contact(
     let mut winding = 0.0;
     for (t, tri) in mesh.triangles.iter().enumerate() {
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
-        let q = closest_on_triangle(&centre, &a, &b, &c);
+        let q = closest_point_on_triangle(&centre, &a, &b, &c);
         let d = (centre - q).norm_squared();
         if d < best.0 {
             best = (d, q, t);
