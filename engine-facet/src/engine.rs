@@ -1,6 +1,7 @@
 //! [`FacetEngine`]: the faceted [`GeometryEngine`].
 
 use crate::facet_mesh::FacetMesh;
+use crate::planar;
 use crate::prepared::{PreparedFacetPair, PreparedGeometry, Shape};
 use crate::tessellate::{self, Tessellation};
 use contact_core::geometry::Geometry;
@@ -15,9 +16,9 @@ use std::sync::Arc;
 /// tolerance, meshes indexed by OBB trees, contacts computed on the triangles.
 ///
 /// Supports every pair of 3-D solids and meshes, and solids against a 3-D PLANE (half-space),
-/// except PLANE against PLANE. 2-D geometry is not answered by this engine (`Unsupported`, found
-/// when the model is checked: use the exact engine). A flipped 3-D solid (IFLIP_NORMAL, "the
-/// space outside it") is rejected by `prepare`.
+/// except PLANE against PLANE; and the 2-D pairs of [`crate::planar`] (a point or a circle
+/// against a line, circle, arc or curve, on polylines). A flipped 3-D solid (IFLIP_NORMAL,
+/// "the space outside it") is rejected by `prepare`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FacetEngine {
     faceting_tolerance: FacetingTolerance,
@@ -63,7 +64,10 @@ impl FacetEngine {
         g: &GeometryInstance,
         side: Side,
     ) -> Result<PreparedGeometry, PrepareError> {
-        if g.flip_normal && !g.geometry.is_planar() {
+        if g.geometry.is_planar() {
+            return self.prepare_planar(g, side);
+        }
+        if g.flip_normal {
             return Err(PrepareError::InvalidArgument {
                 label: g.label.clone(),
                 source: InvalidArgument::with_text(
@@ -93,7 +97,7 @@ impl FacetEngine {
                     engine: "faceted",
                     i: other.kind(),
                     j: other.kind(),
-                    reason: "2-D geometry is not answered by the faceted engine; use the exact engine",
+                    reason: "this geometry has no triangle tessellation",
                 };
                 let counts = tessellate::counts(other, tolerance).ok_or_else(unsupported)?;
                 if counts.triangles > self.max_triangles {
@@ -116,6 +120,72 @@ impl FacetEngine {
     }
 }
 
+impl FacetEngine {
+    /// A 2-D geometry: circles, arcs and curves to polylines at the faceting tolerance; the
+    /// point and the line stay exact.
+    fn prepare_planar(
+        &self,
+        g: &GeometryInstance,
+        side: Side,
+    ) -> Result<PreparedGeometry, PrepareError> {
+        let geometry = g.geometry.as_ref();
+        let tolerance = g.faceting_tolerance.unwrap_or(self.faceting_tolerance);
+        let length = geometry.characteristic_length();
+        let deviation = length.map(|l| tolerance.chord_deviation(l));
+        let flip = g.flip_normal;
+        let boundary =
+            |line: tessellate::Polyline| planar::Boundary::new(line, flip, length.unwrap_or(1.0));
+        let shape = match (geometry, deviation) {
+            (Geometry::Point, _) if flip => {
+                return Err(PrepareError::InvalidArgument {
+                    label: g.label.clone(),
+                    source: InvalidArgument::with_text(
+                        if side == Side::I {
+                            "IFLIP_NORMAL"
+                        } else {
+                            "JFLIP_NORMAL"
+                        },
+                        "set on a POINT",
+                        "unset (a point has no normal to flip)",
+                    ),
+                });
+            }
+            (Geometry::Point, _) => planar::PlanarShape::Point,
+            (Geometry::Line(line), _) => planar::PlanarShape::Line {
+                line: *line,
+                side: if flip { -1.0 } else { 1.0 },
+            },
+            (Geometry::Circle(c), Some(d)) => planar::PlanarShape::Disc {
+                polygon: boundary(tessellate::circle_polyline(c, d)),
+                hole: flip,
+            },
+            (Geometry::Arc(a), Some(d)) => {
+                planar::PlanarShape::Boundary(boundary(tessellate::arc_polyline(a, d)))
+            }
+            (Geometry::Curve(c), Some(d)) => {
+                planar::PlanarShape::Boundary(boundary(tessellate::curve_polyline(c, d)))
+            }
+            (other, _) => {
+                return Err(PrepareError::Unsupported(Unsupported {
+                    engine: "faceted",
+                    i: other.kind(),
+                    j: other.kind(),
+                    reason: "this 2-D geometry has no size to facet",
+                }));
+            }
+        };
+        Ok(PreparedGeometry {
+            shape: Shape::Planar(Arc::new(planar::Planar {
+                kind: geometry.kind(),
+                length,
+                shape,
+            })),
+            pose_part_geometry: g.pose_part_geometry,
+            label: g.label.clone(),
+        })
+    }
+}
+
 impl GeometryEngine for FacetEngine {
     fn name(&self) -> &'static str {
         "faceted"
@@ -123,8 +193,10 @@ impl GeometryEngine for FacetEngine {
 
     fn supports(&self, i: &Geometry, j: &Geometry) -> Result<(), Unsupported> {
         let (ki, kj) = (i.kind(), j.kind());
-        let reason = if ki.is_planar() || kj.is_planar() {
-            Some("2-D contacts are not answered by the faceted engine; use the exact engine")
+        let reason = if ki.is_planar() && kj.is_planar() {
+            planar_kinds_supported(i, j).err()
+        } else if ki.is_planar() || kj.is_planar() {
+            Some("2-D geometry cannot contact 3-D geometry (SPEC §3)")
         } else if matches!((i, j), (Geometry::Plane(_), Geometry::Plane(_))) {
             Some("two half-spaces have no bounded intersection")
         } else {
@@ -172,6 +244,42 @@ impl GeometryEngine for FacetEngine {
         };
         let i_list = prepare_list(i, Side::I)?;
         let j_list = prepare_list(j, Side::J)?;
+        for a in &i_list {
+            for b in &j_list {
+                if let (Shape::Planar(pa), Shape::Planar(pb)) = (&a.shape, &b.shape) {
+                    planar::supported(&pa.shape, &pb.shape).map_err(|reason| Unsupported {
+                        engine: "faceted",
+                        i: pa.kind,
+                        j: pb.kind,
+                        reason,
+                    })?;
+                }
+            }
+        }
         Ok(Box::new(PreparedFacetPair::new(i_list, j_list)))
     }
+}
+
+/// The 2-D pairs by kind (flips are checked when the pair is prepared): a point or a circle
+/// against a line, circle, arc or curve, and never a circle against a bounded line.
+fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str> {
+    let mover = |g: &Geometry| matches!(g, Geometry::Point | Geometry::Circle(_));
+    let surface = |g: &Geometry| {
+        matches!(
+            g,
+            Geometry::Circle(_) | Geometry::Arc(_) | Geometry::Curve(_) | Geometry::Line(_)
+        )
+    };
+    if !((mover(i) && surface(j)) || (mover(j) && surface(i))) {
+        return Err(
+            "the faceted engine answers a point or a circle against a line, circle, arc or curve; not this pair",
+        );
+    }
+    let bounded =
+        |g: &Geometry| matches!(g, Geometry::Line(l) if l.x_range().iter().any(|x| x.is_finite()));
+    let circle = |g: &Geometry| matches!(g, Geometry::Circle(_));
+    if (circle(i) && bounded(j)) || (circle(j) && bounded(i)) {
+        return Err("a circle against a bounded 2-D PLANE is not built; use an unbounded line");
+    }
+    Ok(())
 }

@@ -67,6 +67,7 @@ pub mod facet_mesh;
 pub mod obb;
 pub mod obb_tree;
 pub mod parry_adapter;
+pub mod planar;
 mod plane_contact;
 mod prepared;
 mod scratch;

@@ -2,11 +2,12 @@
 
 use crate::contact_region::{LocalContact, mesh_mesh};
 use crate::facet_mesh::FacetMesh;
+use crate::planar::{self, Planar, PlanarContact};
 use crate::plane_contact::mesh_plane;
 use crate::scratch::with_scratch;
 use contact_core::geometry::Plane;
 use contact_core::{
-    Contact, Isometry3, Point3, PreparedPair, PreparedStats, QueryError, WorkCounters,
+    Contact, Isometry3, Point3, PreparedPair, PreparedStats, QueryError, WorkCounters, format_pose,
 };
 use std::sync::Arc;
 
@@ -17,6 +18,8 @@ pub enum Shape {
     Mesh(Arc<FacetMesh>),
     /// A half-space, kept exact.
     HalfSpace(Plane),
+    /// A 2-D geometry (points and lines exact, the rest as polylines).
+    Planar(Arc<Planar>),
 }
 
 /// One prepared entry of an I or J list.
@@ -66,6 +69,18 @@ fn to_world(pose: &Isometry3, c: &LocalContact, gi: usize, gj: usize) -> Contact
     }
 }
 
+fn planar_to_contact(c: &PlanarContact, gi: usize, gj: usize) -> Contact {
+    Contact {
+        point_i_w: c.point_i,
+        point_j_w: c.point_j,
+        normal_w: c.normal,
+        penetration: c.depth,
+        area: c.length,
+        geometry_i: gi as u32,
+        geometry_j: gj as u32,
+    }
+}
+
 impl PreparedPair for PreparedFacetPair {
     fn query(
         &self,
@@ -77,9 +92,10 @@ impl PreparedPair for PreparedFacetPair {
         QueryError::check_poses(pose_world_i, pose_world_j)?;
         contacts.clear();
         work.queries += 1;
+        let mut failure = None;
         with_scratch(|s| {
             let mut local = std::mem::take(&mut s.local);
-            for (gi, a) in self.i.iter().enumerate() {
+            'pairs: for (gi, a) in self.i.iter().enumerate() {
                 let pose_wa = pose_world_i * a.pose_part_geometry;
                 for (gj, b) in self.j.iter().enumerate() {
                     work.geometry_pairs += 1;
@@ -105,13 +121,45 @@ impl PreparedPair for PreparedFacetPair {
                                     .map(|c| to_world(&pose_wb, c, gj, gi).swapped()),
                             );
                         }
-                        // `supports` rejects PLANE against PLANE before prepare builds anything.
-                        (Shape::HalfSpace(_), Shape::HalfSpace(_)) => {}
+                        (Shape::Planar(pa), Shape::Planar(pb)) => {
+                            let length = match (pa.length, pb.length) {
+                                (Some(x), Some(y)) => x.max(y),
+                                (x, y) => x.or(y).unwrap_or(1.0),
+                            };
+                            let found =
+                                planar::contact(&pa.shape, &pose_wa, &pb.shape, &pose_wb, length)
+                                    .map_err(|e| QueryError::OutOfPlane {
+                                        i: pa.kind,
+                                        j: pb.kind,
+                                        label_i: a.label.clone(),
+                                        label_j: b.label.clone(),
+                                        angle_rad: e.angle_rad,
+                                        offset: e.offset,
+                                        pose_i: format_pose(pose_world_i),
+                                        pose_j: format_pose(pose_world_j),
+                                    });
+                            match found {
+                                Ok(Some(c)) => contacts.push(planar_to_contact(&c, gi, gj)),
+                                Ok(None) => {}
+                                Err(e) => {
+                                    failure = Some(e);
+                                    break 'pairs;
+                                }
+                            }
+                        }
+                        // `supports` rejects PLANE against PLANE and 2-D against 3-D before
+                        // prepare builds anything.
+                        (Shape::HalfSpace(_), Shape::HalfSpace(_))
+                        | (Shape::Planar(_), Shape::Mesh(_) | Shape::HalfSpace(_))
+                        | (Shape::Mesh(_) | Shape::HalfSpace(_), Shape::Planar(_)) => {}
                     }
                 }
             }
             s.local = local;
         });
+        if let Some(e) = failure {
+            return Err(e);
+        }
         work.contacts += contacts.len() as u64;
         Ok(())
     }
@@ -120,9 +168,19 @@ impl PreparedPair for PreparedFacetPair {
         let mut stats = PreparedStats::default();
         for g in self.i.iter().chain(&self.j) {
             stats.geometries += 1;
-            if let Shape::Mesh(m) = &g.shape {
-                stats.triangles += m.triangles.len();
-                stats.bytes += m.heap_bytes();
+            match &g.shape {
+                Shape::Mesh(m) => {
+                    stats.triangles += m.triangles.len();
+                    stats.bytes += m.heap_bytes();
+                }
+                Shape::Planar(p) => {
+                    if let planar::PlanarShape::Disc { polygon: b, .. }
+                    | planar::PlanarShape::Boundary(b) = &p.shape
+                    {
+                        stats.bytes += b.heap_bytes();
+                    }
+                }
+                Shape::HalfSpace(_) => {}
             }
         }
         stats

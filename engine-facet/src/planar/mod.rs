@@ -1,0 +1,243 @@
+//! 2-D contacts on polylines: the exact engine's 2-D pairs answered on the tessellated shapes.
+//!
+//! Circles, arcs and curves are tessellated to polylines at the faceting tolerance (chord
+//! deviation `L/FT`, [`crate::tessellate`]); the 2-D line (PLANE) and the point stay exact.
+//! Each polyline keeps the true outward normal at its points.
+//!
+//! ## The pairs and their answers (the exact engine's definitions, on the polylines)
+//! In every pair one side is the **mover** — a point, or a solid circle as a polygon — and the
+//! other the **surface** — a line, a circle's polygon (solid, or a hole when flipped), an arc
+//! or a curve. For two solid circles the J circle is the surface. With `c` the mover's centre
+//! in the surface's plane, `q` the nearest point of the surface's polyline, `s` the signed
+//! distance (negative in the material) and `n` the outward normal at `q`, interpolated along
+//! the chord between the true normals at its ends (so it turns smoothly as `c` moves, where
+//! the chords' own normals would jump):
+//! - **point:** contact iff `s < 0`; δ = `−s`, points `c` and `q`, normal `n`; length 0.
+//! - **circle polygon:** with `h` the polygon's support along `−n` from `c` (its vertices lie
+//!   on the circle, so `h ≤ r`), contact iff `h − s > 0`; δ = `h − s`, points `c − h·n` and
+//!   `q`; length `2√(h² − s²)` while `c` is outside the material, `2h` once inside.
+//! - **line:** the exact half-plane: `s` is `c`'s height, `q` its foot; a point beyond a
+//!   bounded line's ends has no contact (circles need an unbounded line, as in the exact
+//!   engine).
+//! - **ends of open polylines:** when `q` is an open end and `c` lies beyond it along the
+//!   tangent, no contact (no material there), as in the exact engine.
+//!
+//! Error bound: every polyline lies within `d = L/FT` of its shape, so `s` and `h` are each
+//! within `d` of their exact values, δ within `d_I + d_J`; the normal is within `O(d/ρ)` rad of
+//! the true normal, ρ the local radius of curvature.
+//!
+//! The two geometries must share a plane, as in the exact engine: their z axes within
+//! [`PLANE_ANGLE_TOLERANCE`] rad (either orientation) and the mover's origin within
+//! `PLANE_OFFSET_TOLERANCE · L` of the surface's plane; otherwise the query fails with
+//! [`QueryError::OutOfPlane`](contact_core::QueryError::OutOfPlane).
+
+mod boundary;
+
+pub use boundary::{Boundary, Nearest};
+
+use contact_core::geometry::Line;
+use contact_core::{GeometryKind, Isometry3, Point2, Point3, Vector2, Vector3};
+
+/// Largest angle (rad) between the planes of a 2-D pair.
+pub const PLANE_ANGLE_TOLERANCE: f64 = 1e-6;
+/// Largest offset between the planes of a 2-D pair, relative to the pair's length scale.
+pub const PLANE_OFFSET_TOLERANCE: f64 = 1e-6;
+
+/// A prepared 2-D geometry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planar {
+    /// Its kind (for messages).
+    pub kind: GeometryKind,
+    /// Its characteristic length, `None` for a point or an unbounded line.
+    pub length: Option<f64>,
+    /// What it became.
+    pub shape: PlanarShape,
+}
+
+/// What a 2-D geometry becomes in the faceted engine.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlanarShape {
+    /// A point (exact).
+    Point,
+    /// A circle's polygon; `hole` when flipped (the material outside it).
+    Disc {
+        /// The polygon, outward normals reversed for a hole.
+        polygon: Boundary,
+        /// True for a flipped circle.
+        hole: bool,
+    },
+    /// An arc or a curve.
+    Boundary(Boundary),
+    /// The 2-D line (exact): material at `side·y ≤ 0`.
+    Line {
+        /// Its extent along x.
+        line: Line,
+        /// +1, or −1 when flipped.
+        side: f64,
+    },
+}
+
+/// One 2-D contact in the world, J into I.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanarContact {
+    /// Point on I.
+    pub point_i: Point3,
+    /// Point on J.
+    pub point_j: Point3,
+    /// Unit normal from J into I.
+    pub normal: Vector3,
+    /// Penetration.
+    pub depth: f64,
+    /// Length of the contact (the 2-D "area").
+    pub length: f64,
+}
+
+/// The two planes of a 2-D pair do not coincide.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OutOfPlane {
+    /// Angle between the plane normals (either orientation).
+    pub angle_rad: f64,
+    /// Distance of the mover's origin from the surface's plane.
+    pub offset: f64,
+}
+
+enum Mover<'a> {
+    Point,
+    Disc(&'a Boundary),
+}
+
+enum Surface<'a> {
+    Boundary(&'a Boundary),
+    Line(&'a Line, f64),
+}
+
+fn as_surface(shape: &PlanarShape) -> Option<Surface<'_>> {
+    match shape {
+        PlanarShape::Point => None,
+        PlanarShape::Disc { polygon, .. } | PlanarShape::Boundary(polygon) => {
+            Some(Surface::Boundary(polygon))
+        }
+        PlanarShape::Line { line, side } => Some(Surface::Line(line, *side)),
+    }
+}
+
+fn as_mover(shape: &PlanarShape) -> Option<Mover<'_>> {
+    match shape {
+        PlanarShape::Point => Some(Mover::Point),
+        PlanarShape::Disc {
+            polygon,
+            hole: false,
+        } => Some(Mover::Disc(polygon)),
+        _ => None,
+    }
+}
+
+/// Whether the faceted engine answers `i` against `j` (flips included): the pairs of the
+/// module doc. Returns the reason when not.
+pub fn supported(i: &PlanarShape, j: &PlanarShape) -> Result<(), &'static str> {
+    let roles = (as_mover(i).is_some() && as_surface(j).is_some())
+        || (as_mover(j).is_some() && as_surface(i).is_some());
+    if !roles {
+        return Err(
+            "the faceted engine answers a point or a solid circle against a line, circle, arc or curve (and a solid circle in a flipped one); this pair has neither",
+        );
+    }
+    let bounded_line_for_disc = |m: &PlanarShape, s: &PlanarShape| {
+        matches!(m, PlanarShape::Disc { .. })
+            && matches!(s, PlanarShape::Line { line, .. } if line.x_range().iter().any(|x| x.is_finite()))
+    };
+    if bounded_line_for_disc(i, j) || bounded_line_for_disc(j, i) {
+        return Err("a circle against a bounded 2-D PLANE is not built; use an unbounded line");
+    }
+    Ok(())
+}
+
+/// The contact of 2-D geometry `i` at `pose_wi` (`X_WG`) against `j` at `pose_wj`; `length`
+/// is the pair's length scale.
+pub fn contact(
+    i: &PlanarShape,
+    pose_wi: &Isometry3,
+    j: &PlanarShape,
+    pose_wj: &Isometry3,
+    length: f64,
+) -> Result<Option<PlanarContact>, OutOfPlane> {
+    // The mover is I unless only J can move against I, or both circles are solid and J
+    // is the surface by convention — which is the same choice.
+    if let (Some(mover), Some(surface)) = (as_mover(i), as_surface(j)) {
+        return mover_surface(&mover, pose_wi, &surface, pose_wj, length);
+    }
+    match (as_mover(j), as_surface(i)) {
+        (Some(mover), Some(surface)) => {
+            Ok(mover_surface(&mover, pose_wj, &surface, pose_wi, length)?.map(swap))
+        }
+        // `prepare` refuses every other pair.
+        _ => Ok(None),
+    }
+}
+
+fn swap(c: PlanarContact) -> PlanarContact {
+    PlanarContact {
+        point_i: c.point_j,
+        point_j: c.point_i,
+        normal: -c.normal,
+        ..c
+    }
+}
+
+fn mover_surface(
+    mover: &Mover<'_>,
+    pose_wm: &Isometry3,
+    surface: &Surface<'_>,
+    pose_ws: &Isometry3,
+    length: f64,
+) -> Result<Option<PlanarContact>, OutOfPlane> {
+    let relative = pose_ws.inv_mul(pose_wm);
+    let z_m = relative.rotation * Vector3::z();
+    let angle_rad = z_m.xy().norm().atan2(z_m.z.abs());
+    let t = relative.translation.vector;
+    if angle_rad > PLANE_ANGLE_TOLERANCE || t.z.abs() > PLANE_OFFSET_TOLERANCE * length {
+        return Err(OutOfPlane {
+            angle_rad,
+            offset: t.z,
+        });
+    }
+    let c = Point2::new(t.x, t.y);
+    let (s, q, n) = match surface {
+        Surface::Boundary(b) => match b.nearest(&c) {
+            Some(near) => (near.signed_distance, near.point, near.normal),
+            None => return Ok(None),
+        },
+        Surface::Line(line, side) => {
+            let [x0, x1] = line.x_range();
+            if c.x < x0 || c.x > x1 {
+                return Ok(None);
+            }
+            (side * c.y, Point2::new(c.x, 0.0), Vector2::new(0.0, *side))
+        }
+    };
+    // The mover's reach along −n from its centre.
+    let h = match mover {
+        Mover::Point => 0.0,
+        Mover::Disc(polygon) => {
+            let back = relative.rotation.inverse() * Vector3::new(-n.x, -n.y, 0.0);
+            polygon.support(&back.xy())
+        }
+    };
+    let depth = h - s;
+    if depth <= 0.0 {
+        return Ok(None);
+    }
+    let chord = match mover {
+        Mover::Point => 0.0,
+        Mover::Disc(_) if s > 0.0 => 2.0 * ((h - s) * (h + s)).max(0.0).sqrt(),
+        Mover::Disc(_) => 2.0 * h,
+    };
+    let world = |p: Point2| pose_ws * Point3::new(p.x, p.y, 0.0);
+    Ok(Some(PlanarContact {
+        point_i: world(c - h * n),
+        point_j: world(q),
+        normal: pose_ws.rotation * Vector3::new(n.x, n.y, 0.0),
+        depth,
+        length: chord,
+    }))
+}
