@@ -14,6 +14,8 @@
 //! - [`contact_region`]: crossings → regions → contacts (the method and its error bound);
 //!   half-spaces in `plane_contact`.
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
+//! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve) on
+//!   polylines, with the polyline's true-normal field (exact normals for circles and arcs).
 //! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for timing comparisons.
 //!
 //! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)

@@ -329,7 +329,9 @@ fn time_parry(
     let mesh = |g: &GeometryInstance, side| -> Result<_, QueryCliError> {
         match facet.prepare_geometry(g, side)?.shape {
             Shape::Mesh(m) => Ok(m),
-            Shape::HalfSpace(_) => Err(QueryCliError::PeerNeedsMeshes(g.label.clone())),
+            Shape::HalfSpace(_) | Shape::Planar(_) => {
+                Err(QueryCliError::PeerNeedsMeshes(g.label.clone()))
+            }
         }
     };
     let (a, b) = (
