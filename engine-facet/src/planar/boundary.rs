@@ -128,8 +128,7 @@ impl Boundary {
             }
         }
         if let Some((_, kk, tt)) = foot {
-            let (a, b) = self.chord(kk);
-            let q = a + tt * (b - a);
+            let q = self.lifted(kk, tt);
             if let Some(normal) = self.interpolated_normal(kk, tt) {
                 return Some(Nearest {
                     signed_distance: (p - q).dot(&normal),
@@ -242,12 +241,88 @@ impl Boundary {
         })
     }
 
-    /// The support of the points along `direction`: `max pᵢ·direction`.
+    /// The travel tangent at point `k` scaled for chord `chord_length`, from the true normal
+    /// (`n = t × z`, so `t = (−n_y, n_x)`, with the flip undone).
+    fn tangent(&self, k: usize, chord_length: f64) -> Vector2 {
+        let n = self.normals[k];
+        self.side * chord_length * Vector2::new(-n.y, n.x)
+    }
+
+    /// The point at parameter `t` of chord `k` lifted onto the cubic Hermite curve through the
+    /// chord's ends with the true tangents there (the 2-D counterpart of the PN triangle): it
+    /// departs from a circle by `O(R·θ⁴)` for a chord of angle θ, where the chord departs by
+    /// `R·θ²/8`.
+    pub fn lifted(&self, k: usize, t: f64) -> Point2 {
+        let (a, b) = self.chord(k);
+        let next = (k + 1) % self.points.len();
+        let length = (b - a).norm();
+        let (t0, t1) = (self.tangent(k, length), self.tangent(next, length));
+        let (t2, t3) = (t * t, t * t * t);
+        let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
+        let h10 = t3 - 2.0 * t2 + t;
+        let h01 = -2.0 * t3 + 3.0 * t2;
+        let h11 = t3 - t2;
+        Point2::from(h00 * a.coords + h10 * t0 + h01 * b.coords + h11 * t1)
+    }
+
+    /// The support of the lifted curve along `direction`: `max x·direction` over the points
+    /// and the Hermite arcs on either side of the best point (a closed convex outline's
+    /// maximum lies on one of them).
     pub fn support(&self, direction: &Vector2) -> f64 {
-        self.points
-            .iter()
-            .map(|p| p.coords.dot(direction))
-            .fold(f64::NEG_INFINITY, f64::max)
+        let mut best = (f64::NEG_INFINITY, 0);
+        for (k, p) in self.points.iter().enumerate() {
+            let h = p.coords.dot(direction);
+            if h > best.0 {
+                best = (h, k);
+            }
+        }
+        let (mut h, k) = best;
+        let chords = self.chords();
+        if chords == 0 {
+            return h;
+        }
+        let before = if k > 0 {
+            Some(k - 1)
+        } else if self.closed {
+            Some(chords - 1)
+        } else {
+            None
+        };
+        let after = (k < chords).then_some(k);
+        for c in [before, after].into_iter().flatten() {
+            for t in self.stationary(c, direction).into_iter().flatten() {
+                h = h.max(self.lifted(c, t).coords.dot(direction));
+            }
+        }
+        h
+    }
+
+    /// Parameters in (0, 1) where `x(t)·d` is stationary on chord `k`'s Hermite arc.
+    fn stationary(&self, k: usize, d: &Vector2) -> [Option<f64>; 2] {
+        let (a, b) = self.chord(k);
+        let next = (k + 1) % self.points.len();
+        let length = (b - a).norm();
+        let (ad, bd) = (a.coords.dot(d), b.coords.dot(d));
+        let (t0, t1) = (
+            self.tangent(k, length).dot(d),
+            self.tangent(next, length).dot(d),
+        );
+        let qa = 6.0 * ad + 3.0 * t0 - 6.0 * bd + 3.0 * t1;
+        let qb = -6.0 * ad - 4.0 * t0 + 6.0 * bd - 2.0 * t1;
+        let qc = t0;
+        let inside = |t: f64| (t > 0.0 && t < 1.0).then_some(t);
+        if qa == 0.0 {
+            return [(qb != 0.0).then(|| -qc / qb).and_then(inside), None];
+        }
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc < 0.0 {
+            return [None, None];
+        }
+        let r = -0.5 * (qb + qb.signum() * disc.sqrt());
+        if r == 0.0 {
+            return [inside(0.0), inside(-qb / qa)];
+        }
+        [inside(r / qa), inside(qc / r)]
     }
 
     /// Heap bytes held.

@@ -13,8 +13,8 @@
 //! the chord between the true normals at its ends (so it turns smoothly as `c` moves, where
 //! the chords' own normals would jump):
 //! - **point:** contact iff `s < 0`; δ = `−s`, points `c` and `q`, normal `n`; length 0.
-//! - **circle polygon:** with `h` the polygon's support along `−n` from `c` (its vertices lie
-//!   on the circle, so `h ≤ r`), contact iff `h − s > 0`; δ = `h − s`, points `c − h·n` and
+//! - **circle polygon:** with `h` the polygon's support along `−n` from `c`, contact iff
+//!   `h − s > 0`; δ = `h − s`, points `c − h·n` and
 //!   `q`; length `2√(h² − s²)` while `c` is outside the material, `2h` once inside.
 //! - **line:** the exact half-plane: `s` is `c`'s height, `q` its foot; a point beyond a
 //!   bounded line's ends has no contact (circles need an unbounded line, as in the exact
@@ -22,9 +22,17 @@
 //! - **ends of open polylines:** when `q` is an open end and `c` lies beyond it along the
 //!   tangent, no contact (no material there), as in the exact engine.
 //!
-//! Error bound: every polyline lies within `d = L/FT` of its shape, so `s` and `h` are each
-//! within `d` of their exact values, δ within `d_I + d_J`; the normal is within `O(d/ρ)` rad of
-//! the true normal, ρ the local radius of curvature.
+//! The surface's foot and the mover's support are lifted from the chords onto cubic Hermite
+//! arcs through the chord ends with the true tangents there (the 2-D counterpart of the
+//! PN triangles of the 3-D meshes): a chord of angle θ on a circle of radius R departs from it
+//! by `R·θ²/8`, the Hermite arc by `O(R·θ⁴)`.
+//!
+//! Error bound: every polyline lies within `d = L/FT` of its shape; after the lift the depth
+//! error is second order, `O(d²/ρ)` with ρ the smallest radius of curvature involved
+//! (measured on two circles 0.4 and 1: 6e-5 at the default FT, 5e-6 at 1000, against
+//! chord deviations of 1.3e-2 and 4e-3); the normal is exact on circles and arcs (their
+//! points carry radial normals, so the normal field's foot lies on the ray from the centre)
+//! and within `O(d/ρ)` rad on curves (1.8° at the default FT on the test blob, 0.5° at 1000).
 //!
 //! The two geometries must share a plane, as in the exact engine: their z axes within
 //! [`PLANE_ANGLE_TOLERANCE`] rad (either orientation) and the mover's origin within
