@@ -65,6 +65,7 @@ pub mod planar;
 pub mod polyhedron;
 mod prepared;
 pub mod quadrature;
+mod ray_exit;
 
 use contact_core::{
     Geometry, GeometryEngine, GeometryInstance, PrepareError, PreparedPair, Unsupported,

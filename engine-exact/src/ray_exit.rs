@@ -1,0 +1,226 @@
+//! Where a ray from a point inside a solid leaves it, in the solid's frame.
+//!
+//! The contact points of SPEC §4 are taken on the line through the intersection's centroid
+//! along the contact normal: I's point where the line leaves I along `−n`, J's where it leaves
+//! J along `+n`, the penetration their distance. These hits move continuously with the poses
+//! (the plain closest points to the centroid jump between faces where two are equally near,
+//! and a force that jumps defeats a Newton corrector); for smooth surfaces near a shallow
+//! contact they coincide with the closest points, and for a sphere on a plane both give r − d.
+//!
+//! Each function takes the ray origin `o` (inside or on the solid) and a unit direction `d`,
+//! and returns the distance `t ≥ 0` to the exit, or `None` when `o` is outside the solid (a
+//! centroid outside a non-convex solid: the caller then falls back to the closest point).
+
+use contact_core::Vector3;
+use contact_core::geometry::{Cylinder, Frustum, Torus};
+
+/// The larger root of `a t² + b t + c` with `c ≤ 0 < a` (one root ≤ 0 ≤ the other), stably.
+fn positive_root(a: f64, b: f64, c: f64) -> f64 {
+    let disc = (b * b - 4.0 * a * c).max(0.0);
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    if q == 0.0 {
+        return 0.0;
+    }
+    (q / a).max(c / q).max(0.0)
+}
+
+/// Exit through the planes `z = 0` (going down) and `z = top` (going up).
+fn cap_exit(o: &Vector3, d: &Vector3, top: f64) -> f64 {
+    if d.z > 0.0 {
+        ((top - o.z) / d.z).max(0.0)
+    } else if d.z < 0.0 {
+        (-o.z / d.z).max(0.0)
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// A box with centre `centre` and half extents `half` (axis-aligned in its frame).
+pub(crate) fn box_exit(centre: &Vector3, half: &Vector3, o: &Vector3, d: &Vector3) -> Option<f64> {
+    let p = o - centre;
+    if (0..3).any(|k| p[k].abs() > half[k] * (1.0 + 1e-12)) {
+        return None;
+    }
+    let mut best = f64::INFINITY;
+    for k in 0..3 {
+        if d[k] > 0.0 {
+            best = best.min(((half[k] - p[k]) / d[k]).max(0.0));
+        } else if d[k] < 0.0 {
+            best = best.min(((-half[k] - p[k]) / d[k]).max(0.0));
+        }
+    }
+    best.is_finite().then_some(best)
+}
+
+/// An ellipsoid centred at the origin with semi-axes `semi`.
+pub(crate) fn ellipsoid_exit(semi: &Vector3, o: &Vector3, d: &Vector3) -> Option<f64> {
+    let (p, v) = (o.component_div(semi), d.component_div(semi));
+    let c = p.norm_squared() - 1.0;
+    if c > 1e-12 {
+        return None;
+    }
+    Some(positive_root(v.norm_squared(), 2.0 * p.dot(&v), c.min(0.0)))
+}
+
+/// A cylinder on the `z` axis from `z = 0` to its length.
+pub(crate) fn cylinder_exit(cylinder: &Cylinder, o: &Vector3, d: &Vector3) -> Option<f64> {
+    frustum_like_exit(cylinder.radius(), cylinder.radius(), cylinder.length(), o, d)
+}
+
+/// A frustum (or cone) on the `z` axis, bottom radius at `z = 0`, top at its length.
+pub(crate) fn frustum_exit(frustum: &Frustum, o: &Vector3, d: &Vector3) -> Option<f64> {
+    frustum_like_exit(
+        frustum.bottom_radius(),
+        frustum.top_radius(),
+        frustum.length(),
+        o,
+        d,
+    )
+}
+
+fn frustum_like_exit(r0: f64, r1: f64, length: f64, o: &Vector3, d: &Vector3) -> Option<f64> {
+    let slope = (r1 - r0) / length;
+    let radius_at = |z: f64| r0 + slope * z;
+    let size = r0.max(r1).max(length);
+    let rho2 = o.x * o.x + o.y * o.y;
+    let r_o = radius_at(o.z);
+    if o.z < -1e-12 * size
+        || o.z > length + 1e-12 * size
+        || rho2.sqrt() > r_o.max(0.0) + 1e-12 * size
+    {
+        return None;
+    }
+    let caps = cap_exit(o, d, length);
+    // The side: x² + y² − r(z)² along the ray, a t² + b t + c with c ≤ 0 at the origin.
+    let a = d.x * d.x + d.y * d.y - slope * slope * d.z * d.z;
+    let b = 2.0 * (o.x * d.x + o.y * d.y - slope * d.z * r_o);
+    let c = (rho2 - r_o * r_o).min(0.0);
+    let side = if slope == 0.0 || a > 0.0 {
+        if a > 0.0 {
+            positive_root(a, b, c)
+        } else {
+            f64::INFINITY
+        }
+    } else {
+        // a ≤ 0 (the ray is steeper than the side): the first root at which the quadratic
+        // rises through zero, if any, is where the ray leaves through the side.
+        leaving_root(a, b, c)
+    };
+    Some(caps.min(side))
+}
+
+/// The smallest `t > 0` where `a t² + b t + c` (≤ 0 at 0) rises through 0, or ∞.
+fn leaving_root(a: f64, b: f64, c: f64) -> f64 {
+    if a == 0.0 {
+        return if b > 0.0 { (-c / b).max(0.0) } else { f64::INFINITY };
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return f64::INFINITY;
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let roots = if q == 0.0 { [0.0, 0.0] } else { [q / a, c / q] };
+    roots
+        .into_iter()
+        .filter(|&t| t >= 0.0 && 2.0 * a * t + b > 0.0)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A ring torus about the `z` axis: major radius R, tube radius r. The tube's signed
+/// distance `g(p) = √((ρ − R)² + z²) − r` is marched in steps of r/8 (a chord of the tube
+/// cannot hide between two steps) and the sign change bisected to round-off.
+pub(crate) fn torus_exit(torus: &Torus, o: &Vector3, d: &Vector3) -> Option<f64> {
+    let (big, small) = (torus.major_radius(), torus.minor_radius());
+    let g = |t: f64| {
+        let p = o + t * d;
+        let rho = (p.x * p.x + p.y * p.y).sqrt();
+        ((rho - big).powi(2) + p.z * p.z).sqrt() - small
+    };
+    if g(0.0) > 1e-12 * (big + small) {
+        return None;
+    }
+    let step = small / 8.0;
+    let limit = 2.0 * (big + small) + o.norm();
+    let mut lo = 0.0;
+    let mut hi = step;
+    while g(hi) <= 0.0 {
+        lo = hi;
+        hi += step;
+        if hi > limit {
+            return Some(lo);
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if g(mid) <= 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(lo)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit(x: f64, y: f64, z: f64) -> Vector3 {
+        Vector3::new(x, y, z).normalize()
+    }
+
+    #[test]
+    fn box_and_ellipsoid_exits_lie_on_their_surfaces() {
+        let half = Vector3::new(1.0, 2.0, 0.5);
+        let o = Vector3::new(0.2, -0.3, 0.1);
+        let d = unit(0.3, -1.0, 0.2);
+        let t = box_exit(&Vector3::zeros(), &half, &o, &d).unwrap();
+        // y is the first face met: (−2 + 0.3)/d.y.
+        assert!((t - (-2.0 - o.y) / d.y).abs() < 1e-15);
+        let semi = Vector3::new(1.0, 2.0, 3.0);
+        let t = ellipsoid_exit(&semi, &o, &d).unwrap();
+        let p = (o + t * d).component_div(&semi);
+        assert!((p.norm() - 1.0).abs() < 1e-15);
+        assert!(ellipsoid_exit(&semi, &Vector3::new(2.0, 0.0, 0.0), &d).is_none());
+    }
+
+    #[test]
+    fn cylinder_and_cone_exits_by_the_side_or_a_cap() {
+        let c = Cylinder::new(1.0, 2.0).unwrap();
+        let o = Vector3::new(0.5, 0.0, 1.0);
+        // Sideways: out through the side at x = 1.
+        assert!((cylinder_exit(&c, &o, &Vector3::x()).unwrap() - 0.5).abs() < 1e-15);
+        // Up: out through the top cap.
+        assert!((cylinder_exit(&c, &o, &Vector3::z()).unwrap() - 1.0).abs() < 1e-15);
+        // A cone (tip up, radius 1 → 0 over height 2): straight up from the axis reaches the tip;
+        // from x = 0.5 at z = 0 upwards the side is met at z = 1.
+        let cone = Frustum::new(1.0, 0.0, 2.0).unwrap();
+        let axis = frustum_exit(&cone, &Vector3::new(0.0, 0.0, 0.5), &Vector3::z()).unwrap();
+        assert!((axis - 1.5).abs() < 1e-12);
+        let t = frustum_exit(&cone, &Vector3::new(0.5, 0.0, 0.0), &Vector3::z()).unwrap();
+        assert!((t - 1.0).abs() < 1e-12);
+        // A slanted ray leaves where the side's equation holds.
+        let d = unit(1.0, 0.4, 0.7);
+        let o = Vector3::new(0.1, 0.1, 0.3);
+        let t = frustum_exit(&cone, &o, &d).unwrap();
+        let p = o + t * d;
+        assert!(((p.x * p.x + p.y * p.y).sqrt() - (1.0 - 0.5 * p.z)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn torus_exit_is_on_the_tube_and_outside_origins_are_refused() {
+        let torus = Torus::new(2.0, 0.5).unwrap();
+        let o = Vector3::new(2.0, 0.0, 0.1);
+        let t = torus_exit(&torus, &o, &Vector3::z()).unwrap();
+        assert!((t - (0.5 - 0.1)).abs() < 1e-13);
+        let d = unit(0.2, 1.0, -0.3);
+        let t = torus_exit(&torus, &o, &d).unwrap();
+        let p = o + t * d;
+        let tube = (((p.x * p.x + p.y * p.y).sqrt() - 2.0).powi(2) + p.z * p.z).sqrt();
+        assert!((tube - 0.5).abs() < 1e-13);
+        assert!(torus_exit(&torus, &Vector3::zeros(), &Vector3::z()).is_none());
+    }
+}
