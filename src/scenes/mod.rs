@@ -8,10 +8,12 @@
 //! (separated, grazing, shallow, deep) and is never used as an answer.
 
 mod closed_form;
+mod from_model;
 mod rng;
 mod support;
 
 pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
+pub use from_model::{ModelSceneError, from_model};
 pub use rng::SplitMix64;
 pub use support::support;
 
@@ -21,6 +23,7 @@ use contact_core::geometry::{
 use contact_core::{
     Contact, Geometry, GeometryInstance, Isometry3, Point2, UnitQuaternion, Vector3,
 };
+use std::borrow::Cow;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_6, TAU};
 use std::sync::Arc;
 
@@ -30,10 +33,10 @@ pub type ClosedForm = fn(&Scene, &ScenePose) -> Vec<Contact>;
 /// One pair family with its poses.
 #[derive(Debug, Clone)]
 pub struct Scene {
-    /// The name `--scene` takes (`sphere_plane`, …).
-    pub name: &'static str,
+    /// The name `--scene` takes (`sphere_plane`, …; `CONTACT/7` for a dataset's contact).
+    pub name: Cow<'static, str>,
     /// One line on what the scene exercises.
-    pub description: &'static str,
+    pub description: Cow<'static, str>,
     /// The I list (one part).
     pub i: Vec<GeometryInstance>,
     /// The J list (one part).
@@ -407,8 +410,8 @@ impl Scene {
         scale: f64,
     ) -> Self {
         Self {
-            name,
-            description,
+            name: name.into(),
+            description: description.into(),
             i,
             j,
             scale,

@@ -7,15 +7,19 @@
 //! 95th percentiles of single queries on a prepared pair, one thread.
 
 mod compare;
+mod for_model;
 mod measure;
 mod report;
 mod select;
 mod sweep;
 
 pub use compare::{PoseErrors, compare};
+pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
 };
 pub use report::{csv, json, plot, table};
-pub use select::{Choice, ModelChoice, meets, select, select_model};
+pub use select::{
+    Choice, ModelChoice, NoRecommendation, Recommendation, meets, recommend, select, select_model,
+};
 pub use sweep::{DEFAULT_TOLERANCES, EngineFactory, Skipped, Sweep, TradeReport, run};
