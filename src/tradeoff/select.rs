@@ -273,4 +273,55 @@ mod tests {
         );
         assert_eq!(model.total_query_ns, 1500.0);
     }
+
+    #[test]
+    fn recommend_breaks_ties_towards_exact_and_names_the_contact_without_a_candidate() {
+        // A tie in time: the exact engine (its error is the smaller by construction).
+        let tie = vec![
+            row("t", "exact", None, 1e-12, 700.0),
+            row("t", "faceted", Some(100.0), 4e-3, 700.0),
+        ];
+        let r = recommend(&tie, &["t".into()], 0.01).unwrap();
+        assert_eq!(r.contacts[0].engine, "exact");
+        assert_eq!(
+            (r.model.engine.as_str(), r.model.total_query_ns),
+            ("exact", 700.0)
+        );
+        // Two faceted tolerances meeting the target at the same time: the smaller.
+        let level = vec![
+            row("f", "faceted", Some(300.0), 1e-3, 500.0),
+            row("f", "faceted", Some(100.0), 2e-3, 500.0),
+        ];
+        let r = recommend(&level, &["f".into()], 0.01).unwrap();
+        assert_eq!(r.contacts[0].faceting_tolerance, Some(100.0));
+        assert_eq!(r.model.faceting_tolerance, Some(100.0));
+        // No candidate: the first contact without one is named, with the best error seen.
+        let mut rows = tie.clone();
+        rows.push(row("u", "faceted", Some(100.0), 3e-2, 10.0));
+        rows.push(row("u", "parry", None, 1e-6, 5.0));
+        let e = recommend(&rows, &["t".into(), "u".into()], 0.01).unwrap_err();
+        assert_eq!(
+            e,
+            NoRecommendation::Contact {
+                contact: "u".into(),
+                max_depth_error: 0.01,
+                best: Some(3e-2),
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "u: no engine and faceting tolerance meets a depth error of 1e-2 (best measured: 3.00e-2)"
+        );
+        // Each contact has a setting but no single one serves both.
+        let split = vec![
+            row("a", "exact", None, 1e-12, 100.0),
+            row("b", "faceted", Some(100.0), 1e-3, 100.0),
+        ];
+        let e = recommend(&split, &["a".into(), "b".into()], 0.01).unwrap_err();
+        assert!(matches!(e, NoRecommendation::Model { .. }), "{e}");
+        assert!(
+            e.to_string().ends_with("a: exact, b: faceted FT 100"),
+            "{e}"
+        );
+    }
 }
