@@ -129,7 +129,7 @@ fn main() -> ExitCode {
                 plot,
             };
             let mut progress = |label: &str| eprintln!("measuring {label}");
-            let parry = engine_exact::parry_adapter::ParryEngine;
+            let parry = contact::tradeoff::ParryPeerEngine;
             let peers: Vec<&dyn contact_core::GeometryEngine> = if peer.is_some() {
                 vec![&parry]
             } else {

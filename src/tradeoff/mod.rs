@@ -9,6 +9,7 @@
 mod compare;
 mod for_model;
 mod measure;
+mod parry_peer;
 mod report;
 mod select;
 mod sweep;
@@ -18,6 +19,7 @@ pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
 };
+pub use parry_peer::ParryPeerEngine;
 pub use report::{csv, json, plot, table};
 pub use select::{
     Choice, ModelChoice, NoRecommendation, Recommendation, meets, recommend, select, select_model,
