@@ -62,8 +62,12 @@ pub struct ScenePose {
 }
 
 /// Nominal depths as fractions of a scene's scale: separated, near, grazing (1e-12 of the
-/// scale), shallow to deep.
-pub const RELATIVE_DEPTHS: [f64; 7] = [-0.05, -1e-3, 1e-12, 1e-3, 0.01, 0.03, 0.1];
+/// scale), then shallow to deep in half-decade steps. The steps match the tolerance sweep's
+/// (100, 300, 1000, …): a faceted engine misses a contact shallower than its faceting band and
+/// then errs by that contact's whole depth, so the worst error over the family is a staircase
+/// on these depths; half-decade steps let it fall at each half-decade of tolerance.
+pub const RELATIVE_DEPTHS: [f64; 10] =
+    [-0.05, -1e-3, 1e-12, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1];
 
 /// Poses per nominal depth (different seeded orientations and approach directions).
 pub const POSES_PER_DEPTH: usize = 3;
