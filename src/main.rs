@@ -24,9 +24,13 @@ enum Command {
     Check(cli::check::CheckArgs),
     /// Contacts between two geometries at a list of relative poses, with timings.
     Query(cli::query::QueryArgs),
-    /// The accuracy-against-speed sweep over the reference scenes.
+    /// The accuracy-against-speed sweep over the reference scenes, or over a dataset's contacts.
     Tradeoff {
-        /// Scene names (default: the whole suite; `contact scenes` lists them).
+        /// A dataset (.adm): its contacts are the scenes, at poses around its initial
+        /// configuration, against the exact engine.
+        model: Option<PathBuf>,
+        /// Scene names (default: the whole suite; `contact scenes` lists them), or contact
+        /// names (`CONTACT/3`) with a dataset.
         #[arg(long = "scene")]
         scenes: Vec<String>,
         /// Faceting tolerances to sweep (default 100, 300.0028, 1000, 3000, 10000).
@@ -48,6 +52,9 @@ enum Command {
         #[arg(long, value_parser = ["parry"])]
         peer: Option<String>,
     },
+    /// Recommend the fastest engine and faceting tolerance meeting an accuracy target on a
+    /// dataset's own contacts (exit 1 naming the contact when none does).
+    Select(cli::select::SelectArgs),
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {
         /// Scene names (default: the whole suite).
@@ -103,6 +110,7 @@ fn main() -> ExitCode {
             }
         },
         Command::Tradeoff {
+            model,
             scenes,
             tolerances,
             rounds,
@@ -112,6 +120,7 @@ fn main() -> ExitCode {
             peer,
         } => {
             let args = cli::tradeoff::TradeoffArgs {
+                model,
                 scenes,
                 tolerances,
                 rounds,
@@ -120,7 +129,7 @@ fn main() -> ExitCode {
                 plot,
             };
             let mut progress = |label: &str| eprintln!("measuring {label}");
-            let parry = engine_exact::parry_adapter::ParryEngine;
+            let parry = contact::tradeoff::ParryPeerEngine;
             let peers: Vec<&dyn contact_core::GeometryEngine> = if peer.is_some() {
                 vec![&parry]
             } else {
@@ -139,6 +148,16 @@ fn main() -> ExitCode {
                     ExitCode::from(1)
                 }
             }
+        }
+        Command::Select(args) => {
+            let mut progress = |label: &str| eprintln!("measuring {label}");
+            exit(cli::select::run(
+                &args,
+                &contact::engine_choice::build_engine,
+                &mut stdout,
+                &mut std::io::stderr(),
+                &mut progress,
+            ))
         }
         Command::Scenes { names, answers } => {
             match cli::scenes::run(&names, answers, &mut stdout) {

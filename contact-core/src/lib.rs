@@ -1,11 +1,15 @@
 //! # contact-core: the shared vocabulary of `contact`
 //!
 //! `contact` computes compliant contact between rigid parts, as the Adams Solver CONTACT
-//! statement does. A contact has two sides, each a list of geometries on one part; a geometry
-//! engine answers *where and how deep* they touch, and force laws turn that into forces.
-//! Two engines implement one trait: the exact engine (analytic answers for primitives) and the
-//! faceted engine (tessellated meshes with OBB trees). This crate holds what both share and
-//! what an embedder needs besides one engine:
+//! statement does: a contact's two sides are lists of geometries on two parts, a geometry
+//! engine answers where, how deep and which way they touch, and force laws turn that into
+//! forces. Two engines answer behind one trait: the *exact* engine (analytic, the reference)
+//! and the *faceted* engine (triangle meshes in OBB trees, whose error shrinks as the faceting
+//! tolerance rises while its cost grows: the trade `contact tradeoff` measures and
+//! `contact select` settles for a model). A CONTACT is prepared once; the prepared pair is then
+//! queried at any poses from any number of threads (`&self`, no locks).
+//!
+//! This crate holds what both engines share and what an embedder needs besides one engine:
 //!
 //! - [`Geometry`]: every shape of SPEC §2, validated at construction;
 //!   [`GeometryInstance`] places one on a part.

@@ -1,8 +1,18 @@
 //! # engine-exact: analytic contact kinematics for `contact`
 //!
-//! The exact engine plays the part Parasolid plays in Adams: it answers the contact question
-//! of SPEC §4 from the geometry itself, in closed form where one exists, and is the reference
-//! the faceted engine is judged against. It implements [`GeometryEngine`] from `contact-core`.
+//! `contact` computes compliant contact between rigid parts, as the Adams Solver CONTACT
+//! statement does: a contact's two sides are lists of geometries on two parts, a geometry
+//! engine answers where, how deep and which way they touch, and force laws turn that into
+//! forces. Two engines answer behind one trait: the *exact* engine (analytic, the reference)
+//! and the *faceted* engine (triangle meshes in OBB trees, whose error shrinks as the faceting
+//! tolerance rises while its cost grows: the trade `contact tradeoff` measures and
+//! `contact select` settles for a model). A CONTACT is prepared once; the prepared pair is then
+//! queried at any poses from any number of threads (`&self`, no locks).
+//!
+//! This crate is the exact engine. It plays the part Parasolid plays in Adams: it answers the
+//! contact question of SPEC §4 from the geometry itself, in closed form where one exists, and
+//! is the reference the faceted engine is judged against. It implements [`GeometryEngine`]
+//! from `contact-core`.
 //!
 //! ## The contact it returns (SPEC §4)
 //! For each (I geometry, J geometry) pair whose solids overlap with positive volume (area in

@@ -1,10 +1,20 @@
 //! # engine-facet: the faceted geometry engine of `contact`
 //!
-//! The part RAPID plays in Adams: every geometry of a CONTACT becomes a triangle mesh (native
-//! primitives are tessellated at a faceting tolerance FT, meshes read from STL keep their facets,
-//! 3-D planes stay exact half-spaces), meshes are indexed by OBB trees, and a query returns one
-//! Adams-style [`Contact`](contact_core::Contact) per intersection region — point on each body,
-//! normal, penetration, area — whose error shrinks as FT rises.
+//! `contact` computes compliant contact between rigid parts, as the Adams Solver CONTACT
+//! statement does: a contact's two sides are lists of geometries on two parts, a geometry
+//! engine answers where, how deep and which way they touch, and force laws turn that into
+//! forces. Two engines answer behind one trait: the *exact* engine (analytic, the reference)
+//! and the *faceted* engine (triangle meshes in OBB trees, whose error shrinks as the faceting
+//! tolerance rises while its cost grows: the trade `contact tradeoff` measures and
+//! `contact select` settles for a model). A CONTACT is prepared once; the prepared pair is then
+//! queried at any poses from any number of threads (`&self`, no locks).
+//!
+//! This crate is the faceted engine, in the part RAPID plays in Adams: every geometry of a
+//! CONTACT becomes a triangle mesh (native primitives are tessellated at a faceting tolerance
+//! FT, meshes read from STL keep their facets, 3-D planes stay exact half-spaces), meshes are
+//! indexed by OBB trees, and a query returns one Adams-style
+//! [`Contact`](contact_core::Contact) per intersection region — point on each body, normal,
+//! penetration, area — whose error shrinks as FT rises.
 //!
 //! Pipeline and modules:
 //! - [`tessellate`]: primitives → closed meshes (FT → segment counts documented there);
@@ -16,7 +26,7 @@
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
 //! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve) on
 //!   polylines, with the polyline's true-normal field (exact normals for circles and arcs).
-//! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for timing comparisons.
+//! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for side-by-side comparisons.
 //!
 //! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)
 //! Worst case over four mesh orientations; depth error relative to the exact depth, normal error in

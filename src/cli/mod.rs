@@ -4,4 +4,5 @@ pub mod check;
 pub mod query;
 pub mod run;
 pub mod scenes;
+pub mod select;
 pub mod tradeoff;

@@ -1,4 +1,5 @@
-//! `contact tradeoff`: the accuracy-against-speed sweep over the scene suite.
+//! `contact tradeoff [MODEL.adm]`: the accuracy-against-speed sweep over the scene suite, or
+//! over a dataset's own contacts (one scene per CONTACT, see [`crate::scenes::from_model`]).
 
 use crate::scenes::{self, Scene};
 use crate::tradeoff::{self, EngineFactory, Sweep, Timing, TradeReport};
@@ -9,7 +10,9 @@ use std::path::PathBuf;
 /// What `contact tradeoff` was asked to do.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct TradeoffArgs {
-    /// Scene names (empty: the whole suite).
+    /// A dataset whose contacts are the scenes (`None`: the reference suite).
+    pub model: Option<PathBuf>,
+    /// Scene names (empty: the whole suite, or every contact of the model).
     pub scenes: Vec<String>,
     /// Faceting tolerances (empty: the default sweep).
     pub tolerances: Vec<f64>,
@@ -29,6 +32,15 @@ pub enum TradeoffError {
     /// A scene name not in the suite.
     #[error("no scene named '{0}' (run `contact scenes` for the list)")]
     UnknownScene(String),
+    /// A contact name not in the model.
+    #[error("the model has no contact named '{0}' (its contacts are named CONTACT/id)")]
+    UnknownContact(String),
+    /// The dataset could not be read or has errors.
+    #[error(transparent)]
+    Dataset(#[from] crate::dataset::DatasetError),
+    /// A contact of the dataset could not become a scene.
+    #[error(transparent)]
+    Scenes(#[from] crate::scenes::ModelSceneError),
     /// A tolerance out of range.
     #[error("--faceting-tolerance: {0}")]
     Tolerance(#[from] contact_core::InvalidArgument),
@@ -57,7 +69,20 @@ pub fn run(
     out: &mut dyn Write,
     progress: &mut dyn FnMut(&str),
 ) -> Result<TradeReport, TradeoffError> {
-    let chosen: Vec<Scene> = if args.scenes.is_empty() {
+    let chosen: Vec<Scene> = if let Some(path) = &args.model {
+        let (model, _warnings) = crate::dataset::load(path, None)?;
+        let all = scenes::from_model(&model)?;
+        if let Some(unknown) = args
+            .scenes
+            .iter()
+            .find(|n| !all.iter().any(|s| s.name == **n))
+        {
+            return Err(TradeoffError::UnknownContact(unknown.clone()));
+        }
+        all.into_iter()
+            .filter(|s| args.scenes.is_empty() || args.scenes.iter().any(|n| *n == s.name))
+            .collect()
+    } else if args.scenes.is_empty() {
         scenes::suite()
     } else {
         args.scenes

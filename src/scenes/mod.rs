@@ -8,10 +8,12 @@
 //! (separated, grazing, shallow, deep) and is never used as an answer.
 
 mod closed_form;
+mod from_model;
 mod rng;
 mod support;
 
 pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
+pub use from_model::{ModelSceneError, from_model};
 pub use rng::SplitMix64;
 pub use support::support;
 
@@ -21,6 +23,7 @@ use contact_core::geometry::{
 use contact_core::{
     Contact, Geometry, GeometryInstance, Isometry3, Point2, UnitQuaternion, Vector3,
 };
+use std::borrow::Cow;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_6, TAU};
 use std::sync::Arc;
 
@@ -30,10 +33,10 @@ pub type ClosedForm = fn(&Scene, &ScenePose) -> Vec<Contact>;
 /// One pair family with its poses.
 #[derive(Debug, Clone)]
 pub struct Scene {
-    /// The name `--scene` takes (`sphere_plane`, …).
-    pub name: &'static str,
+    /// The name `--scene` takes (`sphere_plane`, …; `CONTACT/7` for a dataset's contact).
+    pub name: Cow<'static, str>,
     /// One line on what the scene exercises.
-    pub description: &'static str,
+    pub description: Cow<'static, str>,
     /// The I list (one part).
     pub i: Vec<GeometryInstance>,
     /// The J list (one part).
@@ -59,8 +62,12 @@ pub struct ScenePose {
 }
 
 /// Nominal depths as fractions of a scene's scale: separated, near, grazing (1e-12 of the
-/// scale), shallow to deep.
-pub const RELATIVE_DEPTHS: [f64; 7] = [-0.05, -1e-3, 1e-12, 1e-3, 0.01, 0.03, 0.1];
+/// scale), then shallow to deep in half-decade steps. The steps match the tolerance sweep's
+/// (100, 300, 1000, …): a faceted engine misses a contact shallower than its faceting band and
+/// then errs by that contact's whole depth, so the worst error over the family is a staircase
+/// on these depths; half-decade steps let it fall at each half-decade of tolerance.
+pub const RELATIVE_DEPTHS: [f64; 10] =
+    [-0.05, -1e-3, 1e-12, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1];
 
 /// Poses per nominal depth (different seeded orientations and approach directions).
 pub const POSES_PER_DEPTH: usize = 3;
@@ -407,8 +414,8 @@ impl Scene {
         scale: f64,
     ) -> Self {
         Self {
-            name,
-            description,
+            name: name.into(),
+            description: description.into(),
             i,
             j,
             scale,

@@ -48,7 +48,7 @@ impl Reference {
             }
             Err(source) => {
                 return Err(TradeError::Prepare {
-                    scene: scene.name,
+                    scene: scene.name.to_string(),
                     engine: exact.name(),
                     source: Box::new(source),
                 });
@@ -63,7 +63,7 @@ impl Reference {
                 pair.query(&p.pose_world_i, &p.pose_world_j, &mut out, &mut work)
                     .map(|()| out)
                     .map_err(|source| TradeError::Query {
-                        scene: scene.name,
+                        scene: scene.name.to_string(),
                         engine: exact.name(),
                         source: Box::new(source),
                     })
@@ -155,7 +155,7 @@ pub enum TradeError {
     #[error("scene {scene}, {engine} engine: {source}")]
     Prepare {
         /// Scene name.
-        scene: &'static str,
+        scene: String,
         /// Engine name.
         engine: &'static str,
         /// The engine's error (boxed: it may carry a geometry's label).
@@ -165,7 +165,7 @@ pub enum TradeError {
     #[error("scene {scene}, {engine} engine: {source}")]
     Query {
         /// Scene name.
-        scene: &'static str,
+        scene: String,
         /// Engine name.
         engine: &'static str,
         /// The engine's error (boxed: query errors carry their reproducer).
@@ -188,7 +188,7 @@ pub fn measure(
         Err(PrepareError::Unsupported(_)) => return Ok(None),
         Err(source) => {
             return Err(TradeError::Prepare {
-                scene: scene.name,
+                scene: scene.name.to_string(),
                 engine: engine.name(),
                 source: Box::new(source),
             });
@@ -197,7 +197,7 @@ pub fn measure(
     let prepare_ms = started.elapsed().as_secs_f64() * 1e3;
     let stats = pair.stats();
     let query_error = |source: QueryError| TradeError::Query {
-        scene: scene.name,
+        scene: scene.name.to_string(),
         engine: engine.name(),
         source: Box::new(source),
     };

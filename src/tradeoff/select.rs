@@ -116,6 +116,93 @@ pub fn select_model(
         .min_by(|a, b| a.total_query_ns.total_cmp(&b.total_query_ns))
 }
 
+/// A recommendation for every contact of a model and for the model as a whole.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Recommendation {
+    /// The target: largest depth error, relative to each contact's size.
+    pub max_depth_error: f64,
+    /// The fastest setting meeting the target, per contact, in the order asked.
+    pub contacts: Vec<Choice>,
+    /// One engine and tolerance for the whole model (PREFERENCES is model-wide).
+    pub model: ModelChoice,
+}
+
+/// Why no recommendation exists.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NoRecommendation {
+    /// No measured setting meets the target on this contact.
+    #[error(
+        "{contact}: no engine and faceting tolerance meets a depth error of {max_depth_error:e} \
+         (best measured: {})",
+        best.map_or_else(|| "none with a reference".to_string(), |e| format!("{e:.2e}"))
+    )]
+    Contact {
+        /// The contact (scene) name.
+        contact: String,
+        /// The target.
+        max_depth_error: f64,
+        /// The smallest depth error any exact or faceted row reached on it, if any had a
+        /// reference.
+        best: Option<f64>,
+    },
+    /// Every contact has a setting, but no single one serves them all.
+    #[error(
+        "no single engine and faceting tolerance meets a depth error of {max_depth_error:e} on \
+         every contact: {}",
+        .choices.join(", ")
+    )]
+    Model {
+        /// The target.
+        max_depth_error: f64,
+        /// Each contact's own choice, as `contact: engine FT`.
+        choices: Vec<String>,
+    },
+}
+
+/// The recommendation for `contacts` from measured rows: [`select`] per contact, then
+/// [`select_model`]. The first contact without a setting that meets the target is the error.
+pub fn recommend(
+    records: &[TradeRecord],
+    contacts: &[String],
+    max_depth_error: f64,
+) -> Result<Recommendation, NoRecommendation> {
+    let choices = contacts
+        .iter()
+        .map(|c| {
+            select(records, c, max_depth_error).ok_or_else(|| NoRecommendation::Contact {
+                contact: c.clone(),
+                max_depth_error,
+                best: records
+                    .iter()
+                    .filter(|r| &r.scene == c && selectable(r))
+                    .filter_map(|r| r.depth_error)
+                    .min_by(f64::total_cmp),
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let model = select_model(records, contacts, max_depth_error).ok_or_else(|| {
+        NoRecommendation::Model {
+            max_depth_error,
+            choices: choices.iter().map(Choice::describe).collect(),
+        }
+    })?;
+    Ok(Recommendation {
+        max_depth_error,
+        contacts: choices,
+        model,
+    })
+}
+
+impl Choice {
+    /// `contact: engine` or `contact: faceted FT t`.
+    pub fn describe(&self) -> String {
+        match self.faceting_tolerance {
+            Some(t) => format!("{}: {} FT {t}", self.contact, self.engine),
+            None => format!("{}: {}", self.contact, self.engine),
+        }
+    }
+}
+
 fn selectable(r: &TradeRecord) -> bool {
     r.engine == "exact" || r.engine == "faceted"
 }
@@ -185,5 +272,56 @@ mod tests {
             ("faceted", Some(300.0))
         );
         assert_eq!(model.total_query_ns, 1500.0);
+    }
+
+    #[test]
+    fn recommend_breaks_ties_towards_exact_and_names_the_contact_without_a_candidate() {
+        // A tie in time: the exact engine (its error is the smaller by construction).
+        let tie = vec![
+            row("t", "exact", None, 1e-12, 700.0),
+            row("t", "faceted", Some(100.0), 4e-3, 700.0),
+        ];
+        let r = recommend(&tie, &["t".into()], 0.01).unwrap();
+        assert_eq!(r.contacts[0].engine, "exact");
+        assert_eq!(
+            (r.model.engine.as_str(), r.model.total_query_ns),
+            ("exact", 700.0)
+        );
+        // Two faceted tolerances meeting the target at the same time: the smaller.
+        let level = vec![
+            row("f", "faceted", Some(300.0), 1e-3, 500.0),
+            row("f", "faceted", Some(100.0), 2e-3, 500.0),
+        ];
+        let r = recommend(&level, &["f".into()], 0.01).unwrap();
+        assert_eq!(r.contacts[0].faceting_tolerance, Some(100.0));
+        assert_eq!(r.model.faceting_tolerance, Some(100.0));
+        // No candidate: the first contact without one is named, with the best error seen.
+        let mut rows = tie.clone();
+        rows.push(row("u", "faceted", Some(100.0), 3e-2, 10.0));
+        rows.push(row("u", "parry", None, 1e-6, 5.0));
+        let e = recommend(&rows, &["t".into(), "u".into()], 0.01).unwrap_err();
+        assert_eq!(
+            e,
+            NoRecommendation::Contact {
+                contact: "u".into(),
+                max_depth_error: 0.01,
+                best: Some(3e-2),
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "u: no engine and faceting tolerance meets a depth error of 1e-2 (best measured: 3.00e-2)"
+        );
+        // Each contact has a setting but no single one serves both.
+        let split = vec![
+            row("a", "exact", None, 1e-12, 100.0),
+            row("b", "faceted", Some(100.0), 1e-3, 100.0),
+        ];
+        let e = recommend(&split, &["a".into(), "b".into()], 0.01).unwrap_err();
+        assert!(matches!(e, NoRecommendation::Model { .. }), "{e}");
+        assert!(
+            e.to_string().ends_with("a: exact, b: faceted FT 100"),
+            "{e}"
+        );
     }
 }

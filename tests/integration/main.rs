@@ -9,6 +9,7 @@ mod extremes;
 mod fuzz_seeds;
 mod malformed;
 mod scenes_cli;
+mod select;
 mod trade_schema;
 mod tradeoff;
 

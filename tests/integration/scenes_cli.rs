@@ -11,7 +11,7 @@ fn scenes_lists_the_suite_and_prints_closed_form_answers() {
     let text = String::from_utf8(out).unwrap();
     // Header plus one row per pose in contact (the separated ones have none).
     let rows: Vec<&str> = text.lines().skip(1).collect();
-    assert_eq!(rows.len(), 15, "{text}");
+    assert_eq!(rows.len(), 24, "{text}");
     let err = contact::cli::scenes::run(&["nope".to_string()], false, &mut Vec::new()).unwrap_err();
     assert_eq!(
         err.to_string(),

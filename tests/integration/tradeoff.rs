@@ -64,12 +64,13 @@ fn exact_matches_closed_forms_and_faceted_errors_shrink_with_the_tolerance() {
             .filter(|r| r.engine == "faceted")
             .map(|r| r.depth_error.unwrap())
             .collect();
-        // Never worse at a finer tolerance, and much better over the sweep. It can stay level
-        // between two tolerances while a shallow pose is still inside both faceting bands (a
-        // miss counts its whole depth: sphere_sphere's 7e-4-deep pose until FT > 4950).
+        // Strictly better at each finer tolerance, and much better over the sweep. The worst
+        // error over a scene's poses is a staircase on the nominal depths (a contact shallower
+        // than the faceting band is missed and counts its whole depth); the half-decade depths
+        // resolve each half-decade of tolerance for these scenes from 100 to 3000.
         assert_eq!(faceted.len(), tolerances.len(), "{name}");
         assert!(
-            faceted.windows(2).all(|w| w[1] <= w[0]),
+            faceted.windows(2).all(|w| w[1] < w[0]),
             "{name}: faceted errors {faceted:?}"
         );
         assert!(

@@ -1,0 +1,256 @@
+//! `contact select` on datasets: the exact engine where it is both faster and exact, the
+//! faceted engine at its smallest sufficient tolerance where the exact engine is slow (a ball
+//! on a large STL mesh), and a
+//! clear refusal naming the contact when nothing can be checked against the target.
+
+use contact::engine_choice::build_engine;
+use contact::tradeoff::{self, Sweep, Timing, TradeRecord};
+use contact_core::FacetingTolerance;
+use contact_core::geometry::Ellipsoid;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+fn sweep(tolerances: &[f64]) -> Sweep {
+    Sweep {
+        tolerances: tolerances
+            .iter()
+            .map(|&t| FacetingTolerance::new(t).unwrap())
+            .collect(),
+        timing: Timing {
+            rounds: 1,
+            min_sample_ns: 0,
+        },
+    }
+}
+
+/// A fresh directory for one test's files.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("contact-select-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A UV sphere of radius `r` with `n` segments around, as an ascii STL file.
+fn write_sphere_stl(path: &Path, r: f64, n: u32) {
+    let sphere = Ellipsoid::sphere(r).unwrap();
+    let deviation = 2.0 * r * (1.0 - (std::f64::consts::PI / f64::from(n)).cos()) * (1.0 + 1e-9);
+    let t = engine_facet::tessellate::ellipsoid(&sphere, deviation);
+    let mut text = String::from("solid sphere\n");
+    for tri in &t.triangles {
+        let [a, b, c] = tri.map(|k| t.vertices[k as usize]);
+        let normal = (b - a).cross(&(c - a)).normalize();
+        let _ = writeln!(text, "facet normal {} {} {}", normal.x, normal.y, normal.z);
+        text.push_str("outer loop\n");
+        for v in [a, b, c] {
+            let _ = writeln!(text, "vertex {:?} {:?} {:?}", v.x, v.y, v.z);
+        }
+        text.push_str("endloop\nendfacet\n");
+    }
+    text.push_str("endsolid sphere\n");
+    std::fs::write(path, text).unwrap();
+}
+
+/// A ball of radius 1 on a moving part above the ground's geometry `ground_graphics`.
+fn ball_over(ground_graphics: &str, height: f64) -> String {
+    format!(
+        "ball over the ground\n\
+         PART/1, GROUND\n\
+         MARKER/10, PART = 1\n\
+         PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
+         MARKER/20, PART = 2, QP = 0, 0, {height}\n\
+         GRAPHICS/1, ELLIPSOID, CM = 20, XSCALE = 2, YSCALE = 2, ZSCALE = 2\n\
+         {ground_graphics}\n\
+         CONTACT/1, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E5, EXPONENT = 2, DAMPING = 10\
+         , DMAX = 0.01\n\
+         END\n"
+    )
+}
+
+fn load(dir: &Path, adm: &str) -> contact::model::Model {
+    let path = dir.join("model.adm");
+    std::fs::write(&path, adm).unwrap();
+    contact::dataset::load(&path, None).unwrap().0
+}
+
+/// The smallest tolerance among the faceted rows of `contact` meeting the target, read
+/// straight from the records.
+fn smallest_sufficient(records: &[TradeRecord], contact: &str, target: f64) -> Option<f64> {
+    records
+        .iter()
+        .filter(|r| r.scene == contact && r.engine == "faceted")
+        .filter(|r| r.depth_error.is_some_and(|e| e <= target))
+        .filter_map(|r| r.faceting_tolerance)
+        .min_by(f64::total_cmp)
+}
+
+#[test]
+fn select_picks_the_exact_engine_for_a_sphere_on_a_plane() {
+    let dir = scratch("plane");
+    let model = load(&dir, &ball_over("GRAPHICS/2, PLANE, RM = 10", 1.5));
+    let selection = tradeoff::select_for_model(
+        &model,
+        &sweep(&[100.0, 300.0028]),
+        &build_engine,
+        &[],
+        0.01,
+        &mut |_| {},
+    )
+    .unwrap();
+    assert_eq!(selection.contacts, ["CONTACT/1"]);
+    // The contact's poses: the initial one (1.5 − 1 = 0.5 above the plane), then the family
+    // placed by support functions, which for a ball on a plane is exactly r − d (the closed
+    // form, independent of the engine).
+    let scene = &contact::scenes::from_model(&model).unwrap()[0];
+    assert_eq!(scene.scale, 1.0);
+    assert!((scene.poses[0].nominal_depth + 0.5).abs() < 1e-12);
+    for pose in &scene.poses {
+        let ball = (pose.pose_world_i * scene.i[0].pose_part_geometry)
+            .translation
+            .vector;
+        assert!(
+            (1.0 - ball.z - pose.nominal_depth).abs() < 1e-12,
+            "{pose:?}"
+        );
+    }
+    let records = &selection.report.records;
+    // The initial pose (separated) plus the suite's depths × poses per depth.
+    let poses = 1 + contact::scenes::RELATIVE_DEPTHS.len() * contact::scenes::POSES_PER_DEPTH;
+    assert!(records.iter().all(|r| r.poses == poses), "{records:?}");
+    let exact = records.iter().find(|r| r.engine == "exact").unwrap();
+    assert_eq!(exact.reference, tradeoff::ReferenceSource::ExactEngine);
+    assert!(records.iter().all(|r| r.depth_error.is_some()));
+    let r = selection.recommendation.unwrap();
+    assert_eq!(
+        (
+            r.contacts[0].engine.as_str(),
+            r.contacts[0].faceting_tolerance
+        ),
+        ("exact", None)
+    );
+    assert_eq!(
+        (r.model.engine.as_str(), r.model.faceting_tolerance),
+        ("exact", None)
+    );
+    // The same through the command, with its JSON.
+    let json = dir.join("select.json");
+    let args = contact::cli::select::SelectArgs {
+        model: dir.join("model.adm"),
+        max_depth_error: 0.01,
+        tolerances: vec![100.0],
+        rounds: Some(1),
+        json: Some(json.clone()),
+    };
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let code =
+        contact::cli::select::run(&args, &build_engine, &mut out, &mut err, &mut |_| {}).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert_eq!(code, 0, "{text}{}", String::from_utf8_lossy(&err));
+    assert!(text.contains("model: exact engine"), "{text}");
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
+    assert_eq!(doc["recommendation"]["model"]["engine"], "exact");
+    assert_eq!(doc["records"].as_array().unwrap().len(), 2);
+}
+
+#[test]
+fn select_picks_the_faceted_engine_at_its_smallest_sufficient_tolerance_when_faster() {
+    // A ball on a 9,800-triangle STL sphere: the exact engine visits every triangle on every
+    // query; the faceted engine descends two trees to the few near the contact. The ball's own
+    // faceting sets the error.
+    let dir = scratch("mesh");
+    write_sphere_stl(&dir.join("big.stl"), 5.0, 100);
+    let model = load(
+        &dir,
+        &ball_over("GRAPHICS/2, EXTERNAL, RM = 10, FILE = big.stl", 6.5),
+    );
+    let target = 0.01;
+    let selection = tradeoff::select_for_model(
+        &model,
+        &sweep(&[300.0028, 100.0]),
+        &build_engine,
+        &[],
+        target,
+        &mut |_| {},
+    )
+    .unwrap();
+    let records = &selection.report.records;
+    let exact = records.iter().find(|r| r.engine == "exact").unwrap();
+    assert_eq!(exact.reference, tradeoff::ReferenceSource::ExactEngine);
+    let expected = smallest_sufficient(records, "CONTACT/1", target)
+        .unwrap_or_else(|| panic!("no tolerance met {target}: {records:?}"));
+    let at_expected = records
+        .iter()
+        .find(|r| r.engine == "faceted" && r.faceting_tolerance == Some(expected))
+        .unwrap();
+    // The premise: the faceted engine's work per query is a small part of the exact engine's
+    // (two tree descents against a pass over the whole mesh), and so is its time.
+    assert!(
+        at_expected.work.primitive_tests * 5.0 < exact.work.primitive_tests,
+        "exact {exact:?}\nfaceted {at_expected:?}"
+    );
+    assert!(
+        at_expected.query_ns_median < exact.query_ns_median,
+        "exact {exact:?}\nfaceted {at_expected:?}"
+    );
+    let r = selection.recommendation.unwrap();
+    assert_eq!(r.contacts[0].engine, "faceted");
+    assert_eq!(r.contacts[0].faceting_tolerance, Some(expected));
+    assert_eq!(
+        (r.model.engine.as_str(), r.model.faceting_tolerance),
+        ("faceted", Some(expected))
+    );
+}
+
+#[test]
+fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
+    // Two STL spheres: the exact engine does not answer mesh against mesh, so no row has a
+    // reference and no setting can be shown to meet any target.
+    let dir = scratch("none");
+    write_sphere_stl(&dir.join("a.stl"), 1.0, 24);
+    write_sphere_stl(&dir.join("b.stl"), 2.0, 24);
+    let adm = "two meshes\n\
+         PART/1, GROUND\n\
+         MARKER/10, PART = 1\n\
+         PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
+         MARKER/20, PART = 2, QP = 0, 0, 3.5\n\
+         GRAPHICS/1, EXTERNAL, RM = 20, FILE = a.stl\n\
+         GRAPHICS/2, EXTERNAL, RM = 10, FILE = b.stl\n\
+         CONTACT/7, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E5, EXPONENT = 2, DAMPING = 10\
+         , DMAX = 0.01\n\
+         END\n";
+    load(&dir, adm);
+    let args = contact::cli::select::SelectArgs {
+        model: dir.join("model.adm"),
+        max_depth_error: 0.01,
+        tolerances: vec![100.0],
+        rounds: Some(1),
+        json: None,
+    };
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let code =
+        contact::cli::select::run(&args, &build_engine, &mut out, &mut err, &mut |_| {}).unwrap();
+    let err = String::from_utf8(err).unwrap();
+    assert_eq!(code, 1);
+    assert_eq!(
+        err.trim(),
+        "error: CONTACT/7: no engine and faceting tolerance meets a depth error of 1e-2 \
+         (best measured: none with a reference)"
+    );
+    // The evidence is printed all the same: the faceted rows, with their times.
+    assert!(String::from_utf8(out).unwrap().contains("CONTACT/7"));
+    // A target that is not a positive number is refused before anything is measured.
+    let bad = contact::cli::select::SelectArgs {
+        max_depth_error: -1.0,
+        ..args
+    };
+    let mut err = Vec::new();
+    let code =
+        contact::cli::select::run(&bad, &build_engine, &mut Vec::new(), &mut err, &mut |_| {})
+            .unwrap();
+    assert_eq!(code, 1);
+    assert!(
+        String::from_utf8(err)
+            .unwrap()
+            .contains("--max-depth-error")
+    );
+}
