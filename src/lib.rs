@@ -6,6 +6,7 @@
 //! - [`dataset`] — the `.adm`/`.acf` reader (lexer, parser, lowering) with located diagnostics;
 //! - [`expr`] — Adams function expressions (MOTION, SFORCE, VARIABLE);
 //! - [`model`] — the validated model;
+//! - [`geneva`] — the Geneva example's meshes, generated;
 //! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
 //! - [`tradeoff`] — the accuracy-against-speed measurement and engine selection;
 //! - [`solver`] — the DAE interface ([`solver::dae`]), the multibody equations ([`solver::mbs`])
@@ -45,6 +46,7 @@ pub mod cli;
 pub mod dataset;
 pub mod engine_choice;
 pub mod expr;
+pub mod geneva;
 pub mod model;
 pub mod output;
 pub mod run;

@@ -10,8 +10,8 @@ use std::process::ExitCode;
 #[derive(Debug, Parser)]
 #[command(name = "contact", version, about)]
 struct Cli {
-    /// What to do; without a subcommand, `contact` runs the built-in example (a ball dropped on
-    /// a plane) and says where its results are.
+    /// What to do; without a subcommand, `contact` runs the built-in example (a Geneva drive
+    /// of STL meshes, faceted engine) and says where its results are.
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -81,21 +81,21 @@ fn main() -> ExitCode {
     let command = cli.command.unwrap_or_else(|| {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("examples")
-            .join("ball");
+            .join("geneva");
         eprintln!(
             "contact: no subcommand given; running the built-in example {}",
-            dir.join("ball.adm").display()
+            dir.join("geneva.adm").display()
         );
         eprintln!("(`contact --help` lists the commands)");
         Command::Run(cli::run::RunArgs {
-            model: dir.join("ball.adm"),
-            commands: Some(dir.join("ball.acf")),
+            model: dir.join("geneva.adm"),
+            commands: Some(dir.join("geneva.acf")),
             engine: None,
             faceting_tolerance: None,
             end: None,
             dtout: None,
             steps: None,
-            out: Some(std::path::PathBuf::from("out").join("ball")),
+            out: Some(std::path::PathBuf::from("out").join("geneva")),
             threads: None,
         })
     });

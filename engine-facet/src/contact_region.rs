@@ -18,10 +18,11 @@
 //!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes of
 //!    the triangles it crosses), as tetrahedra from one apex (the first crossing point), gives
 //!    its volume and centroid `g` (the loop's open lid cancels between the two sides). The
-//!    contact points are the closest points to `g` on each whole surface (a branch-and-bound
-//!    search of the tree), lifted from the facet onto the curved PN triangle through the
+//!    contact points are where the line through `g` along the normal meets each surface (I's
+//!    along `−n`, J's along `+n`; the closest points to `g` when the loop is degenerate or the
+//!    line meets nothing), lifted from the facet onto the curved PN triangle through the
 //!    facet's corners and true corner normals ([`FacetMesh::lift_to_surface`]); the penetration
-//!    is their distance.
+//!    is their distance. Every one of these is continuous in the pose, which dynamics needs.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
@@ -481,26 +482,48 @@ pub(crate) fn clip(poly: &[Vector3], out: &mut Vec<Vector3>, n: &Vector3, p0: &V
     }
 }
 
-/// The closest points to each region's centroid on the two whole surfaces (through the
-/// trees), lifted onto the curved surfaces the facets approximate.
+/// Each region's contact points: where the line through its centroid `g` along the loop normal
+/// meets the two surfaces (I's along `−n`, J's along `+n`), lifted onto the curved surfaces the
+/// facets approximate. The line's hits move continuously with the pose; the closest points to
+/// `g` (used where the loop is degenerate or the line meets nothing) jump between facets where
+/// two are equally near, and a force that jumps defeats the solver's Newton corrector.
 fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     let Scratch { regions, stack, .. } = s;
     for r in regions.iter_mut() {
         let g = r.centroid;
-        let (ti, pi) = a.closest_point(&g, stack);
-        r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
         let gb = x.inverse_apply(&g);
-        let (tj, pj) = b.closest_point(&gb, stack);
+        let along = loop_normal(r).map(|n| {
+            (
+                a.first_ray_hit(&g, &(-n)),
+                b.first_ray_hit(&gb, &x.rot.tr_mul(&n)),
+            )
+        });
+        let (ti, pi) = match along {
+            Some((Some(hit), _)) => hit,
+            _ => a.closest_point(&g, stack),
+        };
+        let (tj, pj) = match along {
+            Some((_, Some(hit))) => hit,
+            _ => b.closest_point(&gb, stack),
+        };
+        r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
         r.best_j = (0.0, x.apply(&b.lift_to_surface(tj, &pj)), tj);
     }
+}
+
+/// The region's normal from J into I, `−S/|S|` with `S` the loop's vector area, or `None` when
+/// the loop encloses (almost) no area.
+fn loop_normal(r: &RegionSums) -> Option<Vector3> {
+    let area = r.vector_area.norm();
+    let scale = r.loop_length.max(f64::MIN_POSITIVE);
+    (area > 1e-12 * scale * scale).then(|| -r.vector_area / area)
 }
 
 fn finish_region(r: &RegionSums) -> LocalContact {
     let (pi, pj) = (r.best_i.1, r.best_j.1);
     let area = r.vector_area.norm();
-    let scale = r.loop_length.max(f64::MIN_POSITIVE);
-    let normal = if area > 1e-12 * scale * scale {
-        -r.vector_area / area
+    let normal = if let Some(n) = loop_normal(r) {
+        n
     } else if let Some(n) = (pj - pi).try_normalize(1e-300) {
         n
     } else {

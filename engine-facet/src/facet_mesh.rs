@@ -213,6 +213,46 @@ impl FacetMesh {
         (best_t, best_p)
     }
 
+    /// Where the ray `p + s·dir` (`s ≥ 0`, `dir` unit, mesh frame) first meets the surface: the
+    /// triangle and the point, or `None` when it meets nothing. The hit moves continuously with
+    /// `p` and `dir` across facet edges (neighbouring facets share the edge), unlike the closest
+    /// point to `p`, which jumps between facets where two are equally near.
+    pub fn first_ray_hit(&self, p: &Vector3, dir: &Vector3) -> Option<(u32, Vector3)> {
+        let origin = Point3::from(*p);
+        let mut best: Option<(f64, u32)> = None;
+        self.tree.visit(
+            |obb| ray_hits_box(obb, &origin, dir),
+            |t| {
+                let [a, b, c] = self.corners(t);
+                if let Some(s) = ray_triangle_widened(p, dir, &a, &b, &c) {
+                    if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {
+                        best = Some((s, t));
+                    }
+                }
+            },
+        );
+        best.map(|(s, t)| (t, p + dir * s))
+    }
+
+    /// The first hit of the ray `p + s·dir` (`s ≥ 0`) among the listed triangles only.
+    pub fn first_ray_hit_among(
+        &self,
+        triangles: impl Iterator<Item = u32>,
+        p: &Vector3,
+        dir: &Vector3,
+    ) -> Option<(u32, Vector3)> {
+        let mut best: Option<(f64, u32)> = None;
+        for t in triangles {
+            let [a, b, c] = self.corners(t);
+            if let Some(s) = ray_triangle_widened(p, dir, &a, &b, &c) {
+                if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {
+                    best = Some((s, t));
+                }
+            }
+        }
+        best.map(|(s, t)| (t, p + dir * s))
+    }
+
     /// The closest point of triangle `t` to `p`.
     #[inline]
     pub fn closest_on_triangle(&self, t: u32, p: &Vector3) -> Vector3 {
@@ -284,6 +324,31 @@ fn ray_triangle(
         return None;
     }
     Some((e2.dot(&q) * inv, u, v))
+}
+
+/// The ray parameter `s` of the hit `p + s·dir` on triangle `abc` widened by a relative 1e-9 in
+/// barycentric coordinates, or `None`: a ray through a shared edge or vertex then meets at
+/// least one of the facets there despite round-off (both give the same point within 1e-9).
+fn ray_triangle_widened(
+    p: &Vector3,
+    dir: &Vector3,
+    a: &Vector3,
+    b: &Vector3,
+    c: &Vector3,
+) -> Option<f64> {
+    const WIDEN: f64 = 1e-9;
+    let (e1, e2) = (b - a, c - a);
+    let h = dir.cross(&e2);
+    let det = e1.dot(&h);
+    if det.abs() <= 1e-14 * e1.norm() * e2.norm() {
+        return None;
+    }
+    let inv = 1.0 / det;
+    let s = p - a;
+    let u = s.dot(&h) * inv;
+    let q = s.cross(&e1);
+    let v = dir.dot(&q) * inv;
+    (u >= -WIDEN && v >= -WIDEN && u + v <= 1.0 + WIDEN).then(|| e2.dot(&q) * inv)
 }
 
 impl FacetMesh {

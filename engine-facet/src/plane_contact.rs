@@ -6,8 +6,11 @@
 //! region gives one contact: the normal is the plane's (exact), the intersection volume's
 //! centroid `g` comes from the divergence theorem over the clipped triangles as tetrahedra from
 //! a point on the plane (the plane's lid then adds nothing), `point_j` is `g` projected on the
-//! plane, `point_i` the closest point to `g` on the region's triangles lifted onto the curved
-//! PN triangle of that facet ([`FacetMesh::lift_to_surface`]), the penetration their distance. The area is the area
+//! plane, `point_i` the point of the region's triangles straight below `g` along the plane's
+//! normal (the closest point to `g` where that ray meets none), lifted onto the curved PN
+//! triangle of that facet ([`FacetMesh::lift_to_surface`]), the penetration their distance.
+//! The ray, not the closest point, keeps the depth and the force's line of action continuous
+//! in the pose: around a vertex the closest point jumps from facet to facet. The area is the area
 //! enclosed by the waterline loop (for a body wholly under the plane: its downward-facing area
 //! projected on the plane).
 //!
@@ -163,13 +166,22 @@ pub(crate) fn mesh_plane(
             r.best_i = (d, p, node.tri);
         }
     }
-    for r in regions.iter() {
+    for (index, r) in regions.iter().enumerate() {
         let g = r.centroid;
         let point_j = g - n * height(&g);
-        let point_i = if r.best_i.2 == u32::MAX {
-            r.best_i.1
+        // I's surface straight below g along −n: continuous in the pose, where the closest
+        // point to g jumps between the facets around a vertex.
+        let in_region = nodes
+            .iter()
+            .filter(|node| node.region as usize == index)
+            .map(|node| node.tri);
+        let (tri, on_facet) = a
+            .first_ray_hit_among(in_region, &g, &(-n))
+            .unwrap_or((r.best_i.2, r.best_i.1));
+        let point_i = if tri == u32::MAX {
+            on_facet
         } else {
-            a.lift_to_surface(r.best_i.2, &r.best_i.1)
+            a.lift_to_surface(tri, &on_facet)
         };
         let loop_area = r.vector_area.norm();
         out.push(LocalContact {
