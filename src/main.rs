@@ -90,6 +90,7 @@ fn main() -> ExitCode {
             steps: None,
             out: Some(std::path::PathBuf::from("out").join("ball")),
             threads: None,
+            quiet: false,
         })
     });
     match command {

@@ -60,6 +60,21 @@ pub struct RunSummary {
     pub frames: u64,
 }
 
+/// Where a run is, reported after every accepted step (for a progress display).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// The time reached (end of the last accepted step).
+    pub t: f64,
+    /// The start time of the run.
+    pub start: f64,
+    /// The end time of the run.
+    pub end: f64,
+    /// Accepted steps so far.
+    pub steps: u64,
+    /// Rejected step attempts so far, whatever the cause (contact onsets included).
+    pub rejected: u64,
+}
+
 /// Why a run stopped.
 #[derive(Debug, thiserror::Error)]
 pub enum SimulationError {
@@ -103,6 +118,18 @@ pub fn simulate(
     contacts: &[Arc<ContactForce>],
     settings: &DynamicsSettings,
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
+) -> Result<RunSummary, SimulationError> {
+    simulate_with_progress(system, contacts, settings, sink, &mut |_| {})
+}
+
+/// [`simulate`], calling `progress` after every accepted step (contact-onset retries
+/// included). `progress` must be cheap: it runs once per step; a display throttles itself.
+pub fn simulate_with_progress(
+    system: &mut MultibodySystem,
+    contacts: &[Arc<ContactForce>],
+    settings: &DynamicsSettings,
+    sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
+    progress: &mut dyn FnMut(&Progress),
 ) -> Result<RunSummary, SimulationError> {
     let DynamicsSettings {
         start,
@@ -203,6 +230,14 @@ pub fn simulate(
             }
             active[k] = !now.is_empty();
         }
+        let stats = bdf.stats();
+        progress(&Progress {
+            t,
+            start,
+            end,
+            steps: stats.steps,
+            rejected: stats.rejected(),
+        });
         while next_output <= outputs && output_time(next_output) <= t {
             let t_out = output_time(next_output);
             let output = if t_out == t {

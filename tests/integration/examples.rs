@@ -366,6 +366,7 @@ fn one_and_two_threads_give_identical_runs() {
             steps: None,
             out: Some(out.clone()),
             threads: Some(threads),
+            quiet: true,
         };
         let code = contact::cli::run::run(&args, &mut Vec::new(), &mut Vec::new()).unwrap();
         assert_eq!(code, 0);
