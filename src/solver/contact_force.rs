@@ -11,7 +11,12 @@
 //! - I receives `Fn·n + F_t` at `p` and the torque; J the opposite.
 //!
 //! Partials are left to the system's element-local difference (12 evaluations per moving part).
+//!
+//! A 2-D contact carries a [`PlanarGuard`]: before the engine is asked, the two parts' planes
+//! are checked, and a part that left the plane stops the run with a fatal error naming the
+//! contact, the part and the time (SPEC §3).
 
+use crate::solver::contact_plane::PlanarGuard;
 use crate::solver::dae::EvaluationError;
 use crate::solver::mbs::{ForceElement, Load, PartId, StateView};
 use contact_core::{
@@ -77,6 +82,7 @@ pub struct ContactForce {
     params: ContactParams,
     analysis: Analysis,
     work: Mutex<WorkCounters>,
+    planar: Option<PlanarGuard>,
 }
 
 impl ContactForce {
@@ -119,7 +125,24 @@ impl ContactForce {
             params,
             analysis,
             work: Mutex::new(WorkCounters::default()),
+            planar: None,
         })
+    }
+
+    /// The same contact checked as a 2-D contact: both parts must stay in one plane.
+    pub fn with_planar_guard(mut self, guard: PlanarGuard) -> Self {
+        self.planar = Some(guard);
+        self
+    }
+
+    /// Records the planes of a 2-D contact at an accepted state (the start or the end of an
+    /// accepted step): the reference for naming the part that leaves the plane. Does nothing
+    /// for a 3-D contact.
+    pub fn record_accepted(&self, state: &StateView<'_>) {
+        if let Some(guard) = &self.planar {
+            let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
+            guard.record(&si.pose_w, &sj.pose_w);
+        }
     }
 
     /// The work the engine has done for this contact so far.
@@ -127,9 +150,16 @@ impl ContactForce {
         self.work.lock().map(|w| *w).unwrap_or_default()
     }
 
-    /// Every contact's kinematics and forces at the given state.
-    pub fn reports(&self, state: &StateView<'_>) -> Result<Vec<ContactReport>, EvaluationError> {
+    /// Every contact's kinematics and forces at the given state at time `t`.
+    pub fn reports(
+        &self,
+        t: f64,
+        state: &StateView<'_>,
+    ) -> Result<Vec<ContactReport>, EvaluationError> {
         let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
+        if let Some(guard) = &self.planar {
+            guard.check(&self.name, t, &si.pose_w, &sj.pose_w)?;
+        }
         let mut contacts = Vec::new();
         let mut work = WorkCounters::default();
         self.pair
@@ -137,6 +167,7 @@ impl ContactForce {
             .map_err(|e| EvaluationError {
                 element: self.name.clone(),
                 message: e.to_string(),
+                fatal: false,
             })?;
         if let Ok(mut total) = self.work.lock() {
             *total += work;
@@ -197,7 +228,7 @@ impl ForceElement for ContactForce {
 
     fn evaluate(
         &self,
-        _t: f64,
+        t: f64,
         state: &StateView<'_>,
         loads: &mut [Load],
     ) -> Result<(), EvaluationError> {
@@ -207,7 +238,7 @@ impl ForceElement for ContactForce {
         );
         let mut on_i = Load::default();
         let mut on_j = Load::default();
-        for r in self.reports(state)? {
+        for r in self.reports(t, state)? {
             let p = r.contact.midpoint_w().coords;
             let n = r.contact.normal_w;
             let force = n * r.normal_force + r.friction_force_w;
@@ -246,5 +277,9 @@ impl ForceElement for SharedContact {
         loads: &mut [Load],
     ) -> Result<(), EvaluationError> {
         self.0.evaluate(t, state, loads)
+    }
+
+    fn step_accepted(&mut self, _t: f64, state: &StateView<'_>) {
+        self.0.record_accepted(state);
     }
 }

@@ -92,6 +92,16 @@ pub enum SimulationError {
         /// The failure.
         source: IntegratorError,
     },
+    /// The model reached a state it cannot represent (a part of a 2-D contact left its plane):
+    /// the run stopped; `t` is the end of the last accepted step, the diagnosis says when the
+    /// state was found.
+    #[error("{source} (the last accepted step ended at t = {t:?})")]
+    Stopped {
+        /// The end of the last accepted step.
+        t: f64,
+        /// The element's diagnosis.
+        source: EvaluationError,
+    },
     /// A force element failed outside the integrator (while writing output).
     #[error("at t = {t:?}: {source}")]
     Evaluation {
@@ -161,12 +171,18 @@ pub fn simulate_with_progress(
         let view = StateView::new(&parts);
         let contacts = contacts
             .iter()
-            .map(|c| c.reports(&view))
+            .map(|c| c.reports(t, &view))
             .collect::<Result<_, _>>()
             .map_err(|source| SimulationError::Evaluation { t, source })?;
         Ok(Frame { t, parts, contacts })
     };
     let mut frame = frame_at(system, start, bdf.y())?;
+    {
+        let view = StateView::new(&frame.parts);
+        for c in contacts {
+            c.record_accepted(&view);
+        }
+    }
     let mut active: Vec<bool> = frame.contacts.iter().map(|c| !c.is_empty()).collect();
     sink(&frame).map_err(|source| SimulationError::Output { t: start, source })?;
     summary.frames += 1;
@@ -187,10 +203,7 @@ pub fn simulate_with_progress(
         let t_before = bdf.t();
         let mut t = bdf
             .step(system)
-            .map_err(|source| SimulationError::Integrator {
-                t: t_before,
-                source,
-            })?;
+            .map_err(|source| integrator_failure(t_before, source))?;
         frame = frame_at(system, t, bdf.y())?;
         // Contact prediction: one retry per new contact.
         let onset = frame
@@ -212,10 +225,7 @@ pub fn simulate_with_progress(
             if retry < t {
                 t = bdf
                     .reject_last_step_and_retry_to(system, retry)
-                    .map_err(|source| SimulationError::Integrator {
-                        t: t_before,
-                        source,
-                    })?;
+                    .map_err(|source| integrator_failure(t_before, source))?;
                 summary.rejected_for_contact_onset += 1;
                 frame = frame_at(system, t, bdf.y())?;
             }
@@ -255,4 +265,16 @@ pub fn simulate_with_progress(
     }
     summary.integrator = *bdf.stats();
     Ok(summary)
+}
+
+/// The run's error for an integrator failure after the accepted time `t_before`: a fatal
+/// evaluation stops the run with the element's own diagnosis.
+fn integrator_failure(t_before: f64, source: IntegratorError) -> SimulationError {
+    match source {
+        IntegratorError::Stopped { t, source } => SimulationError::Stopped { t, source },
+        source => SimulationError::Integrator {
+            t: t_before,
+            source,
+        },
+    }
 }

@@ -8,6 +8,7 @@ mod expressions;
 mod extremes;
 mod fuzz_seeds;
 mod malformed;
+mod out_of_plane;
 mod scenes_cli;
 mod trade_schema;
 mod tradeoff;

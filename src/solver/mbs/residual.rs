@@ -59,6 +59,7 @@ impl MultibodySystem {
                         message: format!(
                             "constraint equation {k} ({primitive:?}) is {value} at t = {t}"
                         ),
+                        fatal: false,
                     });
                 }
                 out[layout.position_constraint_offset() + element.row + k] = value;
