@@ -367,6 +367,16 @@ pub fn lower(
             analysis,
         )
         .map_err(|e| unsupported(&c.origin, e.to_string()))?;
+        let length = i_list
+            .iter()
+            .chain(&j_list)
+            .filter_map(|g| g.geometry.characteristic_length())
+            .fold(0.0, f64::max);
+        let force = if length > 0.0 {
+            force.with_length_scale(length)
+        } else {
+            force
+        };
         let force = match (i_list.first(), j_list.first()) {
             (Some(gi), Some(gj)) if gi.geometry.is_planar() && gj.geometry.is_planar() => {
                 let length = [&gi.geometry, &gj.geometry]

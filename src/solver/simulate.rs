@@ -223,6 +223,10 @@ pub fn simulate_with_progress(
             let retry = (onset + ONSET_MARGIN * (t - onset))
                 .clamp(t_before + ONSET_MARGIN * (t - t_before), t);
             if retry < t {
+                // State kept per accepted step goes back with the step, before the retry.
+                for c in contacts {
+                    c.rolled_back();
+                }
                 t = bdf
                     .reject_last_step_and_retry_to(system, retry)
                     .map_err(|source| integrator_failure(t_before, source))?;

@@ -306,30 +306,6 @@ fn elastic_poisson_conserves_energy_over_ten_bounces() {
 }
 
 #[test]
-fn augmented_lagrangian_is_refused_with_its_location_not_ignored() {
-    let adm = example("ball_poisson/ball_poisson.adm");
-    let mut loaded = dataset::read(&adm, None).unwrap();
-    let args = contact_core::ContactArgs {
-        poisson: true,
-        penalty: Some(1e6),
-        restitution_coefficient: Some(1.0),
-        augmented_lagrangian: true,
-        ..Default::default()
-    };
-    loaded.model.contacts[0].params = args.validate(&loaded.model.units).unwrap().0;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let err = lower(
-        &loaded.model,
-        &engine_exact::ExactEngine,
-        Analysis::Dynamics,
-        &no_meshes,
-    )
-    .unwrap_err();
-    let text = err.to_string();
-    assert!(text.contains("ball_poisson.adm:19:1: error: CONTACT/1: AUGMENTED_LAGRANGIAN_FORMULATION is not supported"), "{text}");
-}
-
-#[test]
 fn one_and_two_threads_give_identical_runs() {
     // Three balls on the plane, each its own CONTACT, so contacts are evaluated in parallel.
     let text = std::fs::read_to_string(example("ball/ball.adm")).unwrap();

@@ -1,5 +1,6 @@
 //! The root package's one integration test binary (one link on 2 cores); modules by topic.
 
+mod augmented_lagrangian;
 mod ball_drop;
 mod check;
 mod dataset;
