@@ -97,6 +97,7 @@ fn main() -> ExitCode {
             steps: None,
             out: Some(std::path::PathBuf::from("out").join("geneva")),
             threads: None,
+            quiet: false,
         })
     });
     match command {

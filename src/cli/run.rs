@@ -6,9 +6,10 @@ use crate::engine_choice::{self, Overrides};
 use crate::model::{Analysis as ModelAnalysis, Command, Model, OutputSteps, SimulationSpan};
 use crate::run::lower::{LoweredModel, lower};
 use crate::run::output::ResultWriter;
+use crate::run::progress::RunProgress;
 use crate::solver::bdf::{Corrector, IntegratorSettings};
 use crate::solver::contact_force::Analysis;
-use crate::solver::simulate::{DynamicsSettings, RunSummary, simulate};
+use crate::solver::simulate::{DynamicsSettings, RunSummary, simulate_with_progress};
 use contact_core::{FacetingTolerance, GeometryInstance, GeometryLibrary, WorkCounters};
 use serde_json::json;
 use std::io::Write;
@@ -45,6 +46,9 @@ pub struct RunArgs {
     /// results are the same bits at every count.
     #[arg(long)]
     pub threads: Option<usize>,
+    /// No progress bar (it is drawn on stderr only when stderr is a terminal).
+    #[arg(long, short)]
+    pub quiet: bool,
 }
 
 /// Runs the command; returns the process exit code (0 success, 1 failure). Problems go to
@@ -149,12 +153,20 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     let mut writer = ResultWriter::create(&dir, parts, names)?;
     let started = Instant::now();
     let mut write_error = None;
-    let result = simulate(&mut system, &contacts, &settings, &mut |frame| {
-        writer
-            .write(frame)
-            .inspect_err(|e| write_error = Some(e.to_string()))
-    });
+    let mut progress = RunProgress::for_stderr(args.quiet);
+    let result = simulate_with_progress(
+        &mut system,
+        &contacts,
+        &settings,
+        &mut |frame| {
+            writer
+                .write(frame)
+                .inspect_err(|e| write_error = Some(e.to_string()))
+        },
+        &mut |p| progress.update(p),
+    );
     let wall = started.elapsed().as_secs_f64();
+    progress.finish();
     let mut work = WorkCounters::default();
     for c in &contacts {
         work += c.work();

@@ -13,6 +13,7 @@ use crate::model::{
     ContactGeometry, Freedom, JointKind, MeshFile, Model, MotionLevel, MotionTarget, PrimitiveKind,
 };
 use crate::solver::contact_force::{Analysis, ContactForce, SharedContact};
+use crate::solver::contact_plane::PlanarGuard;
 use crate::solver::mbs::{
     ConstraintId, ConstraintKind, MbsError, MotionDof, MultibodyBuilder, MultibodySystem, PartId,
     PartSpec, TimeFunction,
@@ -366,6 +367,31 @@ pub fn lower(
             analysis,
         )
         .map_err(|e| unsupported(&c.origin, e.to_string()))?;
+        let length = i_list
+            .iter()
+            .chain(&j_list)
+            .filter_map(|g| g.geometry.characteristic_length())
+            .fold(0.0, f64::max);
+        let force = if length > 0.0 {
+            force.with_length_scale(length)
+        } else {
+            force
+        };
+        let force = match (i_list.first(), j_list.first()) {
+            (Some(gi), Some(gj)) if gi.geometry.is_planar() && gj.geometry.is_planar() => {
+                let length = [&gi.geometry, &gj.geometry]
+                    .iter()
+                    .filter_map(|g| g.characteristic_length())
+                    .fold(0.0, f64::max);
+                force.with_planar_guard(PlanarGuard::new(
+                    [gi.pose_part_geometry, gj.pose_part_geometry],
+                    [format!("PART/{}", c.i_part), format!("PART/{}", c.j_part)],
+                    [pi.is_ground(), pj.is_ground()],
+                    length,
+                ))
+            }
+            _ => force,
+        };
         let shared = Arc::new(force);
         builder
             .add_force(Box::new(SharedContact(shared.clone())))

@@ -5,4 +5,5 @@ pub mod frames;
 pub mod lower;
 pub mod measures;
 pub mod output;
+pub mod progress;
 pub mod sforce;

@@ -59,6 +59,7 @@ impl SForceElement {
         self.function.eval(&ctx).map_err(|e| EvaluationError {
             element: self.name.clone(),
             message: e.to_string(),
+            fatal: false,
         })
     }
 }
@@ -85,6 +86,7 @@ impl ForceElement for SForceElement {
         let missing = || EvaluationError {
             element: self.name.clone(),
             message: "a marker is not on a part".into(),
+            fatal: false,
         };
         let pose_i = self
             .table
@@ -114,6 +116,7 @@ impl ForceElement for SForceElement {
                             message:
                                 "the I and J markers coincide: the line of action is undefined"
                                     .into(),
+                            fatal: false,
                         });
                     }
                     d / length

@@ -11,12 +11,18 @@
 //! - I receives `Fn·n + F_t` at `p` and the torque; J the opposite.
 //!
 //! Partials are left to the system's element-local difference (12 evaluations per moving part).
+//!
+//! A 2-D contact carries a [`PlanarGuard`]: before the engine is asked, the two parts' planes
+//! are checked, and a part that left the plane stops the run with a fatal error naming the
+//! contact, the part and the time (SPEC §3).
 
+use crate::solver::contact_multipliers::Multipliers;
+use crate::solver::contact_plane::PlanarGuard;
 use crate::solver::dae::EvaluationError;
 use crate::solver::mbs::{ForceElement, Load, PartId, StateView};
 use contact_core::{
-    Contact, ContactParams, FrictionModel, NormalModel, PreparedPair, Vector3, WorkCounters,
-    laws::NormalForce,
+    Contact, ContactParams, FrictionModel, InvalidArgument, NormalModel, PreparedPair, Vector3,
+    WorkCounters, laws::NormalForce,
 };
 use std::sync::Mutex;
 
@@ -56,15 +62,13 @@ pub enum ContactForceError {
         /// `library::function`.
         routine: String,
     },
-    /// AUGMENTED_LAGRANGIAN_FORMULATION: the inner iteration is not built yet (iterated to
-    /// convergence inside short steps it contracts too slowly at impacts, and carried over
-    /// steps it feeds energy into elastic bounces); rather than ignore it, the run refuses it.
-    #[error(
-        "{contact}: AUGMENTED_LAGRANGIAN_FORMULATION is not supported by the solver yet; remove it (POISSON alone runs)"
-    )]
-    AugmentedLagrangian {
+    /// A force-law parameter could not be used.
+    #[error("{contact}: {source}")]
+    Law {
         /// The contact's name.
         contact: String,
+        /// What was wrong.
+        source: InvalidArgument,
     },
 }
 
@@ -77,6 +81,8 @@ pub struct ContactForce {
     params: ContactParams,
     analysis: Analysis,
     work: Mutex<WorkCounters>,
+    planar: Option<PlanarGuard>,
+    multipliers: Option<Multipliers>,
 }
 
 impl ContactForce {
@@ -97,15 +103,11 @@ impl ContactForce {
             }
             _ => None,
         };
-        if matches!(
-            params.normal,
-            NormalModel::Poisson {
-                augmented_lagrangian: Some(_),
-                ..
-            }
-        ) {
-            return Err(ContactForceError::AugmentedLagrangian { contact: name });
-        }
+        let multipliers =
+            Self::build_multipliers(&params, 1.0).map_err(|source| ContactForceError::Law {
+                contact: name.clone(),
+                source,
+            })?;
         if let Some(routine) = routine {
             return Err(ContactForceError::UserRoutine {
                 contact: name,
@@ -119,7 +121,60 @@ impl ContactForce {
             params,
             analysis,
             work: Mutex::new(WorkCounters::default()),
+            planar: None,
+            multipliers,
         })
+    }
+
+    /// Sets the pair's length scale (> 0), to which the augmented-Lagrangian penetration
+    /// tolerance is relative (1 model unit until set).
+    pub fn with_length_scale(mut self, length: f64) -> Self {
+        if let Ok(Some(m)) = Self::build_multipliers(&self.params, length) {
+            self.multipliers = Some(m);
+        }
+        self
+    }
+
+    fn build_multipliers(
+        params: &ContactParams,
+        length: f64,
+    ) -> Result<Option<Multipliers>, InvalidArgument> {
+        match &params.normal {
+            NormalModel::Poisson {
+                law,
+                augmented_lagrangian: Some(al),
+            } => Multipliers::new(*law, *al, length).map(Some),
+            _ => Ok(None),
+        }
+    }
+
+    /// The augmented-Lagrangian multipliers, for a POISSON contact that has them.
+    pub fn multipliers(&self) -> Option<&Multipliers> {
+        self.multipliers.as_ref()
+    }
+
+    /// The driver rolled the last accepted step back (contact prediction): state kept per
+    /// accepted step returns to the step before.
+    pub fn rolled_back(&self) {
+        if let Some(m) = &self.multipliers {
+            m.rolled_back();
+        }
+    }
+
+    /// The same contact checked as a 2-D contact: both parts must stay in one plane.
+    pub fn with_planar_guard(mut self, guard: PlanarGuard) -> Self {
+        self.planar = Some(guard);
+        self
+    }
+
+    /// Records the planes of a 2-D contact at an accepted state (the start or the end of an
+    /// accepted step): the reference for naming the part that leaves the plane. Does nothing
+    /// for a 3-D contact.
+    pub fn record_accepted(&self, state: &StateView<'_>) {
+        if let Some(guard) = &self.planar {
+            let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
+            guard.record(&si.pose_w, &sj.pose_w);
+        }
     }
 
     /// The work the engine has done for this contact so far.
@@ -127,9 +182,16 @@ impl ContactForce {
         self.work.lock().map(|w| *w).unwrap_or_default()
     }
 
-    /// Every contact's kinematics and forces at the given state.
-    pub fn reports(&self, state: &StateView<'_>) -> Result<Vec<ContactReport>, EvaluationError> {
+    /// Every contact's kinematics and forces at the given state at time `t`.
+    pub fn reports(
+        &self,
+        t: f64,
+        state: &StateView<'_>,
+    ) -> Result<Vec<ContactReport>, EvaluationError> {
         let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
+        if let Some(guard) = &self.planar {
+            guard.check(&self.name, t, &si.pose_w, &sj.pose_w)?;
+        }
         let mut contacts = Vec::new();
         let mut work = WorkCounters::default();
         self.pair
@@ -137,6 +199,7 @@ impl ContactForce {
             .map_err(|e| EvaluationError {
                 element: self.name.clone(),
                 message: e.to_string(),
+                fatal: false,
             })?;
         if let Ok(mut total) = self.work.lock() {
             *total += work;
@@ -148,12 +211,12 @@ impl ContactForce {
             _ => None,
         };
         let mut out = Vec::with_capacity(contacts.len());
-        for contact in contacts {
+        for (index, contact) in contacts.into_iter().enumerate() {
             let p = contact.midpoint_w().coords;
             let n = contact.normal_w;
             let v = si.point_velocity_w(&p) - sj.point_velocity_w(&p);
             let rate = -n.dot(&v);
-            let normal = self.normal_force(contact.penetration, rate);
+            let normal = self.normal_force(index, contact.penetration, rate);
             let (friction_force_w, friction_torque) = match friction {
                 Some(c) => {
                     let slip = v - n * n.dot(&v);
@@ -176,10 +239,13 @@ impl ContactForce {
         Ok(out)
     }
 
-    fn normal_force(&self, delta: f64, rate: f64) -> NormalForce {
+    fn normal_force(&self, index: usize, delta: f64, rate: f64) -> NormalForce {
         match &self.params.normal {
             NormalModel::Impact(law) => law.force(delta, rate),
-            NormalModel::Poisson { law, .. } => law.force(delta, rate),
+            NormalModel::Poisson { law, .. } => match &self.multipliers {
+                Some(m) => m.force(index, delta, rate),
+                None => law.force(delta, rate),
+            },
             // Rejected in `new`.
             NormalModel::User(_) => NormalForce::ZERO,
         }
@@ -197,7 +263,7 @@ impl ForceElement for ContactForce {
 
     fn evaluate(
         &self,
-        _t: f64,
+        t: f64,
         state: &StateView<'_>,
         loads: &mut [Load],
     ) -> Result<(), EvaluationError> {
@@ -207,7 +273,7 @@ impl ForceElement for ContactForce {
         );
         let mut on_i = Load::default();
         let mut on_j = Load::default();
-        for r in self.reports(state)? {
+        for r in self.reports(t, state)? {
             let p = r.contact.midpoint_w().coords;
             let n = r.contact.normal_w;
             let force = n * r.normal_force + r.friction_force_w;
@@ -246,5 +312,43 @@ impl ForceElement for SharedContact {
         loads: &mut [Load],
     ) -> Result<(), EvaluationError> {
         self.0.evaluate(t, state, loads)
+    }
+
+    fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {
+        self.0.record_accepted(state);
+        let Some(m) = &self.0.multipliers else {
+            return;
+        };
+        // An accepted state was evaluated without error; a failure here keeps the old state.
+        if let Ok(reports) = self.0.reports(t, state) {
+            let contacts: Vec<(f64, f64, f64)> = reports
+                .iter()
+                .map(|r| (r.contact.penetration, r.penetration_rate, r.normal_force))
+                .collect();
+            m.step_accepted(&contacts);
+        }
+    }
+
+    fn attempt_started(&mut self) {
+        if let Some(m) = &self.0.multipliers {
+            m.attempt_started();
+        }
+    }
+
+    fn corrector_converged(&mut self, t: f64, state: &StateView<'_>) -> bool {
+        let Some(m) = &self.0.multipliers else {
+            return false;
+        };
+        // A failed query leaves the multipliers as they are; the next residual reports it.
+        match self.0.reports(t, state) {
+            Ok(reports) => {
+                let contacts: Vec<(f64, f64)> = reports
+                    .iter()
+                    .map(|r| (r.contact.penetration, r.penetration_rate))
+                    .collect();
+                m.corrector_converged(&contacts)
+            }
+            Err(_) => false,
+        }
     }
 }

@@ -28,7 +28,7 @@ pub enum VariableKind {
 }
 
 /// Why the system could not evaluate its equations at the given point. Carries a message the
-/// run's diagnosis prints (which element, which value).
+/// run's diagnosis prints (which element, which value), and whether a smaller step could help.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{element}: {message}")]
 pub struct EvaluationError {
@@ -36,6 +36,11 @@ pub struct EvaluationError {
     pub element: String,
     /// What went wrong.
     pub message: String,
+    /// The state is one the model cannot represent whatever the step size (a part of a 2-D
+    /// contact out of its plane): the integrator stops at once with
+    /// `IntegratorError::Stopped` instead of retrying smaller steps. `false` for failures a
+    /// smaller step may avoid (a Newton iterate that went too far).
+    pub fatal: bool,
 }
 
 /// An implicit DAE `F(t, y, y′) = 0` of fixed size.

@@ -7,11 +7,15 @@
 //! - [`mbs`] — the multibody equations: parts, joints, JPRIMs, MOTIONs and force elements as an
 //!   index-3 (or stabilized index-2) DAE.
 //! - [`contact_force`] — a CONTACT as a force element: engine kinematics and force laws.
+//! - [`contact_multipliers`] — AUGMENTED_LAGRANGIAN_FORMULATION's multipliers and update.
+//! - [`contact_plane`] — the check that keeps both parts of a 2-D contact in one plane.
 //! - [`parallel`] — force elements evaluated on several threads with serial-identical bits.
 //! - [`simulate`] — transient dynamics with contact prediction and output frames.
 
 pub mod bdf;
 pub mod contact_force;
+pub mod contact_multipliers;
+pub mod contact_plane;
 pub mod dae;
 pub mod mbs;
 pub mod parallel;

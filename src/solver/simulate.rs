@@ -60,6 +60,21 @@ pub struct RunSummary {
     pub frames: u64,
 }
 
+/// Where a run is, reported after every accepted step (for a progress display).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// The time reached (end of the last accepted step).
+    pub t: f64,
+    /// The start time of the run.
+    pub start: f64,
+    /// The end time of the run.
+    pub end: f64,
+    /// Accepted steps so far.
+    pub steps: u64,
+    /// Rejected step attempts so far, whatever the cause (contact onsets included).
+    pub rejected: u64,
+}
+
 /// Why a run stopped.
 #[derive(Debug, thiserror::Error)]
 pub enum SimulationError {
@@ -76,6 +91,16 @@ pub enum SimulationError {
         t: f64,
         /// The failure.
         source: IntegratorError,
+    },
+    /// The model reached a state it cannot represent (a part of a 2-D contact left its plane):
+    /// the run stopped; `t` is the end of the last accepted step, the diagnosis says when the
+    /// state was found.
+    #[error("{source} (the last accepted step ended at t = {t:?})")]
+    Stopped {
+        /// The end of the last accepted step.
+        t: f64,
+        /// The element's diagnosis.
+        source: EvaluationError,
     },
     /// A force element failed outside the integrator (while writing output).
     #[error("at t = {t:?}: {source}")]
@@ -103,6 +128,18 @@ pub fn simulate(
     contacts: &[Arc<ContactForce>],
     settings: &DynamicsSettings,
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
+) -> Result<RunSummary, SimulationError> {
+    simulate_with_progress(system, contacts, settings, sink, &mut |_| {})
+}
+
+/// [`simulate`], calling `progress` after every accepted step (contact-onset retries
+/// included). `progress` must be cheap: it runs once per step; a display throttles itself.
+pub fn simulate_with_progress(
+    system: &mut MultibodySystem,
+    contacts: &[Arc<ContactForce>],
+    settings: &DynamicsSettings,
+    sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
+    progress: &mut dyn FnMut(&Progress),
 ) -> Result<RunSummary, SimulationError> {
     let DynamicsSettings {
         start,
@@ -134,12 +171,18 @@ pub fn simulate(
         let view = StateView::new(&parts);
         let contacts = contacts
             .iter()
-            .map(|c| c.reports(&view))
+            .map(|c| c.reports(t, &view))
             .collect::<Result<_, _>>()
             .map_err(|source| SimulationError::Evaluation { t, source })?;
         Ok(Frame { t, parts, contacts })
     };
     let mut frame = frame_at(system, start, bdf.y())?;
+    {
+        let view = StateView::new(&frame.parts);
+        for c in contacts {
+            c.record_accepted(&view);
+        }
+    }
     let mut active: Vec<bool> = frame.contacts.iter().map(|c| !c.is_empty()).collect();
     sink(&frame).map_err(|source| SimulationError::Output { t: start, source })?;
     summary.frames += 1;
@@ -160,10 +203,7 @@ pub fn simulate(
         let t_before = bdf.t();
         let mut t = bdf
             .step(system)
-            .map_err(|source| SimulationError::Integrator {
-                t: t_before,
-                source,
-            })?;
+            .map_err(|source| integrator_failure(t_before, source))?;
         frame = frame_at(system, t, bdf.y())?;
         // Contact prediction: one retry per new contact.
         let onset = frame
@@ -183,12 +223,13 @@ pub fn simulate(
             let retry = (onset + ONSET_MARGIN * (t - onset))
                 .clamp(t_before + ONSET_MARGIN * (t - t_before), t);
             if retry < t {
+                // State kept per accepted step goes back with the step, before the retry.
+                for c in contacts {
+                    c.rolled_back();
+                }
                 t = bdf
                     .reject_last_step_and_retry_to(system, retry)
-                    .map_err(|source| SimulationError::Integrator {
-                        t: t_before,
-                        source,
-                    })?;
+                    .map_err(|source| integrator_failure(t_before, source))?;
                 summary.rejected_for_contact_onset += 1;
                 frame = frame_at(system, t, bdf.y())?;
             }
@@ -203,6 +244,14 @@ pub fn simulate(
             }
             active[k] = !now.is_empty();
         }
+        let stats = bdf.stats();
+        progress(&Progress {
+            t,
+            start,
+            end,
+            steps: stats.steps,
+            rejected: stats.rejected(),
+        });
         while next_output <= outputs && output_time(next_output) <= t {
             let t_out = output_time(next_output);
             let output = if t_out == t {
@@ -220,4 +269,16 @@ pub fn simulate(
     }
     summary.integrator = *bdf.stats();
     Ok(summary)
+}
+
+/// The run's error for an integrator failure after the accepted time `t_before`: a fatal
+/// evaluation stops the run with the element's own diagnosis.
+fn integrator_failure(t_before: f64, source: IntegratorError) -> SimulationError {
+    match source {
+        IntegratorError::Stopped { t, source } => SimulationError::Stopped { t, source },
+        source => SimulationError::Integrator {
+            t: t_before,
+            source,
+        },
+    }
 }

@@ -306,30 +306,6 @@ fn elastic_poisson_conserves_energy_over_ten_bounces() {
 }
 
 #[test]
-fn augmented_lagrangian_is_refused_with_its_location_not_ignored() {
-    let adm = example("ball_poisson/ball_poisson.adm");
-    let mut loaded = dataset::read(&adm, None).unwrap();
-    let args = contact_core::ContactArgs {
-        poisson: true,
-        penalty: Some(1e6),
-        restitution_coefficient: Some(1.0),
-        augmented_lagrangian: true,
-        ..Default::default()
-    };
-    loaded.model.contacts[0].params = args.validate(&loaded.model.units).unwrap().0;
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let err = lower(
-        &loaded.model,
-        &engine_exact::ExactEngine,
-        Analysis::Dynamics,
-        &no_meshes,
-    )
-    .unwrap_err();
-    let text = err.to_string();
-    assert!(text.contains("ball_poisson.adm:19:1: error: CONTACT/1: AUGMENTED_LAGRANGIAN_FORMULATION is not supported"), "{text}");
-}
-
-#[test]
 fn one_and_two_threads_give_identical_runs() {
     // Three balls on the plane, each its own CONTACT, so contacts are evaluated in parallel.
     let text = std::fs::read_to_string(example("ball/ball.adm")).unwrap();
@@ -366,6 +342,7 @@ fn one_and_two_threads_give_identical_runs() {
             steps: None,
             out: Some(out.clone()),
             threads: Some(threads),
+            quiet: true,
         };
         let code = contact::cli::run::run(&args, &mut Vec::new(), &mut Vec::new()).unwrap();
         assert_eq!(code, 0);
@@ -418,4 +395,125 @@ fn one_and_two_threads_give_identical_runs() {
     let (one, two) = (run(1), run(2));
     assert!(one.len() > 1000, "{}", one.len());
     assert_eq!(one, two, "1 and 2 threads differ");
+}
+
+/// The cam's control points in `cam_follower/cam_follower.adm`: 16 points on a circle of
+/// radius 40 mm centred at (10 mm, 0), counter-clockwise from angle 0.
+fn cam_control_points() -> Vec<[f64; 2]> {
+    (0..16)
+        .map(|k| {
+            let phi = std::f64::consts::TAU * f64::from(k) / 16.0;
+            [0.01 + 0.04 * phi.cos(), 0.04 * phi.sin()]
+        })
+        .collect()
+}
+
+/// Points of the closed uniform cubic B-spline of `control` (the standard periodic basis,
+/// `samples` per span), written out here independently of the engine's curve code.
+fn periodic_cubic_bspline(control: &[[f64; 2]], samples: usize) -> Vec<[f64; 2]> {
+    let n = control.len();
+    let mut out = Vec::with_capacity(n * samples);
+    for i in 0..n {
+        let p = |k: usize| control[(i + k + n - 1) % n];
+        for s in 0..samples {
+            let u = s as f64 / samples as f64;
+            let b = [
+                (1.0 - u).powi(3) / 6.0,
+                (3.0 * u.powi(3) - 6.0 * u * u + 4.0) / 6.0,
+                (-3.0 * u.powi(3) + 3.0 * u * u + 3.0 * u + 1.0) / 6.0,
+                u.powi(3) / 6.0,
+            ];
+            let point = (0..4).fold([0.0, 0.0], |acc, k| {
+                [acc[0] + b[k] * p(k)[0], acc[1] + b[k] * p(k)[1]]
+            });
+            out.push(point);
+        }
+    }
+    out
+}
+
+/// Roller-follower kinematics by brute force: with the profile turned by `angle` about the
+/// origin, the height of the centre of a roller of radius `r` on the line x = 0 resting on
+/// the highest profile point under it.
+fn roller_lift(profile: &[[f64; 2]], angle: f64, r: f64) -> f64 {
+    let (s, c) = angle.sin_cos();
+    profile
+        .iter()
+        .map(|p| (c * p[0] - s * p[1], s * p[0] + c * p[1]))
+        .filter(|(x, _)| x.abs() <= r)
+        .map(|(x, y)| y + (r * r - x * x).sqrt())
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+#[test]
+fn the_cam_follower_lifts_as_the_roller_kinematics_of_its_profile() {
+    let dir = example("cam_follower");
+    let loaded = dataset::read(
+        &dir.join("cam_follower.adm"),
+        Some(&dir.join("cam_follower.acf")),
+    )
+    .unwrap();
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let mut lowered = lowered(&loaded.model);
+    let [(cam, _), (follower, _)] = [lowered.parts[0], lowered.parts[1]];
+    let settings = span(1.0, 0.005, loaded.model.integrator.error);
+    let mut frames = Vec::new();
+    simulate(
+        &mut lowered.system,
+        &lowered.contacts,
+        &settings,
+        &mut |frame| {
+            let q = frame.parts[cam.0].pose_w.rotation;
+            let force: f64 = frame.contacts[0].iter().map(|c| c.normal_force).sum();
+            let y = frame.parts[follower.0].pose_w.translation.y;
+            frames.push((frame.t, q.angle() * q.axis().map_or(1.0, |a| a.z), y, force));
+            Ok(())
+        },
+    )
+    .unwrap();
+    assert_eq!(frames.len(), 201);
+
+    let (roller, mass, k, exponent) = (0.015, 0.1, 1e8, 1.5);
+    let profile = periodic_cubic_bspline(&cam_control_points(), 400);
+    let lift = |angle: f64| roller_lift(&profile, angle, roller);
+    // The bound: IMPACT leaves the roller short of the rigid contact by the penetration that
+    // carries the load, δ = (F/k)^(1/e), seen along the line of travel through the pressure
+    // angle φ. F is at most the spring at the highest lift (10 N + 500 N/m over the 20 mm rise)
+    // plus the follower's inertia m·|ÿ|, ÿ ≤ e·ω² for this near-eccentric profile (e = 10 mm,
+    // ω = 2π/s); tan φ = (dy/dθ)/y for a follower in line with the axis.
+    let (lowest, highest) = (
+        lift(-std::f64::consts::FRAC_PI_2),
+        lift(std::f64::consts::FRAC_PI_2),
+    );
+    let omega = std::f64::consts::TAU;
+    let force_max = 10.0 + 500.0 * (highest - lowest) + mass * 0.01 * omega * omega;
+    let tan_phi_max = (0..360)
+        .map(|d| {
+            let a = f64::from(d).to_radians();
+            ((lift(a + 1e-4) - lift(a - 1e-4)) / 2e-4 / lift(a)).abs()
+        })
+        .fold(0.0, f64::max);
+    let bound = (force_max / k).powf(1.0 / exponent) * (1.0 + tan_phi_max * tan_phi_max).sqrt();
+    assert!(
+        bound < 5e-5 && highest - lowest > 0.019,
+        "{bound} {lowest} {highest}"
+    );
+    for &(t, angle, y, force) in &frames {
+        // The MOTION turns the cam at 1 rev/s (to the integrator's ERROR = 1e-6, within 10×
+        // for output interpolated between steps).
+        let expected_angle = omega * t;
+        let turned = (angle - expected_angle).rem_euclid(std::f64::consts::TAU);
+        assert!(
+            turned.min(std::f64::consts::TAU - turned) < 1e-5,
+            "t = {t}: {angle}"
+        );
+        let gap = lift(expected_angle) - y;
+        assert!(
+            (0.0..=bound).contains(&gap),
+            "t = {t}: follower at {y}, rigid kinematics {}, short by {gap:e} (bound {bound:e})",
+            lift(expected_angle)
+        );
+        // Never lifts off the cam: the preload exceeds the follower's inertia force.
+        assert!(force > 5.0, "t = {t}: contact force {force}");
+    }
 }

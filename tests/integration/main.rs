@@ -1,5 +1,6 @@
 //! The root package's one integration test binary (one link on 2 cores); modules by topic.
 
+mod augmented_lagrangian;
 mod ball_drop;
 mod check;
 mod dataset;
@@ -10,6 +11,7 @@ mod faceted_ball;
 mod fuzz_seeds;
 mod geneva;
 mod malformed;
+mod out_of_plane;
 mod scenes_cli;
 mod select;
 mod trade_schema;

@@ -154,6 +154,15 @@ pub enum IntegratorError {
         /// Why the last attempt failed.
         cause: FailureCause,
     },
+    /// The system reported a state it cannot represent at any step size
+    /// ([`EvaluationError::fatal`]): the run stops at the last accepted point.
+    #[error("stopped after t = {t:?}: {source}")]
+    Stopped {
+        /// Time of the last accepted point.
+        t: f64,
+        /// The system's diagnosis.
+        source: EvaluationError,
+    },
     /// Too many consecutive failed attempts for one step (10 convergence or evaluation
     /// failures, or 20 in all).
     #[error(

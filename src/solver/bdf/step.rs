@@ -96,6 +96,13 @@ impl Bdf {
                     self.stats.rejected_convergence += 1;
                     Some(0.25)
                 }
+                FailureCause::Evaluation(e) if e.fatal => {
+                    self.stats.rejected_evaluation += 1;
+                    return Err(IntegratorError::Stopped {
+                        t: self.t,
+                        source: e.clone(),
+                    });
+                }
                 FailureCause::Evaluation(_) | FailureCause::NonFinite { .. } => {
                     convergence_failures += 1;
                     self.stats.rejected_evaluation += 1;

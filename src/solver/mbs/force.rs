@@ -118,6 +118,19 @@ pub trait ForceElement: Send + Sync {
     /// samples). Evaluations between accepted steps must not change the element. The default
     /// does nothing.
     fn step_accepted(&mut self, _t: f64, _state: &StateView<'_>) {}
+
+    /// Called at the start of every step attempt, accepted or not, before any evaluation of
+    /// it: an element whose inner iteration changes it within a step (augmented-Lagrangian
+    /// multipliers) returns to its state at the last accepted step. The default does nothing.
+    fn attempt_started(&mut self) {}
+
+    /// Called when the corrector has converged on a step attempt, with the state it converged
+    /// to: an element with an inner iteration updates itself and returns `true` to have the
+    /// corrector run again on the updated forces (the integrator bounds the passes by MAXIT).
+    /// The default returns `false`.
+    fn corrector_converged(&mut self, _t: f64, _state: &StateView<'_>) -> bool {
+        false
+    }
 }
 
 /// The partials of a force `f(d, ḋ)` acting on part a at marker point `p_I` and `−f` on part b at

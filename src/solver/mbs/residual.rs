@@ -59,6 +59,7 @@ impl MultibodySystem {
                         message: format!(
                             "constraint equation {k} ({primitive:?}) is {value} at t = {t}"
                         ),
+                        fatal: false,
                     });
                 }
                 out[layout.position_constraint_offset() + element.row + k] = value;
@@ -198,6 +199,31 @@ impl DaeSystem for MultibodySystem {
     /// no usable part state, which an accepted step cannot have).
     ///
     /// [`ForceElement::step_accepted`]: super::ForceElement::step_accepted
+    /// Forwards to every force element's [`ForceElement::attempt_started`].
+    ///
+    /// [`ForceElement::attempt_started`]: super::ForceElement::attempt_started
+    fn attempt_started(&mut self, _t_new: f64, _h: f64) {
+        for element in &mut self.forces {
+            element.attempt_started();
+        }
+    }
+
+    /// Forwards to every force element's [`ForceElement::corrector_converged`] (all of them,
+    /// so each updates at the same state) and asks for another pass if any asked for one.
+    ///
+    /// [`ForceElement::corrector_converged`]: super::ForceElement::corrector_converged
+    fn corrector_converged(&mut self, t: f64, y: &DVector<f64>, _yp: &DVector<f64>) -> bool {
+        let Ok(states) = self.part_states(y) else {
+            return false;
+        };
+        let view = StateView::new(&states);
+        let mut again = false;
+        for element in &mut self.forces {
+            again |= element.corrector_converged(t, &view);
+        }
+        again
+    }
+
     fn step_accepted(&mut self, t: f64, y: &DVector<f64>, _yp: &DVector<f64>) {
         if let Ok(states) = self.part_states(y) {
             let view = StateView::new(&states);

@@ -116,6 +116,7 @@ impl MultibodySystem {
             .ok_or_else(|| EvaluationError {
                 element: self.parts[part.0 - 1].name.clone(),
                 message: format!("position {r:?} or Euler parameters {e:?} not usable"),
+                fatal: false,
             })
     }
 
@@ -140,6 +141,7 @@ impl MultibodySystem {
                     message: format!(
                         "velocity {velocity_w:?} or angular velocity {omega_body:?} not finite"
                     ),
+                    fatal: false,
                 });
             }
             states.push(PartState {
@@ -174,6 +176,7 @@ impl MultibodySystem {
                     return Err(EvaluationError {
                         element: element.name().to_owned(),
                         message: format!("non-finite load {bad:?}"),
+                        fatal: false,
                     });
                 }
                 Ok(loads)
@@ -245,6 +248,7 @@ impl MultibodySystem {
                         message: format!(
                             "constraint equation {k} ({primitive:?}) is {value} at t = {t}"
                         ),
+                        fatal: false,
                     });
                 }
                 phi[element.row + k] = value;

@@ -331,6 +331,7 @@ impl DaeSystem for FailsLate {
             return Err(EvaluationError {
                 element: "CONTACT/3".into(),
                 message: "query failed".into(),
+                fatal: false,
             });
         }
         out[0] = yp[0] + y[0];

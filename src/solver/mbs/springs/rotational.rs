@@ -82,6 +82,7 @@ impl ForceElement for RotationalSpringDamper {
             return Err(EvaluationError {
                 element: self.name.clone(),
                 message: "x_I is parallel to z_J: the rotation angle is undefined".to_owned(),
+                fatal: false,
             });
         }
         let angle = sine.atan2(cosine);

@@ -79,6 +79,7 @@ impl TranslationalSpringDamper {
                 message: format!(
                     "the spring's points coincide (length {length:e}); its direction is undefined"
                 ),
+                fatal: false,
             });
         }
         let n = d / length;
