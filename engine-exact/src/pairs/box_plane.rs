@@ -5,7 +5,8 @@
 //! prism's planes in the plane's frame ([`crate::polyhedron`]); contact iff the intersection
 //! has positive volume. Normal, points, depth and area follow [`super::clipped`]: for an
 //! unbounded plane the normal is the plane's; over a bounded plane's edge it tilts towards
-//! the side face inside the box; a box wholly under the plane takes the nearest prism face.
+//! the side face inside the box; a box wholly under the plane takes the plane's normal. The
+//! point on the plane is always the foot of the centroid on the plane itself.
 
 use super::clipped::{self, HalfSpace, box_planes, unit_for};
 use crate::kernel::PairContact;
@@ -72,10 +73,24 @@ pub(crate) fn contact(
     if count == 1 {
         // One cutting plane: at most 7 faces of at most 6 vertices.
         let poly = ConvexPolyhedron::<7, 6>::cuboid(&center, &half_axes);
-        clipped::contact(poly, &planes_box, &prism[..count], pose_plane, unit)
+        clipped::contact(
+            poly,
+            &planes_box,
+            &prism[..count],
+            &prism[..1],
+            pose_plane,
+            unit,
+        )
     } else {
         // Up to five planes: at most 11 faces; a box face gains one vertex per plane.
         let poly = ConvexPolyhedron::<11, 12>::cuboid(&center, &half_axes);
-        clipped::contact(poly, &planes_box, &prism[..count], pose_plane, unit)
+        clipped::contact(
+            poly,
+            &planes_box,
+            &prism[..count],
+            &prism[..1],
+            pose_plane,
+            unit,
+        )
     }
 }

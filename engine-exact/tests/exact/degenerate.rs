@@ -4,7 +4,8 @@
 use crate::common::{boxes_mesh, instance, one, query};
 use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
 use contact_core::{
-    Geometry, GeometryEngine, Isometry3, QueryError, Side, UnitQuaternion, Vector3, WorkCounters,
+    Geometry, GeometryEngine, Isometry3, Point3, QueryError, Side, UnitQuaternion, Vector3,
+    WorkCounters,
 };
 use engine_exact::ExactEngine;
 use std::f64::consts::PI;
@@ -68,18 +69,33 @@ fn full_containment_keeps_depth_growing() {
     let e = instance(Geometry::Ellipsoid(Ellipsoid::new(1.0, 2.0, 0.5).unwrap()));
     let c = one(&e, &plane(), &at(0.3, 0.0, -4.0), &id);
     assert!((c.penetration - 4.5).abs() < 1e-14, "{c:?}");
-    // A small box inside a big one: the normal is the big box's nearest face (+x here).
+    // A small box inside a big one: the normal is the big box's nearest face (+x here); the
+    // points are the two +x faces nearest the small box's centre, at x = 1.6 and x = 2.
     let small = instance(Geometry::Cuboid(Cuboid::centered(0.1, 0.2, 0.3).unwrap()));
     let c = one(&small, &cube(2.0), &at(1.5, 0.0, 0.0), &id);
     assert_eq!(c.normal_w, Vector3::x());
-    assert!((c.penetration - 0.6).abs() < 1e-14, "{c:?}");
+    assert!((c.penetration - 0.4).abs() < 1e-14, "{c:?}");
+    assert!(
+        (c.point_i_w - Point3::new(1.6, 0.0, 0.0)).norm() < 1e-14,
+        "{c:?}"
+    );
+    assert!(
+        (c.point_j_w - Point3::new(2.0, 0.0, 0.0)).norm() < 1e-14,
+        "{c:?}"
+    );
+    // Area: a quarter of the small box's surface.
+    assert!(
+        (c.area - 0.25 * 8.0 * (0.02 + 0.03 + 0.06)).abs() < 1e-14,
+        "{c:?}"
+    );
     // The big box seen from the other side: the swapped contact.
     let s = one(&cube(2.0), &small, &id, &at(1.5, 0.0, 0.0));
     assert!((s.normal_w + Vector3::x()).norm() < 1e-14, "{s:?}");
-    // A box sunk wholly below the plane: normal is the plane's.
+    // A box sunk wholly below the plane: normal is the plane's; the centre's nearest face is
+    // +x (six tied), so δ = |(1, 0, −10) − (0, 0, 0)|.
     let c = one(&cube(1.0), &plane(), &at(0.0, 0.0, -10.0), &id);
     assert_eq!(c.normal_w, Vector3::z());
-    assert!((c.penetration - 11.0).abs() < 1e-13);
+    assert!((c.penetration - 101f64.sqrt()).abs() < 1e-13, "{c:?}");
 }
 
 #[test]
@@ -100,12 +116,15 @@ fn coincident_centres_and_coincident_boxes_use_the_documented_axis() {
     assert_eq!(c.normal_w, Vector3::x());
     let c = one(&instance(Geometry::Point), &circle(1.0), &id, &id);
     assert_eq!((c.normal_w, c.penetration), (Vector3::x(), 1.0));
-    // Two identical coincident cubes: nothing is cut, the normal is J's nearest face.
+    // Two identical coincident cubes: nothing is cut, the normal is J's nearest face (+x, the
+    // first of six tied faces), and both closest points to the common centroid are on that
+    // face: SPEC §4 gives δ = 0 here.
     let c = one(&cube(1.0), &cube(1.0), &id, &id);
     assert!(
-        c.is_well_formed() && (c.penetration - 2.0).abs() < 1e-15,
+        c.is_well_formed() && c.penetration == 0.0 && c.normal_w == Vector3::x(),
         "{c:?}"
     );
+    assert_eq!(c.point_i_w, Point3::new(1.0, 0.0, 0.0));
     // Crossed bars (a 'plus'): J's surface inside I sums to zero; finite answer.
     let bar_x = instance(Geometry::Cuboid(Cuboid::centered(3.0, 0.5, 0.5).unwrap()));
     let bar_y = instance(Geometry::Cuboid(Cuboid::centered(0.5, 3.0, 0.5).unwrap()));
@@ -176,10 +195,13 @@ fn a_cylinder_tilting_through_parallel_changes_continuously() {
             "{tilt}: {c:?}"
         );
     }
-    // Wholly under the plane: finite, the shadow as area.
+    // Wholly under the plane: the centroid is the centre (0, 0, −4), nearest the side (0.5
+    // away, the caps 1): the side point towards +x; area a quarter of the surface.
     let c = one(&cylinder, &plane(), &at(0.0, 0.0, -5.0), &id);
     assert!(
-        (c.penetration - 5.0).abs() < 1e-14 && (c.area - PI * 0.25).abs() < 1e-14,
+        (c.penetration - 16.25f64.sqrt()).abs() < 1e-14
+            && (c.point_i_w - Point3::new(0.5, 0.0, -4.0)).norm() < 1e-14
+            && (c.area - 0.25 * (2.0 * PI * 0.25 + 2.0 * PI * 0.5 * 2.0)).abs() < 1e-14,
         "{c:?}"
     );
     // Touching on a cap or along a side line: no contact.
