@@ -12,6 +12,7 @@ pub mod clipped;
 pub mod cylinder_plane;
 pub mod ellipsoid_plane;
 pub mod mesh_plane;
+pub mod revolved_plane;
 pub mod solid_distance;
 pub mod sphere_mesh;
 pub mod sphere_plane;

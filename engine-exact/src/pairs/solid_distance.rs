@@ -63,7 +63,13 @@ pub(crate) fn signed_distance(solid: &Solid, p: &Vector3) -> (f64, Vector3, Vect
             revolved_distance(&profile, p)
         }
         Solid::Torus(t) => {
-            let (radial, _) = radial_of(p);
+            let (radial, rho) = radial_of(p);
+            // Within round-off of the axis the radial direction is noise: take +x.
+            let radial = if rho <= TIE * t.major_radius() {
+                Vector2::x()
+            } else {
+                radial
+            };
             let tube_centre = t.major_radius() * Vector3::new(radial.x, radial.y, 0.0);
             let v = p - tube_centre;
             let d = v.norm();
