@@ -115,35 +115,79 @@ fn moments(profile: &Profile, cut: &Cut) -> [f64; 3] {
     }
 }
 
-/// `[∫∫x, ∫∫x², ∫∫xy]` over the polygon `p` (counter-clockwise, `(x, y) = (ρ, z)`).
+/// `[∫∫x, ∫∫x², ∫∫xy]` over the polygon `p` (counter-clockwise, `(x, y) = (ρ, z)`). The sums
+/// run about the first vertex and are shifted back, so a sliver far from the origin keeps
+/// its relative precision.
 fn polygon_moments(p: &[Vector2]) -> [f64; 3] {
-    let mut sums = [0.0; 3];
-    for k in 0..p.len() {
-        let (a, b) = (p[k], p[(k + 1) % p.len()]);
+    let Some(&o) = p.first() else {
+        return [0.0; 3];
+    };
+    // Local: [∫1, ∫x, ∫y, ∫x², ∫xy] about o.
+    let mut sums = [0.0; 5];
+    for k in 1..p.len().saturating_sub(1) {
+        let (a, b) = (p[k] - o, p[k + 1] - o);
         let cross = a.x * b.y - b.x * a.y;
-        sums[0] += (a.x + b.x) * cross;
-        sums[1] += (a.x * a.x + a.x * b.x + b.x * b.x) * cross;
-        sums[2] += (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y) * cross;
+        sums[0] += cross;
+        sums[1] += (a.x + b.x) * cross;
+        sums[2] += (a.y + b.y) * cross;
+        sums[3] += (a.x * a.x + a.x * b.x + b.x * b.x) * cross;
+        sums[4] += (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y) * cross;
     }
-    [sums[0] / 6.0, sums[1] / 12.0, sums[2] / 24.0]
+    let [area, mx, my, mxx, mxy] = [
+        sums[0] / 2.0,
+        sums[1] / 6.0,
+        sums[2] / 6.0,
+        sums[3] / 12.0,
+        sums[4] / 24.0,
+    ];
+    [
+        area * o.x + mx,
+        area * o.x * o.x + 2.0 * o.x * mx + mxx,
+        area * o.x * o.y + o.x * my + o.y * mx + mxy,
+    ]
+}
+
+/// `x − sin x` for `x ≥ 0`, by its series below 0.5 (where the difference cancels).
+fn x_minus_sin(x: f64) -> f64 {
+    if x >= 0.5 {
+        return x - x.sin();
+    }
+    let x2 = x * x;
+    // x³/3! − x⁵/5! + … − x¹³/13!, Horner in x².
+    let mut sum = 0.0;
+    for denominator in [
+        6_227_020_800.0,
+        39_916_800.0,
+        362_880.0,
+        5_040.0,
+        120.0,
+        6.0,
+    ] {
+        sum = 1.0 / denominator - x2 * sum;
+    }
+    x * x2 * sum
 }
 
 /// `[∫∫ρ, ∫∫ρ², ∫∫zρ]` over the part `m·y ≤ d` (`m` unit, `y` from the centre `(big, 0)`) of
-/// the disc of radius `r`. With `s = m·y = r sin θ`, `w` across: the segment's `∫1`, `∫s`,
-/// `∫s²`, `∫w²` are closed forms in `θ_d = asin(d/r)`, and `∫w = ∫sw = 0`.
+/// the disc of radius `r`. With `s = m·y = −r cos ε'` (ε' ∈ [0, ε], `ε` the half-angle the
+/// chord subtends from the far side) and `w` across: `∫1 = r²·g(2ε)/2`, `∫s = −(2/3) r³
+/// sin³ε`, `∫s² = r⁴ g(4ε)/16`, `∫w² = (2/3) r⁴ (g(2ε)/4 − g(4ε)/32)` with `g(x) = x − sin x`
+/// (stable for a sliver), and `∫w = ∫sw = 0`.
 fn segment_moments(big: f64, r: f64, m: &Vector2, d: f64) -> [f64; 3] {
     if d <= -r {
         return [0.0; 3];
     }
-    let theta = (d / r).min(1.0).asin();
-    let span = theta + FRAC_PI_2;
-    let (sin, cos) = theta.sin_cos();
-    let (sin2, sin4) = (2.0 * sin * cos, (4.0 * theta).sin());
+    let eps = if d < 0.0 {
+        2.0 * ((r + d) / (2.0 * r)).sqrt().asin()
+    } else {
+        (-d / r).max(-1.0).acos()
+    };
+    let (g2, g4) = (x_minus_sin(2.0 * eps), x_minus_sin(4.0 * eps));
     let r2 = r * r;
-    let area = r2 * (span + sin * cos);
-    let s1 = -2.0 / 3.0 * r2 * r * cos * cos * cos;
-    let s2 = 0.25 * r2 * r2 * (span - 0.25 * sin4);
-    let w2 = 2.0 / 3.0 * r2 * r2 * (0.375 * span + 0.25 * sin2 + sin4 / 32.0);
+    let area = 0.5 * r2 * g2;
+    let s1 = -2.0 / 3.0 * r2 * r * eps.sin().powi(3);
+    let s2 = r2 * r2 * g4 / 16.0;
+    let w2 = 2.0 / 3.0 * r2 * r2 * (0.25 * g2 - g4 / 32.0);
     let (mx, my) = (m.x, m.y);
     [
         big * area + mx * s1,

@@ -357,3 +357,74 @@ fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
     // Far away: no contact; the winding number is 0 there.
     assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
 }
+
+#[test]
+fn frustum_and_torus_on_a_plane_at_their_edges() {
+    use contact_core::geometry::{Frustum, Torus};
+    let id = Isometry3::identity();
+    let frustum = instance(Geometry::Frustum(Frustum::new(1.0, 0.5, 2.0).unwrap()));
+    let torus = instance(Geometry::Torus(Torus::new(2.0, 0.5).unwrap()));
+    let on_edge = |z: f64| {
+        Isometry3::from_parts(
+            nalgebra::Translation3::new(0.0, 0.0, z),
+            UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0),
+        )
+    };
+    // Touching on the bottom cap, the tube's lowest circle, or the edge's lowest point: none.
+    assert!(query(&frustum, &plane(), &id, &id).is_empty());
+    assert!(query(&torus, &plane(), &at(0.0, 0.0, 0.5), &id).is_empty());
+    assert!(query(&torus, &plane(), &on_edge(2.5), &id).is_empty());
+    // Axis along the normal, 1e-12 deep: the slab's centroid is 0.5e-12 down; its closest
+    // point on the frustum is on the bottom cap, so δ = 1e-12.
+    let c = one(&frustum, &plane(), &at(0.0, 0.0, -1e-12), &id);
+    assert_eq!(c.normal_w, Vector3::z());
+    assert!((c.penetration - 1e-12).abs() < 1e-18, "{c:?}");
+    // The section is 1e-12 above the bottom, where the radius is 1 − 0.25e-12.
+    let radius = 1.0 - 0.25e-12;
+    assert!((c.area - PI * radius * radius).abs() < 1e-14, "{c:?}");
+    // Axis in the plane, the bottom rim grazing by 1e-12: a sliver, finite and tiny.
+    let lying = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.0, 0.0, 1.0 - 1e-12),
+        UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0),
+    );
+    let c = one(&frustum, &plane(), &lying, &id);
+    assert!(
+        c.is_well_formed() && c.penetration > 0.0 && c.penetration < 1e-11,
+        "{c:?}"
+    );
+    // A torus lying flat, grazing by 1e-12: one annular region whose centroid is on the axis,
+    // in the hole; the area is the thin annulus 4πR·sqrt(r² − c²), c = 1e-12 − r.
+    let c = one(&torus, &plane(), &at(0.0, 0.0, 0.5 - 1e-12), &id);
+    let cut: f64 = 1e-12 - 0.5;
+    let annulus = 4.0 * PI * 2.0 * (0.25 - cut * cut).sqrt();
+    assert!(c.is_well_formed() && c.normal_w == Vector3::z(), "{c:?}");
+    assert!(
+        (c.area - annulus).abs() < 1e-9 * annulus,
+        "{c:?} vs {annulus}"
+    );
+    // Standing on edge, sunk to its centre: the plane holds the axis (a = 1, b = 0, h = 0) and
+    // cuts the two tube discs: area 2πr²; the centroid lies on the axis' perpendicular below
+    // the centre (no side preferred), so the points are on the x = 0 line of the world.
+    let c = one(&torus, &plane(), &on_edge(0.0), &id);
+    assert!((c.area - 2.0 * PI * 0.25).abs() < 1e-12, "{c:?}");
+    assert!(c.point_j_w.coords.norm() < 1e-12, "{c:?}");
+    // Wholly under the plane: the centroid is the solid's; area a quarter of the surface.
+    let c = one(&frustum, &plane(), &at(0.0, 0.0, -10.0), &id);
+    let slant = (0.25f64 + 4.0).sqrt();
+    let surface = PI * (1.0 + 0.25 + 1.5 * slant);
+    assert!(
+        c.is_well_formed() && (c.area - 0.25 * surface).abs() < 1e-12,
+        "{c:?}"
+    );
+    let c = one(&torus, &plane(), &at(0.0, 0.0, -10.0), &id);
+    assert!((c.area - PI * PI * 2.0 * 0.5).abs() < 1e-12, "{c:?}");
+    // The centroid is the centre (on the axis, in the hole): the tube point along +x.
+    assert!(
+        (c.point_i_w - Point3::new(1.5, 0.0, -10.0)).norm() < 1e-12,
+        "{c:?}"
+    );
+    assert!(
+        (c.penetration - (100.0f64 + 2.25).sqrt()).abs() < 1e-12,
+        "{c:?}"
+    );
+}
