@@ -38,7 +38,16 @@ pub(crate) struct HalfSpace {
 
 /// The power of two nearest `length` (> 0, finite), the unit the clipping works in.
 pub(crate) fn unit_for(length: f64) -> f64 {
-    2f64.powi(length.log2().round() as i32)
+    // From the bits: 2^e·m with m ∈ [1, 2) rounds to 2^(e+1) from m ≥ √2 on.
+    let bits = length.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as i64;
+    if exponent == 0 || exponent >= 0x7fe {
+        // Subnormal or at the top of the range: the slow path.
+        return 2f64.powi(length.log2().round() as i32);
+    }
+    let mantissa = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
+    let rounded = exponent + i64::from(mantissa >= std::f64::consts::SQRT_2);
+    f64::from_bits((rounded as u64) << 52)
 }
 
 /// The bounding plane nearest to the interior point `p`: `(gap, outward normal)`, the gap
