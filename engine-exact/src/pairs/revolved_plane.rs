@@ -250,7 +250,9 @@ fn integrate<const N: usize>(
     }
 }
 
-/// Sorts `cuts[..count]` and integrates `f` over each piece between consecutive cuts.
+/// Sorts `cuts` and integrates `f` over each piece between consecutive cuts, skipping the
+/// pieces where `f` vanishes (the cuts must include every point where it starts or stops
+/// vanishing).
 fn integrate_pieces<const N: usize>(
     cuts: &mut [f64],
     f: &mut impl FnMut(f64) -> [f64; N],
@@ -260,6 +262,11 @@ fn integrate_pieces<const N: usize>(
     cuts.sort_by(f64::total_cmp);
     let mut total = [0.0; N];
     for piece in cuts.windows(2) {
+        // Between consecutive cuts the region is empty throughout or nowhere (its edges are
+        // cuts): one look at the middle skips an empty piece.
+        if f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
+            continue;
+        }
         integrate(piece[0], piece[1], f, scale, work, &mut total);
     }
     total
@@ -321,7 +328,8 @@ fn chord(profile: &Profile, a: f64, b: f64, h: f64, u: f64) -> f64 {
     }
 }
 
-/// The `u` where the chord has a square-root end or a kink, after the ends `±bound`.
+/// The `u` where the chord has a square-root end or a kink, after the ends: `±bound`
+/// narrowed to where the plane's line `u` crosses the solid's axial extent.
 fn section_cuts(
     profile: &Profile,
     a: f64,
@@ -330,22 +338,28 @@ fn section_cuts(
     bound: f64,
     out: &mut [f64; 10],
 ) -> usize {
-    out[0] = -bound;
-    out[1] = bound;
+    let (z0, p0) = (h * b, h * a);
+    // The u where z(u) = z0 − a·u spans the solid's axial extent [z_lo, z_hi].
+    let (z_lo, z_hi) = match *profile {
+        Profile::Frustum { len, .. } => (0.0, len),
+        Profile::Torus { small, .. } => (-small, small),
+    };
+    let (lo, hi) = if a > 0.0 {
+        (((z0 - z_hi) / a).max(-bound), ((z0 - z_lo) / a).min(bound))
+    } else {
+        (-bound, bound)
+    };
+    out[0] = lo;
+    out[1] = hi.max(lo);
     let mut count = 2;
     let mut push = |u: f64, count: &mut usize| {
-        if u.is_finite() && u > -bound && u < bound {
+        if u.is_finite() && u > lo && u < hi {
             out[*count] = u;
             *count += 1;
         }
     };
-    let (z0, p0) = (h * b, h * a);
     match *profile {
         Profile::Frustum { r0, r1, len } => {
-            if a > 0.0 {
-                push(z0 / a, &mut count);
-                push((z0 - len) / a, &mut count);
-            }
             // R(z(u))² − ρ₀(u)² = (α − βu − γ − bu)(α − βu + γ + bu).
             let k = (r1 - r0) / len;
             let (alpha, beta) = (r0 + k * z0, k * a);
@@ -353,10 +367,6 @@ fn section_cuts(
             push((alpha + p0) / (beta - b), &mut count);
         }
         Profile::Torus { big, small } => {
-            if a > 0.0 {
-                push((z0 - small) / a, &mut count);
-                push((z0 + small) / a, &mut count);
-            }
             // (z0 − a u)² + (σ(p0 + b u) − R)² = r², a² + b² = 1.
             for sigma in [1.0, -1.0] {
                 let q = sigma * p0 - big;
