@@ -103,7 +103,7 @@ const FACES: [[usize; 4]; 6] = [
 
 /// The box (centre `center`, half-axes `half_axes`, in the plane's frame and working units)
 /// against the half-space `side·z ≤ 0`. By the divergence theorem with tetrahedra from a point
-/// `o` on the plane, the flat cap contributes nothing to the volume and its moment, so only
+/// `o` on the plane (the deepest corner's foot), the flat cap contributes nothing to the volume and its moment, so only
 /// the box's faces clipped by the plane are summed (no cap polygon is built); their area vector
 /// `S` is minus the cap's, and `|S|` is the area. The rest follows [`clipped`]: normal the
 /// plane's, points the feet of the centroid on the box's nearest face and on the plane.
@@ -115,17 +115,28 @@ fn half_space(
     pose_plane: &Isometry3,
     unit: f64,
 ) -> Option<PairContact> {
-    // Corners from o = the centre's foot on the plane; heights along the outward normal.
-    let origin = Vector3::new(center.x, center.y, 0.0);
+    // Corners, and heights along the outward normal.
     let mut corners = [Vector3::zeros(); 8];
     let mut height = [0.0; 8];
+    let mut deepest = 0;
     for (k, (corner, h)) in corners.iter_mut().zip(height.iter_mut()).enumerate() {
         let sign = |bit: usize| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-        *corner = center.coords - origin
+        *corner = center.coords
             + sign(0) * half_axes[0]
             + sign(1) * half_axes[1]
             + sign(2) * half_axes[2];
         *h = side * corner.z;
+    }
+    for k in 1..8 {
+        if height[k] < height[deepest] {
+            deepest = k;
+        }
+    }
+    // The origin o of the tetrahedra: the deepest corner's foot on the plane, so a sliver's
+    // sums keep their relative precision.
+    let origin = Vector3::new(corners[deepest].x, corners[deepest].y, 0.0);
+    for corner in &mut corners {
+        *corner -= origin;
     }
     let (mut six_volume, mut moment, mut area_vector) = (0.0, Vector3::zeros(), Vector3::zeros());
     let mut total_area = 0.0;
