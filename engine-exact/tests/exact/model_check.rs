@@ -146,7 +146,10 @@ fn prepare_refuses_what_it_cannot_answer_before_any_query() {
     let plane = || instance(Geometry::Plane(Plane::unbounded()));
     let frustum = instance(Geometry::Frustum(Frustum::new(1.0, 0.5, 1.0).unwrap()));
     let err = ExactEngine
-        .prepare(&[frustum.clone()], &[frustum])
+        .prepare(
+            std::slice::from_ref(&frustum),
+            std::slice::from_ref(&frustum),
+        )
         .unwrap_err();
     assert!(matches!(err, PrepareError::Unsupported(_)), "{err}");
     // A flipped box is refused at prepare (supports cannot see flips).
