@@ -22,7 +22,7 @@
 //!   square-root-type end. Those angles split `[0, π]`; each piece is mapped by
 //!   `φ = m + w·sin t`, which turns a square-root end into a smooth one, and integrated by
 //!   12-node Gauss–Legendre, halved adaptively until the halves agree with the whole to
-//!   1e-13 of the piece's scale.
+//!   1e-13 relative, or 1e-14 of the whole volume.
 //!
 //! Axis along the normal (`a = 0`: no cut depends on φ) and axis in the plane (`b = 0`) are
 //! ordinary cases of the same formulas.
@@ -34,7 +34,8 @@
 //! chord inside the solid is closed form (`2√(R(z)² − ρ₀²)` for the frustum; the difference of
 //! two such terms for the torus' annulus). The chord's square-root ends are at roots of
 //! quadratics in `u` (the frustum's factors into two lines) and at the caps or `z = ±r`: the
-//! same split, map and rule integrate it, to 1e-13 of the solid's size squared.
+//! same split, map and rule integrate it, to 1e-13 relative or 1e-14 of the solid's size
+//! squared.
 //!
 //! ## The contact (SPEC §4)
 //! - one region: a half-space meets a convex frustum in one convex piece; it meets a ring
@@ -200,48 +201,55 @@ fn segment_moments(big: f64, r: f64, m: &Vector2, d: f64) -> [f64; 3] {
     ]
 }
 
-/// Adds `∫ f` over `[lo, hi]` (after the map `x = m + w sin t`) to `total`, halving until the
-/// halves agree with the whole; `scale(&sum)` is the size each component is judged against.
-fn integrate<const N: usize>(
-    lo: f64,
-    hi: f64,
+/// The 12-node rule for `∫ f` over the part `[t0, t1]` of `t ∈ [−π/2, π/2]`, with
+/// `x = m + w sin t` mapping `t` onto `[lo, hi]`.
+fn rule<const N: usize>(
+    (lo, hi): (f64, f64),
+    (t0, t1): (f64, f64),
     f: &mut impl FnMut(f64) -> [f64; N],
-    scale: &impl Fn(&[f64; N]) -> [f64; N],
+    work: &mut WorkCounters,
+) -> [f64; N] {
+    let mut sum = [0.0; N];
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    quadrature::for_each_node(t0, t1, |t, weight| {
+        let (sin, cos) = t.sin_cos();
+        let value = f(mid + half * sin);
+        for k in 0..N {
+            sum[k] += weight * half * cos * value[k];
+        }
+    });
+    work.iterations += quadrature::NODES as u64;
+    sum
+}
+
+/// Adds `∫ f` over `[lo, hi]` to `total`, starting from the whole-interval estimate `whole`
+/// and halving until, for each component, the halves agree with the whole within
+/// `TOLERANCE·|halves| + floor` (the floor, from the whole integral's size, keeps round-off
+/// in a nearly empty piece from driving the halving to its limit).
+fn integrate<const N: usize>(
+    (lo, hi): (f64, f64),
+    whole: [f64; N],
+    f: &mut impl FnMut(f64) -> [f64; N],
+    floor: &[f64; N],
     work: &mut WorkCounters,
     total: &mut [f64; N],
 ) {
-    if hi <= lo {
-        return;
-    }
-    let mut rule = |t0: f64, t1: f64| {
-        let mut sum = [0.0; N];
-        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        quadrature::for_each_node(t0, t1, |t, weight| {
-            let (sin, cos) = t.sin_cos();
-            let value = f(mid + half * sin);
-            for k in 0..N {
-                sum[k] += weight * half * cos * value[k];
-            }
-        });
-        work.iterations += quadrature::NODES as u64;
-        sum
-    };
     // Intervals in t ∈ [−π/2, π/2] still to do, with their whole-interval estimate.
     let mut stack = [(0.0, 0.0, [0.0; N], 0u32); MAX_DEPTH as usize + 2];
-    let whole = rule(-FRAC_PI_2, FRAC_PI_2);
     stack[0] = (-FRAC_PI_2, FRAC_PI_2, whole, 0);
     let mut len = 1;
     while len > 0 {
         len -= 1;
         let (t0, t1, estimate, depth) = stack[len];
         let tm = 0.5 * (t0 + t1);
-        let (left, right) = (rule(t0, tm), rule(tm, t1));
+        let left = rule((lo, hi), (t0, tm), f, work);
+        let right = rule((lo, hi), (tm, t1), f, work);
         let mut halves = [0.0; N];
         for k in 0..N {
             halves[k] = left[k] + right[k];
         }
-        let size = scale(&halves);
-        let converged = (0..N).all(|k| (halves[k] - estimate[k]).abs() <= TOLERANCE * size[k]);
+        let converged = (0..N)
+            .all(|k| (halves[k] - estimate[k]).abs() <= TOLERANCE * halves[k].abs() + floor[k]);
         if converged || depth >= MAX_DEPTH || len + 2 > stack.len() {
             for k in 0..N {
                 total[k] += halves[k];
@@ -256,22 +264,35 @@ fn integrate<const N: usize>(
 
 /// Sorts `cuts` and integrates `f` over each piece between consecutive cuts, skipping the
 /// pieces where `f` vanishes (the cuts must include every point where it starts or stops
-/// vanishing).
+/// vanishing). `floor(&estimate)` turns a first estimate of the whole integral into the
+/// absolute error each piece may keep.
 fn integrate_pieces<const N: usize>(
     cuts: &mut [f64],
     f: &mut impl FnMut(f64) -> [f64; N],
-    scale: &impl Fn(&[f64; N]) -> [f64; N],
+    floor: &impl Fn(&[f64; N]) -> [f64; N],
     work: &mut WorkCounters,
 ) -> [f64; N] {
     cuts.sort_by(f64::total_cmp);
-    let mut total = [0.0; N];
-    for piece in cuts.windows(2) {
-        // Between consecutive cuts the region is empty throughout or nowhere (its edges are
-        // cuts): one look at the middle skips an empty piece.
-        if f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
+    // First pass: one rule per non-empty piece. Between consecutive cuts the region is empty
+    // throughout or nowhere (its edges are cuts): one look at the middle tells.
+    let mut wholes = [[0.0; N]; 9];
+    let mut estimate = [0.0; N];
+    for (piece, whole) in cuts.windows(2).zip(wholes.iter_mut()) {
+        if piece[1] <= piece[0] || f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
             continue;
         }
-        integrate(piece[0], piece[1], f, scale, work, &mut total);
+        *whole = rule((piece[0], piece[1]), (-FRAC_PI_2, FRAC_PI_2), f, work);
+        for k in 0..N {
+            estimate[k] += whole[k];
+        }
+    }
+    let floor = floor(&estimate);
+    let mut total = [0.0; N];
+    for (piece, whole) in cuts.windows(2).zip(wholes.iter()) {
+        if whole.iter().all(|&v| v == 0.0) {
+            continue;
+        }
+        integrate((piece[0], piece[1]), *whole, f, &floor, work, &mut total);
     }
     total
 }
@@ -459,11 +480,10 @@ pub(crate) fn contact(
         );
         [m[0], m[1] * cos, m[2]]
     };
-    let volume_scale = |s: &[f64; 3]| {
-        let v = s[0].abs();
-        [v, s[1].abs() + v, s[2].abs() + v]
-    };
-    let sums = integrate_pieces(&mut cuts[..count], &mut per_azimuth, &volume_scale, work);
+    // Each piece may keep an error of 1e-14 of the volume (times the unit length for the
+    // moments, lengths being near 1 in working units).
+    let volume_floor = |s: &[f64; 3]| [1e-14 * s[0].abs(); 3];
+    let sums = integrate_pieces(&mut cuts[..count], &mut per_azimuth, &volume_floor, work);
     if sums[0] <= 0.0 {
         return None;
     }
@@ -477,10 +497,9 @@ pub(crate) fn contact(
     let mut cuts = [0.0; 10];
     let count = section_cuts(&profile, a, b, h, bound, &mut cuts);
     let mut across = |u: f64| [chord(&profile, a, b, h, u)];
-    // The area is judged against the solid's size² (not the piece's own, which round-off in a
-    // chord's difference of square roots can keep from ever converging).
-    let area_scale = bound * bound;
-    let section = integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_scale], work)[0];
+    // The area may keep an error of 1e-14 of the solid's size² per piece.
+    let area_floor = 1e-14 * bound * bound;
+    let section = integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_floor], work)[0];
     let area = if section > 0.0 {
         section
     } else {
