@@ -13,7 +13,7 @@
 )]
 
 use contact_core::geometry::{
-    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Plane, TriangleMesh,
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus, TriangleMesh,
 };
 use contact_core::{
     Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, UnitQuaternion, WorkCounters,
@@ -102,6 +102,22 @@ fn cases() -> Vec<Case> {
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
             j: ground.clone(),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "frustum_plane_tilted",
+            i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "torus_plane_tilted",
+            i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
             pose_j: Isometry3::identity(),
             depth: None,
         },

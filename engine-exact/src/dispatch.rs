@@ -13,6 +13,7 @@
 //! | sphere–mesh (closed) | closed form (signed distance, winding number), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
+//! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
@@ -22,7 +23,7 @@
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs, the
+//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs (solid–solid), the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
 //! solids on a *bounded* plane, circles on a bounded line, arc–arc, arc–curve, arc–line,
 //! curve–curve and curve–line are not built
@@ -168,6 +169,24 @@ pub(crate) fn select(
                 Err(no(NOT_BUILT_BOUNDED))
             }
         }
+        (G::Frustum(_) | G::Torus(_), G::Plane(p)) => {
+            let solid = match a {
+                G::Frustum(f) => Solid::Frustum(*f),
+                G::Torus(t) => Solid::Torus(*t),
+                _ => return Err(no(NOT_BUILT)),
+            };
+            if p.is_unbounded() {
+                no_flip(
+                    flip_a,
+                    Kernel::RevolvedPlane {
+                        solid,
+                        side: side(flip_b),
+                    },
+                )
+            } else {
+                Err(no(NOT_BUILT_BOUNDED))
+            }
+        }
         (G::Cuboid(a_box), G::Cuboid(b_box)) => no_flip(
             flip_a || flip_b,
             Kernel::BoxBox {
@@ -223,8 +242,8 @@ pub(crate) fn select(
             G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
         )
         | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
-        | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_) | G::Plane(_))
-        | (G::Torus(_), G::Torus(_) | G::Mesh(_) | G::Plane(_))
+        | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
+        | (G::Torus(_), G::Torus(_) | G::Mesh(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {
             if !p.is_unbounded() {

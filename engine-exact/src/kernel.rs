@@ -71,6 +71,11 @@ pub(crate) enum Kernel {
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
+    /// Frustum or torus `a` against an unbounded plane `b`.
+    RevolvedPlane {
+        solid: pairs::sphere_solid::Solid,
+        side: f64,
+    },
     /// Closed mesh `a` against an unbounded plane `b`: one contact per region.
     MeshPlane {
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
@@ -152,6 +157,9 @@ impl Kernel {
             }
             Self::CylinderPlane { ref cylinder, side } => {
                 pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
+            }
+            Self::RevolvedPlane { ref solid, side } => {
+                pairs::revolved_plane::contact(solid, pose_a, pose_b, side, work)
             }
             Self::BoxPlane {
                 ref cuboid,

@@ -18,14 +18,17 @@
 //! For each (I geometry, J geometry) pair whose solids overlap with positive volume (area in
 //! 2-D), one [`Contact`](contact_core::Contact) per connected intersection region:
 //! - `normal_w` (unit, from J into I) — per pair family, see [`pairs`] and [`planar`];
-//! - the centroid `c` of the intersection volume; `point_i_w` and `point_j_w` are the points
-//!   where the line through `c` along the normal leaves I (towards J, direction `−n`) and J
-//!   (towards I, direction `+n`): the points of the two surfaces closest to the centroid
-//!   measured along the normal, so `point_i_w − point_j_w = −δ·normal_w` exactly;
+//! - the centroid `g` of the intersection volume; `point_i_w` and `point_j_w` are the points
+//!   of I's and J's whole surfaces closest to `g` (for a plane, the foot of `g` on it);
 //! - `penetration` δ = the distance between those two points (for a sphere on a plane, exactly
-//!   `r − d`; for two spheres, `r_a + r_b − D`);
-//! - `area`: the intersection region projected on the plane normal to `normal_w` (a length in
-//!   2-D).
+//!   `r − d`; for two spheres, `r_a + r_b − D`). It is along the normal where the region is
+//!   symmetric (spheres, a box face or a cylinder flat on a plane), not in general: a cube
+//!   corner pushed a depth `d` into a plane gives about `0.61·d`. Ellipsoid–plane and
+//!   mesh–plane still take the points along the normal through `g` (their modules say so);
+//!   a sphere's pairs agree with either rule, `g` lying on the line of centres;
+//! - `area`: the contact patch projected on the plane normal to `normal_w` (`|S|` with `S`
+//!   the vector area of one body's surface inside the other, the faceted engine's rule; a
+//!   length in 2-D).
 //!
 //! Touching (zero intersection volume) is not a contact: δ would be 0 and so would the force.
 //!

@@ -225,6 +225,14 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
         }
     }
 
+    /// The total area of the polyhedron's faces.
+    pub fn surface_area(&self) -> f64 {
+        self.faces[..self.len]
+            .iter()
+            .map(|f| f.area_vector().norm())
+            .sum::<f64>()
+    }
+
     /// The area of the polyhedron's shadow on a plane normal to the unit vector `direction`:
     /// `½ Σ |A_f · direction|` (a convex body's boundary covers its shadow twice).
     pub fn projected_area(&self, direction: &Vector3) -> f64 {

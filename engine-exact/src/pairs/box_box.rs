@@ -63,5 +63,5 @@ pub(crate) fn contact(
         &[Vector3::x(), Vector3::y(), Vector3::z()],
         &hb,
     );
-    clipped::contact(poly, &planes_a, &planes_b, &frame_b, unit)
+    clipped::contact(poly, &planes_a, &planes_b, &planes_b, &frame_b, unit)
 }

@@ -14,14 +14,17 @@
 //! on the ground, `b = 0`) or perpendicular to it (`a = 0`).
 //!
 //! - contact iff the volume is positive; normal: the plane's outward normal;
-//! - points: the foot of the centroid on the plane, and where the ray from the centroid
-//!   along `−n` leaves the cylinder (through a cap or the side); δ is their distance;
+//! - points (SPEC §4): the points of each whole surface closest to the centroid `g` — the
+//!   foot of `g` on the plane, and the foot of `g` on the cylinder's nearest face (side,
+//!   bottom or top cap: [`super::solid_distance`]); δ is their distance;
 //! - area (an estimate, exact for a wheel on its side or a cylinder standing upright): the
 //!   plane's section inside the cylinder, `(1/|b|)·∫ chord` over the `u` where the plane
 //!   meets the cylinder between its caps (its `b → 0` limit `chord(h/a)·L` once
 //!   `|b| < 1e-9`); when the plane no longer cuts the cylinder (full immersion), the
-//!   cylinder's shadow `π R²|b| + 2 R L a`.
+//!   quarter of the cylinder's surface `π R (R + L)/2` (its mean projected area, as for
+//!   the box pairs).
 
+use super::solid_distance::{Solid, signed_distance};
 use crate::kernel::PairContact;
 use crate::quadrature;
 use contact_core::geometry::Cylinder;
@@ -117,7 +120,8 @@ pub(crate) fn contact(
     let u_bar = moment_u / volume;
     let centroid = Vector3::new(e.x * u_bar, e.y * u_bar, moment_z / volume);
     let to_plane = (h - n.dot(&centroid)).max(0.0);
-    let to_surface = exit_distance(&centroid, &-n, r, len);
+    let (_, on_cylinder, _) = signed_distance(&Solid::Cylinder(*cylinder), &centroid);
+    let on_plane = centroid + to_plane * n;
     let area = if b.abs() < 1e-9 {
         let u = h / a;
         if u.abs() < r {
@@ -131,39 +135,15 @@ pub(crate) fn contact(
     let area = if area > 0.0 {
         area
     } else {
-        PI * r * r * b.abs() + 2.0 * r * len * a
+        0.5 * PI * r * (r + len)
     };
     let center = pose_c.translation.vector;
     let world = |p: Vector3| Point3::from(center + rotation * p);
     Some(PairContact {
-        point_a: world(centroid - to_surface * n),
-        point_b: world(centroid + to_plane * n),
+        point_a: world(on_cylinder),
+        point_b: world(on_plane),
         normal: normal_w,
-        depth: to_plane + to_surface,
+        depth: (on_plane - on_cylinder).norm(),
         area,
     })
-}
-
-/// Where the ray `p + t·d` from inside the cylinder leaves it (cap or side).
-fn exit_distance(p: &Vector3, d: &Vector3, r: f64, len: f64) -> f64 {
-    let mut t = f64::INFINITY;
-    if d.z > 0.0 {
-        t = t.min((len - p.z) / d.z);
-    } else if d.z < 0.0 {
-        t = t.min(-p.z / d.z);
-    }
-    let dd = d.xy().norm_squared();
-    if dd > 0.0 {
-        let b = p.xy().dot(&d.xy());
-        let c = (r * r - p.xy().norm_squared()).max(0.0);
-        let root = (b * b + dd * c).sqrt();
-        // The positive root of dd·t² + 2b·t − c = 0, without cancellation.
-        let side = if b <= 0.0 {
-            (root - b) / dd
-        } else {
-            c / (root + b)
-        };
-        t = t.min(side);
-    }
-    if t.is_finite() { t.max(0.0) } else { 0.0 }
 }

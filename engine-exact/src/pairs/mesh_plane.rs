@@ -12,12 +12,10 @@
 //!   the region's vertices, so round-off is relative to the region's size), so the flat cap
 //!   where the plane cuts the mesh contributes nothing and need not be built. The cap's area
 //!   vector is minus the clipped triangles' (a closed surface sums to zero).
-//! - **Normal:** the plane's. **Points:** the foot of the centroid on the plane, and the
-//!   first mesh triangle of the region hit by the ray from the centroid along `−n` (the
-//!   centroid itself if the ray misses, possible only for a region whose centroid lies
-//!   outside the mesh). δ is their distance. **Area:** `½ Σ |A·n|` over the region's closed
-//!   surface (clipped triangles and cap) — the shadow on the plane for a convex region, the
-//!   same estimate the box pairs give; an overestimate where a region overhangs itself.
+//! - **Normal:** the plane's. **Points** (SPEC §4): the foot of the centroid on the plane,
+//!   and the point of the whole mesh closest to the centroid (every triangle is searched);
+//!   δ is their distance. **Area:** `|S|`, the area of the mesh surface below the plane
+//!   projected on the plane (the cap's area).
 //! - Touching (no vertex strictly below) is not a contact; a region of zero volume is skipped.
 //!
 //! Work is `O(vertices + triangles)` per query. The per-query arrays (heights, union–find,
@@ -26,6 +24,7 @@
 
 use crate::kernel::PairContact;
 use contact_core::geometry::TriangleMesh;
+use contact_core::geometry::closest_point_on_triangle;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -73,8 +72,7 @@ struct RegionSums {
     anchor: Option<Point3>,
     six_volume: f64,
     moment: Vector3,
-    /// `Σ |A·n|` over the clipped triangles: with the cap, twice the shadow of a convex region.
-    shadow_twice: f64,
+    /// The area vector of the region's surface below the plane (`S`).
     area: Vector3,
 }
 
@@ -191,7 +189,6 @@ pub(crate) fn contacts(
                 sums.moment += v6 * (a + b + c);
                 let piece = 0.5 * (poly[k] - poly[0]).cross(&(poly[k + 1] - poly[0]));
                 sums.area += piece;
-                sums.shadow_twice += piece.dot(&n).abs();
             }
         }
         // One contact per region, in the order of its first triangle (its root).
@@ -203,55 +200,31 @@ pub(crate) fn contacts(
             let Some(o) = sums.anchor else { continue };
             let centroid = o + sums.moment / (4.0 * sums.six_volume);
             let to_plane = (h - n.dot(&centroid.coords)).max(0.0);
-            let mut to_mesh = f64::INFINITY;
-            for (t, tri) in mesh.triangles.iter().enumerate() {
-                if find(&mut scratch.parent, t as u32) as usize != root {
-                    continue;
-                }
-                let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
-                if let Some(t_hit) = ray_triangle(&centroid, &-n, &a, &b, &c) {
-                    to_mesh = to_mesh.min(t_hit);
-                }
-            }
-            if !to_mesh.is_finite() {
-                to_mesh = 0.0;
-            }
+            let on_plane = centroid + to_plane * n;
+            let on_mesh = closest_on_mesh(mesh, &centroid);
             emit(PairContact {
-                point_a: pose_mesh * (centroid - to_mesh * n),
-                point_b: pose_mesh * (centroid + to_plane * n),
+                point_a: pose_mesh * on_mesh,
+                point_b: pose_mesh * on_plane,
                 normal: normal_w,
-                depth: to_plane + to_mesh,
-                area: 0.5 * (sums.shadow_twice + sums.area.dot(&n).abs()),
+                depth: (on_plane - on_mesh).norm(),
+                area: sums.area.norm(),
             });
         }
     });
 }
 
-/// Möller–Trumbore: the ray parameter `t > 0` where `origin + t·direction` meets triangle
-/// `a b c` (either side), if it does.
-fn ray_triangle(
-    origin: &Point3,
-    direction: &Vector3,
-    a: &Point3,
-    b: &Point3,
-    c: &Point3,
-) -> Option<f64> {
-    let (e1, e2) = (b - a, c - a);
-    let p = direction.cross(&e2);
-    let det = e1.dot(&p);
-    if det == 0.0 {
-        return None;
+/// The point of the whole mesh surface closest to `p` (every triangle: the region's own
+/// surface is not always the nearest). Distances within 1e-12 relative count as tied and the
+/// first triangle wins, so a symmetric pose gives the same point in any frame.
+fn closest_on_mesh(mesh: &PreparedMesh, p: &Point3) -> Point3 {
+    let mut best = (f64::INFINITY, *p);
+    for tri in &mesh.triangles {
+        let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
+        let q = closest_point_on_triangle(p, &a, &b, &c);
+        let d = (q - p).norm();
+        if d < best.0 - 1e-12 * best.0.min(f64::MAX) {
+            best = (d, q);
+        }
     }
-    let s = origin - a;
-    let u = s.dot(&p) / det;
-    if !(0.0..=1.0).contains(&u) {
-        return None;
-    }
-    let q = s.cross(&e1);
-    let v = direction.dot(&q) / det;
-    if v < 0.0 || u + v > 1.0 {
-        return None;
-    }
-    let t = e2.dot(&q) / det;
-    (t > 0.0).then_some(t)
+    best.1
 }

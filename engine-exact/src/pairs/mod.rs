@@ -5,6 +5,11 @@
 //! Normals by family: against a plane, the plane's outward normal; between spheres, the line
 //! of centres; between boxes, the area-weighted outward normal of the part of `b`'s surface
 //! inside `a` (the direction of the net force of a uniform pressure on that surface).
+//!
+//! Points by SPEC §4: the points of each whole surface closest to the intersection's
+//! centroid (box–plane, box–box, cylinder–, frustum–, torus– and mesh–plane; the sphere
+//! pairs, whose centroid lies on the line of centres, agree with that rule), except
+//! ellipsoid–plane, which still takes them along the normal through the centroid.
 
 pub mod box_box;
 pub mod box_plane;
@@ -12,6 +17,8 @@ pub mod clipped;
 pub mod cylinder_plane;
 pub mod ellipsoid_plane;
 pub mod mesh_plane;
+pub mod revolved_plane;
+pub mod solid_distance;
 pub mod sphere_mesh;
 pub mod sphere_plane;
 pub mod sphere_solid;

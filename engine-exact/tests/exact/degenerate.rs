@@ -4,7 +4,8 @@
 use crate::common::{boxes_mesh, instance, one, query};
 use contact_core::geometry::{Circle, Cuboid, Ellipsoid, Line, Plane};
 use contact_core::{
-    Geometry, GeometryEngine, Isometry3, QueryError, Side, UnitQuaternion, Vector3, WorkCounters,
+    Geometry, GeometryEngine, Isometry3, Point3, QueryError, Side, UnitQuaternion, Vector3,
+    WorkCounters,
 };
 use engine_exact::ExactEngine;
 use std::f64::consts::PI;
@@ -68,18 +69,33 @@ fn full_containment_keeps_depth_growing() {
     let e = instance(Geometry::Ellipsoid(Ellipsoid::new(1.0, 2.0, 0.5).unwrap()));
     let c = one(&e, &plane(), &at(0.3, 0.0, -4.0), &id);
     assert!((c.penetration - 4.5).abs() < 1e-14, "{c:?}");
-    // A small box inside a big one: the normal is the big box's nearest face (+x here).
+    // A small box inside a big one: the normal is the big box's nearest face (+x here); the
+    // points are the two +x faces nearest the small box's centre, at x = 1.6 and x = 2.
     let small = instance(Geometry::Cuboid(Cuboid::centered(0.1, 0.2, 0.3).unwrap()));
     let c = one(&small, &cube(2.0), &at(1.5, 0.0, 0.0), &id);
     assert_eq!(c.normal_w, Vector3::x());
-    assert!((c.penetration - 0.6).abs() < 1e-14, "{c:?}");
+    assert!((c.penetration - 0.4).abs() < 1e-14, "{c:?}");
+    assert!(
+        (c.point_i_w - Point3::new(1.6, 0.0, 0.0)).norm() < 1e-14,
+        "{c:?}"
+    );
+    assert!(
+        (c.point_j_w - Point3::new(2.0, 0.0, 0.0)).norm() < 1e-14,
+        "{c:?}"
+    );
+    // Area: a quarter of the small box's surface.
+    assert!(
+        (c.area - 0.25 * 8.0 * (0.02 + 0.03 + 0.06)).abs() < 1e-14,
+        "{c:?}"
+    );
     // The big box seen from the other side: the swapped contact.
     let s = one(&cube(2.0), &small, &id, &at(1.5, 0.0, 0.0));
     assert!((s.normal_w + Vector3::x()).norm() < 1e-14, "{s:?}");
-    // A box sunk wholly below the plane: normal is the plane's.
+    // A box sunk wholly below the plane: normal is the plane's; the centre's nearest face is
+    // +x (six tied), so δ = |(1, 0, −10) − (0, 0, 0)|.
     let c = one(&cube(1.0), &plane(), &at(0.0, 0.0, -10.0), &id);
     assert_eq!(c.normal_w, Vector3::z());
-    assert!((c.penetration - 11.0).abs() < 1e-13);
+    assert!((c.penetration - 101f64.sqrt()).abs() < 1e-13, "{c:?}");
 }
 
 #[test]
@@ -100,12 +116,15 @@ fn coincident_centres_and_coincident_boxes_use_the_documented_axis() {
     assert_eq!(c.normal_w, Vector3::x());
     let c = one(&instance(Geometry::Point), &circle(1.0), &id, &id);
     assert_eq!((c.normal_w, c.penetration), (Vector3::x(), 1.0));
-    // Two identical coincident cubes: nothing is cut, the normal is J's nearest face.
+    // Two identical coincident cubes: nothing is cut, the normal is J's nearest face (+x, the
+    // first of six tied faces), and both closest points to the common centroid are on that
+    // face: SPEC §4 gives δ = 0 here.
     let c = one(&cube(1.0), &cube(1.0), &id, &id);
     assert!(
-        c.is_well_formed() && (c.penetration - 2.0).abs() < 1e-15,
+        c.is_well_formed() && c.penetration == 0.0 && c.normal_w == Vector3::x(),
         "{c:?}"
     );
+    assert_eq!(c.point_i_w, Point3::new(1.0, 0.0, 0.0));
     // Crossed bars (a 'plus'): J's surface inside I sums to zero; finite answer.
     let bar_x = instance(Geometry::Cuboid(Cuboid::centered(3.0, 0.5, 0.5).unwrap()));
     let bar_y = instance(Geometry::Cuboid(Cuboid::centered(0.5, 3.0, 0.5).unwrap()));
@@ -176,10 +195,13 @@ fn a_cylinder_tilting_through_parallel_changes_continuously() {
             "{tilt}: {c:?}"
         );
     }
-    // Wholly under the plane: finite, the shadow as area.
+    // Wholly under the plane: the centroid is the centre (0, 0, −4), nearest the side (0.5
+    // away, the caps 1): the side point towards +x; area a quarter of the surface.
     let c = one(&cylinder, &plane(), &at(0.0, 0.0, -5.0), &id);
     assert!(
-        (c.penetration - 5.0).abs() < 1e-14 && (c.area - PI * 0.25).abs() < 1e-14,
+        (c.penetration - 16.25f64.sqrt()).abs() < 1e-14
+            && (c.point_i_w - Point3::new(0.5, 0.0, -4.0)).norm() < 1e-14
+            && (c.area - 0.25 * (2.0 * PI * 0.25 + 2.0 * PI * 0.5 * 2.0)).abs() < 1e-14,
         "{c:?}"
     );
     // Touching on a cap or along a side line: no contact.
@@ -334,4 +356,75 @@ fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
     crate::common::assert_close(&c, &b, 3.0, 9.0, 1e-14, "mesh vs box");
     // Far away: no contact; the winding number is 0 there.
     assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
+}
+
+#[test]
+fn frustum_and_torus_on_a_plane_at_their_edges() {
+    use contact_core::geometry::{Frustum, Torus};
+    let id = Isometry3::identity();
+    let frustum = instance(Geometry::Frustum(Frustum::new(1.0, 0.5, 2.0).unwrap()));
+    let torus = instance(Geometry::Torus(Torus::new(2.0, 0.5).unwrap()));
+    let on_edge = |z: f64| {
+        Isometry3::from_parts(
+            nalgebra::Translation3::new(0.0, 0.0, z),
+            UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0),
+        )
+    };
+    // Touching on the bottom cap, the tube's lowest circle, or the edge's lowest point: none.
+    assert!(query(&frustum, &plane(), &id, &id).is_empty());
+    assert!(query(&torus, &plane(), &at(0.0, 0.0, 0.5), &id).is_empty());
+    assert!(query(&torus, &plane(), &on_edge(2.5), &id).is_empty());
+    // Axis along the normal, 1e-12 deep: the slab's centroid is 0.5e-12 down; its closest
+    // point on the frustum is on the bottom cap, so δ = 1e-12.
+    let c = one(&frustum, &plane(), &at(0.0, 0.0, -1e-12), &id);
+    assert_eq!(c.normal_w, Vector3::z());
+    assert!((c.penetration - 1e-12).abs() < 1e-18, "{c:?}");
+    // The section is 1e-12 above the bottom, where the radius is 1 − 0.25e-12.
+    let radius = 1.0 - 0.25e-12;
+    assert!((c.area - PI * radius * radius).abs() < 1e-14, "{c:?}");
+    // Axis in the plane, the bottom rim grazing by 1e-12: a sliver, finite and tiny.
+    let lying = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.0, 0.0, 1.0 - 1e-12),
+        UnitQuaternion::from_axis_angle(&Vector3::y_axis(), PI / 2.0),
+    );
+    let c = one(&frustum, &plane(), &lying, &id);
+    assert!(
+        c.is_well_formed() && c.penetration > 0.0 && c.penetration < 1e-11,
+        "{c:?}"
+    );
+    // A torus lying flat, grazing by 1e-12: one annular region whose centroid is on the axis,
+    // in the hole; the area is the thin annulus 4πR·sqrt(r² − c²), c = 1e-12 − r.
+    let c = one(&torus, &plane(), &at(0.0, 0.0, 0.5 - 1e-12), &id);
+    let cut: f64 = 1e-12 - 0.5;
+    let annulus = 4.0 * PI * 2.0 * (0.25 - cut * cut).sqrt();
+    assert!(c.is_well_formed() && c.normal_w == Vector3::z(), "{c:?}");
+    assert!(
+        (c.area - annulus).abs() < 1e-9 * annulus,
+        "{c:?} vs {annulus}"
+    );
+    // Standing on edge, sunk to its centre: the plane holds the axis (a = 1, b = 0, h = 0) and
+    // cuts the two tube discs: area 2πr²; the centroid lies on the axis' perpendicular below
+    // the centre (no side preferred), so the points are on the x = 0 line of the world.
+    let c = one(&torus, &plane(), &on_edge(0.0), &id);
+    assert!((c.area - 2.0 * PI * 0.25).abs() < 1e-12, "{c:?}");
+    assert!(c.point_j_w.coords.norm() < 1e-12, "{c:?}");
+    // Wholly under the plane: the centroid is the solid's; area a quarter of the surface.
+    let c = one(&frustum, &plane(), &at(0.0, 0.0, -10.0), &id);
+    let slant = (0.25f64 + 4.0).sqrt();
+    let surface = PI * (1.0 + 0.25 + 1.5 * slant);
+    assert!(
+        c.is_well_formed() && (c.area - 0.25 * surface).abs() < 1e-12,
+        "{c:?}"
+    );
+    let c = one(&torus, &plane(), &at(0.0, 0.0, -10.0), &id);
+    assert!((c.area - PI * PI * 2.0 * 0.5).abs() < 1e-12, "{c:?}");
+    // The centroid is the centre (on the axis, in the hole): the tube point along +x.
+    assert!(
+        (c.point_i_w - Point3::new(1.5, 0.0, -10.0)).norm() < 1e-12,
+        "{c:?}"
+    );
+    assert!(
+        (c.penetration - (100.0f64 + 2.25).sqrt()).abs() < 1e-12,
+        "{c:?}"
+    );
 }

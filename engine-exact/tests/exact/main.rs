@@ -2,6 +2,8 @@
 //!
 //! - [`oracles`]: closed forms written independently of the engine (slicing instead of the
 //!   engine's affine map, axis-aligned box overlap instead of clipping, …);
+//! - [`revolved_oracles`]: frustum and torus against a plane by slicing across the axis and
+//!   by Pappus;
 //! - [`characterization`]: the accuracy contract, one row per pair;
 //! - [`properties`]: I/J swap, rigid motion and scale covariance;
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
@@ -15,3 +17,4 @@ mod model_check;
 mod oracles;
 mod properties;
 mod regressions;
+mod revolved_oracles;

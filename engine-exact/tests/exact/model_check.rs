@@ -56,7 +56,7 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 22] = [
+const BUILT: [(&str, &str); 24] = [
     ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
@@ -68,6 +68,8 @@ const BUILT: [(&str, &str); 22] = [
     ("point", "curve"),
     ("circle", "curve"),
     ("cylinder", "plane"),
+    ("frustum", "plane"),
+    ("torus", "plane"),
     ("sphere", "sphere"),
     ("sphere", "plane"),
     ("ellipsoid", "plane"),
@@ -134,8 +136,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 21 distinct pairs, 18 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 18);
+    // 23 distinct pairs, 20 of them between different representatives (both orders count).
+    assert_eq!(accepted, 3 + 2 * 20);
 }
 
 #[test]
@@ -143,7 +145,12 @@ fn prepare_refuses_what_it_cannot_answer_before_any_query() {
     let cube = || instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap()));
     let plane = || instance(Geometry::Plane(Plane::unbounded()));
     let frustum = instance(Geometry::Frustum(Frustum::new(1.0, 0.5, 1.0).unwrap()));
-    let err = ExactEngine.prepare(&[frustum], &[plane()]).unwrap_err();
+    let err = ExactEngine
+        .prepare(
+            std::slice::from_ref(&frustum),
+            std::slice::from_ref(&frustum),
+        )
+        .unwrap_err();
     assert!(matches!(err, PrepareError::Unsupported(_)), "{err}");
     // A flipped box is refused at prepare (supports cannot see flips).
     let err = ExactEngine

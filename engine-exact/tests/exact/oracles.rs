@@ -87,28 +87,61 @@ pub fn box_corner_plane(h: &Vector3, q: &UnitQuaternion, e: f64) -> Option<(Poin
         points.push(v0 + t * (v1 - v0));
     }
     let centroid = Point3::from(points.iter().map(|p| p.coords).sum::<Vector3>() / 4.0);
-    // Exit downwards through one of the three faces at the corner.
-    let mut t_exit = f64::INFINITY;
-    for k in 0..3 {
-        let outward = r * (Vector3::ith(k, 1.0) * signs[k]);
-        let rate = -outward.z;
-        if rate > 0.0 {
-            t_exit = t_exit.min(outward.dot(&(v0 - centroid)) / rate);
-        }
-    }
+    // SPEC §4: the closest point of the box to the centroid, on its nearest face.
+    let local = r.transpose() * (centroid - centre);
+    let foot = centre + r * box_foot(h, &local);
     Some((
         centre,
         Expected {
-            point_i: centroid - t_exit * Vector3::z(),
+            point_i: foot,
             point_j: Point3::new(centroid.x, centroid.y, 0.0),
             normal: Vector3::z(),
-            depth: t_exit - centroid.z,
+            depth: (foot - Point3::new(centroid.x, centroid.y, 0.0)).norm(),
         },
     ))
 }
 
+/// The foot of the interior point `p` (box frame, box centred at the origin with half extents
+/// `h`) on the box's nearest face; on a tie the first of +x, −x, +y, −y, +z, −z.
+pub fn box_foot(h: &Vector3, p: &Vector3) -> Vector3 {
+    let gaps = [
+        h.x - p.x,
+        h.x + p.x,
+        h.y - p.y,
+        h.y + p.y,
+        h.z - p.z,
+        h.z + p.z,
+    ];
+    let mut k = 0;
+    for j in 1..6 {
+        if gaps[j] < gaps[k] - 1e-12 * h.max() {
+            k = j;
+        }
+    }
+    let mut q = *p;
+    let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+    q[k / 2] = sign * h[k / 2];
+    q
+}
+
+/// The foot of the interior point `(ρ, z)` (ρ ≥ 0, in the half-section of a cylinder of radius
+/// `r` and length `len`) on the nearest of the bottom cap, the side and the top cap, in that
+/// order on ties.
+pub fn cylinder_foot(r: f64, len: f64, rho: f64, z: f64) -> (f64, f64) {
+    let tie = 1e-12 * r.max(len);
+    let (bottom, side, top) = (z, r - rho, len - z);
+    if bottom <= side + tie && bottom <= top + tie {
+        (rho, 0.0)
+    } else if side <= top + tie {
+        (r, z)
+    } else {
+        (rho, len)
+    }
+}
+
 /// Two axis-aligned boxes (centres, half extents) that overlap: the intersection is the box
-/// of per-axis overlaps; the normal is the area vector of `b`'s faces lying strictly inside
+/// of per-axis overlaps, its centroid the box's centre; the points are the feet of the centroid
+/// on each box's nearest face (SPEC §4); the normal is the area vector of `b`'s faces lying strictly inside
 /// `a`'s slab along their axis, each contributing the product of the other two overlaps.
 /// `None` when that area vector is zero (b's faces inside a cancel, e.g. a crossing 'plus').
 pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Option<Expected> {
@@ -129,19 +162,13 @@ pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Op
         return None;
     }
     let n = s.normalize();
-    let exit = |centre: &Point3, half: &Vector3, dir: &Vector3| {
-        (0..3)
-            .filter(|&k| dir[k] != 0.0)
-            .map(|k| (centre[k] + dir[k].signum() * half[k] - c[k]) / dir[k])
-            .fold(f64::INFINITY, f64::min)
-    };
-    let tb = exit(cb, hb, &n);
-    let ta = exit(ca, ha, &-n);
+    let point_i = ca + box_foot(ha, &(c - ca));
+    let point_j = cb + box_foot(hb, &(c - cb));
     Some(Expected {
-        point_i: c - ta * n,
-        point_j: c + tb * n,
+        point_i,
+        point_j,
         normal: n,
-        depth: ta + tb,
+        depth: (point_i - point_j).norm(),
     })
 }
 
@@ -150,7 +177,8 @@ pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Op
 /// a circular segment with chord offset `s(z) = (h − b z)/a` (area `R² acos(−s/R) + s√(R²−s²)`,
 /// first moment `−(2/3)(R² − s²)^{3/2}`). With `s = −R cos θ` the partial part is smooth in
 /// θ and integrated by composite Simpson (4,000 panels: error ~1e-13); the full-disc part is
-/// exact. Needs `a = |sin α|` and `b = cos α` both away from zero.
+/// exact. The points are the centroid's foot on the plane and on the cylinder's nearest face
+/// ([`cylinder_foot`]). Needs `a = |sin α|` and `b = cos α` both away from zero.
 pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected {
     let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), alpha);
     let n = q.inverse_transform_vector(&Vector3::z());
@@ -198,29 +226,25 @@ pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected 
     }
     let u_bar = mu / v;
     let centroid_c = Vector3::new(e.x * u_bar, e.y * u_bar, mz / v);
-    // Ray from the centroid along −n (cylinder frame): the nearest of the caps and the side.
-    let d = -n;
-    let mut t = f64::INFINITY;
-    for cap in [0.0, len] {
-        if d.z != 0.0 {
-            let tc = (cap - centroid_c.z) / d.z;
-            if tc > 0.0 {
-                t = t.min(tc);
-            }
-        }
-    }
-    let (px, py, dx, dy) = (centroid_c.x, centroid_c.y, d.x, d.y);
-    let qa = dx * dx + dy * dy;
-    let qb = 2.0 * (px * dx + py * dy);
-    let qc = px * px + py * py - r * r;
-    t = t.min((-qb + (qb * qb - 4.0 * qa * qc).sqrt()) / (2.0 * qa));
+    // SPEC §4: the cylinder's point closest to the centroid, and the centroid's foot.
+    // Full immersion puts the centroid on the axis: the radial direction is then +x.
+    let rho = centroid_c.xy().norm();
+    let (rho, radial) = if rho > 1e-12 * r {
+        (rho, centroid_c.xy() / rho)
+    } else {
+        (0.0, nalgebra::Vector2::x())
+    };
+    let (rho_f, z_f) = cylinder_foot(r, len, rho, centroid_c.z);
+    let foot_c = Vector3::new(radial.x * rho_f, radial.y * rho_f, z_f);
     let pose = Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, z0), q);
     let centroid = pose * Point3::from(centroid_c);
+    let point_i = pose * Point3::from(foot_c);
+    let point_j = Point3::new(centroid.x, centroid.y, 0.0);
     Expected {
-        point_i: pose * Point3::from(centroid_c + t * d),
-        point_j: Point3::new(centroid.x, centroid.y, 0.0),
+        point_i,
+        point_j,
         normal: Vector3::z(),
-        depth: t - centroid.z,
+        depth: (point_i - point_j).norm(),
     }
 }
 

@@ -106,6 +106,46 @@ fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn revolved_plane(rng: &mut Rng, s: f64) -> Scene {
+    let plane_pose = rng.pose(3.0);
+    // A frustum or cone, or a torus; a third lie on a special axis (along the normal, or in
+    // the plane's directions).
+    let (solid, size, reach) = if rng.uniform(0.0, 1.0) < 0.5 {
+        let (r0, r1, len) = (
+            rng.uniform(0.0, 1.5),
+            rng.uniform(0.3, 1.5),
+            rng.uniform(0.3, 2.0),
+        );
+        let g = Geometry::Frustum(Frustum::new(r0 * s, r1 * s, len * s).unwrap());
+        (g, r0.max(r1).max(len), r0.max(r1).max(len))
+    } else {
+        let big = rng.uniform(0.8, 2.0);
+        let small = rng.uniform(0.1, 0.9) * big;
+        let g = Geometry::Torus(Torus::new(big * s, small * s).unwrap());
+        (g, big + small, big + small)
+    };
+    let q = match rng.next_u64() % 3 {
+        0 => nalgebra::UnitQuaternion::from_axis_angle(
+            &Vector3::x_axis(),
+            std::f64::consts::FRAC_PI_2,
+        ),
+        1 => nalgebra::UnitQuaternion::identity(),
+        _ => rng.rotation(),
+    };
+    let pose_i = plane_pose
+        * Isometry3::from_parts(
+            Translation3::new(0.2, 0.1, rng.uniform(-0.9, 0.9) * reach),
+            q,
+        );
+    Scene {
+        i: instance(solid),
+        j: instance(Geometry::Plane(Plane::unbounded())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: size * s,
+    }
+}
+
 fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.3, 1.0);
     let (solid, length) = match rng.next_u64() % 5 {
@@ -281,7 +321,8 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 12] = [
+const MAKERS: [(&str, Maker); 13] = [
+    ("frustum/torus–plane", revolved_plane),
     ("circle–curve/arc", circle_curve_or_arc),
     ("mesh–plane", mesh_plane),
     ("sphere–box/cylinder/frustum/torus/mesh", sphere_solid),

@@ -10,6 +10,7 @@ use crate::common::{Expected, Rng, errors, query};
 use contact_core::{GeometryInstance, Isometry3};
 
 mod planar;
+mod revolved;
 mod solids;
 
 pub(super) const SAMPLES: usize = 200;
@@ -91,6 +92,7 @@ pub(super) fn at(x: f64, y: f64, z: f64) -> Isometry3 {
 fn characterization_table() {
     let mut rng = Rng::new(0x5EED_0003);
     let mut rows = solids::rows(&mut rng);
+    rows.extend(revolved::rows(&mut rng));
     rows.extend(planar::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
