@@ -55,7 +55,7 @@ impl GeometryEngine for ParryPeerEngine {
         let mesh = |g: &GeometryInstance, side| -> Result<_, PrepareError> {
             match facet.prepare_geometry(g, side)?.shape {
                 Shape::Mesh(m) => Ok(m),
-                Shape::HalfSpace(_) => unreachable!("only meshes reach here"),
+                Shape::HalfSpace(_) | Shape::Planar(_) => unreachable!("only meshes reach here"),
             }
         };
         let mut pairs = Vec::new();
