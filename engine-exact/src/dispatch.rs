@@ -33,6 +33,7 @@ use crate::ExactEngine;
 use crate::kernel::Kernel;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
+use crate::planar::boundary::Chain;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
 use contact_core::{Geometry, Unsupported};
@@ -325,7 +326,50 @@ pub(crate) fn select(
             },
         ),
         (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
-        | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
+        | (G::Curve(_), G::Curve(_) | G::Line(_)) => {
+            let chain = |g: &Geometry, flip: bool| -> Result<Chain, Unsupported> {
+                match g {
+                    G::Arc(arc) => Ok(Chain::from_arc(arc.radius(), arc.range_angle(), side(flip))),
+                    G::Curve(curve) => {
+                        let curve = PlanarCurve::new(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+                        Ok(Chain::from_curve(&curve, side(flip)))
+                    }
+                    // Only arcs and curves reach here (the arm's patterns).
+                    G::Ellipsoid(_)
+                    | G::Cylinder(_)
+                    | G::Cuboid(_)
+                    | G::Frustum(_)
+                    | G::Torus(_)
+                    | G::Mesh(_)
+                    | G::Plane(_)
+                    | G::Point
+                    | G::Circle(_)
+                    | G::Line(_) => Err(no(NOT_BUILT)),
+                }
+            };
+            let a_chain = std::sync::Arc::new(chain(a, flip_a)?);
+            Ok(canonical(match b {
+                G::Line(line) => Kernel::OverlapLine {
+                    a: a_chain,
+                    x_range: line.x_range(),
+                    side: side(flip_b),
+                },
+                G::Ellipsoid(_)
+                | G::Cylinder(_)
+                | G::Cuboid(_)
+                | G::Frustum(_)
+                | G::Torus(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => Kernel::Overlap {
+                    a: a_chain,
+                    b: std::sync::Arc::new(chain(b, flip_b)?),
+                },
+            }))
+        }
         (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
     }
 }

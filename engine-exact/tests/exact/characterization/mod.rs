@@ -10,6 +10,7 @@ use crate::common::{Expected, Rng, errors, query};
 use contact_core::{GeometryInstance, Isometry3};
 
 mod planar;
+pub(crate) mod planar_overlap;
 mod solids;
 
 pub(super) const SAMPLES: usize = 200;
@@ -92,6 +93,7 @@ fn characterization_table() {
     let mut rng = Rng::new(0x5EED_0003);
     let mut rows = solids::rows(&mut rng);
     rows.extend(planar::rows(&mut rng));
+    rows.extend(planar_overlap::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );

@@ -1,0 +1,417 @@
+//! Two boundaries — arcs, curves, lines — against each other: one contact per region where
+//! their materials overlap (SPEC §4 in 2-D).
+//!
+//! Both boundaries are [`Chain`]s in `b`'s plane with their material on the left, so the
+//! overlap regions are traced as in polygon clipping: along `a` while it is inside `b`'s
+//! material, switching to `b` where `a` leaves it, along `b` while it is inside `a`'s, back
+//! to `a` where `b` leaves — each region on the left of its own outline. At a crossing
+//! (found by [`crossings::find`]) `a` enters `b` iff `t_a × t_b < 0`.
+//!
+//! **Open ends.** An open chain that *ends* inside the other's material closes its region with
+//! the straight segment from that end `E` to its foot `F` (the closest point of the other
+//! chain), and the outline goes on along the other chain from `F`; an open chain that
+//! *starts* inside the other's material is reached the same way, from the foot of its start.
+//! As the end leaves the material `F → E` and the segment shrinks to nothing, so the region
+//! turns continuously into the one bounded by the two crossings. An end meeting the other
+//! chain head-on (a probe along the normal) encloses no area and gives no contact. The cut
+//! ends of an unbounded line are not ends.
+//!
+//! **Per region** (outline on the left, integrals relative to a point `o` of the region for
+//! round-off): area `A = ½∮(x dy − y dx)`, centroid `g = o + (∮ ½x² dy, −∮ ½y² dx)/A`, each
+//! integral exact by Gauss–Legendre on the polynomial pieces and to round-off on the
+//! quarter-turn arcs; `S = Σ (Δy, −Δx)` over the stretches of `a` on the outline (the chord
+//! of each stretch turned by −90°: `∫ n dl` of `a`'s boundary inside `b`); normal
+//! `n = −S/|S|` (from `b` into `a`); length ("area") `|S|`. The contact points are where the
+//! line through `g` along `n` meets the outline: `a`'s stretches on the `−n` side (the hit
+//! nearest `g`; the farthest on the other side if none), `b`'s on the `+n` side; the
+//! penetration is their distance. Regions with `A ≤ 1e-12·L²` or `|S| ≤ 1e-12·L` (grazing)
+//! give no contact.
+//!
+//! **No crossing, both closed.** When one chain's material lies inside the other's, one
+//! contact: the inner shape's area centroid `g`, the normal from `g` towards the nearest point
+//! `q` of the outer chain (the way out), `q` as the outer point, the inner point on the line
+//! through `g` as above, the inner shape's extent across the normal as the length.
+//!
+//! **Coincident boundaries** cross nowhere transversally (every crossing has a zero angle
+//! and is dropped, [`crossings::MIN_SINE`]), and neither lies strictly inside the other:
+//! no contact. The penetration of a boundary lying on another is zero everywhere along it,
+//! so this is the limit of the touching case.
+//!
+//! A region whose outline does not close (a missed crossing, see [`crossings`]) gives no
+//! contact rather than a wrong one.
+
+use super::boundary::{Chain, Piece};
+use super::{InPlane, closest, crossings};
+use crate::kernel::PairContact;
+use crate::quadrature;
+use contact_core::{Isometry3, Point2, Vector2, Vector3, WorkCounters};
+
+/// Where the outline leaves chain `on` at `tau` for chain `to` at `to_tau`, with a straight
+/// closing segment in between for an open end.
+#[derive(Debug, Clone, Copy)]
+struct Departure {
+    on: usize,
+    tau: f64,
+    to: usize,
+    to_tau: f64,
+    jump: Option<(Vector2, Vector2)>,
+}
+
+/// Sums of one region's outline integrals.
+#[derive(Debug, Clone, Copy)]
+struct Sums {
+    origin: Vector2,
+    twice_area: f64,
+    moment: Vector2,
+    chord_normal: Vector2,
+}
+
+impl Sums {
+    fn add(&mut self, piece: &Piece, s0: f64, s1: f64) {
+        let o = self.origin;
+        quadrature::for_each_node(s0, s1, |s, w| {
+            let p = piece.point(s) - o;
+            let d = piece.derivative(s);
+            self.twice_area += w * (p.x * d.y - p.y * d.x);
+            self.moment.x += w * 0.5 * p.x * p.x * d.y;
+            self.moment.y -= w * 0.5 * p.y * p.y * d.x;
+        });
+    }
+}
+
+/// `a`'s chain (in its own frame) placed in `b`'s plane: the in-plane rotation (a reflection
+/// when `a`'s z axis is reversed) and `a`'s origin.
+pub(crate) fn place(a: &Chain, frame: &InPlane<'_>, pose_a: &Isometry3) -> Chain {
+    let relative = frame.pose_b.inv_mul(pose_a);
+    let x = relative.rotation * Vector3::x();
+    let y = relative.rotation * Vector3::y();
+    let m = nalgebra::Matrix2::new(x.x, y.x, x.y, y.y);
+    a.mapped(&m, &frame.origin_a.coords)
+}
+
+/// The contacts of chain `a` against chain `b`, both in `b`'s plane.
+pub(crate) fn contacts(
+    a: &Chain,
+    b: &Chain,
+    frame: &InPlane<'_>,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let (lo_a, hi_a) = a.bounding_box();
+    let (lo_b, hi_b) = b.bounding_box();
+    let size = (hi_a - lo_a).norm().max((hi_b - lo_b).norm());
+    if !(size > 0.0 && size.is_finite()) {
+        return;
+    }
+    let chains = [a, b];
+    let found = crossings::find(a, b, size, work);
+    let mut departures: Vec<Departure> = found
+        .iter()
+        .map(|c| {
+            if c.sine < 0.0 {
+                Departure {
+                    on: 1,
+                    tau: c.tau_b,
+                    to: 0,
+                    to_tau: c.tau_a,
+                    jump: None,
+                }
+            } else {
+                Departure {
+                    on: 0,
+                    tau: c.tau_a,
+                    to: 1,
+                    to_tau: c.tau_b,
+                    jump: None,
+                }
+            }
+        })
+        .collect();
+    for x in 0..2 {
+        let (own, other) = (chains[x], chains[1 - x]);
+        if own.closed {
+            continue;
+        }
+        let end = own.point(own.count());
+        if own.real_ends[1] && closest::inside(other, &end, size, work) {
+            let f = closest::foot(other, &end, size, work);
+            departures.push(Departure {
+                on: x,
+                tau: own.count(),
+                to: 1 - x,
+                to_tau: f.tau,
+                jump: Some((end, f.point)),
+            });
+        }
+        let start = own.point(0.0);
+        if own.real_ends[0] && closest::inside(other, &start, size, work) {
+            let f = closest::foot(other, &start, size, work);
+            departures.push(Departure {
+                on: 1 - x,
+                tau: f.tau,
+                to: x,
+                to_tau: 0.0,
+                jump: Some((f.point, start)),
+            });
+        }
+    }
+    if departures.is_empty() {
+        contained(a, b, size, frame, work, emit);
+        return;
+    }
+    let mut used = vec![false; departures.len()];
+    let mut stretches: Vec<(usize, f64, f64)> = Vec::new();
+    for first in 0..departures.len() {
+        if departures[first].to != 0 || used[first] {
+            continue;
+        }
+        used[first] = true;
+        stretches.clear();
+        if let Some(sums) = trace(&chains, &departures, first, &mut used, &mut stretches) {
+            if let Some(c) = region_contact(&sums, a, b, &stretches, size, frame, work) {
+                emit(c);
+            }
+        }
+    }
+}
+
+/// Traces the outline that enters `a` by departure `first`; `None` if it does not close.
+fn trace(
+    chains: &[&Chain; 2],
+    departures: &[Departure],
+    first: usize,
+    used: &mut [bool],
+    stretches: &mut Vec<(usize, f64, f64)>,
+) -> Option<Sums> {
+    let start = departures[first];
+    let mut sums = Sums {
+        origin: chains[0].point(start.to_tau),
+        twice_area: 0.0,
+        moment: Vector2::zeros(),
+        chord_normal: Vector2::zeros(),
+    };
+    let (mut on, mut tau) = (start.to, start.to_tau);
+    for _ in 0..=departures.len() {
+        let chain = chains[on];
+        let (next, distance) = departures
+            .iter()
+            .enumerate()
+            .filter(|(_, d)| d.on == on)
+            .filter_map(|(k, d)| chain.ahead(tau, d.tau).map(|t| (k, t)))
+            .min_by(|x, y| x.1.total_cmp(&y.1))?;
+        chain.walk(tau, distance, |k, piece, s0, s1| {
+            sums.add(piece, s0, s1);
+            if on == 0 {
+                stretches.push((k, s0, s1));
+            }
+        });
+        if on == 0 {
+            let (p, q) = (chain.point(tau), chain.point(tau + distance));
+            let d = if distance > 0.0 {
+                q - p
+            } else {
+                Vector2::zeros()
+            };
+            sums.chord_normal += Vector2::new(d.y, -d.x);
+        }
+        let d = departures[next];
+        if let Some((p, q)) = d.jump {
+            sums.add(&Piece::segment(p, q), 0.0, 1.0);
+        }
+        if next == first {
+            return Some(sums);
+        }
+        if d.to == 0 {
+            if used[next] {
+                return None;
+            }
+            used[next] = true;
+        }
+        on = d.to;
+        tau = d.to_tau;
+    }
+    None
+}
+
+/// The contact of a traced region.
+fn region_contact(
+    sums: &Sums,
+    a: &Chain,
+    b: &Chain,
+    stretches_a: &[(usize, f64, f64)],
+    size: f64,
+    frame: &InPlane<'_>,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let area = 0.5 * sums.twice_area;
+    let length = sums.chord_normal.norm();
+    if !(area > 1e-12 * size * size && length > 1e-12 * size) {
+        return None;
+    }
+    let g = sums.origin + sums.moment / area;
+    let n = -sums.chord_normal / length;
+    let reach = 4.0 * size;
+    let ray = Piece::segment(g - reach * n, g + reach * n);
+    let mut hits_a = Vec::new();
+    for &(k, s0, s1) in stretches_a {
+        let piece = a.pieces[k].sub(s0, s1);
+        crossings::between_pieces(&ray, &piece, size, work, &mut |_, _, p, _| hits_a.push(p));
+    }
+    // b's side: every piece of b (the stretches of b on the outline are among them; a hit
+    // elsewhere on b is farther along +n only when b folds back across the region).
+    let mut hits_b = Vec::new();
+    for piece in &b.pieces {
+        crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits_b.push(p));
+    }
+    let point_a = pick(&hits_a, &g, &-n).unwrap_or_else(|| {
+        let f = closest::foot(a, &g, size, work);
+        f.point
+    });
+    let point_b = pick(&hits_b, &g, &n).unwrap_or_else(|| {
+        let f = closest::foot(b, &g, size, work);
+        f.point
+    });
+    Some(PairContact {
+        point_a: frame.point_w(&Point2::from(point_a)),
+        point_b: frame.point_w(&Point2::from(point_b)),
+        normal: frame.vector_w(&n),
+        depth: (point_b - point_a).norm(),
+        area: length,
+    })
+}
+
+/// The hit nearest `g` along `direction` (ahead of `g`), else the farthest behind.
+fn pick(hits: &[Vector2], g: &Vector2, direction: &Vector2) -> Option<Vector2> {
+    let ahead = hits
+        .iter()
+        .map(|h| ((h - g).dot(direction), *h))
+        .filter(|(t, _)| *t >= 0.0)
+        .min_by(|x, y| x.0.total_cmp(&y.0));
+    ahead
+        .or_else(|| {
+            hits.iter()
+                .map(|h| ((h - g).dot(direction), *h))
+                .max_by(|x, y| x.0.total_cmp(&y.0))
+        })
+        .map(|(_, h)| h)
+}
+
+/// No crossing and no open end inside: one closed chain may hold the other.
+fn contained(
+    a: &Chain,
+    b: &Chain,
+    size: f64,
+    frame: &InPlane<'_>,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    if !(a.closed && b.closed) {
+        return;
+    }
+    if closest::inside(b, &a.point(0.0), size, work) {
+        if let Some(c) = inner_contact(a, b, size, frame, work) {
+            emit(c);
+        }
+    } else if closest::inside(a, &b.point(0.0), size, work) {
+        if let Some(c) = inner_contact(b, a, size, frame, work) {
+            emit(c.swapped());
+        }
+    }
+}
+
+/// Closed `inner` wholly inside closed `outer`: the contact with `inner` as the first body.
+fn inner_contact(
+    inner: &Chain,
+    outer: &Chain,
+    size: f64,
+    frame: &InPlane<'_>,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let mut sums = Sums {
+        origin: inner.point(0.0),
+        twice_area: 0.0,
+        moment: Vector2::zeros(),
+        chord_normal: Vector2::zeros(),
+    };
+    for piece in &inner.pieces {
+        sums.add(piece, 0.0, 1.0);
+    }
+    let area = 0.5 * sums.twice_area;
+    if !(area > 1e-12 * size * size) {
+        return None;
+    }
+    let g = sums.origin + sums.moment / area;
+    let q = closest::foot(outer, &g, size, work).point;
+    let towards = q - g;
+    let distance = towards.norm();
+    if !(distance > 1e-12 * size) {
+        return None;
+    }
+    let n = towards / distance;
+    let reach = 4.0 * size;
+    let ray = Piece::segment(g - reach * n, g + reach * n);
+    let mut hits = Vec::new();
+    for piece in &inner.pieces {
+        crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits.push(p));
+    }
+    let point_inner = pick(&hits, &g, &-n)?;
+    // Extent across the normal: the pieces' closest points to two points far out on either
+    // side (`1e3` sizes away, so they are the support points to ~1e-3 of the curvature's
+    // effect — the length is an estimate, SPEC §4).
+    let across = Vector2::new(-n.y, n.x);
+    let reach = 1e3 * size;
+    let mut extent = [f64::INFINITY, f64::NEG_INFINITY];
+    for piece in &inner.pieces {
+        for q in [g + reach * across, g - reach * across] {
+            let (_, p, _) = closest::on_piece(piece, 0.0, 1.0, &q, size, work);
+            let t = (p - g).dot(&across);
+            extent = [extent[0].min(t), extent[1].max(t)];
+        }
+    }
+    Some(PairContact {
+        point_a: frame.point_w(&Point2::from(point_inner)),
+        point_b: frame.point_w(&Point2::from(q)),
+        normal: frame.vector_w(&n),
+        depth: (q - point_inner).norm(),
+        area: extent[1] - extent[0],
+    })
+}
+
+/// The chain of line `b` (`x_range`, `side`) cut to where chain `a` (in `b`'s plane) can
+/// reach it: `a`'s x extent widened by its size on each side. `None` when they miss.
+pub(crate) fn line_chain(a: &Chain, x_range: [f64; 2], side: f64) -> Option<Chain> {
+    let (lo, hi) = a.bounding_box();
+    let margin = (hi - lo).norm();
+    let (cut0, cut1) = (lo.x - margin, hi.x + margin);
+    let (x0, x1) = (x_range[0].max(cut0), x_range[1].min(cut1));
+    (x0 < x1).then(|| Chain::from_line(x0, x1, [x_range[0] >= cut0, x_range[1] <= cut1], side))
+}
+
+/// Chain `a` (in its own frame, at `pose_a`) against chain `b` (in `b`'s plane).
+pub(crate) fn chain_chain(
+    frame: &InPlane<'_>,
+    pose_a: &Isometry3,
+    a: &Chain,
+    b: &Chain,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    contacts(&place(a, frame, pose_a), b, frame, work, emit);
+}
+
+/// Chain `a` (in its own frame, at `pose_a`) against the line `x_range` of `b` (`side` −1
+/// when flipped).
+pub(crate) fn chain_line(
+    frame: &InPlane<'_>,
+    pose_a: &Isometry3,
+    a: &Chain,
+    x_range: [f64; 2],
+    side: f64,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let placed = place(a, frame, pose_a);
+    if let Some(line) = line_chain(&placed, x_range, side) {
+        contacts(&placed, &line, frame, work, emit);
+    }
+}
