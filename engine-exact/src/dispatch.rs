@@ -20,12 +20,12 @@
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
+//! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, [`crate::planar::overlap`] | all |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs, the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
-//! solids on a *bounded* plane, circles on a bounded line, arc–arc, arc–curve, arc–line,
-//! curve–curve and curve–line are not built
+//! solids on a *bounded* plane and circles on a bounded line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -56,7 +56,7 @@ const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
     "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
-const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
 pub(crate) fn select(

@@ -56,7 +56,7 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 22] = [
+const BUILT: [(&str, &str); 27] = [
     ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
@@ -79,6 +79,11 @@ const BUILT: [(&str, &str); 22] = [
     ("circle", "circle"),
     ("circle", "line"),
     ("point", "line"),
+    ("arc", "arc"),
+    ("arc", "curve"),
+    ("arc", "line"),
+    ("curve", "curve"),
+    ("curve", "line"),
 ];
 
 fn name(g: &Geometry) -> &'static str {
@@ -134,8 +139,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 21 distinct pairs, 18 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 18);
+    // 26 distinct pairs, 21 of them between different representatives (both orders count).
+    assert_eq!(accepted, 5 + 2 * 21);
 }
 
 #[test]

@@ -168,6 +168,33 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 },
             )
         },
+        Row {
+            bound: ITERATIVE_BOUND,
+            ..run(
+                rng,
+                40,
+                "arc–curve (2-D)",
+                "full arc (a circle) crossing the top edge of a 6×3 rectangle (ORDER 2)",
+                "circular segment: centroid on the vertical through the centre",
+                |rng| {
+                    let r = rng.uniform(0.5, 1.5);
+                    let (x, y) = (rng.uniform(-1.0, 1.0), rng.uniform(-0.7 * r, 0.7 * r));
+                    Some(Case {
+                        i: instance(Geometry::Arc(Arc::new(r, TAU).unwrap())),
+                        j: instance(rectangle(-3.0, 3.0, -3.0, 0.0)),
+                        pose_i: planar_pose(x, y, rng.uniform(0.0, TAU)),
+                        pose_j: Isometry3::identity(),
+                        expected: Expected {
+                            point_i: Point3::new(x, y - r, 0.0),
+                            point_j: Point3::new(x, 0.0, 0.0),
+                            normal: Vector3::y(),
+                            depth: r - y,
+                        },
+                        length: 3.0,
+                    })
+                },
+            )
+        },
     ]
 }
 
