@@ -8,9 +8,11 @@
 //!
 //! Grazing contacts (tangent chains) make Newton singular: such leaves give no answer, and a
 //! crossing whose tangents make an angle below [`MIN_SINE`] is dropped — a touching pair
-//! encloses no area, so this is also where the contact it would give vanishes. Two true
-//! crossings closer than a leaf may be found as one; the region walk then fails to close and
-//! the region is dropped rather than answered wrongly.
+//! encloses no area, so this is also where the contact it would give vanishes. Two shallow
+//! crossings (a nearly tangent pair) can fall in one leaf: a leaf whose crossing has a sine
+//! below [`SHALLOW_SINE`] is searched again by Newton from its four corners, which finds the
+//! twin. Should a crossing still be missed, the region walk fails to close and the region is
+//! dropped rather than answered wrongly.
 
 use super::boundary::{Chain, Piece};
 use contact_core::{Vector2, WorkCounters};
@@ -23,6 +25,8 @@ pub const MAX_DEPTH: usize = 48;
 pub const MAX_NEWTON_STEPS: usize = 40;
 /// Smallest sine of the angle between the chains at a kept crossing.
 pub const MIN_SINE: f64 = 1e-9;
+/// Below this sine of the crossing angle, a leaf is searched again from its corners.
+pub const SHALLOW_SINE: f64 = 1e-2;
 /// Most leaves examined per chain pair (bounds the work on coincident chains).
 pub const MAX_LEAVES: usize = 200_000;
 
@@ -110,8 +114,23 @@ impl Search<'_> {
         if (size_a <= self.leaf && size_b <= self.leaf) || depth >= MAX_DEPTH {
             if self.leaves < MAX_LEAVES {
                 self.leaves += 1;
-                if let Some((s, t, p, sine)) = self.newton(pa, ra, pb, rb) {
+                let middle = [0.5 * (ra[0] + ra[1]), 0.5 * (rb[0] + rb[1])];
+                if let Some((s, t, p, sine)) = self.newton(pa, pb, middle) {
                     found(s, t, p, sine);
+                    // A shallow crossing may have its twin in the same leaf: Newton from the
+                    // leaf's corners finds it (the twins are then the nearest roots there).
+                    if sine.abs() < SHALLOW_SINE {
+                        for start in [
+                            [ra[0], rb[0]],
+                            [ra[0], rb[1]],
+                            [ra[1], rb[0]],
+                            [ra[1], rb[1]],
+                        ] {
+                            if let Some((s, t, p, sine)) = self.newton(pa, pb, start) {
+                                found(s, t, p, sine);
+                            }
+                        }
+                    }
                 }
             }
             return;
@@ -127,15 +146,14 @@ impl Search<'_> {
         }
     }
 
-    /// Newton on `P_a(s) − P_b(t) = 0` from the leaf's middle, kept inside both pieces.
+    /// Newton on `P_a(s) − P_b(t) = 0` from `start`, kept inside both pieces.
     fn newton(
         &mut self,
         pa: &Piece,
-        ra: [f64; 2],
         pb: &Piece,
-        rb: [f64; 2],
+        start: [f64; 2],
     ) -> Option<(f64, f64, Vector2, f64)> {
-        let (mut s, mut t) = (0.5 * (ra[0] + ra[1]), 0.5 * (rb[0] + rb[1]));
+        let [mut s, mut t] = start;
         for _ in 0..MAX_NEWTON_STEPS {
             self.work.iterations += 1;
             let r = pa.point(s) - pb.point(t);
@@ -186,4 +204,30 @@ pub(crate) fn between_pieces(
         work,
     };
     search.descend(pa, [0.0, 1.0], pb, [0.0, 1.0], 0, found);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_both_crossings_of_a_circle_a_hair_below_a_line() {
+        let depth = 1e-9;
+        let circle = Chain::from_arc(1.0, std::f64::consts::TAU, 1.0).mapped(
+            &nalgebra::Matrix2::identity(),
+            &Vector2::new(0.3, 1.0 - depth),
+        );
+        let line = Chain::from_line(-3.0, 3.0, [false; 2], 1.0);
+        let mut work = WorkCounters::default();
+        let found = find(&circle, &line, 6.0, &mut work);
+        assert_eq!(found.len(), 2, "{found:?}");
+        let half = ((2.0 - depth) * depth).sqrt();
+        let mut xs: Vec<f64> = found.iter().map(|c| c.point.x - 0.3).collect();
+        xs.sort_by(f64::total_cmp);
+        // Conditioning: a residual of round-off moves a crossing by ε/sine ≈ 1e-16/4.5e-5.
+        assert!(
+            (xs[0] + half).abs() < 1e-11 && (xs[1] - half).abs() < 1e-11,
+            "{xs:?}"
+        );
+    }
 }

@@ -24,8 +24,12 @@
 //! `n = −S/|S|` (from `b` into `a`); length ("area") `|S|`. The contact points are where the
 //! line through `g` along `n` meets the outline: `a`'s stretches on the `−n` side (the hit
 //! nearest `g`; the farthest on the other side if none), `b`'s on the `+n` side; the
-//! penetration is their distance. Regions with `A ≤ 1e-12·L²` or `|S| ≤ 1e-12·L` (grazing)
-//! give no contact.
+//! penetration is their distance. Regions with `|S| ≤ 1e-12·L` or `A ≤ 1e-10·|S|²` (grazing:
+//! the round-off of `A`, integrated about a point of the region, is ~1e-16·|S|²) give no
+//! contact.
+//!
+//! Exactly touching boundaries agree to round-off along a short stretch, so they may give a
+//! contact whose penetration is at round-off level (below `1e-13·L`) instead of none.
 //!
 //! **No crossing, both closed.** When one chain's material lies inside the other's, one
 //! contact: the inner shape's area centroid `g`, the normal from `g` towards the nearest point
@@ -245,7 +249,7 @@ fn region_contact(
 ) -> Option<PairContact> {
     let area = 0.5 * sums.twice_area;
     let length = sums.chord_normal.norm();
-    if !(area > 1e-12 * size * size && length > 1e-12 * size) {
+    if !(length > 1e-12 * size && area > 1e-10 * length * length) {
         return None;
     }
     let g = sums.origin + sums.moment / area;
