@@ -4,7 +4,7 @@
 //! smaller than [`LEAF_SIZE`] of the pair's length `L` (or [`MAX_DEPTH`] splits deep); from
 //! each leaf, Newton on the 2×2 system `P_a(s) = P_b(t)` runs on the *whole* pieces to
 //! round-off (a step below `1e-15·L`, at most [`MAX_NEWTON_STEPS`] steps), and the answer is
-//! kept when it closes to `1e-11·L`. Answers closer than `1e-9·L` are one crossing.
+//! kept when it closes to `1e-14·L` (a few units of round-off). Answers closer than `1e-9·L` are one crossing.
 //!
 //! Grazing contacts (tangent chains) make Newton singular: such leaves give no answer, and a
 //! crossing whose tangents make an angle below [`MIN_SINE`] is dropped — a touching pair
@@ -18,7 +18,7 @@ use super::boundary::{Chain, Piece};
 use contact_core::{Vector2, WorkCounters};
 
 /// Leaf size of the subdivision, relative to the pair's length.
-pub const LEAF_SIZE: f64 = 1e-4;
+pub const LEAF_SIZE: f64 = 1e-3;
 /// Deepest subdivision.
 pub const MAX_DEPTH: usize = 48;
 /// Newton steps per leaf.
@@ -28,7 +28,7 @@ pub const MIN_SINE: f64 = 1e-9;
 /// Below this sine of the crossing angle, a leaf is searched again from its corners.
 pub const SHALLOW_SINE: f64 = 1e-2;
 /// Most leaves examined per chain pair (bounds the work on coincident chains).
-pub const MAX_LEAVES: usize = 200_000;
+pub const MAX_LEAVES: usize = 20_000;
 
 /// A transversal crossing of chain `a` and chain `b`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -175,7 +175,7 @@ impl Search<'_> {
             }
         }
         let (p, q) = (pa.point(s), pb.point(t));
-        if (p - q).norm() > 1e-11 * self.length {
+        if (p - q).norm() > 1e-14 * self.length {
             return None;
         }
         let (ta, tb) = (pa.derivative(s), pb.derivative(t));
