@@ -20,7 +20,7 @@
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
-//! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, [`crate::planar::overlap`] | all |
+//! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, `planar::overlap` | all |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs, the

@@ -102,7 +102,7 @@ pub(crate) fn foot(chain: &Chain, q: &Vector2, size: f64, work: &mut WorkCounter
 pub(crate) fn inside(chain: &Chain, q: &Vector2, size: f64, work: &mut WorkCounters) -> bool {
     let f = foot(chain, q, size, work);
     let t_norm = f.tangent.norm();
-    if !(t_norm > 0.0) {
+    if t_norm.is_nan() || t_norm <= 0.0 {
         return false;
     }
     let t = f.tangent / t_norm;

@@ -161,7 +161,7 @@ impl Search<'_> {
             // [da, −db]·(Δs, Δt) = −r
             let det = -da.x * db.y + da.y * db.x;
             let scale = da.norm() * db.norm();
-            if !(det.abs() > 1e-14 * scale) {
+            if det.is_nan() || det.abs() <= 1e-14 * scale {
                 break;
             }
             let ds = (-r.x * -db.y + r.y * -db.x) / det;
@@ -180,7 +180,7 @@ impl Search<'_> {
         }
         let (ta, tb) = (pa.derivative(s), pb.derivative(t));
         let norms = ta.norm() * tb.norm();
-        if !(norms > 0.0) {
+        if norms.is_nan() || norms <= 0.0 {
             return None;
         }
         let sine = (ta.x * tb.y - ta.y * tb.x) / norms;

@@ -341,14 +341,14 @@ fn inner_contact(
         sums.add(piece, 0.0, 1.0);
     }
     let area = 0.5 * sums.twice_area;
-    if !(area > 1e-12 * size * size) {
+    if area.is_nan() || area <= 1e-12 * size * size {
         return None;
     }
     let g = sums.origin + sums.moment / area;
     let q = closest::foot(outer, &g, size, work).point;
     let towards = q - g;
     let distance = towards.norm();
-    if !(distance > 1e-12 * size) {
+    if distance.is_nan() || distance <= 1e-12 * size {
         return None;
     }
     let n = towards / distance;
