@@ -350,3 +350,87 @@ fn a_cubic_blob_against_a_line_matches_a_million_point_polygonization() {
     assert!((c.penetration + bottom).abs() < 1e-9, "{c:?}");
     assert!((c.area - chord).abs() < 1e-9, "{c:?} vs {chord}");
 }
+
+#[test]
+fn full_arcs_agree_with_the_circle_circle_answer_including_the_chord() {
+    use contact_core::geometry::Circle;
+    let mut rng = Rng::new(21);
+    for _ in 0..50 {
+        let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
+        let d = rng.uniform((ra - rb).abs() + 0.01, ra + rb - 0.01);
+        let phi = rng.uniform(0.0, TAU);
+        let pose_i = planar_pose(d * phi.cos(), d * phi.sin(), rng.uniform(0.0, TAU));
+        let world = rng.pose(3.0);
+        let arcs = one(
+            &instance(Geometry::Arc(Arc::new(ra, TAU).unwrap())),
+            &instance(Geometry::Arc(Arc::new(rb, TAU).unwrap())),
+            &(world * pose_i),
+            &world,
+        );
+        let circles = one(
+            &instance(Geometry::Circle(Circle::new(ra).unwrap())),
+            &instance(Geometry::Circle(Circle::new(rb).unwrap())),
+            &(world * pose_i),
+            &world,
+        );
+        // The length is the common chord (SPEC §4 here: |S| = |P₂ − P₁|); circles.rs widens it
+        // to a diameter once a centre is inside the other disc, so only then do they differ.
+        let x = (d * d + rb * rb - ra * ra) / (2.0 * d);
+        let chord = 2.0 * ((rb - x) * (rb + x)).sqrt();
+        if x >= 0.0 && d - x >= 0.0 {
+            assert!(
+                (circles.area - chord).abs() < 1e-12,
+                "{circles:?} vs {chord}"
+            );
+        }
+        let expected = contact_core::Contact {
+            area: chord,
+            ..circles
+        };
+        let length = ra.max(rb);
+        crate::common::assert_close(&arcs, &expected, length, length, 1e-12, "arc–arc lens");
+    }
+}
+
+#[test]
+fn flipped_arcs_and_curves_are_holes() {
+    // I: the rectangle [1, 3] × [−0.5, 0.5]; J: a hole of radius 2 (a flipped full arc) or
+    // the hole [−2, 2]² (a flipped square). The part of I outside J's hole pushes I inwards
+    // (−x); on the centroid's line y = 0 the points are (3, 0) and (2, 0), depth 1; the
+    // chord of I in J's material runs from the lower to the upper crossing: length 1.
+    let rect = instance(rectangle(1.0, 3.0, -0.5, 0.5));
+    for hole in [
+        instance(Geometry::Arc(Arc::new(2.0, TAU).unwrap())).flipped(),
+        instance(rectangle(-2.0, 2.0, -2.0, 2.0)).flipped(),
+    ] {
+        let c = one(&rect, &hole, &Isometry3::identity(), &Isometry3::identity());
+        assert!((c.normal_w + Vector3::x()).norm() < 1e-12, "{c:?}");
+        assert!(
+            (c.point_i_w - Point3::new(3.0, 0.0, 0.0)).norm() < 1e-12,
+            "{c:?}"
+        );
+        assert!(
+            (c.point_j_w - Point3::new(2.0, 0.0, 0.0)).norm() < 1e-12,
+            "{c:?}"
+        );
+        assert!(
+            (c.penetration - 1.0).abs() < 1e-12 && (c.area - 1.0).abs() < 1e-12,
+            "{c:?}"
+        );
+    }
+}
+
+#[test]
+fn a_curve_whose_marker_z_is_reversed_keeps_its_material() {
+    // Rotating the rectangle [0, 2]² by π about x and lifting it by 2 puts it back on
+    // [0, 2]², traversed clockwise with binormal −z: the same solid, the same contact.
+    let mirrored = Isometry3::from_parts(
+        Translation3::new(0.0, 2.0, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), PI),
+    );
+    let j = instance(rectangle(1.25, 4.0, 0.5, 1.5));
+    let i = instance(rectangle(0.0, 2.0, 0.0, 2.0));
+    let plain = one(&i, &j, &Isometry3::identity(), &Isometry3::identity());
+    let flipped_frame = one(&i, &j, &mirrored, &Isometry3::identity());
+    crate::common::assert_close(&flipped_frame, &plain, 2.0, 2.0, 1e-12, "mirrored marker");
+}
