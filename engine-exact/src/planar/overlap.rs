@@ -43,6 +43,9 @@
 //!
 //! A region whose outline does not close (a missed crossing, see [`crossings`]) gives no
 //! contact rather than a wrong one.
+//!
+//! Unlike the closed-form pairs, a query allocates: `a`'s chain placed in `b`'s plane, the
+//! crossings, the outline's bookkeeping and the ray hits (a few small vectors).
 
 use super::boundary::{Chain, Piece};
 use super::{InPlane, closest, crossings};
