@@ -112,7 +112,7 @@ pub(crate) enum Kernel {
     /// Solid circle `a` against an unbounded line `b`.
     CircleLine { radius: f64, side: f64 },
     /// Boundary `a` against boundary `b` (arcs and curves, oriented by their flips): one
-    /// contact per overlap region (the one kernel that allocates per query, see
+    /// contact per overlap region (it allocates per query, see
     /// `planar::overlap`).
     Overlap {
         a: Arc<planar::boundary::Chain>,
