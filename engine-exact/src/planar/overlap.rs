@@ -22,9 +22,11 @@
 //! quarter-turn arcs; `S = Σ (Δy, −Δx)` over the stretches of `a` on the outline (the chord
 //! of each stretch turned by −90°: `∫ n dl` of `a`'s boundary inside `b`); normal
 //! `n = −S/|S|` (from `b` into `a`); length ("area") `|S|`. The contact points are where the
-//! line through `g` along `n` meets the outline: `a`'s stretches on the `−n` side (the hit
-//! nearest `g`; the farthest on the other side if none), `b`'s on the `+n` side; the
-//! penetration is their distance. Regions with `|S| ≤ 1e-12·L` or `A ≤ 1e-10·|S|²` (grazing:
+//! line through `g` along `n` first meets each boundary: `a`'s going along `−n`, `b`'s going
+//! along `+n` (the farthest meeting on the other side if there is none ahead); the
+//! penetration is their distance. Usually both lie on the region's outline; when the region
+//! overhangs its chord so far that the line misses `a`'s stretch inside `b`, `a`'s point is
+//! where the line leaves `a` — still continuous in the pose. Regions with `|S| ≤ 1e-12·L` or `A ≤ 1e-10·|S|²` (grazing:
 //! the round-off of `A`, integrated about a point of the region, is ~1e-16·|S|²) give no
 //! contact.
 //!
@@ -167,15 +169,13 @@ pub(crate) fn contacts(
         return;
     }
     let mut used = vec![false; departures.len()];
-    let mut stretches: Vec<(usize, f64, f64)> = Vec::new();
     for first in 0..departures.len() {
         if departures[first].to != 0 || used[first] {
             continue;
         }
         used[first] = true;
-        stretches.clear();
-        if let Some(sums) = trace(&chains, &departures, first, &mut used, &mut stretches) {
-            if let Some(c) = region_contact(&sums, a, b, &stretches, size, frame, work) {
+        if let Some(sums) = trace(&chains, &departures, first, &mut used) {
+            if let Some(c) = region_contact(&sums, a, b, size, frame, work) {
                 emit(c);
             }
         }
@@ -188,7 +188,6 @@ fn trace(
     departures: &[Departure],
     first: usize,
     used: &mut [bool],
-    stretches: &mut Vec<(usize, f64, f64)>,
 ) -> Option<Sums> {
     let start = departures[first];
     let mut sums = Sums {
@@ -206,12 +205,7 @@ fn trace(
             .filter(|(_, d)| d.on == on)
             .filter_map(|(k, d)| chain.ahead(tau, d.tau).map(|t| (k, t)))
             .min_by(|x, y| x.1.total_cmp(&y.1))?;
-        chain.walk(tau, distance, |k, piece, s0, s1| {
-            sums.add(piece, s0, s1);
-            if on == 0 {
-                stretches.push((k, s0, s1));
-            }
-        });
+        chain.walk(tau, distance, |_, piece, s0, s1| sums.add(piece, s0, s1));
         if on == 0 {
             let (p, q) = (chain.point(tau), chain.point(tau + distance));
             let d = if distance > 0.0 {
@@ -245,7 +239,6 @@ fn region_contact(
     sums: &Sums,
     a: &Chain,
     b: &Chain,
-    stretches_a: &[(usize, f64, f64)],
     size: f64,
     frame: &InPlane<'_>,
     work: &mut WorkCounters,
@@ -257,27 +250,8 @@ fn region_contact(
     }
     let g = sums.origin + sums.moment / area;
     let n = -sums.chord_normal / length;
-    let reach = 4.0 * size;
-    let ray = Piece::segment(g - reach * n, g + reach * n);
-    let mut hits_a = Vec::new();
-    for &(k, s0, s1) in stretches_a {
-        let piece = a.pieces[k].sub(s0, s1);
-        crossings::between_pieces(&ray, &piece, size, work, &mut |_, _, p, _| hits_a.push(p));
-    }
-    // b's side: every piece of b (the stretches of b on the outline are among them; a hit
-    // elsewhere on b is farther along +n only when b folds back across the region).
-    let mut hits_b = Vec::new();
-    for piece in &b.pieces {
-        crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits_b.push(p));
-    }
-    let point_a = pick(&hits_a, &g, &-n).unwrap_or_else(|| {
-        let f = closest::foot(a, &g, size, work);
-        f.point
-    });
-    let point_b = pick(&hits_b, &g, &n).unwrap_or_else(|| {
-        let f = closest::foot(b, &g, size, work);
-        f.point
-    });
+    let point_a = ray_hit(a, &g, &-n, size, work);
+    let point_b = ray_hit(b, &g, &n, size, work);
     Some(PairContact {
         point_a: frame.point_w(&Point2::from(point_a)),
         point_b: frame.point_w(&Point2::from(point_b)),
@@ -285,6 +259,25 @@ fn region_contact(
         depth: (point_b - point_a).norm(),
         area: length,
     })
+}
+
+/// Where the line through `g` first meets `chain` going along `direction` (the farthest
+/// meeting behind `g` if there is none ahead; the closest point of the chain if the line
+/// misses it).
+fn ray_hit(
+    chain: &Chain,
+    g: &Vector2,
+    direction: &Vector2,
+    size: f64,
+    work: &mut WorkCounters,
+) -> Vector2 {
+    let reach = 4.0 * size;
+    let ray = Piece::segment(g - reach * direction, g + reach * direction);
+    let mut hits = Vec::new();
+    for piece in &chain.pieces {
+        crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits.push(p));
+    }
+    pick(&hits, g, direction).unwrap_or_else(|| closest::foot(chain, g, size, work).point)
 }
 
 /// The hit nearest `g` along `direction` (ahead of `g`), else the farthest behind.

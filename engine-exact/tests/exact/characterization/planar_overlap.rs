@@ -434,3 +434,124 @@ fn a_curve_whose_marker_z_is_reversed_keeps_its_material() {
     let flipped_frame = one(&i, &j, &mirrored, &Isometry3::identity());
     crate::common::assert_close(&flipped_frame, &plain, 2.0, 2.0, 1e-12, "mirrored marker");
 }
+
+/// Points of an ellipse at sorted random angles: a convex counter-clockwise polygon.
+fn convex_polygon(rng: &mut Rng, centre: [f64; 2]) -> Vec<[f64; 2]> {
+    let (a, b, turn) = (
+        rng.uniform(0.5, 1.5),
+        rng.uniform(0.5, 1.5),
+        rng.uniform(0.0, TAU),
+    );
+    let count = 5 + (rng.uniform(0.0, 5.0) as usize);
+    let mut angles: Vec<f64> = (0..count).map(|_| rng.uniform(0.0, TAU)).collect();
+    angles.sort_by(f64::total_cmp);
+    angles
+        .iter()
+        .map(|t| {
+            let (x, y) = (a * t.cos(), b * t.sin());
+            let (c, s) = (turn.cos(), turn.sin());
+            [centre[0] + c * x - s * y, centre[1] + s * x + c * y]
+        })
+        .collect()
+}
+
+fn cross(o: [f64; 2], p: [f64; 2], q: [f64; 2]) -> f64 {
+    (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
+}
+
+/// Distance of `p` from the polygon's boundary.
+fn boundary_distance(poly: &[[f64; 2]], p: [f64; 2]) -> f64 {
+    (0..poly.len())
+        .map(|k| {
+            let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let t = (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1]))
+                .clamp(0.0, 1.0);
+            ((p[0] - a[0] - t * d[0]).powi(2) + (p[1] - a[1] - t * d[1]).powi(2)).sqrt()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn random_convex_polygons_match_clipping_by_hand() {
+    // Oracle, independent of the engine: S = Σ over I's edges of the part inside convex J
+    // (Cyrus–Beck clipping of each edge by J's half-planes), turned by −90°; the region's
+    // centroid by Sutherland–Hodgman clipping of I by J and the shoelace formula.
+    let mut rng = Rng::new(0xC11F);
+    let mut checked = 0;
+    while checked < 100 {
+        let i = convex_polygon(&mut rng, [0.0, 0.0]);
+        let centre = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)];
+        let j = convex_polygon(&mut rng, centre);
+        let mut s = [0.0, 0.0];
+        for k in 0..i.len() {
+            let (a, b) = (i[k], i[(k + 1) % i.len()]);
+            let (mut t0, mut t1) = (0.0f64, 1.0f64);
+            for m in 0..j.len() {
+                let (p, q) = (j[m], j[(m + 1) % j.len()]);
+                let (fa, fb) = (cross(p, q, a), cross(p, q, b));
+                if fa < 0.0 && fb < 0.0 {
+                    t1 = -1.0;
+                } else if fa < 0.0 {
+                    t0 = t0.max(fa / (fa - fb));
+                } else if fb < 0.0 {
+                    t1 = t1.min(fa / (fa - fb));
+                }
+            }
+            if t1 > t0 {
+                let d = [(t1 - t0) * (b[0] - a[0]), (t1 - t0) * (b[1] - a[1])];
+                s = [s[0] + d[1], s[1] - d[0]];
+            }
+        }
+        let mut region = i.clone();
+        for m in 0..j.len() {
+            let (p, q) = (j[m], j[(m + 1) % j.len()]);
+            let mut next = Vec::new();
+            for k in 0..region.len() {
+                let (a, b) = (region[k], region[(k + 1) % region.len()]);
+                let (fa, fb) = (cross(p, q, a), cross(p, q, b));
+                if fa >= 0.0 {
+                    next.push(a);
+                }
+                if (fa >= 0.0) != (fb >= 0.0) {
+                    let t = fa / (fa - fb);
+                    next.push([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+                }
+            }
+            region = next;
+        }
+        let (mut a2, mut gx, mut gy) = (0.0, 0.0, 0.0);
+        for k in 0..region.len() {
+            let (p, q) = (region[k], region[(k + 1) % region.len()]);
+            let c = p[0] * q[1] - q[0] * p[1];
+            a2 += c;
+            gx += (p[0] + q[0]) * c;
+            gy += (p[1] + q[1]) * c;
+        }
+        let length = (s[0] * s[0] + s[1] * s[1]).sqrt();
+        // Skip containment, no overlap and slivers (the oracle's own conditioning).
+        if region.len() < 3 || a2 < 1e-3 || length < 1e-2 {
+            continue;
+        }
+        let g = Point3::new(gx / (3.0 * a2), gy / (3.0 * a2), 0.0);
+        let n = Vector3::new(-s[0], -s[1], 0.0) / length;
+        let c = one(
+            &instance(polyline(&i, true)),
+            &instance(polyline(&j, true)),
+            &Isometry3::identity(),
+            &Isometry3::identity(),
+        );
+        let what = format!("I {i:?}\nJ {j:?}\n{c:?}");
+        assert!((c.normal_w - n).norm() < 1e-12, "{what}");
+        assert!((c.area - length).abs() < 1e-12, "{what}");
+        for (p, poly) in [(c.point_i_w, &i), (c.point_j_w, &j)] {
+            assert!((p - g).cross(&n).norm() < 1e-12, "{what}");
+            assert!(boundary_distance(poly, [p.x, p.y]) < 1e-12, "{what}");
+        }
+        assert!(
+            ((c.point_j_w - c.point_i_w).dot(&n) - c.penetration).abs() < 1e-12,
+            "{what}"
+        );
+        checked += 1;
+    }
+}
