@@ -7,7 +7,9 @@
 //! to `a` where `b` leaves — each region on the left of its own outline. At a crossing
 //! (found by [`crossings::find`]) `a` enters `b` iff `t_a × t_b < 0`.
 //!
-//! **Open ends.** An open chain that *ends* inside the other's material closes its region with
+//! **Open ends.** Whether an open chain's end lies in the other's material follows from its
+//! crossings (inside after an entry, outside after an exit), or, when it crosses nowhere,
+//! from the other chain's closest point. An open chain that *ends* inside the other's material closes its region with
 //! the straight segment from that end `E` to its foot `F` (the closest point of the other
 //! chain), and the outline goes on along the other chain from `F`; an open chain that
 //! *starts* inside the other's material is reached the same way, from the foot of its start.
@@ -19,8 +21,11 @@
 //! **Per region** (outline on the left, integrals relative to a point `o` of the region for
 //! round-off): area `A = ½∮(x dy − y dx)`, centroid `g = o + (∮ ½x² dy, −∮ ½y² dx)/A`, each
 //! integral exact by Gauss–Legendre on the polynomial pieces and to round-off on the
-//! quarter-turn arcs; `S = Σ (Δy, −Δx)` over the stretches of `a` on the outline (the chord
-//! of each stretch turned by −90°: `∫ n dl` of `a`'s boundary inside `b`); normal
+//! quarter-turn arcs; `S_a = Σ (Δy, −Δx)` over the stretches of `a` on the outline (the
+//! chord of each stretch turned by −90°: `∫ n dl` of `a`'s boundary inside `b`), `S_b` the
+//! same over `b`'s, and `S = ½(S_a − S_b)` — equal to `S_a` when one stretch of each joins
+//! the same two crossings (then `S_b = −S_a`), and symmetric in `a` and `b` when an open
+//! end's closing segment or several crossings make the chords differ; normal
 //! `n = −S/|S|` (from `b` into `a`); length ("area") `|S|`. The contact points are where the
 //! line through `g` along `n` first meets each boundary: `a`'s going along `−n`, `b`'s going
 //! along `+n` (the farthest meeting on the other side if there is none ahead); the
@@ -43,8 +48,11 @@
 //! no contact. The penetration of a boundary lying on another is zero everywhere along it,
 //! so this is the limit of the touching case.
 //!
-//! A region whose outline does not close (a missed crossing, see [`crossings`]) gives no
-//! contact rather than a wrong one.
+//! A region whose outline does not close (a missed crossing, see [`crossings`]), or whose
+//! walk along a chain passes a place where the outline should enter that chain (an open end
+//! whose foot lies on a part of the other chain that does not bound the region — the foot
+//! rule is meant for ends near the region, not for wiggly open curves), gives no contact
+//! rather than a wrong one.
 //!
 //! Unlike the closed-form pairs, a query allocates: `a`'s chain placed in `b`'s plane, the
 //! crossings, the outline's bookkeeping and the ray hits (a few small vectors).
@@ -141,8 +149,15 @@ pub(crate) fn contacts(
         if own.closed {
             continue;
         }
+        // Whether each end lies in the other's material: by the parity of the crossings
+        // along this chain when it has any (so the ends agree with the crossings), else by
+        // the closest point.
+        let (first, last) = ends_by_parity(&found, x);
+        let start = own.point(0.0);
         let end = own.point(own.count());
-        if own.real_ends[1] && closest::inside(other, &end, size, work) {
+        let start_inside = first.unwrap_or_else(|| closest::inside(other, &start, size, work));
+        let end_inside = last.unwrap_or_else(|| closest::inside(other, &end, size, work));
+        if own.real_ends[1] && end_inside {
             let f = closest::foot(other, &end, size, work);
             departures.push(Departure {
                 on: x,
@@ -152,8 +167,7 @@ pub(crate) fn contacts(
                 jump: Some((end, f.point)),
             });
         }
-        let start = own.point(0.0);
-        if own.real_ends[0] && closest::inside(other, &start, size, work) {
+        if own.real_ends[0] && start_inside {
             let f = closest::foot(other, &start, size, work);
             departures.push(Departure {
                 on: 1 - x,
@@ -182,6 +196,25 @@ pub(crate) fn contacts(
     }
 }
 
+/// For chain `x` (0 = `a`, 1 = `b`): whether its start and its end lie in the other's
+/// material, from its first and last crossings (`None` without crossings).
+fn ends_by_parity(found: &[crossings::Crossing], x: usize) -> (Option<bool>, Option<bool>) {
+    // (τ on chain x, whether chain x enters the other's material there)
+    let along = |c: &crossings::Crossing| {
+        if x == 0 {
+            (c.tau_a, c.sine < 0.0)
+        } else {
+            (c.tau_b, c.sine > 0.0)
+        }
+    };
+    let first = found.iter().map(along).min_by(|p, q| p.0.total_cmp(&q.0));
+    let last = found.iter().map(along).max_by(|p, q| p.0.total_cmp(&q.0));
+    (
+        first.map(|(_, enters)| !enters),
+        last.map(|(_, enters)| enters),
+    )
+}
+
 /// Traces the outline that enters `a` by departure `first`; `None` if it does not close.
 fn trace(
     chains: &[&Chain; 2],
@@ -205,15 +238,26 @@ fn trace(
             .filter(|(_, d)| d.on == on)
             .filter_map(|(k, d)| chain.ahead(tau, d.tau).map(|t| (k, t)))
             .min_by(|x, y| x.1.total_cmp(&y.1))?;
+        // Walking past a place where the outline enters this chain means the departures do
+        // not pair up (an open end's foot on a part of the other chain that does not bound
+        // this region): the outline is not traced.
+        let passes_arrival = departures.iter().any(|d| {
+            d.to == on
+                && chain
+                    .ahead(tau, d.to_tau)
+                    .is_some_and(|t| t > 1e-12 && t < distance - 1e-12)
+        });
+        if passes_arrival {
+            return None;
+        }
         chain.walk(tau, distance, |_, piece, s0, s1| sums.add(piece, s0, s1));
-        if on == 0 {
-            let (p, q) = (chain.point(tau), chain.point(tau + distance));
-            let d = if distance > 0.0 {
-                q - p
-            } else {
-                Vector2::zeros()
-            };
-            sums.chord_normal += Vector2::new(d.y, -d.x);
+        // S = ½(S_a − S_b): the same as S_a where one stretch of each boundary joins the
+        // same two crossings, and symmetric in a and b where open ends or several crossings
+        // make the stretches' chords differ.
+        if distance > 0.0 {
+            let d = chain.point(tau + distance) - chain.point(tau);
+            let weight = if on == 0 { 0.5 } else { -0.5 };
+            sums.chord_normal += weight * Vector2::new(d.y, -d.x);
         }
         let d = departures[next];
         if let Some((p, q)) = d.jump {

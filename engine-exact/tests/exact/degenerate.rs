@@ -453,11 +453,17 @@ mod boundaries {
             &Isometry3::identity(),
             &Isometry3::identity(),
         );
-        // S: the chord of the V's piece from (−2/3, 0) to (x_e, −0.25), turned by −90°.
-        let chord = Vector3::new(x_e + 2.0 / 3.0, -0.25, 0.0);
-        let n = Vector3::new(chord.y, -chord.x, 0.0) / -chord.norm();
+        // S = ½(S_a − S_b): S_a the V's chord from (−2/3, 0) to (x_e, −0.25) turned by −90°,
+        // S_b the line's stretch from the foot (x_e, 0) back to (−2/3, 0), turned likewise.
+        let (chord_a, chord_b) = ((x_e + 2.0 / 3.0, -0.25), (-2.0 / 3.0 - x_e, 0.0));
+        let s = Vector3::new(
+            0.5 * (chord_a.1 - chord_b.1),
+            0.5 * (-chord_a.0 + chord_b.0),
+            0.0,
+        );
+        let n = -s / s.norm();
         assert!((c.normal_w - n).norm() < 1e-12, "{c:?}");
-        assert!((c.area - chord.norm()).abs() < 1e-12, "{c:?}");
+        assert!((c.area - s.norm()).abs() < 1e-12, "{c:?}");
         // Oracle centroid of the quadrilateral (−2/3, 0), (0, −0.5), (x_e, −0.25), (x_e, 0).
         let quad = [(-2.0 / 3.0, 0.0), (0.0, -0.5), (x_e, -0.25), (x_e, 0.0)];
         let (mut a2, mut gx, mut gy) = (0.0, 0.0, 0.0);
@@ -573,5 +579,103 @@ mod boundaries {
                 assert!(c.penetration.is_finite() && c.area.is_finite(), "{c:?}");
             }
         }
+    }
+
+    #[test]
+    fn random_curves_arcs_and_lines_never_panic_or_give_nan() {
+        use contact_core::Point2;
+        use contact_core::geometry::{Curve, CurvePoints};
+        let mut rng = crate::common::Rng::new(0xBAD5EED);
+        let (mut contacts, mut symmetric) = (0, 0);
+        for _ in 0..500 {
+            let mut random_geometry =
+                |rng: &mut crate::common::Rng| -> contact_core::GeometryInstance {
+                    let g = match (rng.uniform(0.0, 3.0) as usize).min(2) {
+                        0 => {
+                            // Simple curves (a self-crossing boundary has no material to
+                            // speak of): star-shaped closed ones, x-monotone open ones.
+                            let count = 4 + (rng.uniform(0.0, 6.0) as usize);
+                            let closed = rng.uniform(0.0, 1.0) < 0.5;
+                            let mut ts: Vec<f64> =
+                                (0..count).map(|_| rng.uniform(0.0, 1.0)).collect();
+                            ts.sort_by(f64::total_cmp);
+                            let points: Vec<Point2> = ts
+                                .iter()
+                                .map(|t| {
+                                    if closed {
+                                        let (a, r) = (TAU * t, rng.uniform(0.7, 1.1));
+                                        Point2::new(r * a.cos(), r * a.sin())
+                                    } else {
+                                        Point2::new(4.0 * t - 2.0, rng.uniform(-0.8, 0.8))
+                                    }
+                                })
+                                .collect();
+                            let order = 2 + (rng.uniform(0.0, 3.0) as usize).min(2);
+                            let kind = if rng.uniform(0.0, 1.0) < 0.5 {
+                                CurvePoints::Control
+                            } else {
+                                CurvePoints::Interpolated
+                            };
+                            match Curve::new(&points, order, closed, kind) {
+                                Ok(c) => Geometry::Curve(Shared::new(c)),
+                                Err(_) => Geometry::Arc(Arc::new(0.7, 4.0).unwrap()),
+                            }
+                        }
+                        1 => Geometry::Arc(
+                            Arc::new(rng.uniform(0.2, 1.5), rng.uniform(0.1, TAU)).unwrap(),
+                        ),
+                        _ => Geometry::Line(
+                            Line::bounded(rng.uniform(-3.0, 0.0), rng.uniform(0.1, 3.0)).unwrap(),
+                        ),
+                    };
+                    let g = instance(g);
+                    if rng.uniform(0.0, 1.0) < 0.3 {
+                        g.flipped()
+                    } else {
+                        g
+                    }
+                };
+            let (i, j) = (random_geometry(&mut rng), random_geometry(&mut rng));
+            if matches!(*i.geometry, Geometry::Line(_)) && matches!(*j.geometry, Geometry::Line(_))
+            {
+                continue;
+            }
+            let pose_i = planar_pose(
+                rng.uniform(-1.0, 1.0),
+                rng.uniform(-1.0, 1.0),
+                rng.uniform(0.0, TAU),
+            );
+            // `query` asserts every contact is well formed (finite, unit normal, δ ≥ 0).
+            let found = query(&i, &j, &pose_i, &Isometry3::identity());
+            contacts += found.len();
+            // Exchanging I and J gives the same contacts, swapped (in any order), when one
+            // of the two is closed. Two open boundaries whose ends lie in each other's
+            // material close their regions at feet that need not pair up, so their answers
+            // may depend on the order (documented in `planar::overlap`).
+            let closed = |g: &contact_core::GeometryInstance| match &*g.geometry {
+                Geometry::Curve(c) => c.is_closed(),
+                Geometry::Arc(a) => a.range_angle() >= TAU,
+                _ => false,
+            };
+            if !(closed(&i) || closed(&j)) {
+                continue;
+            }
+            symmetric += 1;
+            let backward = query(&j, &i, &Isometry3::identity(), &pose_i);
+            assert_eq!(found.len(), backward.len(), "{i:?}\n{j:?}\n{pose_i:?}");
+            for f in &found {
+                assert!(
+                    backward.iter().any(|b| {
+                        let b = b.swapped();
+                        (b.point_i_w - f.point_i_w).norm() < 1e-9
+                            && (b.normal_w - f.normal_w).norm() < 1e-9
+                            && (b.penetration - f.penetration).abs() < 1e-9
+                    }),
+                    "{f:?} not in {backward:?}"
+                );
+            }
+        }
+        assert!(symmetric > 100, "only {symmetric} symmetric checks");
+        assert!(contacts > 50, "only {contacts} contacts");
     }
 }
