@@ -588,53 +588,51 @@ mod boundaries {
         let mut rng = crate::common::Rng::new(0xBAD5EED);
         let (mut contacts, mut symmetric) = (0, 0);
         for _ in 0..500 {
-            let mut random_geometry =
-                |rng: &mut crate::common::Rng| -> contact_core::GeometryInstance {
-                    let g = match (rng.uniform(0.0, 3.0) as usize).min(2) {
-                        0 => {
-                            // Simple curves (a self-crossing boundary has no material to
-                            // speak of): star-shaped closed ones, x-monotone open ones.
-                            let count = 4 + (rng.uniform(0.0, 6.0) as usize);
-                            let closed = rng.uniform(0.0, 1.0) < 0.5;
-                            let mut ts: Vec<f64> =
-                                (0..count).map(|_| rng.uniform(0.0, 1.0)).collect();
-                            ts.sort_by(f64::total_cmp);
-                            let points: Vec<Point2> = ts
-                                .iter()
-                                .map(|t| {
-                                    if closed {
-                                        let (a, r) = (TAU * t, rng.uniform(0.7, 1.1));
-                                        Point2::new(r * a.cos(), r * a.sin())
-                                    } else {
-                                        Point2::new(4.0 * t - 2.0, rng.uniform(-0.8, 0.8))
-                                    }
-                                })
-                                .collect();
-                            let order = 2 + (rng.uniform(0.0, 3.0) as usize).min(2);
-                            let kind = if rng.uniform(0.0, 1.0) < 0.5 {
-                                CurvePoints::Control
-                            } else {
-                                CurvePoints::Interpolated
-                            };
-                            match Curve::new(&points, order, closed, kind) {
-                                Ok(c) => Geometry::Curve(Shared::new(c)),
-                                Err(_) => Geometry::Arc(Arc::new(0.7, 4.0).unwrap()),
-                            }
+            let random_geometry = |rng: &mut crate::common::Rng| -> contact_core::GeometryInstance {
+                let g = match (rng.uniform(0.0, 3.0) as usize).min(2) {
+                    0 => {
+                        // Simple curves (a self-crossing boundary has no material to
+                        // speak of): star-shaped closed ones, x-monotone open ones.
+                        let count = 4 + (rng.uniform(0.0, 6.0) as usize);
+                        let closed = rng.uniform(0.0, 1.0) < 0.5;
+                        let mut ts: Vec<f64> = (0..count).map(|_| rng.uniform(0.0, 1.0)).collect();
+                        ts.sort_by(f64::total_cmp);
+                        let points: Vec<Point2> = ts
+                            .iter()
+                            .map(|t| {
+                                if closed {
+                                    let (a, r) = (TAU * t, rng.uniform(0.7, 1.1));
+                                    Point2::new(r * a.cos(), r * a.sin())
+                                } else {
+                                    Point2::new(4.0 * t - 2.0, rng.uniform(-0.8, 0.8))
+                                }
+                            })
+                            .collect();
+                        let order = 2 + (rng.uniform(0.0, 3.0) as usize).min(2);
+                        let kind = if rng.uniform(0.0, 1.0) < 0.5 {
+                            CurvePoints::Control
+                        } else {
+                            CurvePoints::Interpolated
+                        };
+                        match Curve::new(&points, order, closed, kind) {
+                            Ok(c) => Geometry::Curve(Shared::new(c)),
+                            Err(_) => Geometry::Arc(Arc::new(0.7, 4.0).unwrap()),
                         }
-                        1 => Geometry::Arc(
-                            Arc::new(rng.uniform(0.2, 1.5), rng.uniform(0.1, TAU)).unwrap(),
-                        ),
-                        _ => Geometry::Line(
-                            Line::bounded(rng.uniform(-3.0, 0.0), rng.uniform(0.1, 3.0)).unwrap(),
-                        ),
-                    };
-                    let g = instance(g);
-                    if rng.uniform(0.0, 1.0) < 0.3 {
-                        g.flipped()
-                    } else {
-                        g
                     }
+                    1 => Geometry::Arc(
+                        Arc::new(rng.uniform(0.2, 1.5), rng.uniform(0.1, TAU)).unwrap(),
+                    ),
+                    _ => Geometry::Line(
+                        Line::bounded(rng.uniform(-3.0, 0.0), rng.uniform(0.1, 3.0)).unwrap(),
+                    ),
                 };
+                let g = instance(g);
+                if rng.uniform(0.0, 1.0) < 0.3 {
+                    g.flipped()
+                } else {
+                    g
+                }
+            };
             let (i, j) = (random_geometry(&mut rng), random_geometry(&mut rng));
             if matches!(*i.geometry, Geometry::Line(_)) && matches!(*j.geometry, Geometry::Line(_))
             {
