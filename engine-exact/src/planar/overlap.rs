@@ -230,6 +230,7 @@ fn trace(
         chord_normal: Vector2::zeros(),
     };
     let (mut on, mut tau) = (start.to, start.to_tau);
+    let mut entries: Vec<usize> = Vec::new();
     for _ in 0..=departures.len() {
         let chain = chains[on];
         let (next, distance) = departures
@@ -264,13 +265,18 @@ fn trace(
             sums.add(&Piece::segment(p, q), 0.0, 1.0);
         }
         if next == first {
+            // Only a closed outline claims its entries: one that fails here may still be
+            // traced from an entry of its own.
+            for &k in &entries {
+                used[k] = true;
+            }
             return Some(sums);
         }
         if d.to == 0 {
-            if used[next] {
+            if used[next] || entries.contains(&next) {
                 return None;
             }
-            used[next] = true;
+            entries.push(next);
         }
         on = d.to;
         tau = d.to_tau;
