@@ -4,7 +4,8 @@
 //! smaller than [`LEAF_SIZE`] of the pair's length `L` (or [`MAX_DEPTH`] splits deep); from
 //! each leaf, Newton on the 2×2 system `P_a(s) = P_b(t)` runs on the *whole* pieces to
 //! round-off (a step below `1e-15·L`, at most [`MAX_NEWTON_STEPS`] steps), and the answer is
-//! kept when it closes to `1e-14·L` (a few units of round-off). Answers closer than `1e-9·L` are one crossing.
+//! kept when it closes to `1e-14·L` (a few units of round-off). Answers closer than
+//! `1e-9·L` are one crossing.
 //!
 //! Grazing contacts (tangent chains) make Newton singular: such leaves give no answer, and a
 //! crossing whose tangents make an angle below [`MIN_SINE`] is dropped — a touching pair

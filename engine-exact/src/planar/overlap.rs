@@ -9,9 +9,10 @@
 //!
 //! **Open ends.** Whether an open chain's end lies in the other's material follows from its
 //! crossings (inside after an entry, outside after an exit), or, when it crosses nowhere,
-//! from the other chain's closest point. An open chain that *ends* inside the other's material closes its region with
-//! the straight segment from that end `E` to its foot `F` (the closest point of the other
-//! chain), and the outline goes on along the other chain from `F`; an open chain that
+//! from the other chain's closest point. An open chain that *ends* inside the other's
+//! material closes its region with the straight segment from that end `E` to its foot `F`
+//! (the closest point of the other chain), and the outline goes on along the other chain
+//! from `F`; an open chain that
 //! *starts* inside the other's material is reached the same way, from the foot of its start.
 //! As the end leaves the material `F → E` and the segment shrinks to nothing, so the region
 //! turns continuously into the one bounded by the two crossings. An end meeting the other
@@ -31,9 +32,9 @@
 //! along `+n` (the farthest meeting on the other side if there is none ahead); the
 //! penetration is their distance. Usually both lie on the region's outline; when the region
 //! overhangs its chord so far that the line misses `a`'s stretch inside `b`, `a`'s point is
-//! where the line leaves `a` — still continuous in the pose. Regions with `|S| ≤ 1e-12·L` or `A ≤ 1e-10·|S|²` (grazing:
-//! the round-off of `A`, integrated about a point of the region, is ~1e-16·|S|²) give no
-//! contact.
+//! where the line leaves `a` — still continuous in the pose. Regions with `|S| ≤ 1e-12·L` or
+//! `A ≤ 1e-10·|S|²` (grazing: the round-off of `A`, integrated about a point of the region,
+//! is ~1e-16·|S|²) give no contact.
 //!
 //! Exactly touching boundaries agree to round-off along a short stretch, so they may give a
 //! contact whose penetration is at round-off level (below `1e-13·L`) instead of none.
@@ -52,7 +53,10 @@
 //! walk along a chain passes a place where the outline should enter that chain (an open end
 //! whose foot lies on a part of the other chain that does not bound the region — the foot
 //! rule is meant for ends near the region, not for wiggly open curves), gives no contact
-//! rather than a wrong one.
+//! rather than a wrong one. With both boundaries open and ends inside each other's
+//! material, the feet need not pair up, and the answer can then depend on which is I (about
+//! 2% of random open–open scenes in the tests); with one boundary closed, exchanging I and J
+//! gives the swapped contact.
 //!
 //! Unlike the closed-form pairs, a query allocates: `a`'s chain placed in `b`'s plane, the
 //! crossings, the outline's bookkeeping and the ray hits (a few small vectors).
