@@ -21,12 +21,12 @@
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
+//! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, `planar::overlap` | all |
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs (solid–solid), the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
-//! solids on a *bounded* plane, circles on a bounded line, arc–arc, arc–curve, arc–line,
-//! curve–curve and curve–line are not built
+//! solids on a *bounded* plane and circles on a bounded line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -34,6 +34,7 @@ use crate::ExactEngine;
 use crate::kernel::Kernel;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
+use crate::planar::boundary::Chain;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Ellipsoid, Plane};
 use contact_core::{Geometry, Unsupported};
@@ -56,7 +57,7 @@ const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
     "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
-const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair and one circle of a circle pair";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
 pub(crate) fn select(
@@ -344,7 +345,50 @@ pub(crate) fn select(
             },
         ),
         (G::Arc(_), G::Arc(_) | G::Curve(_) | G::Line(_))
-        | (G::Curve(_), G::Curve(_) | G::Line(_)) => Err(no(NOT_BUILT)),
+        | (G::Curve(_), G::Curve(_) | G::Line(_)) => {
+            let chain = |g: &Geometry, flip: bool| -> Result<Chain, Unsupported> {
+                match g {
+                    G::Arc(arc) => Ok(Chain::from_arc(arc.radius(), arc.range_angle(), side(flip))),
+                    G::Curve(curve) => {
+                        let curve = PlanarCurve::new(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+                        Ok(Chain::from_curve(&curve, side(flip)))
+                    }
+                    // Only arcs and curves reach here (the arm's patterns).
+                    G::Ellipsoid(_)
+                    | G::Cylinder(_)
+                    | G::Cuboid(_)
+                    | G::Frustum(_)
+                    | G::Torus(_)
+                    | G::Mesh(_)
+                    | G::Plane(_)
+                    | G::Point
+                    | G::Circle(_)
+                    | G::Line(_) => Err(no(NOT_BUILT)),
+                }
+            };
+            let a_chain = std::sync::Arc::new(chain(a, flip_a)?);
+            Ok(canonical(match b {
+                G::Line(line) => Kernel::OverlapLine {
+                    a: a_chain,
+                    x_range: line.x_range(),
+                    side: side(flip_b),
+                },
+                G::Ellipsoid(_)
+                | G::Cylinder(_)
+                | G::Cuboid(_)
+                | G::Frustum(_)
+                | G::Torus(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => Kernel::Overlap {
+                    a: a_chain,
+                    b: std::sync::Arc::new(chain(b, flip_b)?),
+                },
+            }))
+        }
         (G::Line(_), G::Line(_)) => Err(no(NOT_A_CONTACT)),
     }
 }

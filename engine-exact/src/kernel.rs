@@ -116,6 +116,19 @@ pub(crate) enum Kernel {
     },
     /// Solid circle `a` against an unbounded line `b`.
     CircleLine { radius: f64, side: f64 },
+    /// Boundary `a` against boundary `b` (arcs and curves, oriented by their flips): one
+    /// contact per overlap region (it allocates per query, see
+    /// `planar::overlap`).
+    Overlap {
+        a: Arc<planar::boundary::Chain>,
+        b: Arc<planar::boundary::Chain>,
+    },
+    /// Boundary `a` (arc or curve) against line `b`: one contact per overlap region.
+    OverlapLine {
+        a: Arc<planar::boundary::Chain>,
+        x_range: [f64; 2],
+        side: f64,
+    },
 }
 
 impl Kernel {
@@ -215,6 +228,20 @@ impl Kernel {
             Self::CircleLine { radius, side } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::point_line::circle_line(&frame, radius, side)
+            }
+            Self::Overlap { ref a, ref b } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::overlap::chain_chain(&frame, pose_a, a, b, work, emit);
+                None
+            }
+            Self::OverlapLine {
+                ref a,
+                x_range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::overlap::chain_line(&frame, pose_a, a, x_range, side, work, emit);
+                None
             }
         };
         if let Some(c) = found {

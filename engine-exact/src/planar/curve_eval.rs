@@ -108,6 +108,21 @@ impl PlanarCurve {
         self.length
     }
 
+    /// The polynomial degree (order − 1).
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// True for a closed curve.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The parameters where the polynomial spans meet, ends included.
+    pub fn breakpoints(&self) -> &[f64] {
+        &self.breakpoints
+    }
+
     /// The parameter domain.
     pub fn domain(&self) -> [f64; 2] {
         [self.knots[self.degree], self.knots[self.control.len()]]

@@ -11,8 +11,12 @@
 //! normal.
 
 pub mod arc;
+pub(crate) mod boundary;
 pub mod circles;
+pub(crate) mod closest;
+pub(crate) mod crossings;
 pub mod curve_eval;
+pub(crate) mod overlap;
 pub mod point_curve;
 pub mod point_line;
 

@@ -7,12 +7,14 @@
 //! - [`characterization`]: the accuracy contract, one row per pair;
 //! - [`properties`]: I/J swap, rigid motion and scale covariance;
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
+//! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
 
 mod characterization;
 mod common;
 mod degenerate;
+mod degenerate_boundaries;
 mod model_check;
 mod oracles;
 mod properties;

@@ -56,7 +56,7 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 24] = [
+const BUILT: [(&str, &str); 29] = [
     ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
@@ -81,6 +81,11 @@ const BUILT: [(&str, &str); 24] = [
     ("circle", "circle"),
     ("circle", "line"),
     ("point", "line"),
+    ("arc", "arc"),
+    ("arc", "curve"),
+    ("arc", "line"),
+    ("curve", "curve"),
+    ("curve", "line"),
 ];
 
 fn name(g: &Geometry) -> &'static str {
@@ -136,8 +141,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 23 distinct pairs, 20 of them between different representatives (both orders count).
-    assert_eq!(accepted, 3 + 2 * 20);
+    // 28 distinct pairs, 23 of them between different representatives (both orders count).
+    assert_eq!(accepted, 5 + 2 * 23);
 }
 
 #[test]

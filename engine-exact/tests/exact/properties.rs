@@ -321,8 +321,60 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 13] = [
+/// Boundary against boundary: a cubic blob or a full arc (I) crossing another blob, an arc
+/// whose gap faces away, a rectangle's top edge or a (possibly flipped) line (J).
+fn boundary_pair(rng: &mut Rng, s: f64) -> Scene {
+    use crate::characterization::planar_overlap::{cubic_blob, planar_pose, rectangle};
+    use std::f64::consts::{PI, TAU};
+    let i = if rng.uniform(0.0, 1.0) < 0.5 {
+        Geometry::Curve(std::sync::Arc::new(cubic_blob(s)))
+    } else {
+        Geometry::Arc(Arc::new(s, TAU).unwrap())
+    };
+    let frame = rng.pose(3.0);
+    let spin = rng.uniform(0.0, TAU);
+    let (x, y) = (rng.uniform(-2.0, 2.0), rng.uniform(-0.7, 0.7));
+    let (j, offset_i, turn_j) = match (rng.uniform(0.0, 4.0) as usize).min(3) {
+        kind @ (0 | 1) => {
+            let phi = rng.uniform(0.0, TAU);
+            let d = rng.uniform(0.6, 1.9);
+            let offset = planar_pose(d * phi.cos(), d * phi.sin(), spin);
+            if kind == 0 {
+                let blob = Geometry::Curve(std::sync::Arc::new(cubic_blob(1.2 * s)));
+                (instance(blob), offset, 0.0)
+            } else {
+                // The arc's gap (5 rad to 2π, centred at 5.64) faces away from I.
+                let arc = Geometry::Arc(Arc::new(1.2 * s, 5.0).unwrap());
+                (instance(arc), offset, phi + PI - 5.64)
+            }
+        }
+        2 => (
+            instance(rectangle(-4.0 * s, 4.0 * s, -4.0 * s, 0.0)),
+            planar_pose(x, y, spin),
+            0.0,
+        ),
+        _ => {
+            let line = instance(Geometry::Line(Line::unbounded()));
+            if rng.uniform(0.0, 1.0) < 0.5 {
+                (line, planar_pose(x, y, spin), 0.0)
+            } else {
+                // Material above the flipped line: I mirrored to its side.
+                (line.flipped(), planar_pose(x, -y, spin), 0.0)
+            }
+        }
+    };
+    Scene {
+        i: instance(i),
+        j,
+        pose_i: scaled_pose(&(frame * offset_i), s),
+        pose_j: scaled_pose(&(frame * planar_pose(0.0, 0.0, turn_j)), s),
+        length: 2.0 * s,
+    }
+}
+
+const MAKERS: [(&str, Maker); 14] = [
     ("frustum/torus–plane", revolved_plane),
+    ("arc/curve–arc/curve/line", boundary_pair),
     ("circle–curve/arc", circle_curve_or_arc),
     ("mesh–plane", mesh_plane),
     ("sphere–box/cylinder/frustum/torus/mesh", sphere_solid),

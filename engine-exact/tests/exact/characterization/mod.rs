@@ -10,6 +10,7 @@ use crate::common::{Expected, Rng, errors, query};
 use contact_core::{GeometryInstance, Isometry3};
 
 mod planar;
+pub(crate) mod planar_overlap;
 mod revolved;
 mod solids;
 
@@ -94,6 +95,7 @@ fn characterization_table() {
     let mut rows = solids::rows(&mut rng);
     rows.extend(revolved::rows(&mut rng));
     rows.extend(planar::rows(&mut rng));
+    rows.extend(planar_overlap::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
