@@ -11,8 +11,25 @@
 //! and returns the distance `t ≥ 0` to the exit, or `None` when `o` is outside the solid (a
 //! centroid outside a non-convex solid: the caller then falls back to the closest point).
 
+use crate::pairs::solid_distance::{Solid, signed_distance};
 use contact_core::Vector3;
 use contact_core::geometry::{Cylinder, Frustum, Torus};
+
+/// The point of `solid`'s surface on the ray from `g` along the unit `direction` where it
+/// leaves the solid; when `g` is outside the solid (a centroid in a torus' hole), the point of
+/// the surface closest to `g`.
+pub(crate) fn surface_point_along(solid: &Solid, g: &Vector3, direction: &Vector3) -> Vector3 {
+    let exit = match solid {
+        Solid::Box(b) => box_exit(&b.center().coords, &b.half_extents(), g, direction),
+        Solid::Cylinder(c) => cylinder_exit(c, g, direction),
+        Solid::Frustum(f) => frustum_exit(f, g, direction),
+        Solid::Torus(t) => torus_exit(t, g, direction),
+    };
+    match exit {
+        Some(t) => g + t * direction,
+        None => signed_distance(solid, g).1,
+    }
+}
 
 /// The larger root of `a t² + b t + c` with `c ≤ 0 < a` (one root ≤ 0 ≤ the other), stably.
 fn positive_root(a: f64, b: f64, c: f64) -> f64 {
@@ -64,7 +81,13 @@ pub(crate) fn ellipsoid_exit(semi: &Vector3, o: &Vector3, d: &Vector3) -> Option
 
 /// A cylinder on the `z` axis from `z = 0` to its length.
 pub(crate) fn cylinder_exit(cylinder: &Cylinder, o: &Vector3, d: &Vector3) -> Option<f64> {
-    frustum_like_exit(cylinder.radius(), cylinder.radius(), cylinder.length(), o, d)
+    frustum_like_exit(
+        cylinder.radius(),
+        cylinder.radius(),
+        cylinder.length(),
+        o,
+        d,
+    )
 }
 
 /// A frustum (or cone) on the `z` axis, bottom radius at `z = 0`, top at its length.
@@ -112,10 +135,16 @@ fn frustum_like_exit(r0: f64, r1: f64, length: f64, o: &Vector3, d: &Vector3) ->
 /// The smallest `t > 0` where `a t² + b t + c` (≤ 0 at 0) rises through 0, or ∞.
 fn leaving_root(a: f64, b: f64, c: f64) -> f64 {
     if a == 0.0 {
-        return if b > 0.0 { (-c / b).max(0.0) } else { f64::INFINITY };
+        return if b > 0.0 {
+            (-c / b).max(0.0)
+        } else {
+            f64::INFINITY
+        };
     }
     let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 {
+    // No real roots, or a double one within round-off: the line misses or only touches the
+    // side (a line along the axis through a cone's tip), it does not leave through it.
+    if disc <= 1e-14 * b * b {
         return f64::INFINITY;
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());

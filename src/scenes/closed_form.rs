@@ -55,15 +55,11 @@ pub fn sphere_sphere(scene: &Scene, pose: &ScenePose) -> Vec<Contact> {
 }
 
 /// A cylinder (I) lying on an unbounded plane (J), axis parallel to the plane, its axis at
-/// height `d ∈ (−r, r)`: the intersection is a prism over a circular segment, its centroid `g`
-/// below the axis' midpoint at `ρ_g = (2/3)(r² − d²)^{3/2} / A` from the axis, with
-/// `A = r² acos(d/r) − d·sqrt(r² − d²)` the segment's area. By SPEC §4 the points are those of
-/// each surface closest to `g`: the foot of `g` on the plane, and on the cylinder the side point
-/// straight below the axis (`r − ρ_g` from `g`) unless a cap is nearer (`L/2 < r − ρ_g`, the
-/// bottom cap then). With the side nearer δ = r − d and the points lie along the normal. The
-/// area is the footprint L·2·sqrt(r² − d²).
-/// Wholly under the plane (d ≤ −r), g is the centre and the side point is taken along the
-/// cylinder's +x, as the engines do; the area is a quarter of the surface.
+/// height `d < r`: the intersection is a prism over a circular segment whose centroid lies
+/// straight below the axis' midpoint, so along the normal through it (SPEC §4) the points are
+/// the cylinder's bottom line point and its foot on the plane, δ = r − d, and the area is the
+/// footprint L·2·sqrt(r² − d²); wholly under the plane (d ≤ −r) the centroid is the centre,
+/// δ = r − d still, and the area is a quarter of the surface.
 pub fn cylinder_plane_side(scene: &Scene, pose: &ScenePose) -> Vec<Contact> {
     let Geometry::Cylinder(cyl) = &*scene.i[0].geometry else {
         return Vec::new();
@@ -78,34 +74,13 @@ pub fn cylinder_plane_side(scene: &Scene, pose: &ScenePose) -> Vec<Contact> {
     if d >= r {
         return Vec::new();
     }
-    // Wholly under the plane (d ≤ −r): g is the centre, every side point is r away; the
-    // engines then take the cylinder's +x (SPEC leaves the choice open), and the area is a
-    // quarter of the surface.
     let immersed = d <= -r;
     let chord = (r * r - d * d).max(0.0).sqrt();
-    let rho_g = if immersed {
-        0.0
-    } else {
-        let segment = r * r * (d / r).acos() - d * chord;
-        2.0 / 3.0 * chord.powi(3) / segment
-    };
-    let g = mid - rho_g * n;
-    let down = if immersed {
-        -(x_wi.rotation * Vector3::x())
-    } else {
-        n
-    };
-    let point_i = if 0.5 * cyl.length() < r - rho_g {
-        g - 0.5 * cyl.length() * axis
-    } else {
-        mid - r * down
-    };
-    let point_j = g - n.dot(&(g - x_wj.translation.vector)) * n;
     vec![Contact {
-        point_i_w: Point3::from(point_i),
-        point_j_w: Point3::from(point_j),
+        point_i_w: Point3::from(mid - r * n),
+        point_j_w: Point3::from(mid - d * n),
         normal_w: n,
-        penetration: (point_i - point_j).norm(),
+        penetration: r - d,
         area: if immersed {
             0.5 * PI * r * (r + cyl.length())
         } else {

@@ -14,9 +14,7 @@ fn number_after(text: &str, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("no '{key}' in: {text}"))
         + key.len();
     let rest = &text[start..];
-    let end = rest
-        .find([' ', ':', ',', ')'])
-        .unwrap_or(rest.len());
+    let end = rest.find([' ', ':', ',', ')']).unwrap_or(rest.len());
     rest[..end]
         .parse()
         .unwrap_or_else(|e| panic!("'{}': {e}", &rest[..end]))

@@ -10,7 +10,7 @@
 //! has positive volume. Normal, points, depth and area follow [`super::clipped`]: for an
 //! unbounded plane the normal is the plane's; over a bounded plane's edge it tilts towards
 //! the side face inside the box; a box wholly under the plane takes the plane's normal. The
-//! point on the plane is always the foot of the centroid on the plane itself.
+//! points lie on the line through the centroid along the normal.
 
 use super::clipped::{self, HalfSpace, box_planes, unit_for};
 use crate::kernel::PairContact;
@@ -106,7 +106,8 @@ const FACES: [[usize; 4]; 6] = [
 /// `o` on the plane (the deepest corner's foot), the flat cap contributes nothing to the volume and its moment, so only
 /// the box's faces clipped by the plane are summed (no cap polygon is built); their area vector
 /// `S` is minus the cap's, and `|S|` is the area. The rest follows [`clipped`]: normal the
-/// plane's, points the feet of the centroid on the box's nearest face and on the plane.
+/// plane's, points where the line through the centroid along the normal leaves the box and
+/// meets the plane.
 fn half_space(
     center: &Point3,
     half_axes: &[Vector3; 3],
@@ -179,8 +180,8 @@ fn half_space(
         return None;
     }
     let g = Point3::from(origin + moment / (4.0 * six_volume));
-    let (gap, face) = clipped::nearest_face(&g, planes_box);
-    let point_a = g + gap * face;
+    let normal = Vector3::new(0.0, 0.0, side);
+    let point_a = g - clipped::ray_exit(&g, &-normal, planes_box) * normal;
     let point_b = Point3::new(g.x, g.y, 0.0);
     let s = area_vector.norm();
     // Wholly below the plane no face crosses it: a quarter of the box's surface.
@@ -193,8 +194,8 @@ fn half_space(
     Some(PairContact {
         point_a: world(point_a),
         point_b: world(point_b),
-        normal: pose_plane.rotation * Vector3::new(0.0, 0.0, side),
-        depth: (point_a - point_b).norm() * unit,
+        normal: pose_plane.rotation * normal,
+        depth: (point_b - point_a).dot(&normal) * unit,
         area: area * unit * unit,
     })
 }

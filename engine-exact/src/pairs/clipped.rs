@@ -11,12 +11,12 @@
 //!   otherwise `b` lies inside `a` (or the
 //!   two cross like a plus sign) and the normal is the opposite of `a`'s face nearest the
 //!   centroid — the exchange of the first rule, so the pair stays symmetric.
-//! - **Points**: the points of each whole surface closest to the centroid `g` of the
-//!   intersection. `g` lies inside both convex solids, so each is the foot of `g` on that
-//!   solid's nearest bounding plane (the ball of that radius about `g` lies inside the solid);
-//!   ties go to the first plane in the solid's list. For a plane (bounded or not) the surface
-//!   is the plane itself: the foot of `g` on it. δ is the distance between the two points; it
-//!   is not in general along the normal.
+//! - **Points** (SPEC §4, taken along the normal through the centroid `g` of the
+//!   intersection, [`crate::ray_exit`]): where the line from `g` along `+n` leaves `b`'s
+//!   surface and along `−n` leaves `a`; δ is their distance. `g` lies inside both convex
+//!   solids, so each exit is the nearest bounding plane the line heads towards. (The plain
+//!   closest points to `g` jump between faces where two are equally near, so the force and its
+//!   line of action would jump; along the normal they move continuously with the poses.)
 //! - **Area**: `|S|`, the contact patch projected on the plane normal to `n`; when `S`
 //!   vanishes (containment), a quarter of the intersection's surface (its mean projected
 //!   area, Cauchy's formula).
@@ -69,6 +69,19 @@ pub(crate) fn nearest_face(p: &Point3, planes: &[HalfSpace]) -> (f64, Vector3) {
 /// Gaps closer than this (in working units, where the pair's size is about 1) are a tie.
 pub(crate) const TIE: f64 = 1e-12;
 
+/// Where the line `origin + t·direction`, from inside the convex solid bounded by `planes`,
+/// leaves it: the smallest `t ≥ 0` over the planes it heads towards (0 if none).
+pub(crate) fn ray_exit(origin: &Point3, direction: &Vector3, planes: &[HalfSpace]) -> f64 {
+    let mut best = f64::INFINITY;
+    for h in planes {
+        let rate = h.normal.dot(direction);
+        if rate > 0.0 {
+            best = best.min(((h.offset - h.normal.dot(&origin.coords)) / rate).max(0.0));
+        }
+    }
+    if best.is_finite() { best } else { 0.0 }
+}
+
 /// The planes of a box with centre `center`, unit axes `axes` and half extents `half`.
 pub(crate) fn box_planes(center: &Point3, axes: &[Vector3; 3], half: &Vector3) -> [HalfSpace; 6] {
     let plane = |k: usize, s: f64| HalfSpace {
@@ -108,8 +121,8 @@ pub(crate) fn contact<const F: usize, const V: usize>(
     let c = mass.centroid;
     let s = mass.clipped_area_vector;
     let s_norm = s.norm();
-    let (gap_a, face_a) = nearest_face(&c, planes_a);
-    let (gap_b, face_b) = nearest_face(&c, surface_b);
+    let (_, face_a) = nearest_face(&c, planes_a);
+    let (_, face_b) = nearest_face(&c, surface_b);
     let enclosed = s_norm <= 1e-12 * mass.clipped_area;
     let normal = if !enclosed {
         s / s_norm
@@ -123,14 +136,14 @@ pub(crate) fn contact<const F: usize, const V: usize>(
     } else {
         s_norm
     };
-    let point_a = c + gap_a * face_a;
-    let point_b = c + gap_b * face_b;
+    let to_a = ray_exit(&c, &-normal, planes_a);
+    let to_b = ray_exit(&c, &normal, planes_b);
     let world = |p: Point3| frame * Point3::from(p.coords * unit);
     Some(PairContact {
-        point_a: world(point_a),
-        point_b: world(point_b),
+        point_a: world(c - to_a * normal),
+        point_b: world(c + to_b * normal),
         normal: frame.rotation * normal,
-        depth: (point_a - point_b).norm() * unit,
+        depth: (to_a + to_b) * unit,
         area: area * unit * unit,
     })
 }

@@ -14,9 +14,9 @@
 //! on the ground, `b = 0`) or perpendicular to it (`a = 0`).
 //!
 //! - contact iff the volume is positive; normal: the plane's outward normal;
-//! - points (SPEC §4): the points of each whole surface closest to the centroid `g` — the
-//!   foot of `g` on the plane, and the foot of `g` on the cylinder's nearest face (side,
-//!   bottom or top cap: [`super::solid_distance`]); δ is their distance;
+//! - points (SPEC §4, taken along the normal through the centroid `g`: [`crate::ray_exit`]):
+//!   the foot of `g` on the plane, and where the line from `g` along `−n` leaves the cylinder
+//!   (side or cap); δ is their distance;
 //! - area (an estimate, exact for a wheel on its side or a cylinder standing upright): the
 //!   plane's section inside the cylinder, `(1/|b|)·∫ chord` over the `u` where the plane
 //!   meets the cylinder between its caps (its `b → 0` limit `chord(h/a)·L` once
@@ -24,9 +24,10 @@
 //!   quarter of the cylinder's surface `π R (R + L)/2` (its mean projected area, as for
 //!   the box pairs).
 
-use super::solid_distance::{Solid, signed_distance};
+use super::solid_distance::Solid;
 use crate::kernel::PairContact;
 use crate::quadrature;
+use crate::ray_exit::surface_point_along;
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -120,7 +121,7 @@ pub(crate) fn contact(
     let u_bar = moment_u / volume;
     let centroid = Vector3::new(e.x * u_bar, e.y * u_bar, moment_z / volume);
     let to_plane = (h - n.dot(&centroid)).max(0.0);
-    let (_, on_cylinder, _) = signed_distance(&Solid::Cylinder(*cylinder), &centroid);
+    let on_cylinder = surface_point_along(&Solid::Cylinder(*cylinder), &centroid, &-n);
     let on_plane = centroid + to_plane * n;
     let area = if b.abs() < 1e-9 {
         let u = h / a;

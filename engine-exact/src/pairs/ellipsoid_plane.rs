@@ -39,18 +39,7 @@ pub(crate) fn contact(
     let g = 3.0 * (2.0 - t) * (2.0 - t) / (4.0 * (3.0 - t));
     let centroid = semi_axes.component_mul(&(-g / k * sn));
     let to_plane = h - n.dot(&centroid);
-    // Ray x_c − τ n leaves the ellipsoid where |q − τ w| = 1, q = x_c/s, w = n/s.
-    let q = centroid.component_div(semi_axes);
-    let w = n.component_div(semi_axes);
-    let ww = w.norm_squared();
-    let inside = (1.0 - q.norm_squared()).max(0.0);
-    let b = q.dot(&w);
-    let root = (b * b + ww * inside).sqrt();
-    let tau = if b >= 0.0 {
-        (b + root) / ww
-    } else {
-        inside / (root - b)
-    };
+    let tau = crate::ray_exit::ellipsoid_exit(semi_axes, &centroid, &-n).unwrap_or(0.0);
     let point_a = centroid - tau * n;
     let point_b = centroid + to_plane * n;
     let abc = semi_axes.x * semi_axes.y * semi_axes.z;

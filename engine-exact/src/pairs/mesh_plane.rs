@@ -12,9 +12,10 @@
 //!   the region's vertices, so round-off is relative to the region's size), so the flat cap
 //!   where the plane cuts the mesh contributes nothing and need not be built. The cap's area
 //!   vector is minus the clipped triangles' (a closed surface sums to zero).
-//! - **Normal:** the plane's. **Points** (SPEC §4): the foot of the centroid on the plane,
-//!   and the point of the whole mesh closest to the centroid (every triangle is searched);
-//!   δ is their distance. **Area:** `|S|`, the area of the mesh surface below the plane
+//! - **Normal:** the plane's. **Points** (SPEC §4, along the normal through the centroid):
+//!   the foot of the centroid on the plane, and where the line from the centroid along `−n`
+//!   first meets the mesh (every triangle is tried; the closest point of the whole mesh when
+//!   the centroid lies outside it and the line misses); δ is their distance. **Area:** `|S|`, the area of the mesh surface below the plane
 //!   projected on the plane (the cap's area).
 //! - Touching (no vertex strictly below) is not a contact; a region of zero volume is skipped.
 //!
@@ -201,7 +202,8 @@ pub(crate) fn contacts(
             let centroid = o + sums.moment / (4.0 * sums.six_volume);
             let to_plane = (h - n.dot(&centroid.coords)).max(0.0);
             let on_plane = centroid + to_plane * n;
-            let on_mesh = closest_on_mesh(mesh, &centroid);
+            let on_mesh = exit_along(mesh, &centroid, &-n)
+                .unwrap_or_else(|| closest_on_mesh(mesh, &centroid));
             emit(PairContact {
                 point_a: pose_mesh * on_mesh,
                 point_b: pose_mesh * on_plane,
@@ -211,6 +213,39 @@ pub(crate) fn contacts(
             });
         }
     });
+}
+
+/// Where the line from `p` along the unit `direction` first meets the mesh's surface (every
+/// triangle; Möller–Trumbore with the barycentric bounds widened by 1e-12, so a line through
+/// a shared edge or corner meets one of its triangles despite round-off), or `None`.
+fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
+    const WIDEN: f64 = 1e-12;
+    let mut best = f64::INFINITY;
+    for tri in &mesh.triangles {
+        let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
+        let (e1, e2) = (b - a, c - a);
+        let h = direction.cross(&e2);
+        let det = e1.dot(&h);
+        if det == 0.0 {
+            continue;
+        }
+        let inv = 1.0 / det;
+        let s = p - a;
+        let u = s.dot(&h) * inv;
+        if !(-WIDEN..=1.0 + WIDEN).contains(&u) {
+            continue;
+        }
+        let q = s.cross(&e1);
+        let v = direction.dot(&q) * inv;
+        if v < -WIDEN || u + v > 1.0 + WIDEN {
+            continue;
+        }
+        let t = e2.dot(&q) * inv;
+        if t >= 0.0 && t < best {
+            best = t;
+        }
+    }
+    best.is_finite().then(|| p + best * direction)
 }
 
 /// The point of the whole mesh surface closest to `p` (every triangle: the region's own

@@ -44,13 +44,15 @@
 //!   h`, is an interval about φ = π (the left side grows with `cos φ` because `R > r`);
 //! - normal: the plane's outward normal; area: the section (a quarter of the solid's surface
 //!   once the plane no longer cuts it);
-//! - points: the foot of the centroid `g` on the plane, and the point of the solid's surface
-//!   closest to `g` ([`super::solid_distance`]; `g` may lie outside a torus, in its hole);
-//!   δ is their distance.
+//! - points (taken along the normal through the centroid `g`: [`crate::ray_exit`]): the foot
+//!   of `g` on the plane, and where the line from `g` along `−n` leaves the solid; when `g`
+//!   lies outside the solid (in a torus' hole) the point of the solid's surface closest to
+//!   `g`; δ is their distance.
 
-use super::solid_distance::{Solid, signed_distance};
+use super::solid_distance::Solid;
 use crate::kernel::PairContact;
 use crate::quadrature;
+use crate::ray_exit::surface_point_along;
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -508,7 +510,7 @@ pub(crate) fn contact(
         * unit;
     let to_plane = (h - n.dot(&centroid)).max(0.0);
     let on_plane = (centroid + to_plane * n) * unit;
-    let (_, on_solid, _) = signed_distance(solid, &(centroid * unit));
+    let on_solid = surface_point_along(solid, &(centroid * unit), &-n);
     let center = pose_s.translation.vector;
     let world = |p: Vector3| Point3::from(center + rotation * p);
     Some(PairContact {

@@ -70,13 +70,14 @@ fn full_containment_keeps_depth_growing() {
     let c = one(&e, &plane(), &at(0.3, 0.0, -4.0), &id);
     assert!((c.penetration - 4.5).abs() < 1e-14, "{c:?}");
     // A small box inside a big one: the normal is the big box's nearest face (+x here); the
-    // points are the two +x faces nearest the small box's centre, at x = 1.6 and x = 2.
+    // points lie on the line through the small box's centre along it: its −x face at
+    // x = 1.4 and the big box's +x face at x = 2.
     let small = instance(Geometry::Cuboid(Cuboid::centered(0.1, 0.2, 0.3).unwrap()));
     let c = one(&small, &cube(2.0), &at(1.5, 0.0, 0.0), &id);
     assert_eq!(c.normal_w, Vector3::x());
-    assert!((c.penetration - 0.4).abs() < 1e-14, "{c:?}");
+    assert!((c.penetration - 0.6).abs() < 1e-14, "{c:?}");
     assert!(
-        (c.point_i_w - Point3::new(1.6, 0.0, 0.0)).norm() < 1e-14,
+        (c.point_i_w - Point3::new(1.4, 0.0, 0.0)).norm() < 1e-14,
         "{c:?}"
     );
     assert!(
@@ -91,11 +92,11 @@ fn full_containment_keeps_depth_growing() {
     // The big box seen from the other side: the swapped contact.
     let s = one(&cube(2.0), &small, &id, &at(1.5, 0.0, 0.0));
     assert!((s.normal_w + Vector3::x()).norm() < 1e-14, "{s:?}");
-    // A box sunk wholly below the plane: normal is the plane's; the centre's nearest face is
-    // +x (six tied), so δ = |(1, 0, −10) − (0, 0, 0)|.
+    // A box sunk wholly below the plane: normal is the plane's; along it the centre is 1 above
+    // the box's bottom and 10 below the plane.
     let c = one(&cube(1.0), &plane(), &at(0.0, 0.0, -10.0), &id);
     assert_eq!(c.normal_w, Vector3::z());
-    assert!((c.penetration - 101f64.sqrt()).abs() < 1e-13, "{c:?}");
+    assert!((c.penetration - 11.0).abs() < 1e-13, "{c:?}");
 }
 
 #[test]
@@ -117,14 +118,14 @@ fn coincident_centres_and_coincident_boxes_use_the_documented_axis() {
     let c = one(&instance(Geometry::Point), &circle(1.0), &id, &id);
     assert_eq!((c.normal_w, c.penetration), (Vector3::x(), 1.0));
     // Two identical coincident cubes: nothing is cut, the normal is J's nearest face (+x, the
-    // first of six tied faces), and both closest points to the common centroid are on that
-    // face: SPEC §4 gives δ = 0 here.
+    // first of six tied faces); along it from the common centroid I leaves at x = −1 and J
+    // at x = 1, so δ = 2 (I must move 2 along +x to leave J).
     let c = one(&cube(1.0), &cube(1.0), &id, &id);
     assert!(
-        c.is_well_formed() && c.penetration == 0.0 && c.normal_w == Vector3::x(),
+        c.is_well_formed() && c.penetration == 2.0 && c.normal_w == Vector3::x(),
         "{c:?}"
     );
-    assert_eq!(c.point_i_w, Point3::new(1.0, 0.0, 0.0));
+    assert_eq!(c.point_i_w, Point3::new(-1.0, 0.0, 0.0));
     // Crossed bars (a 'plus'): J's surface inside I sums to zero; finite answer.
     let bar_x = instance(Geometry::Cuboid(Cuboid::centered(3.0, 0.5, 0.5).unwrap()));
     let bar_y = instance(Geometry::Cuboid(Cuboid::centered(0.5, 3.0, 0.5).unwrap()));
@@ -195,12 +196,12 @@ fn a_cylinder_tilting_through_parallel_changes_continuously() {
             "{tilt}: {c:?}"
         );
     }
-    // Wholly under the plane: the centroid is the centre (0, 0, −4), nearest the side (0.5
-    // away, the caps 1): the side point towards +x; area a quarter of the surface.
+    // Wholly under the plane: the centroid is the centre (0, 0, −4); along the normal it is 1
+    // above the bottom cap and 4 below the plane; area a quarter of the surface.
     let c = one(&cylinder, &plane(), &at(0.0, 0.0, -5.0), &id);
     assert!(
-        (c.penetration - 16.25f64.sqrt()).abs() < 1e-14
-            && (c.point_i_w - Point3::new(0.5, 0.0, -4.0)).norm() < 1e-14
+        (c.penetration - 5.0).abs() < 1e-14
+            && (c.point_i_w - Point3::new(0.0, 0.0, -5.0)).norm() < 1e-14
             && (c.area - 0.25 * (2.0 * PI * 0.25 + 2.0 * PI * 0.5 * 2.0)).abs() < 1e-14,
         "{c:?}"
     );

@@ -87,9 +87,9 @@ pub fn box_corner_plane(h: &Vector3, q: &UnitQuaternion, e: f64) -> Option<(Poin
         points.push(v0 + t * (v1 - v0));
     }
     let centroid = Point3::from(points.iter().map(|p| p.coords).sum::<Vector3>() / 4.0);
-    // SPEC §4: the closest point of the box to the centroid, on its nearest face.
+    // SPEC §4 along the normal: where the line from the centroid along −z leaves the box.
     let local = r.transpose() * (centroid - centre);
-    let foot = centre + r * box_foot(h, &local);
+    let foot = centre + r * box_exit(h, &local, &(r.transpose() * -Vector3::z()));
     Some((
         centre,
         Expected {
@@ -101,47 +101,9 @@ pub fn box_corner_plane(h: &Vector3, q: &UnitQuaternion, e: f64) -> Option<(Poin
     ))
 }
 
-/// The foot of the interior point `p` (box frame, box centred at the origin with half extents
-/// `h`) on the box's nearest face; on a tie the first of +x, −x, +y, −y, +z, −z.
-pub fn box_foot(h: &Vector3, p: &Vector3) -> Vector3 {
-    let gaps = [
-        h.x - p.x,
-        h.x + p.x,
-        h.y - p.y,
-        h.y + p.y,
-        h.z - p.z,
-        h.z + p.z,
-    ];
-    let mut k = 0;
-    for j in 1..6 {
-        if gaps[j] < gaps[k] - 1e-12 * h.max() {
-            k = j;
-        }
-    }
-    let mut q = *p;
-    let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
-    q[k / 2] = sign * h[k / 2];
-    q
-}
-
-/// The foot of the interior point `(ρ, z)` (ρ ≥ 0, in the half-section of a cylinder of radius
-/// `r` and length `len`) on the nearest of the bottom cap, the side and the top cap, in that
-/// order on ties.
-pub fn cylinder_foot(r: f64, len: f64, rho: f64, z: f64) -> (f64, f64) {
-    let tie = 1e-12 * r.max(len);
-    let (bottom, side, top) = (z, r - rho, len - z);
-    if bottom <= side + tie && bottom <= top + tie {
-        (rho, 0.0)
-    } else if side <= top + tie {
-        (r, z)
-    } else {
-        (rho, len)
-    }
-}
-
 /// Two axis-aligned boxes (centres, half extents) that overlap: the intersection is the box
-/// of per-axis overlaps, its centroid the box's centre; the points are the feet of the centroid
-/// on each box's nearest face (SPEC §4); the normal is the area vector of `b`'s faces lying strictly inside
+/// of per-axis overlaps, its centroid the box's centre; the points are where the line through
+/// the centroid along the normal leaves each box (SPEC §4); the normal is the area vector of `b`'s faces lying strictly inside
 /// `a`'s slab along their axis, each contributing the product of the other two overlaps.
 /// `None` when that area vector is zero (b's faces inside a cancel, e.g. a crossing 'plus').
 pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Option<Expected> {
@@ -162,8 +124,8 @@ pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Op
         return None;
     }
     let n = s.normalize();
-    let point_i = ca + box_foot(ha, &(c - ca));
-    let point_j = cb + box_foot(hb, &(c - cb));
+    let point_i = ca + box_exit(ha, &(c - ca), &-n);
+    let point_j = cb + box_exit(hb, &(c - cb), &n);
     Some(Expected {
         point_i,
         point_j,
@@ -177,8 +139,8 @@ pub fn aligned_boxes(ca: &Point3, ha: &Vector3, cb: &Point3, hb: &Vector3) -> Op
 /// a circular segment with chord offset `s(z) = (h − b z)/a` (area `R² acos(−s/R) + s√(R²−s²)`,
 /// first moment `−(2/3)(R² − s²)^{3/2}`). With `s = −R cos θ` the partial part is smooth in
 /// θ and integrated by composite Simpson (4,000 panels: error ~1e-13); the full-disc part is
-/// exact. The points are the centroid's foot on the plane and on the cylinder's nearest face
-/// ([`cylinder_foot`]). Needs `a = |sin α|` and `b = cos α` both away from zero.
+/// exact. The points are the centroid's foot on the plane and where the line from the
+/// centroid along −z leaves the cylinder ([`cylinder_exit`]). Needs `a = |sin α|` and `b = cos α` both away from zero.
 pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected {
     let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), alpha);
     let n = q.inverse_transform_vector(&Vector3::z());
@@ -226,16 +188,9 @@ pub fn cylinder_plane_tilted(r: f64, len: f64, alpha: f64, z0: f64) -> Expected 
     }
     let u_bar = mu / v;
     let centroid_c = Vector3::new(e.x * u_bar, e.y * u_bar, mz / v);
-    // SPEC §4: the cylinder's point closest to the centroid, and the centroid's foot.
-    // Full immersion puts the centroid on the axis: the radial direction is then +x.
-    let rho = centroid_c.xy().norm();
-    let (rho, radial) = if rho > 1e-12 * r {
-        (rho, centroid_c.xy() / rho)
-    } else {
-        (0.0, nalgebra::Vector2::x())
-    };
-    let (rho_f, z_f) = cylinder_foot(r, len, rho, centroid_c.z);
-    let foot_c = Vector3::new(radial.x * rho_f, radial.y * rho_f, z_f);
+    // SPEC §4 along the normal: where the line from the centroid along −z leaves the
+    // cylinder, and the centroid's foot on the plane.
+    let foot_c = cylinder_exit(r, len, &centroid_c, &-n);
     let pose = Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, z0), q);
     let centroid = pose * Point3::from(centroid_c);
     let point_i = pose * Point3::from(foot_c);
@@ -330,4 +285,52 @@ pub fn sphere_torus(r: f64, big: f64, small: f64, rho: f64, z: f64) -> Expected 
         normal: n,
         depth: r - ((c - tube).norm() - small),
     }
+}
+
+/// Where the line from `p` along the unit `d` leaves a solid given by its inside test, found
+/// by bisection on that test alone (independent of any intersection formula): `reach` is a
+/// length past which the line is surely outside; for a non-convex solid `step` marches to the
+/// first outside point before bisecting (0 for a convex one).
+pub fn exit_by_bisection(
+    inside: impl Fn(&Vector3) -> bool,
+    p: &Vector3,
+    d: &Vector3,
+    reach: f64,
+    step: f64,
+) -> Vector3 {
+    let (mut lo, mut hi) = (0.0, reach);
+    if step > 0.0 {
+        let mut t = step;
+        while t < reach && inside(&(p + t * d)) {
+            lo = t;
+            t += step;
+        }
+        hi = t.min(reach);
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if inside(&(p + mid * d)) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    p + 0.5 * (lo + hi) * d
+}
+
+/// The exit of the line from `p` along `d` from the box centred at the origin with half
+/// extents `h` (box frame).
+pub fn box_exit(h: &Vector3, p: &Vector3, d: &Vector3) -> Vector3 {
+    let inside = |x: &Vector3| (0..3).all(|k| x[k].abs() <= h[k]);
+    exit_by_bisection(inside, p, d, 4.0 * h.norm() + p.norm(), 0.0)
+}
+
+/// The exit of the line from `p` along `d` from the cylinder of radius `r` on the z axis from
+/// 0 to `len` (cylinder frame).
+pub fn cylinder_exit(r: f64, len: f64, p: &Vector3, d: &Vector3) -> Vector3 {
+    let inside = |x: &Vector3| x.xy().norm() <= r && x.z >= 0.0 && x.z <= len;
+    exit_by_bisection(inside, p, d, 4.0 * (r + len) + p.norm(), 0.0)
 }

@@ -2,10 +2,11 @@
 //! from the engine: the engine integrates over the azimuth, these slice across the axis
 //! (discs and annuli cut by a line: closed-form circular segments) or use Pappus.
 //!
-//! The points follow SPEC §4: the foot of the intersection's centroid on the plane, and the
-//! point of the solid's surface closest to it, found here by comparing the distances to the
-//! bottom cap, the side line and the top cap (frustum) or through the nearest tube centre
-//! (torus). A centroid on the axis takes the solid's +x as its radial direction.
+//! The points follow SPEC §4 along the normal: the foot of the intersection's centroid on the
+//! plane, and where the line from the centroid along −z leaves the solid, found by bisection
+//! on the solid's inside test ([`crate::oracles::exit_by_bisection`]); a centroid outside the
+//! solid (in a torus' hole) takes the solid's closest surface point instead, through the
+//! nearest tube centre.
 
 use crate::common::Expected;
 use contact_core::{Isometry3, Point3, UnitQuaternion, Vector2, Vector3};
@@ -46,6 +47,29 @@ pub fn torus_foot(big: f64, small: f64, rho: f64, z: f64) -> (f64, f64) {
 
 /// The contact for the centroid `g` (solid frame) of the solid at `pose` against z = 0.
 fn expected_for(solid: &Revolved, pose: &Isometry3, g: &Vector3) -> Expected {
+    let down = pose.rotation.inverse_transform_vector(&-Vector3::z());
+    let inside = |x: &Vector3| match *solid {
+        Revolved::Frustum { r0, r1, len } => {
+            x.z >= 0.0 && x.z <= len && x.xy().norm() <= r0 + (r1 - r0) * x.z / len
+        }
+        Revolved::Torus { big, small } => (x.xy().norm() - big).hypot(x.z) <= small,
+    };
+    if inside(g) {
+        let (reach, step) = match *solid {
+            Revolved::Frustum { r0, r1, len } => (4.0 * (r0 + r1 + len), 0.0),
+            Revolved::Torus { big, small } => (4.0 * (big + small), small / 64.0),
+        };
+        let exit = crate::oracles::exit_by_bisection(inside, g, &down, reach, step);
+        let point_i = pose * Point3::from(exit);
+        let g_w = pose * Point3::from(*g);
+        let point_j = Point3::new(g_w.x, g_w.y, 0.0);
+        return Expected {
+            point_i,
+            point_j,
+            normal: Vector3::z(),
+            depth: (point_i - point_j).norm(),
+        };
+    }
     let rho = g.xy().norm();
     let scale = match *solid {
         Revolved::Frustum { r0, r1, len } => r0.max(r1).max(len),

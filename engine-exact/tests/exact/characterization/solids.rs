@@ -143,11 +143,9 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 );
                 let (x, y) = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
                 let z0 = rng.uniform(-0.9, 0.99) * h.z;
-                // The slab below the plane has its centroid midway down; the box's point is
-                // the foot on its nearest face (the bottom, or a side when that is nearer).
-                let g = Point3::new(x, y, 0.5 * (z0 - h.z));
-                let point_i =
-                    Point3::new(x, y, z0) + oracles::box_foot(&h, &(g - Point3::new(x, y, z0)));
+                // The slab below the plane has its centroid midway down; straight below it
+                // lies the box's bottom face.
+                let point_i = Point3::new(x, y, z0 - h.z);
                 let point_j = Point3::new(x, y, 0.0);
                 let expected = Expected {
                     point_i,
@@ -329,7 +327,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                     j: plane(),
                     pose_i: Isometry3::from_parts(Translation3::new(-len / 2.0, 0.0, d), q),
                     pose_j: Isometry3::identity(),
-                    expected: wheel(r, len, d),
+                    expected: wheel(r, d),
                     length: r.max(len),
                 })
             },
@@ -344,10 +342,9 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.2, 3.0));
                 let sunk = rng.uniform(0.01, 0.99) * len;
                 let (x, y) = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-                // The centroid on the axis, half-way down the sunk part; the cylinder's point
-                // is on its bottom cap, or on the side (towards +x) when the side is nearer.
-                let (rho, z) = oracles::cylinder_foot(r, len, 0.0, 0.5 * sunk);
-                let point_i = Point3::new(x + rho, y, z - sunk);
+                // The centroid on the axis, half-way down the sunk part; straight below it
+                // lies the bottom cap.
+                let point_i = Point3::new(x, y, -sunk);
                 let point_j = Point3::new(x, y, 0.0);
                 Some(Case {
                     i: instance(Geometry::Cylinder(Cylinder::new(r, len).unwrap())),
@@ -519,14 +516,10 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
 /// A cylinder of radius `r` and length `len` lying along world x (its base at `x = −len/2`),
 /// axis at height `d` above the plane z = 0. The part below the plane is a prism over a
 /// circular segment, its centroid below the axis' midpoint at `ρ_g = (2/3)(r² − d²)^{3/2}/A`
-/// from the axis, `A = r² acos(d/r) − d√(r² − d²)`. The cylinder's point closest to it is on
-/// the side straight below, or on the bottom cap when `len/2` is less.
-fn wheel(r: f64, len: f64, d: f64) -> Expected {
-    let area = r * r * (d / r).acos() - d * (r * r - d * d).sqrt();
-    let rho_g = 2.0 / 3.0 * (r * r - d * d).powf(1.5) / area;
-    let (rho, z) = oracles::cylinder_foot(r, len, rho_g, 0.5 * len);
-    // Cylinder frame: axis along world +x from x = −len/2; radial direction world −z.
-    let point_i = Point3::new(z - 0.5 * len, 0.0, d - rho);
+/// from the axis, `A = r² acos(d/r) − d√(r² − d²)`. Straight below it lies the side.
+fn wheel(r: f64, d: f64) -> Expected {
+    // Cylinder frame: axis along world +x from x = −len/2; the side is r below the axis.
+    let point_i = Point3::new(0.0, 0.0, d - r);
     // The centroid lies straight below the origin: its foot is the origin.
     let point_j = Point3::origin();
     Expected {
