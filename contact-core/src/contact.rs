@@ -6,8 +6,9 @@ use crate::{Point3, Vector3};
 /// all in the world frame `W`.
 ///
 /// - `normal_w` is a unit vector pointing from J into I: the direction the normal force pushes I.
-/// - `penetration` δ ≥ 0 is the distance between the closest points on the two surfaces to the
-///   centroid of the intersection volume (area in 2-D); for a sphere on a plane it is `r − d`.
+/// - `penetration` δ ≥ 0 is the distance between the two surfaces' points nearest the centroid
+///   of the intersection volume (area in 2-D) along the normal — where the line through the
+///   centroid along `normal_w` leaves each body; for a sphere on a plane it is `r − d`.
 /// - `point_i_w` lies on I's surface, `point_j_w` on J's; `point_i_w − point_j_w ≈ −δ·normal_w`
 ///   (I's surface point is the deepest into J).
 /// - `area` estimates the contact patch (for the friction torque radius `R = sqrt(A/π)`); for a

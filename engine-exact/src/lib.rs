@@ -18,14 +18,17 @@
 //! For each (I geometry, J geometry) pair whose solids overlap with positive volume (area in
 //! 2-D), one [`Contact`](contact_core::Contact) per connected intersection region:
 //! - `normal_w` (unit, from J into I) — per pair family, see [`pairs`] and [`planar`];
-//! - the centroid `g` of the intersection volume; `point_i_w` and `point_j_w` are the points
-//!   of I's and J's whole surfaces closest to `g` (for a plane, the foot of `g` on it);
+//! - the centroid `g` of the intersection volume; `point_i_w` and `point_j_w` are SPEC §4's
+//!   "closest points on the two surfaces to the centroid" taken along the normal: where the
+//!   line through `g` along `normal_w` leaves I (towards `−n`) and J (towards `+n`), as in the
+//!   faceted engine (the `ray_exit` module documents why: the plain closest points jump between
+//!   faces where two are equally near — a cube corner in a plane, coincident boxes — and a
+//!   force whose size or line of action jumps stalls a Newton corrector; along the normal they
+//!   move continuously and coincide with the closest points wherever the surfaces are smooth
+//!   near a shallow contact). A centroid outside a non-convex body (a torus' hole) takes that
+//!   body's closest surface point;
 //! - `penetration` δ = the distance between those two points (for a sphere on a plane, exactly
-//!   `r − d`; for two spheres, `r_a + r_b − D`). It is along the normal where the region is
-//!   symmetric (spheres, a box face or a cylinder flat on a plane), not in general: a cube
-//!   corner pushed a depth `d` into a plane gives about `0.61·d`. Ellipsoid–plane and
-//!   mesh–plane still take the points along the normal through `g` (their modules say so);
-//!   a sphere's pairs agree with either rule, `g` lying on the line of centres;
+//!   `r − d`; for two spheres, `r_a + r_b − D`; for a cube corner pushed `d` into a plane, `d`);
 //! - `area`: the contact patch projected on the plane normal to `normal_w` (`|S|` with `S`
 //!   the vector area of one body's surface inside the other, the faceted engine's rule; a
 //!   length in 2-D).

@@ -12,7 +12,7 @@
 //!   two cross like a plus sign) and the normal is the opposite of `a`'s face nearest the
 //!   centroid — the exchange of the first rule, so the pair stays symmetric.
 //! - **Points** (SPEC §4, taken along the normal through the centroid `g` of the
-//!   intersection, [`crate::ray_exit`]): where the line from `g` along `+n` leaves `b`'s
+//!   intersection, `ray_exit`): where the line from `g` along `+n` leaves `b`'s
 //!   surface and along `−n` leaves `a`; δ is their distance. `g` lies inside both convex
 //!   solids, so each exit is the nearest bounding plane the line heads towards. (The plain
 //!   closest points to `g` jump between faces where two are equally near, so the force and its

@@ -14,7 +14,7 @@
 //! on the ground, `b = 0`) or perpendicular to it (`a = 0`).
 //!
 //! - contact iff the volume is positive; normal: the plane's outward normal;
-//! - points (SPEC §4, taken along the normal through the centroid `g`: [`crate::ray_exit`]):
+//! - points (SPEC §4, taken along the normal through the centroid `g`: `ray_exit`):
 //!   the foot of `g` on the plane, and where the line from `g` along `−n` leaves the cylinder
 //!   (side or cap); δ is their distance;
 //! - area (an estimate, exact for a wheel on its side or a cylinder standing upright): the

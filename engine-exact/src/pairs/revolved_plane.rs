@@ -44,7 +44,7 @@
 //!   h`, is an interval about φ = π (the left side grows with `cos φ` because `R > r`);
 //! - normal: the plane's outward normal; area: the section (a quarter of the solid's surface
 //!   once the plane no longer cuts it);
-//! - points (taken along the normal through the centroid `g`: [`crate::ray_exit`]): the foot
+//! - points (taken along the normal through the centroid `g`: `ray_exit`): the foot
 //!   of `g` on the plane, and where the line from `g` along `−n` leaves the solid; when `g`
 //!   lies outside the solid (in a torus' hole) the point of the solid's surface closest to
 //!   `g`; δ is their distance.

@@ -9,7 +9,7 @@
 //!   −z on ties; cylinder or frustum: the nearest of side, bottom and top, the first of
 //!   bottom, side, top on ties; torus: the tube's surface along the ray from the nearest
 //!   point of its centre circle). For a convex solid this is the closest surface point.
-//! - Ties: faces whose distances differ by less than [`TIE`] times the solid's size count
+//! - Ties: faces whose distances differ by less than `TIE` times the solid's size count
 //!   as equally near and the first in the order above wins, so a symmetric pose (a wheel's
 //!   centroid midway between its caps) gives the same point whatever the round-off of the
 //!   frame it is seen in.
