@@ -148,8 +148,13 @@ fn a_torus_on_a_plane_gives_one_region_and_swapping_i_and_j_swaps_the_contact() 
 fn unsupported_pairs_and_bad_input_are_errors() {
     let e = engine(300.0028);
     let circle = Geometry::Circle(contact_core::geometry::Circle::new(1.0).unwrap());
-    let err = e.supports(&circle, &circle).unwrap_err();
-    assert!(err.to_string().contains("exact engine"), "{err}");
+    assert!(e.supports(&circle, &circle).is_ok());
+    let arc = Geometry::Arc(contact_core::geometry::Arc::new(1.0, 1.0).unwrap());
+    let err = e.supports(&arc, &arc).unwrap_err();
+    assert!(err.to_string().contains("point or a circle"), "{err}");
+    let ball = Geometry::sphere(1.0).unwrap();
+    let err = e.supports(&circle, &ball).unwrap_err();
+    assert!(err.to_string().contains("2-D"), "{err}");
     let plane = Geometry::Plane(Plane::unbounded());
     assert!(e.supports(&plane, &plane).is_err());
     let flipped = GeometryInstance::new(Geometry::sphere(1.0).unwrap()).flipped();
