@@ -9,15 +9,58 @@
 //! - at the end (also after a failure): `contact_force.svg` and `penetration.svg` against time,
 //!   one curve per CONTACT, and `summary.json`.
 //!
-//! Every line is flushed when written: what was computed is on disk even if the run stops.
+//! The streams are flushed at most every [`FLUSH_INTERVAL`] of wall time (three write system
+//! calls per output step cost more than the dynamics of a small model) and always by
+//! [`ResultWriter::finish`], which a run calls whether it succeeded or failed (a writer dropped
+//! without it flushes too): what was computed is on disk when the run stops, and a run being
+//! watched sees its files grow while it runs. Frames are serialized straight from the states,
+//! without building JSON values.
 
 use crate::output::svg_plot::{Plot, Scale, Series};
 use crate::solver::mbs::PartId;
 use crate::solver::simulate::Frame;
-use serde_json::json;
+use serde::Serialize;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// The longest wall time a computed output step waits in memory before it is written out.
+pub const FLUSH_INTERVAL: Duration = Duration::from_millis(50);
+
+/// One part in a `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct PartLine {
+    part: u32,
+    position: [f64; 3],
+    quaternion: [f64; 4],
+    velocity: [f64; 3],
+    angular_velocity: [f64; 3],
+}
+
+/// One contact in a `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct ContactLine<'a> {
+    contact: &'a str,
+    index: usize,
+    point_i: [f64; 3],
+    point_j: [f64; 3],
+    normal: [f64; 3],
+    penetration: f64,
+    penetration_rate: f64,
+    normal_force: f64,
+    friction_force: [f64; 3],
+    friction_torque: f64,
+    area: f64,
+}
+
+/// One `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct FrameLine<'a> {
+    time: f64,
+    parts: &'a [PartLine],
+    contacts: &'a [ContactLine<'a>],
+}
 
 /// Writes a run's frames into a directory.
 #[derive(Debug)]
@@ -30,6 +73,8 @@ pub struct ResultWriter {
     contact_names: Vec<String>,
     force_series: Vec<Vec<(f64, f64)>>,
     depth_series: Vec<Vec<(f64, f64)>>,
+    parts_line: Vec<PartLine>,
+    last_flush: Instant,
 }
 
 impl ResultWriter {
@@ -58,6 +103,8 @@ impl ResultWriter {
             contact_names,
             force_series: vec![Vec::new(); n],
             depth_series: vec![Vec::new(); n],
+            parts_line: Vec::new(),
+            last_flush: Instant::now(),
         })
     }
 
@@ -66,10 +113,11 @@ impl ResultWriter {
         &self.dir
     }
 
-    /// Writes one frame to every stream and flushes them.
+    /// Writes one frame to every stream (flushed at most every [`FLUSH_INTERVAL`]).
     pub fn write(&mut self, frame: &Frame) -> std::io::Result<()> {
         let t = frame.t;
-        let mut parts_json = Vec::new();
+        let mut parts_json = std::mem::take(&mut self.parts_line);
+        parts_json.clear();
         for &(id, adams) in &self.part_ids {
             let s = &frame.parts[id.0];
             let p = s.pose_w.translation.vector;
@@ -80,10 +128,13 @@ impl ResultWriter {
                 "{t:?},{adams},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?}",
                 p.x, p.y, p.z, q.w, q.i, q.j, q.k, v.x, v.y, v.z, w.x, w.y, w.z
             )?;
-            parts_json.push(json!({
-                "part": adams, "position": [p.x, p.y, p.z], "quaternion": [q.w, q.i, q.j, q.k],
-                "velocity": [v.x, v.y, v.z], "angular_velocity": [w.x, w.y, w.z],
-            }));
+            parts_json.push(PartLine {
+                part: adams,
+                position: [p.x, p.y, p.z],
+                quaternion: [q.w, q.i, q.j, q.k],
+                velocity: [v.x, v.y, v.z],
+                angular_velocity: [w.x, w.y, w.z],
+            });
         }
         let mut contacts_json = Vec::new();
         for (k, reports) in frame.contacts.iter().enumerate() {
@@ -115,12 +166,19 @@ impl ResultWriter {
                     r.friction_torque,
                     c.area
                 )?;
-                contacts_json.push(json!({
-                    "contact": name, "index": index, "point_i": [pi.x, pi.y, pi.z], "point_j": [pj.x, pj.y, pj.z],
-                    "normal": [n.x, n.y, n.z], "penetration": c.penetration, "penetration_rate": r.penetration_rate,
-                    "normal_force": r.normal_force, "friction_force": [f.x, f.y, f.z],
-                    "friction_torque": r.friction_torque, "area": c.area,
-                }));
+                contacts_json.push(ContactLine {
+                    contact: name,
+                    index,
+                    point_i: [pi.x, pi.y, pi.z],
+                    point_j: [pj.x, pj.y, pj.z],
+                    normal: [n.x, n.y, n.z],
+                    penetration: c.penetration,
+                    penetration_rate: r.penetration_rate,
+                    normal_force: r.normal_force,
+                    friction_force: [f.x, f.y, f.z],
+                    friction_torque: r.friction_torque,
+                    area: c.area,
+                });
                 total += r.normal_force;
                 deepest = deepest.max(c.penetration);
             }
@@ -129,9 +187,23 @@ impl ResultWriter {
         }
         serde_json::to_writer(
             &mut self.frames,
-            &json!({ "time": t, "parts": parts_json, "contacts": contacts_json }),
+            &FrameLine {
+                time: t,
+                parts: &parts_json,
+                contacts: &contacts_json,
+            },
         )?;
+        self.parts_line = parts_json;
         writeln!(self.frames)?;
+        if self.last_flush.elapsed() >= FLUSH_INTERVAL {
+            self.flush()?;
+        }
+        Ok(())
+    }
+
+    /// Writes out everything computed so far.
+    pub fn flush(&mut self) -> std::io::Result<()> {
+        self.last_flush = Instant::now();
         self.parts_csv.flush()?;
         self.contacts_csv.flush()?;
         self.frames.flush()
@@ -139,6 +211,7 @@ impl ResultWriter {
 
     /// Writes the plots and `summary.json` (call after the run, whether it succeeded or not).
     pub fn finish(&mut self, summary: &serde_json::Value) -> std::io::Result<Vec<PathBuf>> {
+        self.flush()?;
         let series = |data: &[Vec<(f64, f64)>]| -> Vec<Series> {
             self.contact_names
                 .iter()
