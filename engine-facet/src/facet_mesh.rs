@@ -3,9 +3,13 @@
 
 use crate::obb_tree::ObbTree;
 use crate::tessellate::Tessellation;
-use contact_core::geometry::closest_point_on_triangle;
+use contact_core::geometry::{closest_point_on_triangle, line_triangle};
 use contact_core::{Point3, Vector3};
 use std::collections::HashMap;
+
+/// Barycentric widening of the ray–facet test: a ray through a shared edge or vertex meets at
+/// least one facet there despite round-off (both give the same point within 1e-9).
+const RAY_WIDEN: f64 = 1e-9;
 
 /// No neighbour across an edge (open meshes only).
 pub const NO_NEIGHBOR: u32 = u32::MAX;
@@ -224,7 +228,7 @@ impl FacetMesh {
             |obb| ray_hits_box(obb, &origin, dir),
             |t| {
                 let [a, b, c] = self.corners(t);
-                if let Some(s) = ray_triangle_widened(p, dir, &a, &b, &c) {
+                if let Some(s) = line_triangle(p, dir, &a, &b, &c, RAY_WIDEN) {
                     if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {
                         best = Some((s, t));
                     }
@@ -244,7 +248,7 @@ impl FacetMesh {
         let mut best: Option<(f64, u32)> = None;
         for t in triangles {
             let [a, b, c] = self.corners(t);
-            if let Some(s) = ray_triangle_widened(p, dir, &a, &b, &c) {
+            if let Some(s) = line_triangle(p, dir, &a, &b, &c, RAY_WIDEN) {
                 if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {
                     best = Some((s, t));
                 }
@@ -324,31 +328,6 @@ fn ray_triangle(
         return None;
     }
     Some((e2.dot(&q) * inv, u, v))
-}
-
-/// The ray parameter `s` of the hit `p + s·dir` on triangle `abc` widened by a relative 1e-9 in
-/// barycentric coordinates, or `None`: a ray through a shared edge or vertex then meets at
-/// least one of the facets there despite round-off (both give the same point within 1e-9).
-fn ray_triangle_widened(
-    p: &Vector3,
-    dir: &Vector3,
-    a: &Vector3,
-    b: &Vector3,
-    c: &Vector3,
-) -> Option<f64> {
-    const WIDEN: f64 = 1e-9;
-    let (e1, e2) = (b - a, c - a);
-    let h = dir.cross(&e2);
-    let det = e1.dot(&h);
-    if det.abs() <= 1e-14 * e1.norm() * e2.norm() {
-        return None;
-    }
-    let inv = 1.0 / det;
-    let s = p - a;
-    let u = s.dot(&h) * inv;
-    let q = s.cross(&e1);
-    let v = dir.dot(&q) * inv;
-    (u >= -WIDEN && v >= -WIDEN && u + v <= 1.0 + WIDEN).then(|| e2.dot(&q) * inv)
 }
 
 impl FacetMesh {

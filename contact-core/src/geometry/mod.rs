@@ -12,9 +12,11 @@ mod triangle;
 
 pub use curve::{Curve, CurvePoints};
 pub use mesh::{MeshError, TriangleMesh, ZERO_AREA_RELATIVE};
-pub use planar::{Arc, Circle, Line};
+pub use planar::{
+    Arc, Circle, Line, PLANE_ANGLE_TOLERANCE, PLANE_OFFSET_TOLERANCE, plane_departure,
+};
 pub use solids::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
-pub use triangle::closest_point_on_triangle;
+pub use triangle::{closest_point_on_triangle, line_triangle};
 
 use crate::{Point3, Vector3};
 use std::sync::Arc as Shared;

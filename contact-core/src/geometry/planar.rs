@@ -1,8 +1,27 @@
 //! The 2-D shapes of SPEC §2. Each lies in the x-y plane of its geometry frame `G`; its
 //! binormal is +z of `G`. A 2-D contact acts in that plane.
 
+use crate::Isometry3;
 use crate::error::{InvalidArgument, positive};
 use std::f64::consts::TAU;
+
+/// Largest angle (rad) between the planes of a 2-D pair (either orientation of their normals).
+pub const PLANE_ANGLE_TOLERANCE: f64 = 1e-6;
+/// Largest offset between the planes of a 2-D pair, relative to the pair's length scale.
+pub const PLANE_OFFSET_TOLERANCE: f64 = 1e-6;
+
+/// How far the x-y plane of a frame lies from the x-y plane it is seen from, `relative` being
+/// its pose in that frame: the angle between the two planes' normals in either orientation (a
+/// marker whose z axis is reversed spans the same plane) and the offset of its origin along z.
+/// `None` when both are within [`PLANE_ANGLE_TOLERANCE`] and [`PLANE_OFFSET_TOLERANCE`]·`length`
+/// (the two 2-D geometries share a plane).
+pub fn plane_departure(relative: &Isometry3, length: f64) -> Option<(f64, f64)> {
+    let z = relative.rotation * crate::Vector3::z();
+    let angle_rad = z.xy().norm().atan2(z.z.abs());
+    let offset = relative.translation.vector.z;
+    (angle_rad > PLANE_ANGLE_TOLERANCE || offset.abs() > PLANE_OFFSET_TOLERANCE * length)
+        .then_some((angle_rad, offset))
+}
 
 /// A 2-D line: the x axis of `G` over `[xmin, xmax]`, outward normal +y (Adams `PLANE` in a
 /// 2-D contact). The material lies at y ≤ 0.

@@ -1,6 +1,6 @@
 //! Small triangle utilities both engines share.
 
-use crate::Point3;
+use crate::{Point3, Vector3};
 
 /// The point of triangle `a b c` closest to `p` (Ericson, *Real-Time Collision Detection*
 /// §5.1.5): the Voronoi region of `p` (a vertex, an edge or the face) picks the answer. A
@@ -35,6 +35,32 @@ pub fn closest_point_on_triangle(p: &Point3, a: &Point3, b: &Point3, c: &Point3)
     }
     let denom = 1.0 / (va + vb + vc);
     a + ab * (vb * denom) + ac * (vc * denom)
+}
+
+/// The parameter `s` at which the line `p + s·dir` meets triangle `a b c` (Möller–Trumbore),
+/// with the barycentric bounds widened by `widen` so a line through a shared edge or corner
+/// meets at least one of its triangles despite round-off; `None` when it misses or runs
+/// parallel to the triangle. `s` may be negative (behind `p`).
+pub fn line_triangle(
+    p: &Vector3,
+    dir: &Vector3,
+    a: &Vector3,
+    b: &Vector3,
+    c: &Vector3,
+    widen: f64,
+) -> Option<f64> {
+    let (e1, e2) = (b - a, c - a);
+    let h = dir.cross(&e2);
+    let det = e1.dot(&h);
+    if det.abs() <= 1e-14 * e1.norm() * e2.norm() {
+        return None;
+    }
+    let inv = 1.0 / det;
+    let s = p - a;
+    let u = s.dot(&h) * inv;
+    let q = s.cross(&e1);
+    let v = dir.dot(&q) * inv;
+    (u >= -widen && v >= -widen && u + v <= 1.0 + widen).then(|| e2.dot(&q) * inv)
 }
 
 #[cfg(test)]

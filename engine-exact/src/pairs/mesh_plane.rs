@@ -25,7 +25,7 @@
 
 use crate::kernel::PairContact;
 use contact_core::geometry::TriangleMesh;
-use contact_core::geometry::closest_point_on_triangle;
+use contact_core::geometry::{closest_point_on_triangle, line_triangle};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -216,33 +216,16 @@ pub(crate) fn contacts(
 }
 
 /// Where the line from `p` along the unit `direction` first meets the mesh's surface (every
-/// triangle; Möller–Trumbore with the barycentric bounds widened by 1e-12, so a line through
+/// triangle, [`line_triangle`] with the barycentric bounds widened by 1e-12, so a line through
 /// a shared edge or corner meets one of its triangles despite round-off), or `None`.
 fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
-    const WIDEN: f64 = 1e-12;
     let mut best = f64::INFINITY;
     for tri in &mesh.triangles {
-        let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
-        let (e1, e2) = (b - a, c - a);
-        let h = direction.cross(&e2);
-        let det = e1.dot(&h);
-        if det == 0.0 {
-            continue;
-        }
-        let inv = 1.0 / det;
-        let s = p - a;
-        let u = s.dot(&h) * inv;
-        if !(-WIDEN..=1.0 + WIDEN).contains(&u) {
-            continue;
-        }
-        let q = s.cross(&e1);
-        let v = direction.dot(&q) * inv;
-        if v < -WIDEN || u + v > 1.0 + WIDEN {
-            continue;
-        }
-        let t = e2.dot(&q) * inv;
-        if t >= 0.0 && t < best {
-            best = t;
+        let [a, b, c] = tri.map(|v| mesh.vertices[v as usize].coords);
+        if let Some(t) = line_triangle(&p.coords, direction, &a, &b, &c, 1e-12) {
+            if t >= 0.0 && t < best {
+                best = t;
+            }
         }
     }
     best.is_finite().then(|| p + best * direction)

@@ -23,10 +23,8 @@ pub mod point_line;
 use crate::kernel::PairError;
 use contact_core::{Isometry3, Point2, Point3, Vector2, Vector3};
 
-/// Largest angle (rad) between the planes of a 2-D pair.
-pub const PLANE_ANGLE_TOLERANCE: f64 = 1e-6;
-/// Largest offset between the planes of a 2-D pair, relative to the pair's length scale.
-pub const PLANE_OFFSET_TOLERANCE: f64 = 1e-6;
+use contact_core::geometry::plane_departure;
+pub use contact_core::geometry::{PLANE_ANGLE_TOLERANCE, PLANE_OFFSET_TOLERANCE};
 
 /// The first geometry's origin expressed in the second geometry's plane.
 #[derive(Debug, Clone, Copy)]
@@ -41,15 +39,10 @@ impl<'a> InPlane<'a> {
     /// Checks `a` and `b` share a plane and expresses `a`'s origin in `b`'s frame.
     pub fn new(pose_a: &Isometry3, pose_b: &'a Isometry3, length: f64) -> Result<Self, PairError> {
         let relative = pose_b.inv_mul(pose_a);
-        let z_a = relative.rotation * Vector3::z();
-        let angle_rad = z_a.xy().norm().atan2(z_a.z.abs());
-        let t = relative.translation.vector;
-        if angle_rad > PLANE_ANGLE_TOLERANCE || t.z.abs() > PLANE_OFFSET_TOLERANCE * length {
-            return Err(PairError::OutOfPlane {
-                angle_rad,
-                offset: t.z,
-            });
+        if let Some((angle_rad, offset)) = plane_departure(&relative, length) {
+            return Err(PairError::OutOfPlane { angle_rad, offset });
         }
+        let t = relative.translation.vector;
         Ok(Self {
             origin_a: Point2::new(t.x, t.y),
             pose_b,

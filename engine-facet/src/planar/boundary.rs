@@ -183,26 +183,7 @@ impl Boundary {
                 .contains(&t)
                 .then(|| t.clamp(0.0, 1.0))
         };
-        let scale = qb.abs().max(qc.abs());
-        if qa.abs() <= 1e-14 * scale.max(f64::MIN_POSITIVE) {
-            return if qb != 0.0 {
-                [inside(-qc / qb), None]
-            } else {
-                [None, None]
-            };
-        }
-        let disc = qb * qb - 4.0 * qa * qc;
-        if disc < 0.0 {
-            return [None, None];
-        }
-        // The stable pair of roots.
-        let r = -0.5 * (qb + qb.signum() * disc.sqrt());
-        let (t1, t2) = if r != 0.0 {
-            (r / qa, qc / r)
-        } else {
-            (0.0, -qb / qa)
-        };
-        [inside(t1), inside(t2)]
+        quadratic_roots(qa, qb, qc).map(|t| t.and_then(inside))
     }
 
     /// The polyline's own nearest point `(k, t)` with the side from the chord (or, at a corner,
@@ -311,23 +292,31 @@ impl Boundary {
         let qb = -6.0 * ad - 4.0 * t0 + 6.0 * bd - 2.0 * t1;
         let qc = t0;
         let inside = |t: f64| (t > 0.0 && t < 1.0).then_some(t);
-        if qa == 0.0 {
-            return [(qb != 0.0).then(|| -qc / qb).and_then(inside), None];
-        }
-        let disc = qb * qb - 4.0 * qa * qc;
-        if disc < 0.0 {
-            return [None, None];
-        }
-        let r = -0.5 * (qb + qb.signum() * disc.sqrt());
-        if r == 0.0 {
-            return [inside(0.0), inside(-qb / qa)];
-        }
-        [inside(r / qa), inside(qc / r)]
+        quadratic_roots(qa, qb, qc).map(|t| t.and_then(inside))
     }
 
     /// Heap bytes held.
     pub fn heap_bytes(&self) -> usize {
         self.points.capacity() * std::mem::size_of::<Point2>()
             + self.normals.capacity() * std::mem::size_of::<Vector2>()
+    }
+}
+
+/// The real roots of `a t² + b t + c`, computed without cancellation; a linear equation when
+/// `|a|` is below 1e-14 of `|b|, |c|` (where the quadratic term is round-off).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
+    let scale = b.abs().max(c.abs());
+    if a.abs() <= 1e-14 * scale.max(f64::MIN_POSITIVE) {
+        return [(b != 0.0).then(|| -c / b), None];
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return [None, None];
+    }
+    let r = -0.5 * (b + b.signum() * disc.sqrt());
+    if r == 0.0 {
+        [Some(0.0), Some(-b / a)]
+    } else {
+        [Some(r / a), Some(c / r)]
     }
 }

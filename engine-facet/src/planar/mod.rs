@@ -43,13 +43,10 @@ mod boundary;
 
 pub use boundary::{Boundary, Nearest};
 
-use contact_core::geometry::Line;
+use contact_core::geometry::{Line, plane_departure};
 use contact_core::{GeometryKind, Isometry3, Point2, Point3, Vector2, Vector3};
 
-/// Largest angle (rad) between the planes of a 2-D pair.
-pub const PLANE_ANGLE_TOLERANCE: f64 = 1e-6;
-/// Largest offset between the planes of a 2-D pair, relative to the pair's length scale.
-pub const PLANE_OFFSET_TOLERANCE: f64 = 1e-6;
+pub use contact_core::geometry::{PLANE_ANGLE_TOLERANCE, PLANE_OFFSET_TOLERANCE};
 
 /// A prepared 2-D geometry.
 #[derive(Debug, Clone, PartialEq)]
@@ -200,15 +197,10 @@ fn mover_surface(
     length: f64,
 ) -> Result<Option<PlanarContact>, OutOfPlane> {
     let relative = pose_ws.inv_mul(pose_wm);
-    let z_m = relative.rotation * Vector3::z();
-    let angle_rad = z_m.xy().norm().atan2(z_m.z.abs());
-    let t = relative.translation.vector;
-    if angle_rad > PLANE_ANGLE_TOLERANCE || t.z.abs() > PLANE_OFFSET_TOLERANCE * length {
-        return Err(OutOfPlane {
-            angle_rad,
-            offset: t.z,
-        });
+    if let Some((angle_rad, offset)) = plane_departure(&relative, length) {
+        return Err(OutOfPlane { angle_rad, offset });
     }
+    let t = relative.translation.vector;
     let c = Point2::new(t.x, t.y);
     let (s, q, n) = match surface {
         Surface::Boundary(b) => match b.nearest(&c) {
