@@ -54,12 +54,14 @@ use crate::kernel::PairContact;
 use crate::quadrature;
 use crate::ray_exit::surface_point_along;
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::PI;
 
-/// Relative agreement at which a piece's integral is accepted.
-const TOLERANCE: f64 = 1e-13;
-/// Halvings allowed per piece (a piece then spans 1/4096 of its first width).
-const MAX_DEPTH: u32 = 12;
+/// The adaptive rule: halves agree with the whole to 1e-13 relative; at most 12 halvings
+/// per piece (a piece then spans 1/4096 of its first width).
+const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
+    tolerance: 1e-13,
+    max_depth: 12,
+};
 
 /// The profile of a solid of revolution in its `(ρ, z)` half-plane, lengths divided by the
 /// working unit.
@@ -201,102 +203,6 @@ fn segment_moments(big: f64, r: f64, m: &Vector2, d: f64) -> [f64; 3] {
         big * big * area + 2.0 * big * mx * s1 + mx * mx * s2 + my * my * w2,
         big * my * s1 + mx * my * (s2 - w2),
     ]
-}
-
-/// The 12-node rule for `∫ f` over the part `[t0, t1]` of `t ∈ [−π/2, π/2]`, with
-/// `x = m + w sin t` mapping `t` onto `[lo, hi]`.
-fn rule<const N: usize>(
-    (lo, hi): (f64, f64),
-    (t0, t1): (f64, f64),
-    f: &mut impl FnMut(f64) -> [f64; N],
-    work: &mut WorkCounters,
-) -> [f64; N] {
-    let mut sum = [0.0; N];
-    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-    quadrature::for_each_node(t0, t1, |t, weight| {
-        let (sin, cos) = t.sin_cos();
-        let value = f(mid + half * sin);
-        for k in 0..N {
-            sum[k] += weight * half * cos * value[k];
-        }
-    });
-    work.iterations += quadrature::NODES as u64;
-    sum
-}
-
-/// Adds `∫ f` over `[lo, hi]` to `total`, starting from the whole-interval estimate `whole`
-/// and halving until, for each component, the halves agree with the whole within
-/// `TOLERANCE·|halves| + floor` (the floor, from the whole integral's size, keeps round-off
-/// in a nearly empty piece from driving the halving to its limit).
-fn integrate<const N: usize>(
-    (lo, hi): (f64, f64),
-    whole: [f64; N],
-    f: &mut impl FnMut(f64) -> [f64; N],
-    floor: &[f64; N],
-    work: &mut WorkCounters,
-    total: &mut [f64; N],
-) {
-    // Intervals in t ∈ [−π/2, π/2] still to do, with their whole-interval estimate.
-    let mut stack = [(0.0, 0.0, [0.0; N], 0u32); MAX_DEPTH as usize + 2];
-    stack[0] = (-FRAC_PI_2, FRAC_PI_2, whole, 0);
-    let mut len = 1;
-    while len > 0 {
-        len -= 1;
-        let (t0, t1, estimate, depth) = stack[len];
-        let tm = 0.5 * (t0 + t1);
-        let left = rule((lo, hi), (t0, tm), f, work);
-        let right = rule((lo, hi), (tm, t1), f, work);
-        let mut halves = [0.0; N];
-        for k in 0..N {
-            halves[k] = left[k] + right[k];
-        }
-        let converged = (0..N)
-            .all(|k| (halves[k] - estimate[k]).abs() <= TOLERANCE * halves[k].abs() + floor[k]);
-        if converged || depth >= MAX_DEPTH || len + 2 > stack.len() {
-            for k in 0..N {
-                total[k] += halves[k];
-            }
-        } else {
-            stack[len] = (t0, tm, left, depth + 1);
-            stack[len + 1] = (tm, t1, right, depth + 1);
-            len += 2;
-        }
-    }
-}
-
-/// Sorts `cuts` and integrates `f` over each piece between consecutive cuts, skipping the
-/// pieces where `f` vanishes (the cuts must include every point where it starts or stops
-/// vanishing). `floor(&estimate)` turns a first estimate of the whole integral into the
-/// absolute error each piece may keep.
-fn integrate_pieces<const N: usize>(
-    cuts: &mut [f64],
-    f: &mut impl FnMut(f64) -> [f64; N],
-    floor: &impl Fn(&[f64; N]) -> [f64; N],
-    work: &mut WorkCounters,
-) -> [f64; N] {
-    cuts.sort_by(f64::total_cmp);
-    // First pass: one rule per non-empty piece. Between consecutive cuts the region is empty
-    // throughout or nowhere (its edges are cuts): one look at the middle tells.
-    let mut wholes = [[0.0; N]; 9];
-    let mut estimate = [0.0; N];
-    for (piece, whole) in cuts.windows(2).zip(wholes.iter_mut()) {
-        if piece[1] <= piece[0] || f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
-            continue;
-        }
-        *whole = rule((piece[0], piece[1]), (-FRAC_PI_2, FRAC_PI_2), f, work);
-        for k in 0..N {
-            estimate[k] += whole[k];
-        }
-    }
-    let floor = floor(&estimate);
-    let mut total = [0.0; N];
-    for (piece, whole) in cuts.windows(2).zip(wholes.iter()) {
-        if whole.iter().all(|&v| v == 0.0) {
-            continue;
-        }
-        integrate((piece[0], piece[1]), *whole, f, &floor, work, &mut total);
-    }
-    total
 }
 
 /// The angles in `(0, π)` where the cut changes character, written into `out` after the ends.
@@ -485,7 +391,7 @@ pub(crate) fn contact(
     // Each piece may keep an error of 1e-14 of the volume (times the unit length for the
     // moments, lengths being near 1 in working units).
     let volume_floor = |s: &[f64; 3]| [1e-14 * s[0].abs(); 3];
-    let sums = integrate_pieces(&mut cuts[..count], &mut per_azimuth, &volume_floor, work);
+    let sums = ADAPTIVE.integrate_pieces(&mut cuts[..count], &mut per_azimuth, &volume_floor, work);
     if sums[0] <= 0.0 {
         return None;
     }
@@ -501,7 +407,8 @@ pub(crate) fn contact(
     let mut across = |u: f64| [chord(&profile, a, b, h, u)];
     // The area may keep an error of 1e-14 of the solid's size² per piece.
     let area_floor = 1e-14 * bound * bound;
-    let section = integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_floor], work)[0];
+    let section =
+        ADAPTIVE.integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_floor], work)[0];
     let area = if section > 0.0 {
         section
     } else {
@@ -537,6 +444,7 @@ mod tests {
     use super::*;
     use contact_core::UnitQuaternion;
     use contact_core::geometry::Cylinder;
+    use std::f64::consts::FRAC_PI_2;
 
     /// The cylinder through this kernel against the cylinder kernel's chord quadrature (a
     /// different slicing): volume-derived answers and the section area agree.
