@@ -6,10 +6,9 @@
 //! of centres; between boxes, the area-weighted outward normal of the part of `b`'s surface
 //! inside `a` (the direction of the net force of a uniform pressure on that surface).
 //!
-//! Points by SPEC §4: the points of each whole surface closest to the intersection's
-//! centroid (box–plane, box–box, cylinder–, frustum–, torus– and mesh–plane; the sphere
-//! pairs, whose centroid lies on the line of centres, agree with that rule), except
-//! ellipsoid–plane, which still takes them along the normal through the centroid.
+//! Points by SPEC §4, taken along the normal through the intersection's centroid (where that
+//! line leaves each body; see [`crate::ray_exit`]); the curved solid–solid pairs share that
+//! last step in [`volume_contact`].
 
 pub mod box_box;
 pub mod box_plane;
@@ -23,3 +22,5 @@ pub mod sphere_mesh;
 pub mod sphere_plane;
 pub mod sphere_solid;
 pub mod sphere_sphere;
+#[allow(dead_code)] // The sliced solid pairs build on it.
+pub mod volume_contact;
