@@ -39,11 +39,12 @@ pub(crate) fn contact(
     exit_b: impl Fn(&Point3, &Vector3) -> Point3,
     fallback_normal: impl FnOnce() -> Vector3,
 ) -> Option<PairContact> {
-    if !(m.volume > 0.0) || !m.centroid.coords.iter().all(|c| c.is_finite()) {
+    if m.volume.is_nan() || m.volume <= 0.0 || !m.centroid.coords.iter().all(|c| c.is_finite()) {
         return None;
     }
     let s_norm = m.area_vector_a.norm();
-    let enclosed = !(s_norm > ENCLOSED * m.surface_area);
+    // A NaN area vector counts as vanishing too.
+    let enclosed = s_norm.is_nan() || s_norm <= ENCLOSED * m.surface_area;
     let (normal, area) = if enclosed {
         (fallback_normal(), 0.25 * m.surface_area)
     } else {
