@@ -9,11 +9,11 @@
 //!   and otherwise the direction from the centre of J's bounding box to the centre of I's (for a
 //!   2-D contact projected onto J's plane of motion); when the centres coincide, `u` is against
 //!   gravity (or +z without gravity).
-//! - Then, for each nominal depth of [`RELATIVE_DEPTHS`] (fractions of the contact's size:
-//!   separated, near, grazing, shallow to deep) [`POSES_PER_DEPTH`] poses: J stays at its
-//!   initial pose; I keeps its initial orientation relative to J for the first pose and is
-//!   tilted by a seeded rotation of up to 5° about a random axis (about J's plane normal only, for
-//!   2-D contacts) for the others; then I is slid along `u` until its support-function overlap
+//! - Then one pose per nominal depth of [`relative_depths`] (fractions of the contact's size:
+//!   separated, near, grazing, shallow to deep): J stays at its initial pose; I keeps its
+//!   initial orientation relative to J for every third pose and is tilted by a seeded rotation
+//!   of up to 5° about a random axis (about J's plane normal only, for 2-D contacts) for the
+//!   others; then I is slid along `u` until its support-function overlap
 //!   with J along `u` equals the nominal depth. The nominal depth only labels the pose; the
 //!   reference answer is the exact engine's.
 //!
@@ -23,7 +23,7 @@
 //! half-edge, a cylinder's radius (or half-length if shorter), a torus's minor radius, a mesh's
 //! smallest half-extent. Depth and point errors of the trade are relative to it.
 
-use super::{POSES_PER_DEPTH, RELATIVE_DEPTHS, Scene, ScenePose, SplitMix64, support};
+use super::{POSES_PER_SPECIAL_DEPTH, Scene, ScenePose, SplitMix64, relative_depths, support};
 use crate::model::{ContactDimension, ContactElement, ContactGeometry, MeshFile, Model};
 use contact_core::{Geometry, GeometryInstance, Isometry3, UnitQuaternion, Vector3};
 use std::sync::Arc;
@@ -142,30 +142,27 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
         pose_world_j: pose_j,
     });
     let mut rng = SplitMix64::new(u64::from(c.id).wrapping_mul(0x9e37_79b9_7f4a_7c15));
-    for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
-        for k in 0..POSES_PER_DEPTH {
-            let mut tilted = pose_i;
-            if k > 0 {
-                let axis = if planar {
-                    plane_normal
-                } else {
-                    rng.unit_vector()
-                };
-                let angle = rng.range(-MAX_TILT, MAX_TILT);
-                let turn =
-                    UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(axis), angle);
-                tilted.rotation = turn * tilted.rotation;
-            }
-            let Some(now) = overlap(&scene, &tilted, &pose_j, &u) else {
-                continue;
+    for (k, depth) in relative_depths().map(|d| d * scale).into_iter().enumerate() {
+        let mut tilted = pose_i;
+        if k % POSES_PER_SPECIAL_DEPTH > 0 {
+            let axis = if planar {
+                plane_normal
+            } else {
+                rng.unit_vector()
             };
-            tilted.translation.vector += u * (now - depth);
-            scene.poses.push(ScenePose {
-                nominal_depth: depth,
-                pose_world_i: tilted,
-                pose_world_j: pose_j,
-            });
+            let angle = rng.range(-MAX_TILT, MAX_TILT);
+            let turn = UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(axis), angle);
+            tilted.rotation = turn * tilted.rotation;
         }
+        let Some(now) = overlap(&scene, &tilted, &pose_j, &u) else {
+            continue;
+        };
+        tilted.translation.vector += u * (now - depth);
+        scene.poses.push(ScenePose {
+            nominal_depth: depth,
+            pose_world_i: tilted,
+            pose_world_j: pose_j,
+        });
     }
     Ok(scene)
 }

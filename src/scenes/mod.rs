@@ -61,16 +61,37 @@ pub struct ScenePose {
     pub pose_world_j: Isometry3,
 }
 
-/// Nominal depths as fractions of a scene's scale: separated, near, grazing (1e-12 of the
-/// scale), then shallow to deep in half-decade steps. The steps match the tolerance sweep's
-/// (100, 300, 1000, …): a faceted engine misses a contact shallower than its faceting band and
-/// then errs by that contact's whole depth, so the worst error over the family is a staircase
-/// on these depths; half-decade steps let it fall at each half-decade of tolerance.
-pub const RELATIVE_DEPTHS: [f64; 10] =
-    [-0.05, -1e-3, 1e-12, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1];
+/// Poses in every scene of the suite.
+pub const POSES: usize = 30;
 
-/// Poses per nominal depth (different seeded orientations and approach directions).
-pub const POSES_PER_DEPTH: usize = 3;
+/// Poses at each of the special depths (separated, near, grazing) of [`relative_depths`].
+pub const POSES_PER_SPECIAL_DEPTH: usize = 3;
+
+/// The nominal depth of each pose, as fractions of a scene's scale: separated (−0.05), near
+/// (−1e-3) and grazing (1e-12 of the scale), three poses each, then 21 shallow to deep depths
+/// evenly spaced in log from 1e-4 to 0.1 (a ratio of 10^0.15 ≈ 1.41 between neighbours), one
+/// pose each.
+///
+/// Why every pose has its own depth: a faceted engine misses a contact shallower than its
+/// faceting band and then errs by that contact's whole depth, so the worst error over the
+/// family is the deepest missed depth. With neighbouring depths 1.41× apart, each step of the
+/// tolerance sweep (100, 300, 1000, …: about 3.3×) moves the band past three or four depths,
+/// and the worst error falls at every step instead of standing on a staircase.
+pub fn relative_depths() -> [f64; POSES] {
+    let mut depths = [0.0; POSES];
+    let special = [-0.05, -1e-3, 1e-12];
+    let graded = POSES - special.len() * POSES_PER_SPECIAL_DEPTH;
+    for (k, d) in depths.iter_mut().enumerate() {
+        *d = match k / POSES_PER_SPECIAL_DEPTH {
+            s if s < special.len() => special[s],
+            _ => {
+                let step = k - special.len() * POSES_PER_SPECIAL_DEPTH;
+                10f64.powf(-4.0 + 3.0 * step as f64 / (graded - 1) as f64)
+            }
+        };
+    }
+    depths
+}
 
 /// The names of every scene in the suite, in order.
 pub const NAMES: [&str; 20] = [
@@ -440,23 +461,20 @@ impl Scene {
             scale,
         );
         let mut rng = SplitMix64::new(seed(name));
-        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
-            for _ in 0..POSES_PER_DEPTH {
-                let rotation = orient(orientation, &mut rng);
-                let up = Vector3::z();
-                let lowest = -support_of(
-                    &scene.i,
-                    &Isometry3::from_parts(Default::default(), rotation),
-                    &-up,
-                );
-                let offset =
-                    Vector3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), -lowest - depth);
-                scene.push(
-                    depth,
-                    Isometry3::from_parts(offset.into(), rotation),
-                    &mut rng,
-                );
-            }
+        for depth in relative_depths().map(|d| d * scale) {
+            let rotation = orient(orientation, &mut rng);
+            let up = Vector3::z();
+            let lowest = -support_of(
+                &scene.i,
+                &Isometry3::from_parts(Default::default(), rotation),
+                &-up,
+            );
+            let offset = Vector3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), -lowest - depth);
+            scene.push(
+                depth,
+                Isometry3::from_parts(offset.into(), rotation),
+                &mut rng,
+            );
         }
         scene
     }
@@ -472,28 +490,24 @@ impl Scene {
     ) -> Self {
         let mut scene = Self::base(name, description, i, j, scale);
         let mut rng = SplitMix64::new(seed(name));
-        for depth in RELATIVE_DEPTHS.map(|d| d * scale) {
-            for _ in 0..POSES_PER_DEPTH {
-                let rotation = orient(orientation, &mut rng);
-                let u = match orientation {
-                    Orientation::ParallelAxes
-                    | Orientation::RandomInPlane
-                    | Orientation::Planar => {
-                        let a = rng.range(0.0, TAU);
-                        Vector3::new(a.cos(), a.sin(), 0.0)
-                    }
-                    Orientation::CrossedAxes => Vector3::x(),
-                    _ => rng.unit_vector(),
-                };
-                let placed = Isometry3::from_parts(Default::default(), rotation);
-                let reach = support_of(&scene.j, &Isometry3::identity(), &u)
-                    + support_of(&scene.i, &placed, &-u);
-                scene.push(
-                    depth,
-                    Isometry3::from_parts((u * (reach - depth)).into(), rotation),
-                    &mut rng,
-                );
-            }
+        for depth in relative_depths().map(|d| d * scale) {
+            let rotation = orient(orientation, &mut rng);
+            let u = match orientation {
+                Orientation::ParallelAxes | Orientation::RandomInPlane | Orientation::Planar => {
+                    let a = rng.range(0.0, TAU);
+                    Vector3::new(a.cos(), a.sin(), 0.0)
+                }
+                Orientation::CrossedAxes => Vector3::x(),
+                _ => rng.unit_vector(),
+            };
+            let placed = Isometry3::from_parts(Default::default(), rotation);
+            let reach = support_of(&scene.j, &Isometry3::identity(), &u)
+                + support_of(&scene.i, &placed, &-u);
+            scene.push(
+                depth,
+                Isometry3::from_parts((u * (reach - depth)).into(), rotation),
+                &mut rng,
+            );
         }
         scene
     }
@@ -515,19 +529,16 @@ impl Scene {
             0.2,
         );
         let mut rng = SplitMix64::new(seed(name));
-        for depth in RELATIVE_DEPTHS.map(|d| d * 0.2) {
-            for _ in 0..POSES_PER_DEPTH {
-                let u = rng.range(u0, u1);
-                let normal = cam.normal(u).unwrap_or(nalgebra::Vector2::x());
-                let at = cam.point(u).coords + normal * (radius - depth);
-                let rotation =
-                    UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
-                scene.push(
-                    depth,
-                    Isometry3::from_parts(Vector3::new(at.x, at.y, 0.0).into(), rotation),
-                    &mut rng,
-                );
-            }
+        for depth in relative_depths().map(|d| d * 0.2) {
+            let u = rng.range(u0, u1);
+            let normal = cam.normal(u).unwrap_or(nalgebra::Vector2::x());
+            let at = cam.point(u).coords + normal * (radius - depth);
+            let rotation = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
+            scene.push(
+                depth,
+                Isometry3::from_parts(Vector3::new(at.x, at.y, 0.0).into(), rotation),
+                &mut rng,
+            );
         }
         scene
     }

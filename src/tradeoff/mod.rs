@@ -6,18 +6,17 @@
 //! scene's closed form where it has one and the exact engine otherwise. Times are medians and
 //! 95th percentiles of single queries on a prepared pair, one thread.
 //!
-//! ## Why a faceted error can stay level between two tolerances
+//! ## Why the faceted error falls with the tolerance
 //! The faceted engine's meshes are inscribed in the true surfaces, so a contact shallower than
 //! the faceting band (about the chord deviation `L/FT` of the two shapes along the normal) is
 //! missed, and a missed contact counts its whole depth: at a pose of true depth δ the depth
 //! error is about `min(δ, band)`, and deeper contacts, whose depth comes from the intersection
-//! volume, err far less. The worst error over a scene's poses is therefore the largest nominal
-//! depth inside the band: a staircase on the scene's depths ([`crate::scenes::RELATIVE_DEPTHS`],
-//! half-decade steps like the default sweep). Two tolerances whose bands fall between the same
-//! two depths report the same worst error: the measurement is right (those poses are missed at
-//! both), and it is a lower bound of the worst error over every depth, which is the band itself
-//! and falls as `1/FT`. Meshes read from files keep their facets, so their rows do not change
-//! with the tolerance at all.
+//! volume, err far less. The worst error over a scene's poses is therefore the deepest missed
+//! nominal depth. The scenes give each graded pose its own depth, 1.41× apart
+//! ([`crate::scenes::relative_depths`]), so each step of the default sweep (about 3.3×) moves
+//! the band past several depths and the worst error falls at every step; it is a lower bound
+//! of the worst error over every depth, which is the band itself and falls as `1/FT`. Meshes
+//! read from files keep their facets, so their rows do not change with the tolerance at all.
 //!
 //! A dataset's contacts become scenes of their own ([`crate::scenes::from_model`]); the
 //! recommendation for a model is [`select_for_model`].

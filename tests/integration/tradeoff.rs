@@ -23,7 +23,12 @@ fn sweep(tolerances: &[f64]) -> Sweep {
 
 #[test]
 fn exact_matches_closed_forms_and_faceted_errors_shrink_with_the_tolerance() {
-    let names = ["sphere_plane", "sphere_sphere", "cylinder_plane_side"];
+    let names = [
+        "sphere_plane",
+        "sphere_sphere",
+        "ellipsoid_plane",
+        "cylinder_plane_side",
+    ];
     let chosen: Vec<_> = names.iter().map(|n| scenes::scene(n).unwrap()).collect();
     let parry = engine_exact::parry_adapter::ParryEngine;
     let tolerances = [100.0, 300.0028, 1000.0, 3000.0];
@@ -65,9 +70,9 @@ fn exact_matches_closed_forms_and_faceted_errors_shrink_with_the_tolerance() {
             .map(|r| r.depth_error.unwrap())
             .collect();
         // Strictly better at each finer tolerance, and much better over the sweep. The worst
-        // error over a scene's poses is a staircase on the nominal depths (a contact shallower
-        // than the faceting band is missed and counts its whole depth); the half-decade depths
-        // resolve each half-decade of tolerance for these scenes from 100 to 3000.
+        // error over a scene's poses is the deepest nominal depth missed (a contact shallower
+        // than the faceting band counts its whole depth); the scenes' depths, 1.41× apart,
+        // resolve every step of the sweep.
         assert_eq!(faceted.len(), tolerances.len(), "{name}");
         assert!(
             faceted.windows(2).all(|w| w[1] < w[0]),
