@@ -142,21 +142,39 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
         let mut write = 0;
         for index in 0..self.len {
             let face = &self.faces[index];
+            // Each vertex's signed distance, once (the edge loop below reads each twice).
+            let mut d = [0.0; V];
+            let mut any_out = false;
+            for (dk, p) in d.iter_mut().zip(&face.vertices[..face.len]) {
+                *dk = normal.dot(&p.coords) - offset;
+                any_out |= *dk > 0.0;
+            }
+            if !any_out {
+                // Wholly kept: the face stays as it is (moved down over removed faces); its
+                // vertices on the plane still belong to the new face.
+                for k in 0..face.len {
+                    if d[k] == 0.0 {
+                        push_unique(&mut cap, face.vertices[k]);
+                    }
+                }
+                if write != index {
+                    self.faces[write] = self.faces[index];
+                }
+                write += 1;
+                continue;
+            }
+            cut = true;
             scratch.len = 0;
             scratch.from_clip = face.from_clip;
-            let mut any_out = false;
             for k in 0..face.len {
-                let p = face.vertices[k];
-                let q = face.vertices[(k + 1) % face.len];
-                let dp = normal.dot(&p.coords) - offset;
-                let dq = normal.dot(&q.coords) - offset;
+                let next = if k + 1 == face.len { 0 } else { k + 1 };
+                let (p, q) = (face.vertices[k], face.vertices[next]);
+                let (dp, dq) = (d[k], d[next]);
                 if dp <= 0.0 {
                     scratch.push(p);
                     if dp == 0.0 {
                         push_unique(&mut cap, p);
                     }
-                } else {
-                    any_out = true;
                 }
                 if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
                     let x = crossing(p, dp, q, dq);
@@ -164,7 +182,6 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
                     push_unique(&mut cap, x);
                 }
             }
-            cut |= any_out;
             if scratch.len >= 3 {
                 let target = &mut self.faces[write];
                 target.vertices[..scratch.len].copy_from_slice(&scratch.vertices[..scratch.len]);
