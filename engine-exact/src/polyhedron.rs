@@ -152,10 +152,13 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
             if !any_out {
                 // Wholly kept: the face stays as it is (moved down over removed faces); its
                 // vertices on the plane still belong to the new face.
-                for k in 0..face.len {
-                    if d[k] == 0.0 {
-                        push_unique(&mut cap, face.vertices[k]);
-                    }
+                for (p, _) in face
+                    .vertices
+                    .iter()
+                    .zip(&d[..face.len])
+                    .filter(|(_, dk)| **dk == 0.0)
+                {
+                    push_unique(&mut cap, *p);
                 }
                 if write != index {
                     self.faces[write] = self.faces[index];
