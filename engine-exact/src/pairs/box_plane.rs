@@ -140,7 +140,6 @@ fn half_space(
         *corner -= origin;
     }
     let (mut six_volume, mut moment, mut area_vector) = (0.0, Vector3::zeros(), Vector3::zeros());
-    let mut total_area = 0.0;
     for face in &FACES {
         let mut poly = [Vector3::zeros(); 5];
         let mut len = 0;
@@ -171,9 +170,7 @@ fn half_space(
             let v6 = a.dot(&b.cross(&c));
             six_volume += v6;
             moment += v6 * (a + b + c);
-            let piece = 0.5 * (b - a).cross(&(c - a));
-            area_vector += piece;
-            total_area += piece.norm();
+            area_vector += 0.5 * (b - a).cross(&(c - a));
         }
     }
     if six_volume <= 0.0 {
@@ -183,12 +180,15 @@ fn half_space(
     let normal = Vector3::new(0.0, 0.0, side);
     let point_a = g - clipped::ray_exit(&g, &-normal, planes_box) * normal;
     let point_b = Point3::new(g.x, g.y, 0.0);
-    let s = area_vector.norm();
-    // Wholly below the plane no face crosses it: a quarter of the box's surface.
-    let area = if s > 1e-12 * total_area {
-        s
+    // Wholly below the plane (no corner above it) no face crosses it and the faces' area
+    // vectors cancel: the area is a quarter of the box's surface, `2(xy + yz + zx)` in
+    // half-axes. Otherwise it is the cap's, `|S|` (no square root per face for a total that
+    // only this branch needs).
+    let area = if height.iter().all(|&h| h <= 0.0) {
+        let [x, y, z] = half_axes.each_ref().map(|a| a.norm());
+        2.0 * (x * y + y * z + z * x)
     } else {
-        0.25 * total_area
+        area_vector.norm()
     };
     let world = |p: Point3| pose_plane * Point3::from(p.coords * unit);
     Some(PairContact {
