@@ -14,6 +14,7 @@ mod malformed;
 mod out_of_plane;
 mod scenes_cli;
 mod select;
+mod statics;
 mod trade_schema;
 mod tradeoff;
 
