@@ -230,3 +230,41 @@ pub fn run_kinematics(
     }
     Ok(summary)
 }
+
+impl MultibodySystem {
+    /// The reaction of one constraint element (`JOINT/3`, `MOTION/1`, `JPRIM/2`) on its two
+    /// parts at `y`: `−Φ_vᵀλ` over its rows only, as a world force and a world torque about
+    /// each part's CM (ground included, first I's part then J's); `None` for an unknown name.
+    pub fn element_reaction(
+        &self,
+        y: &DVector<f64>,
+        name: &str,
+    ) -> Result<Option<[(super::mbs::PartId, super::mbs::Load); 2]>, EvaluationError> {
+        let Some(element) = self.constraints.iter().find(|c| c.name == name) else {
+            return Ok(None);
+        };
+        let states = self.part_states(y)?;
+        let (pose_a, pose_b) = (
+            &states[element.part_i.0].pose_w,
+            &states[element.part_j.0].pose_w,
+        );
+        let start = self.layout.lambda_offset() + element.row;
+        let lambda: Vec<f64> = y
+            .rows(start, element.primitives.len())
+            .iter()
+            .copied()
+            .collect();
+        let g = element.generalized_reaction(pose_a, pose_b, &lambda);
+        let load =
+            |force: Vector3<f64>, torque_body: Vector3<f64>, pose: &nalgebra::Isometry3<f64>| {
+                super::mbs::Load {
+                    force_w: -force,
+                    torque_w: -(pose.rotation * torque_body),
+                }
+            };
+        Ok(Some([
+            (element.part_i, load(g[0], g[1], pose_a)),
+            (element.part_j, load(g[2], g[3], pose_b)),
+        ]))
+    }
+}

@@ -10,6 +10,7 @@ mod extremes;
 mod faceted_ball;
 mod fuzz_seeds;
 mod geneva;
+mod kinematics;
 mod malformed;
 mod out_of_plane;
 mod scenes_cli;
