@@ -240,3 +240,167 @@ fn out_of_range_equilibrium_settings_are_refused_by_name() {
         "EQUILIBRIUM/TLIMIT = -1.0 is out of range: must be finite and > 0"
     );
 }
+
+/// `contact run` with `args` into a fresh directory named `name`: (exit code, stdout, stderr,
+/// the output directory).
+fn run_cli(
+    name: &str,
+    model: std::path::PathBuf,
+    commands: std::path::PathBuf,
+) -> (u8, String, String, std::path::PathBuf) {
+    let out = std::env::temp_dir().join(format!("contact-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&out).ok();
+    let args = contact::cli::run::RunArgs {
+        model,
+        commands: Some(commands),
+        engine: None,
+        faceting_tolerance: None,
+        end: None,
+        dtout: None,
+        steps: None,
+        out: Some(out.clone()),
+        threads: None,
+        quiet: true,
+    };
+    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
+    let code = contact::cli::run::run(&args, &mut stdout, &mut stderr).unwrap();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap();
+    (code, text(stdout), text(stderr), out)
+}
+
+/// The rows of a CSV result file, the first `skip` columns dropped (numbers only after them).
+fn csv_rows(path: &std::path::Path, skip: usize) -> Vec<Vec<f64>> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .skip(skip)
+                .map(|v| v.parse().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+fn example(path: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples")
+        .join(path)
+}
+
+#[test]
+fn the_box_rest_example_finds_its_equilibrium_and_the_dynamics_stay_there() {
+    let (code, stdout, stderr, out) = run_cli(
+        "box-rest",
+        example("box_rest/box_rest.adm"),
+        example("box_rest/box_rest.acf"),
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout.contains("static equilibrium at t = 0 by quasi-dynamic fallback"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("final imbalance"), "{stdout}");
+    assert!(stdout.contains("ran 0.5 s of dynamics"), "{stdout}");
+    let expected = resting_penetration();
+    // parts.csv: time, part, x, y, z, … ; the box's CM is 0.05 above its bottom face.
+    let parts = csv_rows(&out.join("parts.csv"), 0);
+    assert_eq!(
+        parts.len(),
+        51,
+        "the statics frame at t = 0, then 50 dynamics frames"
+    );
+    let resting_z = 0.05 - expected;
+    assert!(
+        (parts[0][4] - resting_z).abs() < 1e-6 * expected,
+        "{:?}",
+        parts[0]
+    );
+    for row in &parts {
+        assert!((row[4] - parts[0][4]).abs() < 1e-9 * expected, "{row:?}");
+    }
+    // contacts.csv: time, contact, index, geometry_i, geometry_j, points (6), normal (3),
+    // penetration, …
+    let contacts = csv_rows(&out.join("contacts.csv"), 5);
+    let penetration = contacts[0][9];
+    assert!(
+        (penetration - expected).abs() < 1e-6 * expected,
+        "δ = {penetration} vs {expected}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["analyses"][0]["analysis"], "STATICS");
+    assert_eq!(summary["analyses"][1]["analysis"], "DYNAMICS");
+    assert!(summary["analyses"][0]["imbalance"].as_f64().unwrap() <= 1e-9);
+    std::fs::remove_dir_all(&out).ok();
+}
+
+#[test]
+fn a_failing_statics_after_dynamics_keeps_the_dynamics_output() {
+    let dir = std::env::temp_dir().join(format!("contact-falling-model-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (adm, acf) = (dir.join("falling.adm"), dir.join("falling.acf"));
+    std::fs::write(&adm, FALLING).unwrap();
+    std::fs::write(
+        &acf,
+        "falling.adm\nfalling\nSIMULATE/DYNAMICS, END = 0.1, DTOUT = 0.01\nSIMULATE/STATICS\nSTOP\n",
+    )
+    .unwrap();
+    let (code, _, stderr, out) = run_cli("statics-fail", adm, acf);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stderr.contains("SIMULATE/STATICS: statics did not converge"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("largest on PART/2 (force)"), "{stderr}");
+    assert!(stderr.contains("results up to the failure"), "{stderr}");
+    let parts = csv_rows(&out.join("parts.csv"), 0);
+    assert_eq!(parts.len(), 11, "the 11 dynamics frames stay");
+    // Free fall: z = −g t²/2 at the last frame.
+    assert!(
+        (parts[10][4] + 0.5 * 9.81 * 0.01).abs() < 1e-6,
+        "{:?}",
+        parts[10]
+    );
+    std::fs::remove_dir_all(&out).ok();
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn initial_conditions_and_kinematics_run_from_the_command_file() {
+    let dir = std::env::temp_dir().join(format!("contact-ic-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let acf = dir.join("slider.acf");
+    std::fs::write(
+        &acf,
+        "slider\nSIMULATE/INITIAL_CONDITIONS\nSIMULATE/KINEMATICS, END = 0.5, STEPS = 5\nSTOP\n",
+    )
+    .unwrap();
+    let (code, stdout, stderr, out) = run_cli(
+        "ic-kinematics",
+        example("slider_crank/slider_crank.adm"),
+        acf,
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout.contains("initial conditions at t = 0 written"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("ran kinematics from t = 0 to 0.5"),
+        "{stdout}"
+    );
+    // One frame at t = 0 (the kinematics' first frame is not written twice), then 5; three
+    // moving parts each.
+    let parts = csv_rows(&out.join("parts.csv"), 0);
+    assert_eq!(parts.len(), 6 * 3);
+    let slider: Vec<&Vec<f64>> = parts.iter().filter(|r| r[1] == 4.0).collect();
+    for row in slider {
+        let (s, c) = (std::f64::consts::TAU * row[0]).sin_cos();
+        let x = 0.1 * c + (0.09 - 0.01 * s * s).sqrt();
+        assert!((row[2] - x).abs() < 1e-9, "{row:?} vs {x}");
+    }
+    std::fs::remove_dir_all(&out).ok();
+    std::fs::remove_dir_all(&dir).ok();
+}
