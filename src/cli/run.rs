@@ -174,7 +174,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     };
     let started = Instant::now();
     let mut work = WorkCounters::default();
-    let mut totals = RunSummary::default();
+    let mut totals = DynamicsTotals::default();
     let mut reports = Vec::new();
     let mut lines = Vec::new();
     let mut failure = None;
@@ -229,13 +229,13 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         "wall_ms_per_simulated_s": (simulated > 0.0).then(|| 1e3 * wall / simulated),
         "prepare_s": prepare_s,
         "analyses": reports,
-        "steps": totals.integrator.steps,
-        "rejected_steps": totals.integrator.rejected_error_test,
+        "steps": totals.steps,
+        "rejected_steps": totals.rejected,
         "rejected_for_contact_onset": totals.rejected_for_contact_onset,
         "largest_entry_penetration": totals.largest_entry_penetration,
-        "newton_iterations": totals.integrator.newton_iterations,
-        "jacobian_evaluations": totals.integrator.jacobian_evaluations,
-        "lu_factorizations": totals.integrator.lu_factorizations,
+        "newton_iterations": totals.newton_iterations,
+        "jacobian_evaluations": totals.jacobian_evaluations,
+        "lu_factorizations": totals.lu_factorizations,
         "output_frames": sink.frames,
         "engine_work": {
             "queries": work.queries, "geometry_pairs": work.geometry_pairs,
@@ -331,7 +331,7 @@ fn run_step(
     step: &AnalysisStep,
     lowered: &mut LoweredModel,
     sink: &mut FrameSink,
-    totals: &mut RunSummary,
+    totals: &mut DynamicsTotals,
     quiet: bool,
 ) -> StepOutcome {
     let started = Instant::now();
@@ -363,7 +363,7 @@ fn run_step(
             let wall = started.elapsed().as_secs_f64();
             match result {
                 Ok(summary) => {
-                    add_dynamics(totals, &summary);
+                    totals.add(&summary);
                     let simulated = end - start;
                     (
                         Ok(format!(
@@ -456,19 +456,32 @@ fn run_step(
     StepOutcome { result, report }
 }
 
-/// Adds one dynamics run's counters to the run's totals.
-fn add_dynamics(totals: &mut RunSummary, summary: &RunSummary) {
-    let (t, s) = (&mut totals.integrator, &summary.integrator);
-    t.steps += s.steps;
-    t.rejected_error_test += s.rejected();
-    t.newton_iterations += s.newton_iterations;
-    t.jacobian_evaluations += s.jacobian_evaluations;
-    t.lu_factorizations += s.lu_factorizations;
-    totals.rejected_for_contact_onset += summary.rejected_for_contact_onset;
-    totals.largest_entry_penetration = totals
-        .largest_entry_penetration
-        .max(summary.largest_entry_penetration);
-    totals.frames += summary.frames;
+/// The counters of every dynamics analysis of a run, added up.
+#[derive(Debug, Clone, Copy, Default)]
+struct DynamicsTotals {
+    steps: u64,
+    rejected: u64,
+    rejected_for_contact_onset: u64,
+    largest_entry_penetration: f64,
+    newton_iterations: u64,
+    jacobian_evaluations: u64,
+    lu_factorizations: u64,
+}
+
+impl DynamicsTotals {
+    /// Adds one dynamics analysis.
+    fn add(&mut self, summary: &RunSummary) {
+        let s = &summary.integrator;
+        self.steps += s.steps;
+        self.rejected += s.rejected();
+        self.rejected_for_contact_onset += summary.rejected_for_contact_onset;
+        self.largest_entry_penetration = self
+            .largest_entry_penetration
+            .max(summary.largest_entry_penetration);
+        self.newton_iterations += s.newton_iterations;
+        self.jacobian_evaluations += s.jacobian_evaluations;
+        self.lu_factorizations += s.lu_factorizations;
+    }
 }
 
 fn overrides(args: &RunArgs) -> Result<Overrides, String> {

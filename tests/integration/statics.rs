@@ -404,3 +404,58 @@ fn initial_conditions_and_kinematics_run_from_the_command_file() {
     std::fs::remove_dir_all(&out).ok();
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The static Jacobian against central differences of the static residual over virtual
+/// displacements `[δr, δθ′]` per part and the multipliers, at a state with λ ≠ 0.
+fn check_static_jacobian(name: &str, text: &str) {
+    use contact::solver::statics::newton::{static_jacobian, static_residual, zero_velocities};
+    use nalgebra::{UnitQuaternion, Vector3};
+    let mut model = lowered(name, text);
+    let system = &mut model.system;
+    let mut y = system.compute_initial_state(0.0).unwrap().y;
+    zero_velocities(system, &mut y);
+    let layout = *system.layout();
+    let (n, m) = (layout.parts(), layout.constraint_rows());
+    let analytic = static_jacobian(system, 0.0, &y, 0.0).unwrap();
+    let displaced = |column: usize, h: f64| {
+        let mut z = y.clone();
+        if column >= 6 * n {
+            z[layout.lambda_offset() + column - 6 * n] += h;
+            return z;
+        }
+        let (k, c) = (column / 6, column % 6);
+        let qo = 7 * k;
+        if c < 3 {
+            z[qo + c] += h;
+        } else {
+            let e = z.fixed_rows::<4>(qo + 3).into_owned();
+            let rotation =
+                UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(e[0], e[1], e[2], e[3]))
+                    * UnitQuaternion::from_scaled_axis(Vector3::ith(c - 3, h));
+            z.fixed_rows_mut::<4>(qo + 3)
+                .copy_from(&nalgebra::Vector4::new(
+                    rotation.w, rotation.i, rotation.j, rotation.k,
+                ));
+        }
+        z
+    };
+    let scale = analytic.amax();
+    for column in 0..6 * n + m {
+        let h = 1e-6;
+        let plus = static_residual(system, 0.0, &displaced(column, h)).unwrap();
+        let minus = static_residual(system, 0.0, &displaced(column, -h)).unwrap();
+        let numeric = (plus - minus) / (2.0 * h);
+        let error = (numeric - analytic.column(column)).amax();
+        assert!(
+            error < 1e-5 * scale,
+            "{name}: column {column}: error {error:e} of {scale:e}"
+        );
+    }
+}
+
+#[test]
+fn the_static_jacobian_is_the_derivative_of_the_static_residual() {
+    check_static_jacobian("jacobian_pendulum.adm", SPRUNG_PENDULUM);
+    check_static_jacobian("jacobian_spring.adm", HANGING_BLOCK);
+    check_static_jacobian("jacobian_sphere.adm", &sphere_on_plane(0.0995));
+}
