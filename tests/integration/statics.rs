@@ -148,21 +148,30 @@ fn a_pendulum_on_a_rotational_spring_droops_to_the_moment_balance() {
         }
     }
     let phi = 0.5 * (lo + hi);
-    let mut model = lowered("statics_pendulum.adm", SPRUNG_PENDULUM);
-    let found = equilibrium(&mut model, &tight());
-    assert_eq!(found.method, StaticsMethod::Newton);
-    let frame = compute_frame(&model.system, &model.contacts, 0.0, &found.y).unwrap();
-    let bob = frame.parts[1].pose_w.translation.vector;
-    // The CM marker is 1 m out along the arm: x = cos φ, z = −sin φ.
-    assert!((bob.x - phi.cos()).abs() < 1e-9, "{bob:?} vs φ = {phi}");
-    assert!((bob.z + phi.sin()).abs() < 1e-9, "{bob:?} vs φ = {phi}");
-    assert!(bob.y.abs() < 1e-12);
-    // The joint carries the weight: the reaction on the bob is m·g up.
-    let reactions = model.system.constraint_reactions(&found.y).unwrap();
-    assert!(
-        (reactions[0].force_w.z - 9.81).abs() < 1e-8,
-        "{reactions:?}"
-    );
+    // Both methods: static Newton, and the damped dynamics of the constrained model.
+    for dynamic in [false, true] {
+        let mut model = lowered("statics_pendulum.adm", SPRUNG_PENDULUM);
+        let settings = StaticsSettings { dynamic, ..tight() };
+        let found = equilibrium(&mut model, &settings);
+        assert_eq!(
+            found.method == StaticsMethod::Newton,
+            !dynamic,
+            "{}",
+            found.method
+        );
+        let frame = compute_frame(&model.system, &model.contacts, 0.0, &found.y).unwrap();
+        let bob = frame.parts[1].pose_w.translation.vector;
+        // The CM marker is 1 m out along the arm: x = cos φ, z = −sin φ.
+        assert!((bob.x - phi.cos()).abs() < 1e-9, "{bob:?} vs φ = {phi}");
+        assert!((bob.z + phi.sin()).abs() < 1e-9, "{bob:?} vs φ = {phi}");
+        assert!(bob.y.abs() < 1e-12);
+        // The joint carries the weight: the reaction on the bob is m·g up.
+        let reactions = model.system.constraint_reactions(&found.y).unwrap();
+        assert!(
+            (reactions[0].force_w.z - 9.81).abs() < 1e-8,
+            "{reactions:?}"
+        );
+    }
 }
 
 /// A 2 kg block on a vertical TRANSLATIONAL joint hanging from a spring of stiffness 400 N/m
