@@ -18,7 +18,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Run a model's dynamics (Adams dataset and command file) and write its results.
+    /// Run a model's analyses (Adams dataset and command file: SIMULATE/DYNAMICS, STATICS,
+    /// KINEMATICS, INITIAL_CONDITIONS in order) and write its results.
     Run(cli::run::RunArgs),
     /// Read an Adams dataset (and command file), check it, and report every problem.
     Check(cli::check::CheckArgs),

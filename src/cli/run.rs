@@ -1,15 +1,20 @@
-//! `contact run MODEL.adm [MODEL.acf]`: reads, checks and lowers a dataset, runs its dynamics,
-//! streams results into `--out`, and prints a summary with the engine that ran.
+//! `contact run MODEL.adm [MODEL.acf]`: reads, checks and lowers a dataset, runs the command
+//! file's analyses in order (dynamics, kinematics, statics, initial conditions: see
+//! [`crate::run::plan`]), streams every frame into `--out`, and prints a summary line per
+//! analysis with the engine that ran.
 
 use crate::dataset::{self, Severity};
 use crate::engine_choice::{self, Overrides};
-use crate::model::{Analysis as ModelAnalysis, Command, Model, OutputSteps, SimulationSpan};
 use crate::run::lower::{LoweredModel, lower};
 use crate::run::output::ResultWriter;
+use crate::run::plan::{AnalysisStep, PlanOverrides, plan_analyses};
 use crate::run::progress::RunProgress;
-use crate::solver::bdf::{Corrector, IntegratorSettings};
 use crate::solver::contact_force::Analysis;
-use crate::solver::simulate::{DynamicsSettings, RunSummary, simulate_with_progress};
+use crate::solver::frame::compute_frame;
+use crate::solver::kinematics::{KinematicsSettings, run_kinematics};
+use crate::solver::mbs::PartState;
+use crate::solver::simulate::{DynamicsSettings, Frame, RunSummary, simulate_with_progress};
+use crate::solver::statics::solve_statics;
 use contact_core::{FacetingTolerance, GeometryInstance, GeometryLibrary, WorkCounters};
 use serde_json::json;
 use std::io::Write;
@@ -92,7 +97,12 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         }
     };
     writeln!(out, "{selection}")?;
-    let (settings, notes) = match dynamics_settings(model, args) {
+    let plan = PlanOverrides {
+        end: args.end,
+        dtout: args.dtout,
+        steps: args.steps,
+    };
+    let (steps, notes) = match plan_analyses(model, plan) {
         Ok(s) => s,
         Err(message) => {
             writeln!(err, "error: {message}")?;
@@ -102,8 +112,18 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     for note in notes {
         writeln!(err, "note: {note}")?;
     }
+    let threads = args
+        .threads
+        .or(model.preferences.threads.map(|n| n.get()))
+        .unwrap_or(1);
+    let parallelism = match crate::solver::parallel::Parallelism::with_threads(threads) {
+        Ok(p) => p,
+        Err(e) => {
+            writeln!(err, "error: --threads {threads}: {e}")?;
+            return Ok(1);
+        }
+    };
     let engine = engine_choice::build_engine(selection.library, selection.faceting_tolerance);
-    let prepare_started = Instant::now();
     let meshes = |file: &crate::model::MeshFile| -> Result<GeometryInstance, String> {
         let stl = engine_facet::stl::read_stl(&file.path, false).map_err(|e| e.to_string())?;
         let mut instance =
@@ -114,30 +134,25 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         instance.faceting_tolerance = file.faceting_tolerance;
         Ok(instance)
     };
-    let LoweredModel {
-        mut system,
-        contacts,
-        parts,
-        ..
-    } = match lower(model, engine.as_ref(), Analysis::Dynamics, &meshes) {
-        Ok(l) => l,
+    // Friction that acts in dynamics only needs the model lowered for the analysis at hand;
+    // the state passes from one lowering to the next through the parts' states.
+    let mut prepare_s = 0.0;
+    let mut lower_for = |analysis: Analysis| -> Result<LoweredModel, String> {
+        let started = Instant::now();
+        let mut lowered =
+            lower(model, engine.as_ref(), analysis, &meshes).map_err(|e| e.to_string())?;
+        lowered.system.set_parallelism(parallelism.clone());
+        prepare_s += started.elapsed().as_secs_f64();
+        Ok(lowered)
+    };
+    let first_analysis = solver_analysis(&steps[0]);
+    let mut current = match lower_for(first_analysis) {
+        Ok(l) => (first_analysis, l),
         Err(e) => {
             writeln!(err, "{e}")?;
             return Ok(1);
         }
     };
-    let prepare_s = prepare_started.elapsed().as_secs_f64();
-    let threads = args
-        .threads
-        .or(model.preferences.threads.map(|n| n.get()))
-        .unwrap_or(1);
-    match crate::solver::parallel::Parallelism::with_threads(threads) {
-        Ok(p) => system.set_parallelism(p),
-        Err(e) => {
-            writeln!(err, "error: --threads {threads}: {e}")?;
-            return Ok(1);
-        }
-    }
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out").join(
             args.model
@@ -150,31 +165,56 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         .iter()
         .map(|c| format!("CONTACT/{}", c.id))
         .collect();
-    let mut writer = ResultWriter::create(&dir, parts, names)?;
+    let mut sink = FrameSink {
+        writer: ResultWriter::create(&dir, current.1.parts.clone(), names)?,
+        last_t: None,
+        carried: None,
+        write_error: None,
+        frames: 0,
+    };
     let started = Instant::now();
-    let mut write_error = None;
-    let mut progress = RunProgress::for_stderr(args.quiet);
-    let result = simulate_with_progress(
-        &mut system,
-        &contacts,
-        &settings,
-        &mut |frame| {
-            writer
-                .write(frame)
-                .inspect_err(|e| write_error = Some(e.to_string()))
-        },
-        &mut |p| progress.update(p),
-    );
-    let wall = started.elapsed().as_secs_f64();
-    progress.finish();
     let mut work = WorkCounters::default();
-    for c in &contacts {
+    let mut totals = DynamicsTotals::default();
+    let mut reports = Vec::new();
+    let mut lines = Vec::new();
+    let mut failure = None;
+    for step in &steps {
+        let analysis = solver_analysis(step);
+        if analysis != current.0 {
+            for c in &current.1.contacts {
+                work += c.work();
+            }
+            match lower_for(analysis) {
+                Ok(l) => current = (analysis, l),
+                Err(e) => {
+                    failure = Some(e);
+                    break;
+                }
+            }
+        }
+        let lowered = &mut current.1;
+        if let Some(parts) = &sink.carried {
+            lowered.system.start_from(parts);
+        }
+        let outcome = run_step(step, lowered, &mut sink, &mut totals, args.quiet);
+        reports.push(outcome.report);
+        match outcome.result {
+            Ok(line) => lines.push(line),
+            Err(e) => {
+                failure = Some(format!("SIMULATE/{}: {e}", step.name()));
+                break;
+            }
+        }
+    }
+    for c in &current.1.contacts {
         work += c.work();
     }
-    let simulated = settings.end - settings.start;
-    let (status, summary) = match &result {
-        Ok(summary) => ("completed".to_string(), *summary),
-        Err(e) => (format!("failed: {e}"), RunSummary::default()),
+    let wall = started.elapsed().as_secs_f64();
+    let (start, end) = span_of(&steps);
+    let simulated = end - start;
+    let status = match &failure {
+        None => "completed".to_string(),
+        Some(e) => format!("failed: {e}"),
     };
     let report = json!({
         "model": args.model.display().to_string(),
@@ -183,59 +223,264 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         "threads": threads,
         "faceting_tolerance": (selection.library == GeometryLibrary::Faceted).then_some(selection.faceting_tolerance.value()),
         "status": status,
-        "start": settings.start,
-        "end": settings.end,
+        "start": start,
+        "end": end,
         "wall_time_s": wall,
-        "wall_ms_per_simulated_s": 1e3 * wall / simulated,
+        "wall_ms_per_simulated_s": (simulated > 0.0).then(|| 1e3 * wall / simulated),
         "prepare_s": prepare_s,
-        "steps": summary.integrator.steps,
-        "rejected_steps": summary.integrator.rejected(),
-        "rejected_for_contact_onset": summary.rejected_for_contact_onset,
-        "largest_entry_penetration": summary.largest_entry_penetration,
-        "newton_iterations": summary.integrator.newton_iterations,
-        "jacobian_evaluations": summary.integrator.jacobian_evaluations,
-        "lu_factorizations": summary.integrator.lu_factorizations,
-        "output_frames": summary.frames,
+        "analyses": reports,
+        "steps": totals.steps,
+        "rejected_steps": totals.rejected,
+        "rejected_for_contact_onset": totals.rejected_for_contact_onset,
+        "largest_entry_penetration": totals.largest_entry_penetration,
+        "newton_iterations": totals.newton_iterations,
+        "jacobian_evaluations": totals.jacobian_evaluations,
+        "lu_factorizations": totals.lu_factorizations,
+        "output_frames": sink.frames,
         "engine_work": {
             "queries": work.queries, "geometry_pairs": work.geometry_pairs,
             "bounding_volume_tests": work.bounding_volume_tests, "primitive_tests": work.primitive_tests,
             "iterations": work.iterations, "contacts": work.contacts,
         },
     });
-    let files = writer.finish(&report)?;
-    match result {
-        Ok(summary) => {
-            writeln!(
-                out,
-                "ran {simulated} s of dynamics in {:.1} ms wall ({:.2} ms per simulated s): {} steps, {} rejected ({} at contact onsets), {} Jacobians; largest entry penetration {:e}",
-                1e3 * wall,
-                1e3 * wall / simulated,
-                summary.integrator.steps,
-                summary.integrator.rejected(),
-                summary.rejected_for_contact_onset,
-                summary.integrator.jacobian_evaluations,
-                summary.largest_entry_penetration
-            )?;
+    let files = sink.writer.finish(&report)?;
+    for line in &lines {
+        writeln!(out, "{line}")?;
+    }
+    match failure {
+        None => {
             writeln!(
                 out,
                 "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg)",
-                writer.dir().display()
+                sink.writer.dir().display()
             )?;
             Ok(0)
         }
-        Err(e) => {
+        Some(e) => {
             writeln!(err, "error: the run stopped: {e}")?;
-            if let Some(w) = write_error {
+            if let Some(w) = sink.write_error {
                 writeln!(err, "error: writing results: {w}")?;
             }
             writeln!(
                 err,
                 "results up to the failure are in {} ({} files)",
-                writer.dir().display(),
+                sink.writer.dir().display(),
                 files.len() + 3
             )?;
             Ok(1)
         }
+    }
+}
+
+/// The contact analysis mode a step's model is lowered for.
+fn solver_analysis(step: &AnalysisStep) -> Analysis {
+    match step {
+        AnalysisStep::Dynamics { .. } => Analysis::Dynamics,
+        _ => Analysis::Quasistatic,
+    }
+}
+
+/// The first and last time of the run.
+fn span_of(steps: &[AnalysisStep]) -> (f64, f64) {
+    let times = |step: &AnalysisStep| match *step {
+        AnalysisStep::Dynamics { start, end, .. } | AnalysisStep::Kinematics { start, end, .. } => {
+            (start, end)
+        }
+        AnalysisStep::Statics { t, .. } | AnalysisStep::InitialConditions { t } => (t, t),
+    };
+    let start = steps.first().map_or(0.0, |s| times(s).0);
+    let end = steps.iter().map(|s| times(s).1).fold(start, f64::max);
+    (start, end)
+}
+
+/// Frames into the result files: a frame at the time of the last one written (the start of an
+/// analysis that follows another) is not written twice; the last frame's part states start the
+/// next analysis.
+struct FrameSink {
+    writer: ResultWriter,
+    last_t: Option<f64>,
+    carried: Option<Vec<PartState>>,
+    write_error: Option<String>,
+    frames: u64,
+}
+
+impl FrameSink {
+    fn write(&mut self, frame: &Frame) -> std::io::Result<()> {
+        self.carried = Some(frame.parts.clone());
+        if self.last_t == Some(frame.t) {
+            return Ok(());
+        }
+        self.last_t = Some(frame.t);
+        self.frames += 1;
+        let written = self.writer.write(frame);
+        if let Err(e) = &written {
+            self.write_error = Some(e.to_string());
+        }
+        written
+    }
+}
+
+/// What one analysis did: its summary line or its failure, and its part of `summary.json`.
+struct StepOutcome {
+    result: Result<String, String>,
+    report: serde_json::Value,
+}
+
+/// Runs one analysis on `lowered`, writing its frames into `sink`.
+fn run_step(
+    step: &AnalysisStep,
+    lowered: &mut LoweredModel,
+    sink: &mut FrameSink,
+    totals: &mut DynamicsTotals,
+    quiet: bool,
+) -> StepOutcome {
+    let started = Instant::now();
+    let LoweredModel {
+        system, contacts, ..
+    } = lowered;
+    let (result, mut report) = match *step {
+        AnalysisStep::Dynamics {
+            start,
+            end,
+            output_step,
+            integrator,
+        } => {
+            let settings = DynamicsSettings {
+                start,
+                end,
+                output_step,
+                integrator,
+            };
+            let mut progress = RunProgress::for_stderr(quiet);
+            let result = simulate_with_progress(
+                system,
+                contacts,
+                &settings,
+                &mut |frame| sink.write(frame),
+                &mut |p| progress.update(p),
+            );
+            progress.finish();
+            let wall = started.elapsed().as_secs_f64();
+            match result {
+                Ok(summary) => {
+                    totals.add(&summary);
+                    let simulated = end - start;
+                    (
+                        Ok(format!(
+                            "ran {simulated} s of dynamics in {:.1} ms wall ({:.2} ms per simulated s): {} steps, {} rejected ({} at contact onsets), {} Jacobians; largest entry penetration {:e}",
+                            1e3 * wall,
+                            1e3 * wall / simulated,
+                            summary.integrator.steps,
+                            summary.integrator.rejected(),
+                            summary.rejected_for_contact_onset,
+                            summary.integrator.jacobian_evaluations,
+                            summary.largest_entry_penetration
+                        )),
+                        json!({"start": start, "end": end, "steps": summary.integrator.steps,
+                               "rejected_steps": summary.integrator.rejected(),
+                               "newton_iterations": summary.integrator.newton_iterations}),
+                    )
+                }
+                Err(e) => (Err(e.to_string()), json!({"start": start, "end": end})),
+            }
+        }
+        AnalysisStep::Kinematics {
+            start,
+            end,
+            output_step,
+        } => {
+            let settings = KinematicsSettings {
+                start,
+                end,
+                output_step,
+            };
+            let result = run_kinematics(system, contacts, &settings, &mut |frame, _| {
+                sink.write(frame)
+            });
+            match result {
+                Ok(summary) => (
+                    Ok(format!(
+                        "ran kinematics from t = {start} to {end} in {:.1} ms wall: {} frames, {} Newton iterations on the positions",
+                        1e3 * started.elapsed().as_secs_f64(),
+                        summary.frames,
+                        summary.iterations
+                    )),
+                    json!({"start": start, "end": end, "newton_iterations": summary.iterations}),
+                ),
+                Err(e) => (Err(e.to_string()), json!({"start": start, "end": end})),
+            }
+        }
+        AnalysisStep::Statics { t, settings } => {
+            let y = system.given_state().clone();
+            match solve_statics(system, t, &y, &settings) {
+                Ok(found) => {
+                    let written = compute_frame(system, contacts, t, &found.y)
+                        .map_err(|e| e.to_string())
+                        .and_then(|frame| sink.write(&frame).map_err(|e| e.to_string()));
+                    let report = json!({"t": t, "method": found.method.to_string(),
+                        "newton_iterations": found.iterations, "imbalance": found.imbalance});
+                    let line = format!(
+                        "static equilibrium at t = {t} by {} in {:.1} ms wall: {} Newton iterations, final imbalance {:e}",
+                        found.method,
+                        1e3 * started.elapsed().as_secs_f64(),
+                        found.iterations,
+                        found.imbalance
+                    );
+                    (written.map(|()| line), report)
+                }
+                Err(e) => (Err(e.to_string()), json!({"t": t})),
+            }
+        }
+        AnalysisStep::InitialConditions { t } => {
+            let written = system
+                .compute_initial_state(t)
+                .map_err(|e| e.to_string())
+                .and_then(|initial| {
+                    compute_frame(system, contacts, t, &initial.y).map_err(|e| e.to_string())
+                })
+                .and_then(|frame| sink.write(&frame).map_err(|e| e.to_string()));
+            (
+                written.map(|()| format!("initial conditions at t = {t} written")),
+                json!({"t": t}),
+            )
+        }
+    };
+    if let Some(fields) = report.as_object_mut() {
+        fields.insert("analysis".into(), json!(step.name()));
+        let status = match &result {
+            Ok(_) => "completed".to_string(),
+            Err(e) => format!("failed: {e}"),
+        };
+        fields.insert("status".into(), json!(status));
+    }
+    StepOutcome { result, report }
+}
+
+/// The counters of every dynamics analysis of a run, added up.
+#[derive(Debug, Clone, Copy, Default)]
+struct DynamicsTotals {
+    steps: u64,
+    rejected: u64,
+    rejected_for_contact_onset: u64,
+    largest_entry_penetration: f64,
+    newton_iterations: u64,
+    jacobian_evaluations: u64,
+    lu_factorizations: u64,
+}
+
+impl DynamicsTotals {
+    /// Adds one dynamics analysis.
+    fn add(&mut self, summary: &RunSummary) {
+        let s = &summary.integrator;
+        self.steps += s.steps;
+        self.rejected += s.rejected();
+        self.rejected_for_contact_onset += summary.rejected_for_contact_onset;
+        self.largest_entry_penetration = self
+            .largest_entry_penetration
+            .max(summary.largest_entry_penetration);
+        self.newton_iterations += s.newton_iterations;
+        self.jacobian_evaluations += s.jacobian_evaluations;
+        self.lu_factorizations += s.lu_factorizations;
     }
 }
 
@@ -255,101 +500,4 @@ fn overrides(args: &RunArgs) -> Result<Overrides, String> {
         library,
         faceting_tolerance,
     })
-}
-
-/// The dynamics span and integrator settings from the command file's SIMULATE commands (or
-/// the flags), with notes on anything interpreted.
-fn dynamics_settings(
-    model: &Model,
-    args: &RunArgs,
-) -> Result<(DynamicsSettings, Vec<String>), String> {
-    let mut notes = Vec::new();
-    let mut integrator = convert(&model.integrator)?;
-    let mut end = None;
-    let mut output = None;
-    let mut time = 0.0;
-    for (origin, command) in &model.commands {
-        match command {
-            Command::Integrator(s) => integrator = convert(s)?,
-            Command::Simulate {
-                analysis,
-                span,
-                output: steps,
-            } => {
-                match analysis {
-                    ModelAnalysis::Dynamics | ModelAnalysis::Transient => {}
-                    other => {
-                        return Err(format!(
-                            "{origin}: SIMULATE/{other:?} is not supported yet: only dynamics runs"
-                        ));
-                    }
-                }
-                let stop = match span {
-                    Some(SimulationSpan::End(t)) => *t,
-                    Some(SimulationSpan::Duration(d)) => time + d,
-                    None => return Err(format!("{origin}: SIMULATE needs END or DURATION")),
-                };
-                if end.is_some() {
-                    notes.push(format!(
-                        "{origin}: consecutive SIMULATE commands run as one span to END = {stop}"
-                    ));
-                }
-                time = stop;
-                end = Some(stop);
-                output = output.or(*steps);
-            }
-            Command::Stop => break,
-            other => notes.push(format!(
-                "{origin}: {other:?} is not applied by this solver yet: it is ignored"
-            )),
-        }
-    }
-    let end = args
-        .end
-        .or(end)
-        .ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
-    let output_step = match (args.dtout, args.steps, output) {
-        (Some(dt), _, _) => dt,
-        (None, Some(n), _) => end / f64::from(n.max(1)),
-        (None, None, Some(OutputSteps::Interval(dt))) => dt,
-        (None, None, Some(OutputSteps::Steps(n))) => end / f64::from(n.max(1)),
-        (None, None, None) => {
-            notes.push("no DTOUT or STEPS: writing 100 output steps".into());
-            end / 100.0
-        }
-    };
-    Ok((
-        DynamicsSettings {
-            start: 0.0,
-            end,
-            output_step,
-            integrator,
-        },
-        notes,
-    ))
-}
-
-fn convert(s: &crate::model::IntegratorSettings) -> Result<IntegratorSettings, String> {
-    let corrector = match s.corrector.as_deref() {
-        None | Some("MODIFIED") => Corrector::Modified,
-        Some("ORIGINAL") | Some("FULL") => Corrector::Full,
-        Some(other) => {
-            return Err(format!(
-                "INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)"
-            ));
-        }
-    };
-    let settings = IntegratorSettings {
-        error: s.error,
-        hmax: s.hmax,
-        hmin: s.hmin,
-        hinit: s.hinit,
-        kmax: s.kmax as usize,
-        maxit: s.maxit as usize,
-        corrector,
-    };
-    settings
-        .validate()
-        .map_err(|e| format!("INTEGRATOR: {e}"))?;
-    Ok(settings)
 }

@@ -5,5 +5,6 @@ pub mod frames;
 pub mod lower;
 pub mod measures;
 pub mod output;
+pub mod plan;
 pub mod progress;
 pub mod sforce;

@@ -9,16 +9,23 @@
 //! - [`contact_force`] — a CONTACT as a force element: engine kinematics and force laws.
 //! - [`contact_multipliers`] — AUGMENTED_LAGRANGIAN_FORMULATION's multipliers and update.
 //! - [`contact_plane`] — the check that keeps both parts of a 2-D contact in one plane.
+//! - [`frame`] — output frames from a state; a state handed to the next analysis.
+//! - [`kinematics`] — kinematic analysis of a model with zero degrees of freedom.
 //! - [`parallel`] — force elements evaluated on several threads with serial-identical bits.
 //! - [`simulate`] — transient dynamics with contact prediction and output frames.
+//! - [`statics`] — static equilibrium: Newton on the static residual, and the quasi-dynamic
+//!   method.
 
 pub mod bdf;
 pub mod contact_force;
 pub mod contact_multipliers;
 pub mod contact_plane;
 pub mod dae;
+pub mod frame;
+pub mod kinematics;
 pub mod mbs;
 pub mod parallel;
 pub mod simulate;
+pub mod statics;
 
 pub use dae::{DaeSystem, EvaluationError, VariableKind};

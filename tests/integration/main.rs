@@ -10,10 +10,12 @@ mod extremes;
 mod faceted_ball;
 mod fuzz_seeds;
 mod geneva;
+mod kinematics;
 mod malformed;
 mod out_of_plane;
 mod scenes_cli;
 mod select;
+mod statics;
 mod trade_schema;
 mod tradeoff;
 

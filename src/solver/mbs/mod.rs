@@ -82,7 +82,7 @@ mod jacobian_constraints;
 mod layout;
 mod motion;
 mod part;
-mod quaternion;
+pub(crate) mod quaternion;
 mod residual;
 mod springs;
 mod system;

@@ -1,0 +1,260 @@
+//! The analyses a run performs, in order, from the command file's SIMULATE commands (or the
+//! `contact run` flags), with the INTEGRATOR and EQUILIBRIUM settings in force at each.
+//!
+//! - SIMULATE/DYNAMICS (and TRANSIENT, run as dynamics) and SIMULATE/KINEMATICS run from the
+//!   current time to END (or for DURATION); consecutive SIMULATEs of the same analysis run as
+//!   one span (a note says so).
+//! - SIMULATE/STATICS finds the equilibrium at the current time; a following analysis starts
+//!   from it (Adams: dynamics after statics starts from equilibrium, at rest).
+//! - SIMULATE/INITIAL_CONDITIONS writes the assembled initial state at the current time.
+//! - Without SIMULATE commands: dynamics from 0 to `--end`.
+
+use crate::model::{
+    Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
+};
+use crate::solver::bdf::{Corrector, IntegratorSettings};
+use crate::solver::statics::StaticsSettings;
+
+/// One analysis of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnalysisStep {
+    /// Transient dynamics.
+    Dynamics {
+        /// Start time.
+        start: f64,
+        /// End time.
+        end: f64,
+        /// Time between frames.
+        output_step: f64,
+        /// The integrator's settings.
+        integrator: IntegratorSettings,
+    },
+    /// Kinematics of a zero-DOF model.
+    Kinematics {
+        /// Start time.
+        start: f64,
+        /// End time.
+        end: f64,
+        /// Time between frames.
+        output_step: f64,
+    },
+    /// Static equilibrium at time `t`.
+    Statics {
+        /// Time.
+        t: f64,
+        /// EQUILIBRIUM (with the integrator for the quasi-dynamic method).
+        settings: StaticsSettings,
+    },
+    /// The assembled initial conditions at time `t`.
+    InitialConditions {
+        /// Time.
+        t: f64,
+    },
+}
+
+impl AnalysisStep {
+    /// The analysis's name as in SIMULATE.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Dynamics { .. } => "DYNAMICS",
+            Self::Kinematics { .. } => "KINEMATICS",
+            Self::Statics { .. } => "STATICS",
+            Self::InitialConditions { .. } => "INITIAL_CONDITIONS",
+        }
+    }
+}
+
+/// The flags of `contact run` that override the command file.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PlanOverrides {
+    /// `--end`: the end of the last timed analysis (or of the dynamics without a command file).
+    pub end: Option<f64>,
+    /// `--dtout`.
+    pub dtout: Option<f64>,
+    /// `--steps`.
+    pub steps: Option<u32>,
+}
+
+/// A timed span being collected from consecutive SIMULATEs.
+struct Span {
+    analysis: ModelAnalysis,
+    start: f64,
+    end: f64,
+    output: Option<OutputSteps>,
+    integrator: IntegratorSettings,
+}
+
+/// The analyses of `model`'s command file, in order, with notes on anything interpreted.
+pub fn plan_analyses(
+    model: &Model,
+    overrides: PlanOverrides,
+) -> Result<(Vec<AnalysisStep>, Vec<String>), String> {
+    let mut notes = Vec::new();
+    let mut integrator = convert_integrator(&model.integrator)?;
+    let mut equilibrium = model.equilibrium.clone();
+    let mut steps = Vec::new();
+    let mut span: Option<Span> = None;
+    let mut time = 0.0;
+    for (origin, command) in &model.commands {
+        match command {
+            Command::Integrator(s) => integrator = convert_integrator(s)?,
+            Command::Equilibrium(s) => equilibrium = s.clone(),
+            Command::Simulate {
+                analysis,
+                span: when,
+                output,
+            } => {
+                let timed = match analysis {
+                    ModelAnalysis::Dynamics | ModelAnalysis::Transient => {
+                        Some(ModelAnalysis::Dynamics)
+                    }
+                    ModelAnalysis::Kinematics => Some(ModelAnalysis::Kinematics),
+                    ModelAnalysis::Statics | ModelAnalysis::InitialConditions => None,
+                };
+                let Some(timed) = timed else {
+                    if let Some(done) = span.take() {
+                        steps.push(finish(done, overrides, &mut notes, false));
+                    }
+                    steps.push(if *analysis == ModelAnalysis::Statics {
+                        AnalysisStep::Statics {
+                            t: time,
+                            settings: convert_equilibrium(&equilibrium, integrator),
+                        }
+                    } else {
+                        AnalysisStep::InitialConditions { t: time }
+                    });
+                    continue;
+                };
+                let stop = match when {
+                    Some(SimulationSpan::End(t)) => *t,
+                    Some(SimulationSpan::Duration(d)) => time + d,
+                    None => return Err(format!("{origin}: SIMULATE needs END or DURATION")),
+                };
+                match &mut span {
+                    Some(current) if current.analysis == timed => {
+                        notes.push(format!(
+                            "{origin}: consecutive SIMULATE commands run as one span to END = {stop}"
+                        ));
+                        current.end = stop;
+                        current.output = current.output.or(*output);
+                    }
+                    _ => {
+                        if let Some(done) = span.take() {
+                            steps.push(finish(done, overrides, &mut notes, false));
+                        }
+                        span = Some(Span {
+                            analysis: timed,
+                            start: time,
+                            end: stop,
+                            output: *output,
+                            integrator,
+                        });
+                    }
+                }
+                time = stop;
+            }
+            Command::Stop => break,
+            other => notes.push(format!(
+                "{origin}: {other:?} is not applied by this solver yet: it is ignored"
+            )),
+        }
+    }
+    match span.take() {
+        Some(done) => steps.push(finish(done, overrides, &mut notes, true)),
+        None if steps.is_empty() => {
+            let end = overrides
+                .end
+                .ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
+            let done = Span {
+                analysis: ModelAnalysis::Dynamics,
+                start: 0.0,
+                end,
+                output: None,
+                integrator,
+            };
+            steps.push(finish(done, overrides, &mut notes, true));
+        }
+        None => {}
+    }
+    Ok((steps, notes))
+}
+
+/// The step of a finished span; `last` when `--end` may override its END.
+fn finish(
+    span: Span,
+    overrides: PlanOverrides,
+    notes: &mut Vec<String>,
+    last: bool,
+) -> AnalysisStep {
+    let end = if last {
+        overrides.end.unwrap_or(span.end)
+    } else {
+        span.end
+    };
+    let duration = end - span.start;
+    let output_step = match (overrides.dtout, overrides.steps, span.output) {
+        (Some(dt), _, _) => dt,
+        (None, Some(n), _) => duration / f64::from(n.max(1)),
+        (None, None, Some(OutputSteps::Interval(dt))) => dt,
+        (None, None, Some(OutputSteps::Steps(n))) => duration / f64::from(n.max(1)),
+        (None, None, None) => {
+            notes.push("no DTOUT or STEPS: writing 100 output steps".into());
+            duration / 100.0
+        }
+    };
+    match span.analysis {
+        ModelAnalysis::Kinematics => AnalysisStep::Kinematics {
+            start: span.start,
+            end,
+            output_step,
+        },
+        _ => AnalysisStep::Dynamics {
+            start: span.start,
+            end,
+            output_step,
+            integrator: span.integrator,
+        },
+    }
+}
+
+/// The solver's EQUILIBRIUM settings.
+fn convert_equilibrium(s: &EquilibriumSettings, integrator: IntegratorSettings) -> StaticsSettings {
+    StaticsSettings {
+        tlimit: s.tlimit,
+        alimit: s.alimit,
+        maxit: s.maxit as usize,
+        error: s.error,
+        imbalance: s.imbalance,
+        stability: s.stability,
+        dynamic: s.dynamic,
+        integrator,
+    }
+}
+
+/// The solver's INTEGRATOR settings.
+pub fn convert_integrator(
+    s: &crate::model::IntegratorSettings,
+) -> Result<IntegratorSettings, String> {
+    let corrector = match s.corrector.as_deref() {
+        None | Some("MODIFIED") => Corrector::Modified,
+        Some("ORIGINAL") | Some("FULL") => Corrector::Full,
+        Some(other) => {
+            return Err(format!(
+                "INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)"
+            ));
+        }
+    };
+    let settings = IntegratorSettings {
+        error: s.error,
+        hmax: s.hmax,
+        hmin: s.hmin,
+        hinit: s.hinit,
+        kmax: s.kmax as usize,
+        maxit: s.maxit as usize,
+        corrector,
+    };
+    settings
+        .validate()
+        .map_err(|e| format!("INTEGRATOR: {e}"))?;
+    Ok(settings)
+}
