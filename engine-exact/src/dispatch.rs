@@ -10,6 +10,7 @@
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
 //! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
+//! | sphere–plane (bounded) | the sphere–box closed form on the prism cut to a box about the sphere, [`crate::pairs::bounded_plane`] | plane |
 //! | sphere–mesh (closed) | closed form (signed distance, winding number), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
@@ -26,7 +27,7 @@
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs (solid–solid), the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
-//! solids on a *bounded* plane and circles on a bounded line are not built
+//! solids other than spheres on a *bounded* plane and circles on a bounded line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -51,7 +52,7 @@ pub(crate) struct Selected {
 
 /// The reasons given for pairs not built yet, shared so messages stay consistent.
 const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
-const NOT_BUILT_BOUNDED: &str = "a curved solid against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
+const NOT_BUILT_BOUNDED: &str = "a curved solid other than a sphere against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
@@ -418,10 +419,19 @@ fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<
 }
 
 fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {
-    if flip_e || !p.is_unbounded() {
+    if flip_e {
         return None;
     }
     let side = if flip_p { -1.0 } else { 1.0 };
+    if !p.is_unbounded() {
+        return e.sphere_radius().map(|radius| {
+            canonical(Kernel::SphereBoundedPlane {
+                radius,
+                plane: *p,
+                side,
+            })
+        });
+    }
     Some(canonical(match e.sphere_radius() {
         Some(radius) => Kernel::SpherePlane { radius, side },
         None => Kernel::EllipsoidPlane {

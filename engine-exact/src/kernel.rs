@@ -53,6 +53,12 @@ pub(crate) enum PairError {
 pub(crate) enum Kernel {
     /// Sphere `a` against an unbounded plane `b`.
     SpherePlane { radius: f64, side: f64 },
+    /// Sphere `a` against a bounded plane `b` (seen as a box near the sphere).
+    SphereBoundedPlane {
+        radius: f64,
+        plane: Plane,
+        side: f64,
+    },
     /// Sphere `a` against a box, cylinder, frustum or torus `b`.
     SphereSolid {
         radius: f64,
@@ -152,6 +158,19 @@ impl Kernel {
             Self::MeshPlane { .. } => None,
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+            }
+            Self::SphereBoundedPlane {
+                radius,
+                ref plane,
+                side,
+            } => {
+                let centre = contact_core::Point3::from(pose_a.translation.vector);
+                pairs::bounded_plane::local_box(plane, side, pose_b, &centre, radius).and_then(
+                    |(cuboid, pose_box)| {
+                        let solid = pairs::sphere_solid::Solid::Box(cuboid);
+                        pairs::sphere_solid::contact(radius, pose_a, &solid, &pose_box)
+                    },
+                )
             }
             Self::SphereSolid { radius, ref solid } => {
                 pairs::sphere_solid::contact(radius, pose_a, solid, pose_b)

@@ -10,6 +10,7 @@
 //! line leaves each body; see [`crate::ray_exit`]); the curved solid–solid pairs share that
 //! last step in [`volume_contact`].
 
+pub mod bounded_plane;
 pub mod box_box;
 pub mod box_plane;
 pub mod clipped;

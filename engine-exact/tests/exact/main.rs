@@ -11,6 +11,7 @@
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
 
+mod bounded_plane;
 mod characterization;
 mod common;
 mod degenerate;
