@@ -168,6 +168,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     let mut sink = FrameSink {
         writer: ResultWriter::create(&dir, current.1.parts.clone(), names)?,
         last_t: None,
+        skip_repeat: false,
         carried: None,
         write_error: None,
         frames: 0,
@@ -193,6 +194,10 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
             }
         }
         let lowered = &mut current.1;
+        sink.skip_repeat = matches!(
+            step,
+            AnalysisStep::Dynamics { .. } | AnalysisStep::Kinematics { .. }
+        );
         if let Some(parts) = &sink.carried {
             lowered.system.start_from(parts);
         }
@@ -293,12 +298,14 @@ fn span_of(steps: &[AnalysisStep]) -> (f64, f64) {
     (start, end)
 }
 
-/// Frames into the result files: a frame at the time of the last one written (the start of an
-/// analysis that follows another) is not written twice; the last frame's part states start the
-/// next analysis.
+/// Frames into the result files. A timed analysis (dynamics, kinematics) that starts where the
+/// previous one wrote its last frame does not write its first frame again; an equilibrium or
+/// initial-conditions frame is always written. The last frame's part states start the next
+/// analysis.
 struct FrameSink {
     writer: ResultWriter,
     last_t: Option<f64>,
+    skip_repeat: bool,
     carried: Option<Vec<PartState>>,
     write_error: Option<String>,
     frames: u64,
@@ -307,7 +314,7 @@ struct FrameSink {
 impl FrameSink {
     fn write(&mut self, frame: &Frame) -> std::io::Result<()> {
         self.carried = Some(frame.parts.clone());
-        if self.last_t == Some(frame.t) {
+        if self.skip_repeat && self.last_t == Some(frame.t) {
             return Ok(());
         }
         self.last_t = Some(frame.t);

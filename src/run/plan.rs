@@ -174,7 +174,13 @@ pub fn plan_analyses(
             };
             steps.push(finish(done, overrides, &mut notes, true));
         }
-        None => {}
+        None => {
+            if overrides.end.is_some() {
+                notes.push(
+                    "--end is not used: the command file runs no DYNAMICS or KINEMATICS".into(),
+                );
+            }
+        }
     }
     Ok((steps, notes))
 }
@@ -257,4 +263,84 @@ pub fn convert_integrator(
         .validate()
         .map_err(|e| format!("INTEGRATOR: {e}"))?;
     Ok(settings)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dataset::read_str;
+    use std::path::Path;
+
+    fn plan(acf: &str, overrides: PlanOverrides) -> (Vec<AnalysisStep>, Vec<String>) {
+        let loaded = read_str(
+            "plan\nPART/1, GROUND\nEND\n",
+            "plan.adm",
+            Some((acf, Path::new("plan.acf"))),
+        );
+        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+        plan_analyses(&loaded.model, overrides).unwrap()
+    }
+
+    #[test]
+    fn simulate_commands_become_analyses_in_order_with_the_settings_in_force() {
+        let (steps, notes) = plan(
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
+             SIMULATE/DYNAMICS, DURATION = 1, DTOUT = 0.5\nEQUILIBRIUM/ MAXIT = 7, DYNAMIC\nSIMULATE/STATICS\n\
+             SIMULATE/KINEMATICS, DURATION = 0.5, STEPS = 5\nSIMULATE/INITIAL_CONDITIONS\nSTOP\n",
+            PlanOverrides::default(),
+        );
+        assert_eq!(steps.len(), 4, "{steps:?}");
+        let AnalysisStep::Dynamics {
+            start,
+            end,
+            output_step,
+            ..
+        } = steps[0]
+        else {
+            panic!("{:?}", steps[0]);
+        };
+        assert_eq!((start, end, output_step), (0.0, 2.0, 0.1));
+        let AnalysisStep::Statics { t, settings } = steps[1] else {
+            panic!("{:?}", steps[1]);
+        };
+        assert_eq!((t, settings.maxit, settings.dynamic), (2.0, 7, true));
+        assert_eq!(
+            steps[2],
+            AnalysisStep::Kinematics {
+                start: 2.0,
+                end: 2.5,
+                output_step: 0.1
+            }
+        );
+        assert_eq!(steps[3], AnalysisStep::InitialConditions { t: 2.5 });
+        assert!(
+            notes.iter().any(|n| n.contains("one span to END = 2")),
+            "{notes:?}"
+        );
+    }
+
+    #[test]
+    fn end_overrides_the_last_timed_analysis_and_is_noted_when_unused() {
+        let overrides = PlanOverrides {
+            end: Some(3.0),
+            ..PlanOverrides::default()
+        };
+        let (steps, _) = plan(
+            "plan.adm\nplan\nSIMULATE/STATICS\nSIMULATE/DYNAMICS, END = 1, STEPS = 10\nSTOP\n",
+            overrides,
+        );
+        let AnalysisStep::Dynamics {
+            end, output_step, ..
+        } = steps[1]
+        else {
+            panic!("{:?}", steps[1]);
+        };
+        assert_eq!((end, output_step), (3.0, 0.3));
+        let (steps, notes) = plan("plan.adm\nplan\nSIMULATE/STATICS\nSTOP\n", overrides);
+        assert_eq!(steps.len(), 1);
+        assert!(
+            notes.iter().any(|n| n.contains("--end is not used")),
+            "{notes:?}"
+        );
+    }
 }

@@ -123,3 +123,81 @@ fn kinematics_refuses_a_model_with_a_degree_of_freedom_left() {
     assert!(error.to_string().contains("this one has 1"), "{error}");
     assert_eq!(frames, 0);
 }
+
+/// A 1 kg sphere (radius 0.1) on a vertical TRANSLATIONAL joint, driven into a ground plane
+/// by a MOTION at 1 mm/s from touching; IMPACT k = 1e6, e = 1.5, c = 50, dmax = 1e-4.
+const PRESSED_SPHERE: &str = "sphere driven into a plane\n\
+UNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND\n\
+PART/1, GROUND\nMARKER/10, PART = 1\n\
+PART/2, MASS = 1, CM = 20, IP = 0.004, 0.004, 0.004\nMARKER/20, PART = 2, QP = 0, 0, 0.1\n\
+GRAPHICS/1, ELLIPSOID, CM = 20, XSCALE = 0.2, YSCALE = 0.2, ZSCALE = 0.2\n\
+GRAPHICS/2, PLANE, RM = 10\n\
+JOINT/1, TRANSLATIONAL, I = 20, J = 10\n\
+MOTION/1, JOINT = 1, FUNCTION = 0.1 - 0.001 * TIME\n\
+CONTACT/1, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E6, EXPONENT = 1.5, DAMPING = 50, DMAX = 1E-4\n\
+ACCGRAV/ KGRAV = -9.81\nEND\n";
+
+#[test]
+fn contacts_in_kinematics_are_outputs_and_the_motion_carries_them() {
+    let loaded = crate::inline("kinematics_pressed_sphere.adm", PRESSED_SPHERE);
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let model = lower(
+        &loaded.model,
+        &engine_exact::ExactEngine,
+        Analysis::Quasistatic,
+        &no_meshes,
+    )
+    .unwrap();
+    let settings = KinematicsSettings {
+        start: 0.0,
+        end: 1.0,
+        output_step: 0.1,
+    };
+    let mut checked = 0;
+    run_kinematics(
+        &model.system,
+        &model.contacts,
+        &settings,
+        &mut |frame, state| {
+            // The motion is the MOTION's, whatever the contact pushes.
+            let z = frame.parts[1].pose_w.translation.z;
+            assert!(
+                (z - (0.1 - 0.001 * frame.t)).abs() < 1e-12,
+                "t = {}: z = {z}",
+                frame.t
+            );
+            if frame.t < 0.15 {
+                return Ok(());
+            }
+            // Past dmax the full damping acts: Fn = k·δ^e + c·δ̇ with δ = 0.001·t, δ̇ = 0.001.
+            let delta = 0.001 * frame.t;
+            let expected = 1e6 * delta.powf(1.5) + 50.0 * 0.001;
+            let report = frame.contacts[0][0];
+            assert!((report.contact.penetration - delta).abs() < 1e-12 * delta.max(1.0));
+            assert!(
+                (report.normal_force - expected).abs() < 1e-9 * expected,
+                "t = {}: Fn = {} vs {expected}",
+                frame.t,
+                report.normal_force
+            );
+            // At constant speed the MOTION holds the sphere against weight and contact.
+            let reaction = model
+                .system
+                .element_reaction(&state.y, "MOTION/1")
+                .unwrap()
+                .unwrap();
+            let want = 9.81 - expected;
+            assert!(
+                (reaction[0].1.force_w.z - want).abs() < 1e-9 * expected,
+                "t = {}: R = {} vs {want}",
+                frame.t,
+                reaction[0].1.force_w.z
+            );
+            checked += 1;
+            Ok(())
+        },
+    )
+    .unwrap();
+    assert_eq!(checked, 9);
+}

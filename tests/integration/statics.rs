@@ -468,3 +468,36 @@ fn the_static_jacobian_is_the_derivative_of_the_static_residual() {
     check_static_jacobian("jacobian_spring.adm", HANGING_BLOCK);
     check_static_jacobian("jacobian_sphere.adm", &sphere_on_plane(0.0995));
 }
+
+#[test]
+fn the_box_pressed_into_the_plane_rises_to_the_closed_form_penetration_by_newton() {
+    let text = std::fs::read_to_string(example("box_rest/box_rest.adm")).unwrap();
+    // The whole box 1 mm lower than in the example: its bottom face 1 mm into the plane, more
+    // than the resting 0.46 mm.
+    let below = text
+        .replace(
+            "MARKER/20, PART = 2, QP = 0, 0, 0.1",
+            "MARKER/20, PART = 2, QP = 0, 0, 0.049",
+        )
+        .replace(
+            "MARKER/21, PART = 2, QP = -0.1, -0.1, 0.05",
+            "MARKER/21, PART = 2, QP = -0.1, -0.1, -0.001",
+        );
+    assert_eq!(
+        below.matches("0.049").count() + below.matches("-0.001").count(),
+        2
+    );
+    let mut model = lowered("statics_box_below.adm", &below);
+    let found = equilibrium(&mut model, &tight());
+    assert_eq!(found.method, StaticsMethod::Newton);
+    let frame = compute_frame(&model.system, &model.contacts, 0.0, &found.y).unwrap();
+    let expected = resting_penetration();
+    let penetration = frame.contacts[0][0].contact.penetration;
+    assert!(
+        (penetration - expected).abs() < 1e-6 * expected,
+        "δ = {penetration} vs {expected}"
+    );
+    let z = frame.parts[1].pose_w.translation.z;
+    assert!(((0.05 - z) - expected).abs() < 1e-6 * expected, "z = {z}");
+    assert!(frame.parts[1].pose_w.rotation.angle() < 1e-9);
+}
