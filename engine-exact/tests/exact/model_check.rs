@@ -56,7 +56,10 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 29] = [
+const BUILT: [(&str, &str); 32] = [
+    ("cylinder", "cylinder"),
+    ("cylinder", "box"),
+    ("cylinder", "bounded plane"),
     ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
@@ -141,8 +144,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 28 distinct pairs, 23 of them between different representatives (both orders count).
-    assert_eq!(accepted, 5 + 2 * 23);
+    // 31 distinct pairs, 25 of them between different representatives (both orders count).
+    assert_eq!(accepted, 6 + 2 * 25);
 }
 
 #[test]
