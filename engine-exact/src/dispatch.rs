@@ -18,6 +18,9 @@
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
+//! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
+//! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
+//! | cylinder–plane (bounded) | the same slicing against the plane's prism, [`crate::pairs::cylinder_solid`] | plane |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
@@ -27,12 +30,13 @@
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs (solid–solid), the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
-//! solids other than spheres on a *bounded* plane and circles on a bounded line are not built
+//! solids other than spheres and cylinders on a *bounded* plane and circles on a bounded line are not built
 //! yet; point–point, plane–plane and line–line are not
 //! contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
+use crate::pairs::cylinder_solid::Other;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
 use crate::planar::boundary::Chain;
@@ -168,7 +172,16 @@ pub(crate) fn select(
                     },
                 )
             } else {
-                Err(no(NOT_BUILT_BOUNDED))
+                no_flip(
+                    flip_a,
+                    Kernel::CylinderSliced {
+                        cylinder: *cylinder,
+                        other: Other::Plane {
+                            plane: *p,
+                            side: side(flip_b),
+                        },
+                    },
+                )
             }
         }
         (G::Frustum(_) | G::Torus(_), G::Plane(p)) => {
@@ -239,10 +252,31 @@ pub(crate) fn select(
             Some(_) => Err(no(FLIP_NOT_BUILT)),
             None => Err(no(NOT_BUILT)),
         },
-        (
-            G::Cylinder(_),
-            G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_) | G::Mesh(_),
-        )
+        (G::Cylinder(cylinder), G::Cylinder(_) | G::Cuboid(_)) => {
+            let other = match b {
+                G::Cuboid(c) => Other::Box(*c),
+                G::Cylinder(c) => Other::Cylinder(*c),
+                // Only cylinders and boxes reach here (the arm's patterns).
+                G::Ellipsoid(_)
+                | G::Frustum(_)
+                | G::Torus(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Line(_)
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => return Err(no(NOT_BUILT)),
+            };
+            no_flip(
+                flip_a || flip_b,
+                Kernel::CylinderSliced {
+                    cylinder: *cylinder,
+                    other,
+                },
+            )
+        }
+        (G::Cylinder(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Torus(_), G::Torus(_) | G::Mesh(_))

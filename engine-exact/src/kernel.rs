@@ -77,6 +77,11 @@ pub(crate) enum Kernel {
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
+    /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing.
+    CylinderSliced {
+        cylinder: Cylinder,
+        other: pairs::cylinder_solid::Other,
+    },
     /// Frustum or torus `a` against an unbounded plane `b`.
     RevolvedPlane {
         solid: pairs::sphere_solid::Solid,
@@ -190,6 +195,10 @@ impl Kernel {
             Self::CylinderPlane { ref cylinder, side } => {
                 pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
             }
+            Self::CylinderSliced {
+                ref cylinder,
+                ref other,
+            } => pairs::cylinder_solid::contact(cylinder, pose_a, other, pose_b, work),
             Self::RevolvedPlane { ref solid, side } => {
                 pairs::revolved_plane::contact(solid, pose_a, pose_b, side, work)
             }

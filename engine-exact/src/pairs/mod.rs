@@ -15,13 +15,16 @@ pub mod box_box;
 pub mod box_plane;
 pub mod clipped;
 pub mod cylinder_plane;
+pub mod cylinder_solid;
 pub mod ellipsoid_plane;
 pub mod mesh_plane;
 pub mod revolved_plane;
+pub mod section;
+pub mod slice_events;
+pub mod sliced;
 pub mod solid_distance;
 pub mod sphere_mesh;
 pub mod sphere_plane;
 pub mod sphere_solid;
 pub mod sphere_sphere;
-#[allow(dead_code)] // The sliced solid pairs build on it.
 pub mod volume_contact;

@@ -4,9 +4,12 @@
 //!   engine's affine map, axis-aligned box overlap instead of clipping, …);
 //! - [`revolved_oracles`]: frustum and torus against a plane by slicing across the axis and
 //!   by Pappus;
+//! - [`sliced_oracles`]: cylinder–cylinder and cylinder–box by closed forms and by slicing
+//!   along other directions;
 //! - [`characterization`]: the accuracy contract, one row per pair;
 //! - [`properties`]: I/J swap, rigid motion and scale covariance;
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
+//! - [`degenerate_sliced`]: the same for the sliced cylinder pairs;
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
@@ -16,8 +19,10 @@ mod characterization;
 mod common;
 mod degenerate;
 mod degenerate_boundaries;
+mod degenerate_sliced;
 mod model_check;
 mod oracles;
 mod properties;
 mod regressions;
 mod revolved_oracles;
+mod sliced_oracles;

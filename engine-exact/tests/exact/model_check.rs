@@ -56,8 +56,11 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 30] = [
+const BUILT: [(&str, &str); 33] = [
     ("sphere", "bounded plane"),
+    ("cylinder", "cylinder"),
+    ("cylinder", "box"),
+    ("cylinder", "bounded plane"),
     ("sphere", "mesh"),
     ("point", "arc"),
     ("circle", "arc"),
@@ -142,8 +145,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 29 distinct pairs, 24 of them between different representatives (both orders count).
-    assert_eq!(accepted, 5 + 2 * 24);
+    // 32 distinct pairs, 26 of them between different representatives (both orders count).
+    assert_eq!(accepted, 6 + 2 * 26);
 }
 
 #[test]

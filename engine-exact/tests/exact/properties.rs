@@ -278,6 +278,60 @@ fn box_box(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
+fn cylinder_pair(rng: &mut Rng, s: f64) -> Scene {
+    let (ra, la) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
+    let (rb, lb) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
+    let pose_j = rng.pose(3.0);
+    // A third of the scenes have parallel axes.
+    let turn = if rng.uniform(0.0, 1.0) < 0.33 {
+        nalgebra::UnitQuaternion::identity()
+    } else {
+        rng.rotation()
+    };
+    let reach = 0.6 * (ra + rb + 0.5 * (la + lb));
+    let offset = rng.unit_vector() * rng.uniform(0.0, reach);
+    let pose_i = pose_j * Isometry3::from_parts(Translation3::from(offset), turn);
+    Scene {
+        i: instance(Geometry::Cylinder(Cylinder::new(ra * s, la * s).unwrap())),
+        j: instance(Geometry::Cylinder(Cylinder::new(rb * s, lb * s).unwrap())),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: ra.max(la).max(rb).max(lb) * s,
+    }
+}
+
+fn cylinder_box(rng: &mut Rng, s: f64) -> Scene {
+    let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
+    let (b, lb) = random_box(rng, s);
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * rng.pose(0.5 * (r + len) + lb / s);
+    Scene {
+        i: instance(Geometry::Cylinder(Cylinder::new(r * s, len * s).unwrap())),
+        j: instance(Geometry::Cuboid(b)),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: (r.max(len) * s).max(lb),
+    }
+}
+
+fn cylinder_bounded_plane(rng: &mut Rng, s: f64) -> Scene {
+    let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
+    let plane_pose = rng.pose(3.0);
+    let pose_i = plane_pose
+        * Isometry3::from_parts(
+            Translation3::new(rng.uniform(-0.5, 0.5), 0.1, rng.uniform(-0.8, 0.2) * len),
+            rng.rotation(),
+        );
+    let plane = Plane::bounded(-0.3 * s, f64::INFINITY, -2.0 * s, 0.4 * s).unwrap();
+    Scene {
+        i: instance(Geometry::Cylinder(Cylinder::new(r * s, len * s).unwrap())),
+        j: instance(Geometry::Plane(plane)),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&plane_pose, s),
+        length: r.max(len) * s,
+    }
+}
+
 fn circle_circle(rng: &mut Rng, s: f64) -> Scene {
     let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
     let d = rng.uniform(0.1, 0.99) * (ra + rb);
@@ -372,7 +426,10 @@ fn boundary_pair(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-const MAKERS: [(&str, Maker); 14] = [
+const MAKERS: [(&str, Maker); 17] = [
+    ("cylinder–cylinder", cylinder_pair),
+    ("cylinder–box", cylinder_box),
+    ("cylinder–bounded plane", cylinder_bounded_plane),
     ("frustum/torus–plane", revolved_plane),
     ("arc/curve–arc/curve/line", boundary_pair),
     ("circle–curve/arc", circle_curve_or_arc),

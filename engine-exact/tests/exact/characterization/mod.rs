@@ -12,6 +12,7 @@ use contact_core::{GeometryInstance, Isometry3};
 mod planar;
 pub(crate) mod planar_overlap;
 mod revolved;
+mod sliced;
 mod solids;
 
 pub(super) const SAMPLES: usize = 200;
@@ -94,6 +95,7 @@ fn characterization_table() {
     let mut rng = Rng::new(0x5EED_0003);
     let mut rows = solids::rows(&mut rng);
     rows.extend(revolved::rows(&mut rng));
+    rows.extend(sliced::rows(&mut rng));
     rows.extend(planar::rows(&mut rng));
     rows.extend(planar_overlap::rows(&mut rng));
     println!(

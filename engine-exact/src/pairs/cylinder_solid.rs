@@ -1,0 +1,386 @@
+//! A cylinder against a cylinder, a box or a bounded plane: the intersection's moments by
+//! slicing ([`super::sliced`]), the contact from them by [`super::volume_contact`].
+//!
+//! ## The slicing direction `n` (perpendicular to the first cylinder's axis)
+//! - **Cylinder–cylinder**: `n = â × b̂ / |â × b̂|`, perpendicular to both axes, so each plane
+//!   `x·n = t` cuts both cylinders parallel to their axes (two rectangles). In `a`'s frame
+//!   `â = ẑ` and `â × b̂ = (−b_y, b_x, 0)` is exact, so `n·b̂` is a round-off of `|â × b̂|`
+//!   itself and stays tiny however close to parallel the axes are; `b̂` is then projected on
+//!   the slicing planes (a change at round-off). **Parallel** axes (`â × b̂ = 0` exactly) take
+//!   `n = x̂` of `a`: any direction perpendicular to both serves. Near-parallel axes are the
+//!   general case, with no branch.
+//! - **Cylinder–box, cylinder–bounded plane**: among directions perpendicular to the axis
+//!   (64 sampled over a half turn), the one farthest from every face normal (smallest largest
+//!   `|m·n|`): a face parallel to the slicing planes would be a jump in the section, and
+//!   three lines through the origin always leave a direction at least 30° from each, so every
+//!   face keeps `|g| ≥ 1/2` in-plane.
+//!
+//! ## The contact (SPEC §4, as [`super::volume_contact`] reads it)
+//! One region (two convex solids meet in one convex piece; the bounded plane's solid is the
+//! prism `z ≤ 0`, or `z ≥ 0` when flipped, over its rectangle). Normal `−S_a/|S_a|`, `S_a` the
+//! area vector of the cylinder's surface inside the other solid; points where the line
+//! through the centroid along the normal leaves each solid; area `|S_a|`.
+//!
+//! **Containment** (`|S_a|` at most 1e-12 of the intersection's surface): when no surface of
+//! the other solid lies inside the cylinder, the cylinder is inside it and the normal is the
+//! outward normal of the other solid's face nearest the centroid; otherwise (the other solid
+//! inside the cylinder, or two identical cylinders on each other) the opposite of the
+//! cylinder's nearest face normal (the bottom, then side, then top on ties); area a quarter of
+//! the intersection's surface. Touching (no volume) is no contact.
+
+use super::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
+use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedPair};
+use super::solid_distance::{Solid, signed_distance};
+use super::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::kernel::PairContact;
+use crate::ray_exit::surface_point_along;
+use contact_core::geometry::{Cuboid, Cylinder, Plane};
+use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
+
+/// The solid a cylinder is sliced against.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Other {
+    /// A second cylinder.
+    Cylinder(Cylinder),
+    /// A box.
+    Box(Cuboid),
+    /// A bounded plane's prism, `side` −1 when flipped.
+    Plane {
+        /// The plane and its bounds.
+        plane: Plane,
+        /// +1 (material below) or −1 (above).
+        side: f64,
+    },
+}
+
+/// Directions sampled when choosing `n` against a polyhedron's faces.
+const DIRECTION_SAMPLES: usize = 64;
+
+/// The unit `n ⟂ ẑ` farthest from the given unit normals (smallest largest `|m·n|`).
+fn direction_away_from(normals: &[Vector3]) -> Vector3 {
+    let mut best = (f64::INFINITY, Vector3::x());
+    for k in 0..DIRECTION_SAMPLES {
+        let phi = k as f64 * std::f64::consts::PI / DIRECTION_SAMPLES as f64;
+        let n = Vector3::new(phi.cos(), phi.sin(), 0.0);
+        let worst = normals.iter().map(|m| m.dot(&n).abs()).fold(0.0, f64::max);
+        // A clear improvement only, so round-off of the pose does not flip the choice.
+        if worst < best.0 - 1e-9 {
+            best = (worst, n);
+        }
+    }
+    best.1
+}
+
+/// The bounded plane's prism as half-spaces in the plane's frame (up to five).
+fn prism(plane: &Plane, side: f64) -> ([HalfSpace; 5], usize) {
+    let mut out = [HalfSpace {
+        normal: Vector3::z() * side,
+        offset: 0.0,
+    }; 5];
+    let mut count = 1;
+    let [x0, x1] = plane.x_range();
+    let [y0, y1] = plane.y_range();
+    for (normal, offset) in [
+        (Vector3::x(), x1),
+        (-Vector3::x(), -x0),
+        (Vector3::y(), y1),
+        (-Vector3::y(), -y0),
+    ] {
+        if offset.is_finite() {
+            out[count] = HalfSpace { normal, offset };
+            count += 1;
+        }
+    }
+    (out, count)
+}
+
+/// Contact of cylinder `a` at `pose_a` with `b` at `pose_b`; the normal points from `b`
+/// into `a`.
+pub(crate) fn contact(
+    a: &Cylinder,
+    pose_a: &Isometry3,
+    b: &Other,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let (ra, hla) = (a.radius(), 0.5 * a.length());
+    let size_b = match b {
+        Other::Cylinder(c) => c.radius().max(0.5 * c.length()),
+        Other::Box(c) => c.half_extents().norm(),
+        Other::Plane { .. } => 0.0,
+    };
+    let unit = unit_for(ra.max(hla).max(size_b));
+    // Everything in a's geometry frame first; the working frame is centred on a's centre.
+    let pose_ab = pose_a.inv_mul(pose_b);
+    let rot_ab = pose_ab.rotation.to_rotation_matrix().into_inner();
+    let centre_a = Vector3::new(0.0, 0.0, hla);
+    let (prism_planes, prism_count) = match b {
+        Other::Plane { plane, side } => prism(plane, *side),
+        _ => (
+            [HalfSpace {
+                normal: Vector3::z(),
+                offset: 0.0,
+            }; 5],
+            0,
+        ),
+    };
+    let n = match b {
+        Other::Cylinder(_) => {
+            let axis = rot_ab.column(2);
+            let rho = axis.x.hypot(axis.y);
+            if rho > 0.0 {
+                Vector3::new(-axis.y / rho, axis.x / rho, 0.0)
+            } else {
+                Vector3::x()
+            }
+        }
+        Other::Box(_) => direction_away_from(
+            &[rot_ab.column(0), rot_ab.column(1), rot_ab.column(2)].map(|c| c.into_owned()),
+        ),
+        Other::Plane { .. } => {
+            let mut normals = [Vector3::zeros(); 5];
+            for (k, h) in prism_planes[..prism_count].iter().enumerate() {
+                normals[k] = rot_ab * h.normal;
+            }
+            direction_away_from(&normals[..prism_count])
+        }
+    };
+    // Working frame F: axes (n, ẑ × n, ẑ) of a's frame, origin at a's centre, lengths / unit.
+    let frame = Matrix3::from_columns(&[n, Vector3::z().cross(&n), Vector3::z()]);
+    let to_f = |p: &Vector3| frame.tr_mul(&(p - centre_a)) / unit;
+    let dir_f = |v: &Vector3| frame.tr_mul(v);
+
+    let mut pair = SlicedPair {
+        radius_a: ra / unit,
+        half_length_a: hla / unit,
+        bounds: [Bound::Plane {
+            normal: Vector3::z(),
+            offset: 0.0,
+        }; MAX_BOUNDS],
+        bound_count: 0,
+        range_b: (f64::NEG_INFINITY, f64::INFINITY),
+        cuts_b: [0.0; MAX_B_CUTS],
+        cut_count: 0,
+    };
+    // The cylinder's bounding box against b's, on the six face axes: a cheap rejection.
+    let box_a = (
+        Vector3::zeros(),
+        Matrix3::identity(),
+        Vector3::new(ra, ra, hla) / unit,
+    );
+    match b {
+        Other::Cylinder(c) => {
+            let (r, hl) = (c.radius() / unit, 0.5 * c.length() / unit);
+            let centre = to_f(&(pose_ab * Point3::new(0.0, 0.0, 0.5 * c.length())).coords);
+            let axis = dir_f(&rot_ab.column(2).into_owned());
+            // On the slicing planes (a change at round-off; see the module docs).
+            let (alpha, beta) = (axis.y, axis.z);
+            let norm = alpha.hypot(beta);
+            let (alpha, beta) = (alpha / norm, beta / norm);
+            let across = contact_core::Vector2::new(-beta, alpha);
+            let along = contact_core::Vector2::new(alpha, beta);
+            let box_b = (
+                centre,
+                Matrix3::from_columns(&[
+                    Vector3::x(),
+                    Vector3::new(0.0, across.x, across.y),
+                    Vector3::new(0.0, alpha, beta),
+                ]),
+                Vector3::new(r, r, hl),
+            );
+            work.bounding_volume_tests += 1;
+            if separated(&box_a, &box_b) {
+                return None;
+            }
+            let centre_across = across.dot(&centre.yz());
+            let centre_along = along.dot(&centre.yz());
+            for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
+                pair.bounds[k] = Bound::Side {
+                    across,
+                    centre: centre_across,
+                    sign,
+                    t0: centre.x,
+                    radius: r,
+                };
+                pair.bounds[2 + k] = Bound::Plane {
+                    normal: Vector3::new(0.0, sign * alpha, sign * beta),
+                    offset: sign * centre_along + hl,
+                };
+            }
+            pair.bound_count = 4;
+            pair.range_b = (centre.x - r, centre.x + r);
+            pair.push_cut(centre.x - r);
+            pair.push_cut(centre.x + r);
+            pair.add_rim_plane_events();
+            pair.add_cylinder_events(&centre, &Vector3::new(0.0, alpha, beta), r, hl);
+        }
+        Other::Box(c) => {
+            let centre = to_f(&(pose_ab * c.center()).coords);
+            let axes = frame.tr_mul(&rot_ab);
+            let half = c.half_extents() / unit;
+            work.bounding_volume_tests += 1;
+            if separated(&box_a, &(centre, axes, half)) {
+                return None;
+            }
+            for k in 0..3 {
+                let axis = axes.column(k).into_owned();
+                for (s, sign) in [1.0, -1.0].into_iter().enumerate() {
+                    pair.bounds[2 * k + s] = Bound::Plane {
+                        normal: sign * axis,
+                        offset: sign * axis.dot(&centre) + half[k],
+                    };
+                }
+            }
+            pair.bound_count = 6;
+            let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+            let mut corners = [Vector3::zeros(); 8];
+            for (v, corner) in corners.iter_mut().enumerate() {
+                let s = |bit: usize| if v & (1 << bit) != 0 { 1.0 } else { -1.0 };
+                *corner = centre + axes * Vector3::new(s(0) * half.x, s(1) * half.y, s(2) * half.z);
+                range = (range.0.min(corner.x), range.1.max(corner.x));
+            }
+            pair.range_b = range;
+            // The twelve edges: along each axis, from the corners with that bit clear.
+            let mut edges = [(Vector3::zeros(), Vector3::zeros()); 12];
+            let mut count = 0;
+            for k in 0..3 {
+                for (v, corner) in corners.iter().enumerate() {
+                    if v & (1 << k) == 0 {
+                        edges[count] = (*corner, axes.column(k).into_owned());
+                        count += 1;
+                    }
+                }
+            }
+            pair.add_polyhedron_events(&corners, &edges);
+            pair.add_rim_plane_events();
+        }
+        Other::Plane { plane, .. } => {
+            let to_world_f = frame.tr_mul(&rot_ab);
+            let origin = to_f(&pose_ab.translation.vector);
+            for (k, h) in prism_planes[..prism_count].iter().enumerate() {
+                let normal = to_world_f * h.normal;
+                pair.bounds[k] = Bound::Plane {
+                    normal,
+                    offset: normal.dot(&origin) + h.offset / unit,
+                };
+            }
+            pair.bound_count = prism_count;
+            work.bounding_volume_tests += 1;
+            // The cylinder's lowest point along each prism plane's normal: outside one, apart.
+            let apart = pair.bounds[..prism_count].iter().any(|bound| match *bound {
+                Bound::Plane { normal, offset } => {
+                    let reach = box_a.2.x * normal.x.hypot(normal.y) + box_a.2.z * normal.z.abs();
+                    -reach >= offset
+                }
+                Bound::Side { .. } => false,
+            });
+            if apart {
+                return None;
+            }
+            let [x0, x1] = plane.x_range();
+            let [y0, y1] = plane.y_range();
+            let at = |x: f64, y: f64| origin + to_world_f * Vector3::new(x, y, 0.0) / unit;
+            let (dx, dy, dz) = (
+                to_world_f.column(0).into_owned(),
+                to_world_f.column(1).into_owned(),
+                to_world_f.column(2).into_owned(),
+            );
+            let mut corners = [Vector3::zeros(); 4];
+            let mut corner_count = 0;
+            // The prism's edges: the top's edges (lines along y at a finite x bound, along
+            // x at a finite y bound) and the vertical edges down from the top's corners.
+            let mut edges = [(Vector3::zeros(), Vector3::zeros()); 8];
+            let mut edge_count = 0;
+            for x in [x0, x1].into_iter().filter(|x| x.is_finite()) {
+                edges[edge_count] = (at(x, 0.0), dy);
+                edge_count += 1;
+            }
+            for y in [y0, y1].into_iter().filter(|y| y.is_finite()) {
+                edges[edge_count] = (at(0.0, y), dx);
+                edge_count += 1;
+            }
+            for x in [x0, x1] {
+                for y in [y0, y1] {
+                    if x.is_finite() && y.is_finite() {
+                        corners[corner_count] = at(x, y);
+                        edges[edge_count] = (at(x, y), dz);
+                        corner_count += 1;
+                        edge_count += 1;
+                    }
+                }
+            }
+            pair.add_polyhedron_events(&corners[..corner_count], &edges[..edge_count]);
+            pair.add_rim_plane_events();
+        }
+    }
+    let m = pair.integrate(work)?;
+    // Back to the world.
+    let rot_a = pose_a.rotation.to_rotation_matrix().into_inner() * frame;
+    let centroid = Point3::from(
+        pose_a.translation.vector + pose_a.rotation * centre_a + rot_a * m.centroid * unit,
+    );
+    let moments = VolumeMoments {
+        volume: m.volume * unit * unit * unit,
+        centroid,
+        area_vector_a: rot_a * m.area_vector_a * (unit * unit),
+        surface_area: (m.area_a + m.area_b) * unit * unit,
+    };
+    let solid_a = Solid::Cylinder(*a);
+    let exit_a = |g: &Point3, d: &Vector3| {
+        let p = pose_a.inverse_transform_point(g);
+        let dir = pose_a.inverse_transform_vector(d);
+        pose_a * Point3::from(surface_point_along(&solid_a, &p.coords, &dir))
+    };
+    let solid_b = match b {
+        Other::Cylinder(c) => Some(Solid::Cylinder(*c)),
+        Other::Box(c) => Some(Solid::Box(*c)),
+        Other::Plane { .. } => None,
+    };
+    let planes = &prism_planes[..prism_count];
+    let exit_b = |g: &Point3, d: &Vector3| {
+        let p = pose_b.inverse_transform_point(g);
+        let dir = pose_b.inverse_transform_vector(d);
+        let local = match &solid_b {
+            Some(s) => surface_point_along(s, &p.coords, &dir),
+            None => p.coords + ray_exit(&p, &dir, planes) * dir,
+        };
+        pose_b * Point3::from(local)
+    };
+    let a_inside_b = m.area_b <= ENCLOSED * (m.area_a + m.area_b);
+    let fallback = || {
+        if a_inside_b {
+            let p = pose_b.inverse_transform_point(&centroid);
+            let outward = match &solid_b {
+                Some(s) => signed_distance(s, &p.coords).2,
+                None => nearest_face(&p, planes).1,
+            };
+            pose_b.rotation * outward
+        } else {
+            let p = pose_a.inverse_transform_point(&centroid);
+            -(pose_a.rotation * signed_distance(&solid_a, &p.coords).2)
+        }
+    };
+    volume_contact::contact(&moments, exit_a, exit_b, fallback)
+}
+
+/// A box as (centre, unit axes as columns, half extents).
+type Obb = (Vector3, Matrix3, Vector3);
+
+/// True when a face axis of either box separates them.
+fn separated(a: &Obb, b: &Obb) -> bool {
+    let (ca, ra, ha) = a;
+    let (cb, rb, hb) = b;
+    let d = cb - ca;
+    let project = |axis: &Vector3, r: &Matrix3, h: &Vector3| {
+        (0..3)
+            .map(|k| h[k] * r.column(k).dot(axis).abs())
+            .sum::<f64>()
+    };
+    (0..3).any(|k| {
+        let axis = ra.column(k).into_owned();
+        d.dot(&axis).abs() >= ha[k] + project(&axis, rb, hb)
+    }) || (0..3).any(|k| {
+        let axis = rb.column(k).into_owned();
+        d.dot(&axis).abs() >= hb[k] + project(&axis, ra, ha)
+    })
+}

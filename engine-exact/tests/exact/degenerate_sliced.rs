@@ -1,0 +1,199 @@
+//! Degenerate branches of the sliced pairs (cylinder–cylinder, cylinder–box, cylinder–bounded
+//! plane): identical coincident cylinders, one solid inside the other, grazing contact,
+//! exactly perpendicular and parallel axes, extreme scales, and the refused flips.
+
+use crate::common::{instance, one, query};
+use crate::sliced_oracles as oracles;
+use contact_core::geometry::{Cuboid, Cylinder, Plane};
+use contact_core::{Contact, Geometry, GeometryEngine, Isometry3, UnitQuaternion, Vector3};
+use engine_exact::ExactEngine;
+
+fn cylinder(r: f64, l: f64) -> Geometry {
+    Geometry::Cylinder(Cylinder::new(r, l).unwrap())
+}
+
+fn finite(c: &Contact) -> bool {
+    c.penetration.is_finite()
+        && c.area.is_finite()
+        && c.normal_w.iter().all(|x| x.is_finite())
+        && c.point_i_w.coords.iter().all(|x| x.is_finite())
+        && c.point_j_w.coords.iter().all(|x| x.is_finite())
+}
+
+#[test]
+fn identical_coincident_cylinders_take_the_nearest_face_normal() {
+    let g = instance(cylinder(0.5, 2.0));
+    let c = one(&g, &g, &Isometry3::identity(), &Isometry3::identity());
+    assert!(finite(&c), "{c:?}");
+    // The centroid is 0.5 from the side and 1 from each cap: the side is nearest; its area
+    // a quarter of the whole surface.
+    assert!(c.normal_w.z.abs() < 1e-12, "{c:?}");
+    let surface = 2.0 * std::f64::consts::PI * 0.5 * (0.5 + 2.0);
+    assert!((c.area - 0.25 * surface).abs() < 1e-9 * surface, "{c:?}");
+}
+
+#[test]
+fn a_cylinder_inside_a_box_is_pushed_out_through_the_nearest_face() {
+    let cyl = instance(cylinder(0.2, 0.5));
+    let cube = instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap()));
+    // The cylinder's centroid at x = 0.7: the +x face is nearest.
+    let c = one(
+        &cyl,
+        &cube,
+        &Isometry3::translation(0.7, 0.0, -0.25),
+        &Isometry3::identity(),
+    );
+    assert!(finite(&c), "{c:?}");
+    assert!((c.normal_w - Vector3::x()).norm() < 1e-12, "{c:?}");
+    assert!((c.penetration - 0.5).abs() < 1e-9, "{c:?}");
+}
+
+#[test]
+fn a_box_inside_a_cylinder_gives_the_opposite_of_the_cylinders_nearest_face() {
+    let cyl = instance(cylinder(1.0, 3.0));
+    let cube = instance(Geometry::Cuboid(Cuboid::centered(0.1, 0.1, 0.1).unwrap()));
+    // Box centre 0.3 above the bottom cap, well inside the side: the bottom is nearest.
+    let c = one(
+        &cyl,
+        &cube,
+        &Isometry3::identity(),
+        &Isometry3::translation(0.0, 0.2, 0.3),
+    );
+    assert!(finite(&c), "{c:?}");
+    assert!((c.normal_w - Vector3::z()).norm() < 1e-12, "{c:?}");
+}
+
+#[test]
+fn grazing_contacts_are_finite_and_touching_is_none() {
+    let (r, l) = (0.5, 2.0);
+    let a = instance(cylinder(r, l));
+    // Parallel axes, 1e-12 of the size apart from touching: a thin lens.
+    let b = instance(cylinder(r, l));
+    let d = 2.0 * r - 1e-12;
+    let c = one(
+        &a,
+        &b,
+        &Isometry3::identity(),
+        &Isometry3::translation(d, 0.0, 0.5),
+    );
+    assert!(finite(&c) && c.penetration < 1e-11, "{c:?}");
+    assert!((c.normal_w + Vector3::x()).norm() < 1e-6, "{c:?}");
+    // Crossed at right angles, axes 1e-12 short of r_a + r_b apart.
+    let crossed = Isometry3::from_parts(
+        nalgebra::Translation3::new(-1.0, 2.0 * r - 1e-12, 1.0),
+        UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2),
+    );
+    let found = query(&a, &b, &Isometry3::identity(), &crossed);
+    assert!(found.iter().all(finite), "{found:?}");
+    // Exactly touching: no volume, no contact.
+    let touching = query(
+        &a,
+        &b,
+        &Isometry3::identity(),
+        &Isometry3::translation(2.0 * r, 0.0, 0.0),
+    );
+    assert!(touching.is_empty(), "{touching:?}");
+    // A box face exactly on the cylinder's side: no contact; 1e-12 into it: a finite one.
+    let cube = instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap()));
+    for (gap, contacts) in [(0.0, 0), (-1e-12, 1)] {
+        let found = query(
+            &a,
+            &cube,
+            &Isometry3::identity(),
+            &Isometry3::translation(r + 1.0 + gap, 0.0, 1.0),
+        );
+        assert_eq!(found.len(), contacts, "{gap}: {found:?}");
+        assert!(found.iter().all(finite), "{found:?}");
+    }
+}
+
+/// Two equal cylinders crossed at exactly 90° with intersecting axes, long enough that the
+/// caps stay out: Steinmetz's bicylinder, `V = 16r³/3`, symmetric, so the area vector
+/// vanishes and the normal falls back to a nearest face; every answer finite.
+#[test]
+fn perpendicular_axes_through_one_point() {
+    let (r, l) = (0.5, 4.0);
+    let a = instance(cylinder(r, l));
+    let pose_a = Isometry3::translation(0.0, 0.0, -0.5 * l);
+    let pose_b = Isometry3::from_parts(
+        nalgebra::Translation3::new(-0.5 * l, 0.0, 0.0),
+        UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2),
+    );
+    let c = one(&a, &a, &pose_a, &pose_b);
+    assert!(finite(&c), "{c:?}");
+    // Offset b sideways: a proper contact along the offset.
+    let shifted = Isometry3::translation(0.0, 0.6, 0.0) * pose_b;
+    let c = one(&a, &a, &pose_a, &shifted);
+    assert!(finite(&c), "{c:?}");
+    assert!((c.normal_w + Vector3::y()).norm() < 1e-9, "{c:?}");
+}
+
+#[test]
+fn huge_and_tiny_scales_match_the_parallel_closed_form() {
+    for s in [1e-6, 1e6] {
+        let (ra, la, rb, lb, d, zb) = (0.7, 2.0, 0.4, 1.5, 0.9, 0.8);
+        let expected = oracles::parallel_cylinders(ra, la, rb, zb, lb, d);
+        let c = one(
+            &instance(cylinder(ra * s, la * s)),
+            &instance(cylinder(rb * s, lb * s)),
+            &Isometry3::identity(),
+            &Isometry3::translation(d * s, 0.0, zb * s),
+        );
+        assert!(
+            (c.penetration - expected.depth * s).abs() <= 1e-12 * s,
+            "{s}: {c:?} vs {expected:?}"
+        );
+        assert!((c.normal_w - expected.normal).norm() <= 1e-12, "{s}: {c:?}");
+        assert!(
+            (c.point_i_w.coords - expected.point_i.coords * s).norm() <= 1e-12 * s,
+            "{s}: {c:?}"
+        );
+    }
+}
+
+#[test]
+fn a_cylinder_over_the_middle_of_a_bounded_plane_matches_the_unbounded_plane() {
+    let a = instance(cylinder(0.4, 1.0));
+    let pose = Isometry3::from_parts(
+        nalgebra::Translation3::new(0.1, -0.2, -0.1),
+        UnitQuaternion::from_euler_angles(0.4, 0.3, 0.2),
+    );
+    let bounded = instance(Geometry::Plane(
+        Plane::bounded(-5.0, 5.0, -5.0, 5.0).unwrap(),
+    ));
+    let unbounded = instance(Geometry::Plane(Plane::unbounded()));
+    let x = one(&a, &bounded, &pose, &Isometry3::identity());
+    let y = one(&a, &unbounded, &pose, &Isometry3::identity());
+    crate::common::assert_close(&x, &y, 1.0, 1.0, 1e-10, "bounded vs unbounded plane");
+}
+
+#[test]
+fn flipped_cylinders_boxes_and_cylinders_on_flipped_bounded_planes() {
+    let cyl = instance(cylinder(0.5, 1.0));
+    let cube = instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap()));
+    let plane = instance(Geometry::Plane(
+        Plane::bounded(-1.0, 1.0, -1.0, 1.0).unwrap(),
+    ));
+    for (i, j) in [
+        (cyl.clone().flipped(), cyl.clone()),
+        (cyl.clone(), cyl.clone().flipped()),
+        (cyl.clone().flipped(), cube.clone()),
+        (cyl.clone(), cube.clone().flipped()),
+        (cyl.clone().flipped(), plane.clone()),
+    ] {
+        let err = ExactEngine.prepare(&[i], &[j]).map(|_| ()).unwrap_err();
+        assert!(err.to_string().contains("flipped"), "{err}");
+    }
+    // A flipped bounded plane is built: its material lies above.
+    let found = query(
+        &cyl,
+        &plane.flipped(),
+        &Isometry3::translation(0.0, 0.0, -0.8),
+        &Isometry3::identity(),
+    );
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(
+        (found[0].normal_w + Vector3::z()).norm() < 1e-12,
+        "{found:?}"
+    );
+}
