@@ -156,7 +156,10 @@ fn assert_follows_the_ideal_drive(samples: &[Sample], sag: f64) -> f64 {
                 s.t,
                 s.penetration
             );
-            let bound = ((0.5 * CLEARANCE + s.penetration + sag) / rho).asin();
+            // At first touch the wheel sits exactly the play behind the ideal drive, so the
+            // bound is attained there; the two sides come from different formulas and may
+            // differ in their last bits (1e-15 relative, seen with the exact engine).
+            let bound = ((0.5 * CLEARANCE + s.penetration + sag) / rho).asin() * (1.0 + 1e-12);
             assert!(
                 error.abs() <= bound,
                 "t = {}: wheel {} rad, ideal {ideal} rad, off by {error} > {bound}",
@@ -239,20 +242,33 @@ fn the_primitive_geneva_indexes_as_the_ideal_drive_with_each_engine_that_answers
     let diagonal = (8.0 * PIN_RADIUS * PIN_RADIUS + length * length).sqrt();
     let chord = FacetingTolerance::default().chord_deviation(diagonal);
     assert_follows_the_ideal_drive(&by_facets, chord);
-    // The exact engine answers a cylinder against a box once that pair is built; until then it
-    // refuses the model before the run, naming the pair.
-    match run("geneva_primitives", &engine_exact::ExactEngine, 1.04) {
-        Ok((exact, _)) => {
-            assert_follows_the_ideal_drive(&exact, 0.0);
-            // Both within their bound of the ideal drive, so within twice it of each other.
-            for (e, f) in exact.iter().zip(&by_facets) {
-                let play = (CLEARANCE / (CENTRE_DISTANCE * (1.0 - FRAC_PI_4.sin()))).asin();
-                assert!((e.wheel - f.wheel).abs() <= 2.0 * play, "t = {}", e.t);
-            }
+    // The exact engine answers a cylinder against a box: the same drive within the same
+    // bound. The two runs stay apart by no more than the chord deviation (and the difference
+    // of their penetrations) seen from the wheel's centre, plus the slot's play: past
+    // mid-stroke the wheel runs ahead of the pin onto the slot's other flank, and a
+    // faceting-sized difference in the force moves that instant, so for a while one run has
+    // the wheel on one flank and the other on the other.
+    let (exact, _) = run("geneva_primitives", &engine_exact::ExactEngine, 1.04).unwrap();
+    assert_follows_the_ideal_drive(&exact, 0.0);
+    let half_width = PIN_RADIUS + 0.5 * CLEARANCE;
+    let mouth = (0.5 * CENTRE_DISTANCE * CENTRE_DISTANCE - half_width * half_width).sqrt();
+    let mut compared = 0;
+    for (e, f) in exact.iter().zip(&by_facets) {
+        assert!((e.t - f.t).abs() < 1e-12, "frames at the same times");
+        let (_, rho) = ideal_wheel_angle(CRANK_START + e.crank);
+        if let Some(rho) = rho.filter(|&rho| rho <= mouth - PIN_RADIUS) {
+            compared += 1;
+            let apart = (e.wheel - f.wheel).abs();
+            let faceting = chord + (e.penetration - f.penetration).abs();
+            let allowed = ((CLEARANCE + faceting) / rho).asin();
+            assert!(
+                apart <= allowed,
+                "t = {}: exact {} rad, faceted {} rad, apart {apart} > {allowed}",
+                e.t,
+                e.wheel,
+                f.wheel
+            );
         }
-        Err(message) => assert!(
-            message.contains("CYLINDER") && message.contains("BOX"),
-            "{message}"
-        ),
     }
+    assert!(compared > 50, "only {compared} engaged frames compared");
 }
