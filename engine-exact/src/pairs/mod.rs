@@ -14,7 +14,11 @@ pub mod box_box;
 pub mod box_plane;
 pub mod clipped;
 pub mod cylinder_plane;
+pub mod ellipsoid_box;
+pub mod ellipsoid_cylinder;
+pub mod ellipsoid_ellipsoid;
 pub mod ellipsoid_plane;
+pub(crate) mod ellipsoid_sliced;
 pub mod mesh_plane;
 pub mod revolved_plane;
 pub mod solid_distance;
@@ -22,5 +26,4 @@ pub mod sphere_mesh;
 pub mod sphere_plane;
 pub mod sphere_solid;
 pub mod sphere_sphere;
-#[allow(dead_code)] // The sliced solid pairs build on it.
 pub mod volume_contact;

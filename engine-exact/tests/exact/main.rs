@@ -15,6 +15,8 @@ mod characterization;
 mod common;
 mod degenerate;
 mod degenerate_boundaries;
+mod ellipsoid_degenerate;
+mod ellipsoid_oracles;
 mod model_check;
 mod oracles;
 mod properties;
