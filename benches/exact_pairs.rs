@@ -6,6 +6,8 @@
 //! into a reused buffer) and `parry` (`parry3d_f64::query::contact` on pre-built shapes, pose
 //! composition included). Before timing, each group prints both answers' depth against the
 //! closed form, so speed and accuracy are read together. Inputs are fixed configurations.
+//! Parry has no ellipsoid shape, so the general-ellipsoid groups (`ellipsoid_ellipsoid`,
+//! `ellipsoid_box`, `ellipsoid_cylinder`) time the exact engine alone.
 
 #![expect(
     missing_docs,
@@ -62,6 +64,30 @@ fn cases() -> Vec<Case> {
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: ground.clone(),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_ellipsoid",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Ellipsoid(Ellipsoid::new(0.8, 0.5, 0.7).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.3, 0.4), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_box",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Cuboid(Cuboid::centered(1.0, 0.7, 0.4).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.5, 0.3, 0.7), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_cylinder",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Cylinder(Cylinder::new(0.8, 1.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.4, 1.6), tilt),
             pose_j: Isometry3::identity(),
             depth: None,
         },

@@ -13,6 +13,9 @@
 //! | sphere–plane (bounded) | the sphere–box closed form on the prism cut to a box about the sphere, [`crate::pairs::bounded_plane`] | plane |
 //! | sphere–mesh (closed) | closed form (signed distance, winding number), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
+//! | ellipsoid–ellipsoid (general; sphere–ellipsoid included) | slicing along the line of centres: ellipse–ellipse section overlaps in closed form (crossings: a quartic's roots, Newton-polished), adaptive quadrature between the intersection's lowest and highest slice (pencil duality, which also proves them apart), to 1e-13 of the volume, [`crate::pairs::ellipsoid_ellipsoid`] | none |
+//! | ellipsoid–box (general) | slicing along the box's `z`: disc–rectangle section overlaps in closed form, quadrature cut at closed-form events (side tangencies, edge piercings), [`crate::pairs::ellipsoid_box`] | none |
+//! | ellipsoid–cylinder (general) | slicing along the axis: ellipse–disc section overlaps in closed form, quadrature between the pencil's extent clipped to the caps, [`crate::pairs::ellipsoid_cylinder`] | none |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
@@ -27,8 +30,15 @@
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
 //! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, `planar::overlap` | all |
 //!
+//! The general ellipsoid pairs' degenerate branches (each tested): one solid inside the
+//! other (the area vector vanishes: the normal is the line of centres, or the nearest face's
+//! or side's outward normal of the containing box or cylinder, or against the ellipsoid's
+//! level surface through the centroid when it contains the other; the area a quarter of the
+//! surface), identical coincident ellipsoids (`b`'s `+z`), grazing (the pencil's extent
+//! shrinks to the touching point; touching alone is no contact).
+//!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against anything but a plane, the other cylinder, frustum and torus pairs (solid–solid), the
+//! ellipsoids against frustums, tori, meshes and bounded planes, the other cylinder, frustum and torus pairs (solid–solid), the
 //! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
 //! solids other than spheres and cylinders on a *bounded* plane and circles on a bounded line are not built
 //! yet; point–point, plane–plane and line–line are not
@@ -152,7 +162,11 @@ pub(crate) fn select(
                     swap: true,
                 }),
                 (Some(_), Some(_), true, true) => Err(no(NOT_A_CONTACT)),
-                _ => Err(no(NOT_BUILT)),
+                (_, _, false, false) => Ok(canonical(Kernel::EllipsoidEllipsoid {
+                    semi_a: ea.semi_axes(),
+                    semi_b: eb.semi_axes(),
+                })),
+                _ => Err(no(FLIP_NOT_BUILT)),
             }
         }
         (G::Ellipsoid(e), G::Plane(p)) => ellipsoid_plane(e, flip_a, p, flip_b).ok_or_else(|| {
@@ -235,7 +249,7 @@ pub(crate) fn select(
             match e.sphere_radius() {
                 Some(radius) if !flip_b => no_flip(flip_a, Kernel::SphereSolid { radius, solid }),
                 Some(_) => Err(no(FLIP_NOT_BUILT)),
-                None => Err(no(NOT_BUILT)),
+                None => general_ellipsoid_solid(e, &solid, flip_a || flip_b).map_err(no),
             }
         }
         (G::Ellipsoid(e), G::Mesh(mesh)) => match e.sphere_radius() {
@@ -450,6 +464,28 @@ fn reversed(result: Result<Selected, Unsupported>) -> Result<Selected, Unsupport
 
 fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<PlanarCurve>> {
     PlanarCurve::new(curve).map(std::sync::Arc::new)
+}
+
+/// A general ellipsoid against a box or a cylinder (sliced), or the reason it is refused.
+fn general_ellipsoid_solid(
+    e: &Ellipsoid,
+    solid: &Solid,
+    flipped: bool,
+) -> Result<Selected, &'static str> {
+    let semi_axes = e.semi_axes();
+    let kernel = match *solid {
+        Solid::Box(cuboid) => Kernel::EllipsoidBox { semi_axes, cuboid },
+        Solid::Cylinder(cylinder) => Kernel::EllipsoidCylinder {
+            semi_axes,
+            cylinder,
+        },
+        Solid::Frustum(_) | Solid::Torus(_) => return Err(NOT_BUILT),
+    };
+    if flipped {
+        Err(FLIP_NOT_BUILT)
+    } else {
+        Ok(canonical(kernel))
+    }
 }
 
 fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {

@@ -75,6 +75,15 @@ pub(crate) enum Kernel {
     SphereInCavity { radius_a: f64, radius_b: f64 },
     /// Ellipsoid `a` against an unbounded plane `b`.
     EllipsoidPlane { semi_axes: Vector3, side: f64 },
+    /// General ellipsoid `a` against ellipsoid `b` (sliced).
+    EllipsoidEllipsoid { semi_a: Vector3, semi_b: Vector3 },
+    /// General ellipsoid `a` against box `b` (sliced).
+    EllipsoidBox { semi_axes: Vector3, cuboid: Cuboid },
+    /// General ellipsoid `a` against cylinder `b` (sliced).
+    EllipsoidCylinder {
+        semi_axes: Vector3,
+        cylinder: Cylinder,
+    },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
     /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing.
@@ -192,6 +201,17 @@ impl Kernel {
             Self::EllipsoidPlane { semi_axes, side } => {
                 pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
             }
+            Self::EllipsoidEllipsoid { semi_a, semi_b } => {
+                pairs::ellipsoid_ellipsoid::contact(&semi_a, pose_a, &semi_b, pose_b, work)
+            }
+            Self::EllipsoidBox {
+                semi_axes,
+                ref cuboid,
+            } => pairs::ellipsoid_box::contact(&semi_axes, pose_a, cuboid, pose_b, work),
+            Self::EllipsoidCylinder {
+                semi_axes,
+                ref cylinder,
+            } => pairs::ellipsoid_cylinder::contact(&semi_axes, pose_a, cylinder, pose_b, work),
             Self::CylinderPlane { ref cylinder, side } => {
                 pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
             }

@@ -20,6 +20,8 @@ mod common;
 mod degenerate;
 mod degenerate_boundaries;
 mod degenerate_sliced;
+mod ellipsoid_degenerate;
+mod ellipsoid_oracles;
 mod model_check;
 mod oracles;
 mod properties;

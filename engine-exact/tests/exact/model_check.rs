@@ -56,7 +56,7 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 33] = [
+const BUILT: [(&str, &str); 37] = [
     ("sphere", "bounded plane"),
     ("cylinder", "cylinder"),
     ("cylinder", "box"),
@@ -77,6 +77,10 @@ const BUILT: [(&str, &str); 33] = [
     ("sphere", "sphere"),
     ("sphere", "plane"),
     ("ellipsoid", "plane"),
+    ("ellipsoid", "ellipsoid"),
+    ("sphere", "ellipsoid"),
+    ("ellipsoid", "box"),
+    ("ellipsoid", "cylinder"),
     ("box", "box"),
     ("box", "plane"),
     ("box", "bounded plane"),
@@ -145,8 +149,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 32 distinct pairs, 26 of them between different representatives (both orders count).
-    assert_eq!(accepted, 6 + 2 * 26);
+    // 36 distinct pairs, 29 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 29);
 }
 
 #[test]
@@ -217,4 +221,25 @@ fn lists_give_one_contact_per_touching_pair_with_their_indices_and_counted_work(
     assert_eq!(out.len(), 2);
     assert_eq!((out[1].geometry_i, out[1].geometry_j), (1, 0));
     assert!((out[1].penetration - 0.5).abs() < 1e-13);
+}
+
+#[test]
+fn flipped_general_ellipsoid_pairs_are_refused() {
+    let general = || instance(Geometry::Ellipsoid(Ellipsoid::new(1.0, 2.0, 3.0).unwrap()));
+    let others = [
+        general(),
+        instance(Geometry::sphere(1.0).unwrap()),
+        instance(Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 1.0).unwrap())),
+        instance(Geometry::Cylinder(Cylinder::new(1.0, 2.0).unwrap())),
+    ];
+    for other in &others {
+        for (i, j) in [
+            (general().flipped(), other.clone()),
+            (general(), other.clone().flipped()),
+            (other.clone().flipped(), general()),
+        ] {
+            let err = ExactEngine.prepare(&[i], &[j]).unwrap_err();
+            assert!(err.to_string().contains("flipped"), "{err}");
+        }
+    }
 }

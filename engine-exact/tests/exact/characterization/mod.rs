@@ -9,6 +9,7 @@
 use crate::common::{Expected, Rng, errors, query};
 use contact_core::{GeometryInstance, Isometry3};
 
+mod ellipsoids;
 mod planar;
 pub(crate) mod planar_overlap;
 mod revolved;
@@ -96,6 +97,7 @@ fn characterization_table() {
     let mut rows = solids::rows(&mut rng);
     rows.extend(revolved::rows(&mut rng));
     rows.extend(sliced::rows(&mut rng));
+    rows.extend(ellipsoids::rows(&mut rng));
     rows.extend(planar::rows(&mut rng));
     rows.extend(planar_overlap::rows(&mut rng));
     println!(

@@ -1,0 +1,464 @@
+//! The overlap of the unit disc with a convex region of the plane, in closed form: its
+//! area, first moments, and the pieces of both boundaries that bound it.
+//!
+//! The unit disc is an ellipsoid's section seen through the affine map that makes the section
+//! a circle (angle `θ` on the circle); the region is the other solid's section seen through
+//! the same map: a convex polygon (a box) or an ellipse `k + K·(cos φ, sin φ)` (an ellipsoid
+//! or a cylinder), `det K > 0`.
+//!
+//! - **Polygon**: the signed decomposition about the disc's centre. Each directed edge
+//!   `p → q` spans the triangle `(0, p, q)`; its part inside the disc is a triangle where the
+//!   edge is inside the circle and a circular sector where it is outside (the edge's
+//!   crossings with the circle: a quadratic, solved without cancellation). The signed pieces
+//!   add up to the overlap, arcs included (arc integrals are additive in the angle).
+//! - **Ellipse**: the crossings are the roots of `f(θ) = |K⁻¹(u(θ) − k)|² − 1`, a
+//!   trigonometric polynomial of degree 2: the half-angle substitution turns it into a real
+//!   quartic, with the substitution's blind spot (`θ = θ_r + π`) put where `|f|` is largest
+//!   among eight samples, so the leading coefficient is well away from zero. The quartic's
+//!   roots are the eigenvalues of its companion matrix, polished by Newton on `f` itself.
+//!   Arcs between consecutive crossings, of the circle and of the ellipse, are kept when their
+//!   midpoints lie inside the other curve, and Green's theorem sums them. A root missed near
+//!   a tangency (a complex pair closer than 1e-6 to the real axis is kept as real) loses a
+//!   sliver whose area is of the order of the cube of the roots' separation; a spurious root
+//!   only splits an arc in two with the same classification. No crossing: one curve is
+//!   inside the other (tested at one point) or they are apart. `f ≡ 0` within round-off (the
+//!   same circle): the disc.
+//!
+//! Green's theorem: area `½∮(x dy − y dx)`, moments `⅓∮x(x dy − y dx)` and `⅓∮y(x dy − y dx)`;
+//! on arcs of ellipses these are trigonometric polynomials of degree 2, integrated exactly.
+
+use nalgebra::{Complex, Matrix2, Matrix4, Schur, Vector2};
+use std::f64::consts::{FRAC_PI_4, PI, TAU};
+
+/// Most arcs of one kind an overlap keeps.
+pub(crate) const MAX_ARCS: usize = 16;
+
+/// Parameter intervals `(start, end)` of boundary arcs (signed: `end < start` runs
+/// clockwise).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Arcs {
+    spans: [(f64, f64); MAX_ARCS],
+    len: usize,
+}
+
+impl Default for Arcs {
+    fn default() -> Self {
+        Self {
+            spans: [(0.0, 0.0); MAX_ARCS],
+            len: 0,
+        }
+    }
+}
+
+impl Arcs {
+    fn push(&mut self, start: f64, end: f64) {
+        debug_assert!(self.len < MAX_ARCS, "too many arcs");
+        if self.len < MAX_ARCS {
+            self.spans[self.len] = (start, end);
+            self.len += 1;
+        }
+    }
+
+    /// The arcs kept.
+    pub(crate) fn spans(&self) -> &[(f64, f64)] {
+        &self.spans[..self.len]
+    }
+}
+
+/// The overlap of the unit disc with a region, in the disc's coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct DiscOverlap {
+    /// Area.
+    pub area: f64,
+    /// First moments `∫ w dA`.
+    pub moment: Vector2<f64>,
+    /// `Σ (u(θ₁) − u(θ₀))` over the circle's arcs inside the region (`u(θ) = (cos θ, sin θ)`).
+    pub chord: Vector2<f64>,
+    /// `Σ (θ₁ − θ₀)` over those arcs.
+    pub angle: f64,
+    /// The circle's arcs inside the region, in `θ`.
+    pub arcs: Arcs,
+    /// Polygon: the length of its edges inside the disc, measured after the map `map` given
+    /// to [`disc_polygon`].
+    pub other_length: f64,
+    /// Ellipse: its arcs inside the disc, in `φ`.
+    pub other_arcs: Arcs,
+    /// The overlap's shape class: crossings of the two boundaries, plus 16 per polygon
+    /// vertex inside the disc. Where it changes with the slice, the moments have a kink.
+    pub shape: usize,
+}
+
+fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+fn on_circle(theta: f64) -> Vector2<f64> {
+    Vector2::new(theta.cos(), theta.sin())
+}
+
+impl DiscOverlap {
+    /// Adds the circle's arc from `t0` to `t1` (a sector about the centre for the area and
+    /// moments, which is Green's integral along the arc).
+    fn add_circle_arc(&mut self, t0: f64, t1: f64) {
+        let (s0, c0) = t0.sin_cos();
+        let (s1, c1) = t1.sin_cos();
+        self.area += 0.5 * (t1 - t0);
+        self.moment += Vector2::new(s1 - s0, c0 - c1) / 3.0;
+        self.chord += Vector2::new(c1 - c0, s1 - s0);
+        self.angle += t1 - t0;
+        self.arcs.push(t0, t1);
+    }
+
+    /// Adds the ellipse's arc `k + K u(φ)`, `φ` from `f0` to `f1`: Green's integrals.
+    fn add_ellipse_arc(&mut self, k: &Vector2<f64>, m: &Matrix2<f64>, f0: f64, f1: f64) {
+        // p × p' = det K + a cos φ + b sin φ.
+        let k1 = m.column(0).into_owned();
+        let k2 = m.column(1).into_owned();
+        let w = [m.determinant(), cross(k, &k2), -cross(k, &k1)];
+        let x = [k.x, m[(0, 0)], m[(0, 1)]];
+        let y = [k.y, m[(1, 0)], m[(1, 1)]];
+        self.area += 0.5 * trig_product_integral(&w, &[1.0, 0.0, 0.0], f0, f1);
+        self.moment += Vector2::new(
+            trig_product_integral(&x, &w, f0, f1),
+            trig_product_integral(&y, &w, f0, f1),
+        ) / 3.0;
+        self.other_arcs.push(f0, f1);
+    }
+}
+
+/// `∫ (c₀ + c₁ cos φ + c₂ sin φ)(d₀ + d₁ cos φ + d₂ sin φ) dφ` from `f0` to `f1`.
+pub(crate) fn trig_product_integral(c: &[f64; 3], d: &[f64; 3], f0: f64, f1: f64) -> f64 {
+    let (s0, co0) = f0.sin_cos();
+    let (s1, co1) = f1.sin_cos();
+    let span = f1 - f0;
+    let sin_diff = s1 - s0;
+    let cos_diff = co1 - co0;
+    // sin 2φ = 2 sin φ cos φ.
+    let sin2_diff = 2.0 * (s1 * co1 - s0 * co0);
+    let sin_sq_diff = (s1 - s0) * (s1 + s0);
+    c[0] * d[0] * span + (c[0] * d[1] + c[1] * d[0]) * sin_diff
+        - (c[0] * d[2] + c[2] * d[0]) * cos_diff
+        + c[1] * d[1] * (0.5 * span + 0.25 * sin2_diff)
+        + c[2] * d[2] * (0.5 * span - 0.25 * sin2_diff)
+        + (c[1] * d[2] + c[2] * d[1]) * 0.5 * sin_sq_diff
+}
+
+/// The overlap of the unit disc with the convex polygon `vertices` (counter-clockwise).
+/// Edge lengths inside the disc are measured after `map` (the map back to the slice plane).
+pub(crate) fn disc_polygon(vertices: &[Vector2<f64>], map: &Matrix2<f64>) -> DiscOverlap {
+    let mut out = DiscOverlap::default();
+    for (k, p) in vertices.iter().enumerate() {
+        let q = vertices[(k + 1) % vertices.len()];
+        let d = q - p;
+        let dd = d.norm_squared();
+        if dd == 0.0 {
+            continue;
+        }
+        // |p + λ d|² = 1: dd λ² + 2 b λ + c = 0.
+        let b = p.dot(&d);
+        let c = p.norm_squared() - 1.0;
+        let disc = b * b - dd * c;
+        let mut cuts = [0.0, 1.0, 1.0, 1.0];
+        let mut n = 1;
+        if disc > 0.0 {
+            let q_root = -(b + b.signum() * disc.sqrt());
+            let mut roots = if q_root != 0.0 {
+                [q_root / dd, c / q_root]
+            } else {
+                [0.0, 0.0]
+            };
+            roots.sort_by(f64::total_cmp);
+            for r in roots {
+                if r > 0.0 && r < 1.0 {
+                    cuts[n] = r;
+                    n += 1;
+                }
+            }
+        }
+        out.shape += (n - 1) + if p.norm_squared() < 1.0 { 16 } else { 0 };
+        cuts[n] = 1.0;
+        for span in cuts[..=n].windows(2) {
+            if span[1] <= span[0] {
+                continue;
+            }
+            let a = p + span[0] * d;
+            let e = p + span[1] * d;
+            let mid = p + 0.5 * (span[0] + span[1]) * d;
+            if mid.norm_squared() < 1.0 {
+                let twice = cross(&a, &e);
+                out.area += 0.5 * twice;
+                out.moment += (a + e) * (twice / 6.0);
+                out.other_length += (map * (e - a)).norm();
+            } else {
+                let (a_hat, e_hat) = (a.normalize(), e.normalize());
+                let sweep = cross(&a_hat, &e_hat).atan2(a_hat.dot(&e_hat));
+                let start = a_hat.y.atan2(a_hat.x);
+                out.add_circle_arc(start, start + sweep);
+            }
+        }
+    }
+    out
+}
+
+/// `f(θ) = a₀ + a₁ cos θ + b₁ sin θ + a₂ cos 2θ + b₂ sin 2θ`.
+#[derive(Debug, Clone, Copy)]
+struct TrigQuadratic {
+    a0: f64,
+    a1: f64,
+    b1: f64,
+    a2: f64,
+    b2: f64,
+}
+
+impl TrigQuadratic {
+    fn value(&self, t: f64) -> f64 {
+        let (s, c) = t.sin_cos();
+        let (s2, c2) = (2.0 * s * c, (c - s) * (c + s));
+        self.a0 + self.a1 * c + self.b1 * s + self.a2 * c2 + self.b2 * s2
+    }
+
+    fn slope(&self, t: f64) -> f64 {
+        let (s, c) = t.sin_cos();
+        let (s2, c2) = (2.0 * s * c, (c - s) * (c + s));
+        -self.a1 * s + self.b1 * c - 2.0 * self.a2 * s2 + 2.0 * self.b2 * c2
+    }
+
+    /// The real roots in `[0, 2π)`, sorted (at most 4), and how many.
+    fn roots(&self) -> ([f64; 4], usize) {
+        let mut best = (0.0, -1.0);
+        for j in 0..8 {
+            let t = j as f64 * FRAC_PI_4;
+            let v = self.value(t).abs();
+            if v > best.1 {
+                best = (t, v);
+            }
+        }
+        // θ = θ_r + ψ with ψ = π at the largest sample.
+        let shift = best.0 - PI;
+        let (s, c) = shift.sin_cos();
+        let (s2, c2) = (2.0 * s * c, (c - s) * (c + s));
+        let a1 = self.a1 * c + self.b1 * s;
+        let b1 = -self.a1 * s + self.b1 * c;
+        let a2 = self.a2 * c2 + self.b2 * s2;
+        let b2 = -self.a2 * s2 + self.b2 * c2;
+        let a0 = self.a0;
+        // x = tan(ψ/2), times (1 + x²)²: coefficients of x⁴ … x⁰.
+        let lead = a0 - a1 + a2;
+        let coeffs = [
+            2.0 * b1 - 4.0 * b2,
+            2.0 * a0 - 6.0 * a2,
+            2.0 * b1 + 4.0 * b2,
+            a0 + a1 + a2,
+        ];
+        let mut companion = Matrix4::zeros();
+        for (k, ck) in coeffs.iter().enumerate() {
+            companion[(0, k)] = -ck / lead;
+        }
+        for k in 1..4 {
+            companion[(k, k - 1)] = 1.0;
+        }
+        let mut roots = [0.0; 4];
+        let mut n = 0;
+        let eigenvalues: Option<[Complex<f64>; 4]> = if companion.iter().all(|v| v.is_finite()) {
+            Schur::try_new(companion, f64::EPSILON, 400).map(|schur| {
+                let e = schur.complex_eigenvalues();
+                [e[0], e[1], e[2], e[3]]
+            })
+        } else {
+            None
+        };
+        match eigenvalues {
+            Some(e) => {
+                for z in e {
+                    if z.im.abs() <= 1e-6 * (1.0 + z.re.abs()) {
+                        roots[n] = self.polish(shift + 2.0 * z.re.atan());
+                        n += 1;
+                    }
+                }
+            }
+            None => n = self.roots_by_sampling(&mut roots),
+        }
+        for r in &mut roots[..n] {
+            *r = r.rem_euclid(TAU);
+        }
+        roots[..n].sort_by(f64::total_cmp);
+        (roots, n)
+    }
+
+    /// Newton on `f`, each step kept only when it lowers `|f|`.
+    fn polish(&self, mut t: f64) -> f64 {
+        let mut value = self.value(t);
+        for _ in 0..6 {
+            let slope = self.slope(t);
+            if slope == 0.0 || value == 0.0 {
+                break;
+            }
+            let next = t - value / slope;
+            let next_value = self.value(next);
+            if !(next_value.abs() < value.abs()) {
+                break;
+            }
+            t = next;
+            value = next_value;
+        }
+        t
+    }
+
+    /// The fallback when the eigenvalues are not available: sign changes over 64 samples,
+    /// bisected.
+    fn roots_by_sampling(&self, roots: &mut [f64; 4]) -> usize {
+        let mut n = 0;
+        let step = TAU / 64.0;
+        for j in 0..64 {
+            let (mut lo, mut hi) = (j as f64 * step, (j + 1) as f64 * step);
+            let (flo, fhi) = (self.value(lo), self.value(hi));
+            if n == 4 || (flo < 0.0) == (fhi < 0.0) {
+                continue;
+            }
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if (self.value(mid) < 0.0) == (flo < 0.0) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            roots[n] = 0.5 * (lo + hi);
+            n += 1;
+        }
+        n
+    }
+}
+
+/// The overlap of the unit disc with the ellipse `center + matrix·u(φ)` (`det matrix > 0`).
+pub(crate) fn disc_ellipse(center: &Vector2<f64>, matrix: &Matrix2<f64>) -> DiscOverlap {
+    let mut out = DiscOverlap::default();
+    let Some(inverse) = matrix.try_inverse() else {
+        return out;
+    };
+    let g = inverse.transpose() * inverse;
+    let gk = g * center;
+    let f = TrigQuadratic {
+        a0: 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) - 1.0,
+        a1: -2.0 * gk.x,
+        b1: -2.0 * gk.y,
+        a2: 0.5 * (g[(0, 0)] - g[(1, 1)]),
+        b2: g[(0, 1)],
+    };
+    let size = 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) + 1.0;
+    let largest = f.a0.abs() + f.a1.abs() + f.b1.abs() + f.a2.abs() + f.b2.abs();
+    if largest <= 1e-14 * size {
+        // The same circle.
+        out.add_circle_arc(0.0, TAU);
+        return out;
+    }
+    let (roots, n) = f.roots();
+    out.shape = n;
+    if n == 0 {
+        if f.value(0.0) < 0.0 {
+            out.add_circle_arc(0.0, TAU);
+        } else if (center + matrix.column(0)).norm_squared() < 1.0 {
+            out.add_ellipse_arc(center, matrix, 0.0, TAU);
+        }
+        return out;
+    }
+    let mut params = [0.0; 4];
+    for k in 0..n {
+        let t0 = roots[k];
+        let t1 = if k + 1 < n {
+            roots[k + 1]
+        } else {
+            roots[0] + TAU
+        };
+        if t1 > t0 && f.value(0.5 * (t0 + t1)) < 0.0 {
+            out.add_circle_arc(t0, t1);
+        }
+        let w = inverse * (on_circle(t0) - center);
+        params[k] = w.y.atan2(w.x).rem_euclid(TAU);
+    }
+    params[..n].sort_by(f64::total_cmp);
+    for k in 0..n {
+        let f0 = params[k];
+        let f1 = if k + 1 < n {
+            params[k + 1]
+        } else {
+            params[0] + TAU
+        };
+        let mid = 0.5 * (f0 + f1);
+        if f1 > f0 && (center + matrix * on_circle(mid)).norm_squared() < 1.0 {
+            out.add_ellipse_arc(center, matrix, f0, f1);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Area and centroid of the overlap by a fine grid over the disc (an independent count).
+    fn grid(inside: impl Fn(&Vector2<f64>) -> bool) -> (f64, Vector2<f64>) {
+        let n = 1000;
+        let h = 2.0 / n as f64;
+        let (mut area, mut m) = (0.0, Vector2::zeros());
+        for i in 0..n {
+            for j in 0..n {
+                let p = Vector2::new(-1.0 + (i as f64 + 0.5) * h, -1.0 + (j as f64 + 0.5) * h);
+                if p.norm_squared() < 1.0 && inside(&p) {
+                    area += h * h;
+                    m += p * h * h;
+                }
+            }
+        }
+        (area, m)
+    }
+
+    #[test]
+    fn disc_and_ellipse_overlap_matches_a_grid_count() {
+        let k = Vector2::new(0.7, -0.3);
+        let m = Matrix2::new(0.8, 0.3, -0.2, 0.5);
+        let o = disc_ellipse(&k, &m);
+        let inv = m.try_inverse().unwrap();
+        let (area, moment) = grid(|p| (inv * (p - k)).norm_squared() < 1.0);
+        assert!((o.area - area).abs() < 2e-3, "{} vs {area}", o.area);
+        assert!(
+            (o.moment - moment).norm() < 2e-3,
+            "{:?} vs {moment:?}",
+            o.moment
+        );
+    }
+
+    #[test]
+    fn disc_and_square_overlap_matches_a_grid_count() {
+        let v = [
+            Vector2::new(-0.2, -1.5),
+            Vector2::new(1.5, -1.5),
+            Vector2::new(1.5, 0.4),
+            Vector2::new(-0.2, 0.4),
+        ];
+        let o = disc_polygon(&v, &Matrix2::identity());
+        let (area, moment) = grid(|p| p.x > -0.2 && p.y < 0.4);
+        assert!((o.area - area).abs() < 2e-3, "{} vs {area}", o.area);
+        assert!((o.moment - moment).norm() < 2e-3);
+        // Inside edges: x = −0.2 from y = −√0.96 to 0.4, and y = 0.4 from x = −0.2 to √0.84.
+        let expected = (0.4 + 0.96f64.sqrt()) + (0.84f64.sqrt() + 0.2);
+        assert!((o.other_length - expected).abs() < 1e-14);
+    }
+
+    #[test]
+    fn two_circles_give_the_lens_in_closed_form() {
+        // Unit circle and the circle of radius 1 at (1, 0): lens area 2π/3 − √3/2.
+        let o = disc_ellipse(&Vector2::new(1.0, 0.0), &Matrix2::identity());
+        let exact = 2.0 * PI / 3.0 - 3f64.sqrt() / 2.0;
+        assert!((o.area - exact).abs() < 1e-14, "{}", o.area);
+        assert!((o.moment.x / o.area - 0.5).abs() < 1e-14);
+        assert!(o.moment.y.abs() < 1e-14);
+        // Contained and apart.
+        let inner = disc_ellipse(&Vector2::new(0.1, 0.0), &(0.5 * Matrix2::identity()));
+        assert!((inner.area - 0.25 * PI).abs() < 1e-15);
+        let apart = disc_ellipse(&Vector2::new(3.0, 0.0), &Matrix2::identity());
+        assert_eq!(apart.area, 0.0);
+        let same = disc_ellipse(&Vector2::zeros(), &Matrix2::identity());
+        assert!((same.area - PI).abs() < 1e-15);
+    }
+}
