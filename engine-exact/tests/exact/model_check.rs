@@ -145,8 +145,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 28 distinct pairs, 23 of them between different representatives (both orders count).
-    assert_eq!(accepted, 5 + 2 * 23);
+    // 32 distinct pairs, 26 of them between different representatives (both orders count).
+    assert_eq!(accepted, 6 + 2 * 26);
 }
 
 #[test]
