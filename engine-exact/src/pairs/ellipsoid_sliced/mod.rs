@@ -298,7 +298,7 @@ pub(crate) fn finish(
 /// The real roots of `a x² + b x + c` (`a ≠ 0`), without cancellation, and how many.
 pub(crate) fn quadratic_roots(a: f64, b: f64, c: f64) -> ([f64; 2], usize) {
     let disc = b * b - 4.0 * a * c;
-    if !(disc >= 0.0) || a == 0.0 {
+    if disc.is_nan() || disc < 0.0 || a == 0.0 {
         return ([0.0; 2], 0);
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
