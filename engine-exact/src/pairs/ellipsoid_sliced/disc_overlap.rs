@@ -295,7 +295,8 @@ impl TrigQuadratic {
             }
             let next = t - value / slope;
             let next_value = self.value(next);
-            if !(next_value.abs() < value.abs()) {
+            // A NaN step is refused too.
+            if next_value.abs().partial_cmp(&value.abs()) != Some(std::cmp::Ordering::Less) {
                 break;
             }
             t = next;

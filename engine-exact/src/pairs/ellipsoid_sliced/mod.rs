@@ -32,10 +32,11 @@ use nalgebra::{Matrix2, Matrix3, Vector2};
 
 /// The quadrature across the slices: 12-node pieces halved until their halves agree to
 /// 1e-13 (Gauss–Legendre then sits at round-off on the smooth stretches; the kinks where
-/// the sections' crossings appear or vanish take the halvings).
+/// the sections' crossings appear or vanish are cuts, see [`shape_events`]), at most 20
+/// times.
 pub(crate) const ADAPTIVE: Adaptive = Adaptive {
     tolerance: 1e-13,
-    max_depth: 30,
+    max_depth: 20,
 };
 
 /// The integrand's components: area, `t`·area, the in-plane first moments (2), the area
@@ -189,15 +190,20 @@ pub(crate) fn integrand(t: f64, a: &Section, o: &DiscOverlap, surface_b: f64) ->
 
 /// The absolute error each piece may keep, from a first estimate of the integrals: 1e-14 of
 /// the volume (times the working unit, for the moments), 1e-14 of the surface for the area
-/// vector, 1e-10 of it for the unsigned surface.
+/// vector, 1e-10 of it for the unsigned surface — and never below 1e-15 in working units
+/// (lengths about 1), the round-off of the section overlaps, so a grazing sliver (whose
+/// overlaps are all round-off) does not halve to the depth limit everywhere.
 pub(crate) fn floor(estimate: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
-    let volume = estimate[0].abs() * 1e-14;
+    let volume = (estimate[0].abs() * 1e-14).max(ROUND_OFF);
     let surface = (estimate[7].abs() + estimate[8].abs())
         + estimate[4..7].iter().map(|v| v.abs()).sum::<f64>();
-    let s = surface * 1e-14;
-    let u = surface * 1e-10;
+    let s = (surface * 1e-14).max(ROUND_OFF);
+    let u = (surface * 1e-10).max(ROUND_OFF);
     [volume, volume, volume, volume, s, s, s, u, u]
 }
+
+/// The absolute floor of [`floor`], in working units.
+const ROUND_OFF: f64 = 1e-15;
 
 /// The integrals over the slices, in the slicing frame (working units).
 #[derive(Debug, Clone, Copy)]
@@ -292,7 +298,7 @@ pub(crate) fn finish(
 /// The real roots of `a x² + b x + c` (`a ≠ 0`), without cancellation, and how many.
 pub(crate) fn quadratic_roots(a: f64, b: f64, c: f64) -> ([f64; 2], usize) {
     let disc = b * b - 4.0 * a * c;
-    if !(disc >= 0.0) || a == 0.0 {
+    if disc.is_nan() || disc < 0.0 || a == 0.0 {
         return ([0.0; 2], 0);
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
