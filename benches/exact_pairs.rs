@@ -1,5 +1,5 @@
 //! Per-pair query cost of the exact engine, side by side with parry's `contact` query on the
-//! same pair where parry has the shapes (spheres, boxes, unbounded planes).
+//! same pair where parry has the shapes (spheres, boxes, cylinders, unbounded planes).
 //!
 //! `cargo bench --bench exact_pairs` (release). Each group `contact/<pair>` has the ids
 //! `exact` (a prepared pair's full `query`: pose composition, dispatch, the kernel, the push
@@ -24,6 +24,7 @@ use contact_core::{Point2, Point3};
 use criterion::{Criterion, criterion_group, criterion_main};
 use engine_exact::ExactEngine;
 use engine_exact::parry_adapter::{self, PeerShape};
+use std::f64::consts::FRAC_PI_2;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -42,7 +43,38 @@ fn cases() -> Vec<Case> {
     let tilt = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
     let cube = |h: f64| Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap());
     let ground = Geometry::Plane(Plane::unbounded());
+    let cylinder = |r: f64, l: f64| Geometry::Cylinder(Cylinder::new(r, l).unwrap());
     vec![
+        // Crossed at right angles, axes 0.8 apart: δ = r_a + r_b − 0.8 by symmetry.
+        Case {
+            name: "cylinder_cylinder",
+            i: cylinder(0.5, 4.0),
+            j: cylinder(0.5, 4.0),
+            pose_i: Isometry3::translation(0.0, 0.0, -2.0),
+            pose_j: Isometry3::from_parts(
+                nalgebra::Translation3::new(-2.0, 0.8, 0.0),
+                UnitQuaternion::from_axis_angle(&nalgebra::Vector3::y_axis(), FRAC_PI_2),
+            ),
+            depth: Some(0.2),
+        },
+        // Parallel, b longer than a at both ends: δ = r_a + r_b − d.
+        Case {
+            name: "cylinder_cylinder_parallel",
+            i: cylinder(1.0, 2.0),
+            j: cylinder(0.5, 3.0),
+            pose_i: Isometry3::identity(),
+            pose_j: Isometry3::translation(1.3, 0.0, -0.5),
+            depth: Some(0.2),
+        },
+        // A pin in a slot: the box's face x = 0.3 cuts the side along the whole length.
+        Case {
+            name: "cylinder_box",
+            i: cylinder(0.5, 2.0),
+            j: Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 2.0).unwrap()),
+            pose_i: Isometry3::identity(),
+            pose_j: Isometry3::translation(1.3, 0.0, 1.0),
+            depth: Some(0.2),
+        },
         Case {
             name: "sphere_plane",
             i: Geometry::sphere(1.0).unwrap(),

@@ -20,6 +20,13 @@
 //! of its area over the slice's. The unsigned areas (`|g − d'n|`: `r/w` on a side, `1/|g|` on a
 //! plane of unnormalised `g`) of both surfaces inside the other are integrated alongside.
 //!
+//! The integration variable is the angle `θ` of `t = r sin θ` (`r` being `a`'s radius): `a`'s
+//! half width `w = r cos θ` and the distances `r ∓ t` to its ends are then free of
+//! cancellation, and `a`'s side, whose element `L (t n ± w e)/w dt` is singular at the ends,
+//! becomes `L (t n ± w e) dθ`. A second cylinder's width takes its factors `r_b ∓ (t − t_b)`
+//! from those distances, so two cylinders whose sections end at the same `t` (identical or
+//! aligned ones) agree there to the last bit.
+//!
 //! ## Where the integrand is not smooth
 //! - square-root ends where a side's width `w` vanishes (`t = t₀ ± r` of each cylinder),
 //! - kinks where a vertex of one section crosses an edge of the other (the `t` of each vertex
@@ -33,7 +40,8 @@
 //! interval, by convexity) gives `t_min` and `t_max` to round-off. Those, the square-root ends
 //! and `b`'s vertices are the cuts of [`crate::quadrature::Adaptive`]: sine-mapped pieces,
 //! halved where a kink between cuts remains, until the halves agree with the whole to 1e-13
-//! relative or 1e-14 of the whole (volume for the moments, surface for the areas).
+//! relative or 1e-14 of the whole (volume for the moments, surface for the areas), and
+//! never below the round-off of a slice (1e-14 per unit of range, working units).
 
 use super::section::{MAX_LABELS, Polygon};
 use crate::quadrature;

@@ -503,7 +503,7 @@ pub fn crossed_cylinders_volume(
     };
     let side_a = |p: &Vector3| p.x * p.x + p.y * p.y - ra * ra;
     let b_across = axis_b.cross(&n);
-    let rims: [(Box<dyn Fn(f64) -> Vector3>, bool); 4] = [
+    let rims: [(Rim, bool); 4] = [
         (
             Box::new(|phi: f64| Vector3::new(ra * phi.cos(), ra * phi.sin(), ha)),
             true,
@@ -568,6 +568,9 @@ pub fn crossed_cylinders_volume(
         }
     })
 }
+
+/// A rim circle by its angle.
+type Rim<'a> = Box<dyn Fn(f64) -> Vector3 + 'a>;
 
 /// `−∂V/∂x_b` by central differences at steps `h, h/2, h/4`, extrapolated twice.
 pub fn minus_gradient(volume: impl Fn(&Vector3) -> f64, h: f64) -> Vector3 {
