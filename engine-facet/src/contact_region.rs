@@ -296,21 +296,42 @@ fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
         } else {
             x.box_in_b(other.tree.root())
         });
-        s.queue.clear();
+        // The seed's sums, side and apex stay local while it floods (its `inside` sums are
+        // written only here, so the order of additions is unchanged).
+        let Scratch {
+            slots,
+            nodes,
+            queue,
+            apex,
+            ..
+        } = s;
+        let side = node.side as usize;
+        let mut flood = Flood {
+            mesh,
+            guard,
+            apex: apex[side],
+            seed: id,
+            sums: nodes[id as usize].inside,
+            slots: &mut slots[side],
+            nodes,
+            queue,
+        };
+        flood.queue.clear();
         for k in 0..3 {
             let both_inside = node.inside_corners & (1 << k) != 0
                 && node.inside_corners & (1 << ((k + 1) % 3)) != 0;
             if both_inside {
-                let t = mesh.neighbors[node.tri as usize][k];
-                visit(mesh, &guard, s, id, t);
+                flood.visit(mesh.neighbors[node.tri as usize][k]);
             }
         }
-        while let Some(t) = s.queue.pop() {
-            for k in 0..3 {
-                let next = mesh.neighbors[t as usize][k];
-                visit(mesh, &guard, s, id, next);
-            }
+        while let Some(t) = flood.queue.pop() {
+            let [n0, n1, n2] = mesh.neighbors[t as usize];
+            flood.visit(n0);
+            flood.visit(n1);
+            flood.visit(n2);
         }
+        let sums = flood.sums;
+        s.nodes[id as usize].inside = sums;
     }
 }
 
@@ -323,36 +344,50 @@ fn aabb(o: &crate::obb::Obb) -> (Vector3, Vector3) {
     (o.center - reach, o.center + reach)
 }
 
-#[inline]
-fn visit(mesh: &FacetMesh, guard: &(Vector3, Vector3), s: &mut Scratch, seed: u32, tri: u32) {
-    if tri == crate::facet_mesh::NO_NEIGHBOR {
-        return;
-    }
-    let side = s.nodes[seed as usize].side as usize;
-    if let Some(mark) = s.slots[side].get(tri) {
-        let owner = mark & !INSIDE_BIT;
-        if owner != seed {
-            union(&mut s.nodes, seed, owner);
+/// One seed's flood over its mesh: the state [`visit`](Flood::visit) reads and writes.
+struct Flood<'s> {
+    mesh: &'s FacetMesh,
+    /// The leak guard `(min, max)` in the mesh's frame.
+    guard: (Vector3, Vector3),
+    apex: Vector3,
+    seed: u32,
+    sums: SurfaceSums,
+    slots: &'s mut crate::scratch::SlotMap,
+    nodes: &'s mut Vec<RegionNode>,
+    queue: &'s mut Vec<u32>,
+}
+
+impl Flood<'_> {
+    /// Marks `tri` inside, adds its cone and queues it, unless it is marked already (then its
+    /// owner joins the seed's region) or it leaves the guard box.
+    #[inline]
+    fn visit(&mut self, tri: u32) {
+        if tri == crate::facet_mesh::NO_NEIGHBOR {
+            return;
         }
-        return;
+        if let Some(mark) = self.slots.get(tri) {
+            let owner = mark & !INSIDE_BIT;
+            if owner != self.seed {
+                union(self.nodes, self.seed, owner);
+            }
+            return;
+        }
+        let [p, q, r] = self.mesh.corners(tri);
+        let guard = &self.guard;
+        // Leak guard: an inside triangle lies in the other mesh's root box.
+        if p.x < guard.0.x
+            || p.y < guard.0.y
+            || p.z < guard.0.z
+            || p.x > guard.1.x
+            || p.y > guard.1.y
+            || p.z > guard.1.z
+        {
+            return;
+        }
+        self.slots.insert(tri, self.seed | INSIDE_BIT);
+        self.sums.add_triangle(&p, &q, &r, &self.apex);
+        self.queue.push(tri);
     }
-    let [p, q, r] = mesh.corners(tri);
-    // Leak guard: an inside triangle lies in the other mesh's root box.
-    if p.x < guard.0.x
-        || p.y < guard.0.y
-        || p.z < guard.0.z
-        || p.x > guard.1.x
-        || p.y > guard.1.y
-        || p.z > guard.1.z
-    {
-        return;
-    }
-    s.slots[side].insert(tri, seed | INSIDE_BIT);
-    let apex = s.apex[side];
-    s.nodes[seed as usize]
-        .inside
-        .add_triangle(&p, &q, &r, &apex);
-    s.queue.push(tri);
 }
 
 /// Sets each node's `region` to the index of its set, numbered in order of first appearance;
