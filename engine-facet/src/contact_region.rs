@@ -163,7 +163,8 @@ fn find_crossings(
         |ta, tb| {
             tests += 1;
             let p = a.corners(ta);
-            let q = b.corners(tb).map(|v| x.apply(&v));
+            let [q0, q1, q2] = b.corners(tb);
+            let q = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
             if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
                 hits.push(Hit {
                     ta,
@@ -257,7 +258,11 @@ fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
 #[inline]
 fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3; 3] {
     let c = m.corners(tri);
-    if side == 0 { c } else { c.map(|v| x.apply(&v)) }
+    if side == 0 {
+        c
+    } else {
+        [x.apply(&c[0]), x.apply(&c[1]), x.apply(&c[2])]
+    }
 }
 
 /// The plane (unit normal, point) in A's frame of the triangle on the other side of hit `h`.
@@ -360,7 +365,7 @@ struct Flood<'s> {
 impl Flood<'_> {
     /// Marks `tri` inside, adds its cone and queues it, unless it is marked already (then its
     /// owner joins the seed's region) or it leaves the guard box.
-    #[inline]
+    #[inline(always)]
     fn visit(&mut self, tri: u32) {
         if tri == crate::facet_mesh::NO_NEIGHBOR {
             return;
