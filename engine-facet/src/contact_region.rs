@@ -39,6 +39,7 @@
 //! where the other surface is locally convex and underestimates the volume where it is concave.
 
 use crate::facet_mesh::FacetMesh;
+use crate::inside_flood::flood;
 use crate::obb::boxes_overlap;
 use crate::obb_tree::descend_pair;
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
@@ -163,7 +164,8 @@ fn find_crossings(
         |ta, tb| {
             tests += 1;
             let p = a.corners(ta);
-            let q = b.corners(tb).map(|v| x.apply(&v));
+            let [q0, q1, q2] = b.corners(tb);
+            let q = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
             if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
                 hits.push(Hit {
                     ta,
@@ -255,104 +257,19 @@ fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
 
 /// A triangle's corners in A's frame.
 #[inline]
-fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3; 3] {
+pub(crate) fn corners_in_a(m: &FacetMesh, side: u8, tri: u32, x: &RelativePose) -> [Vector3; 3] {
     let c = m.corners(tri);
-    if side == 0 { c } else { c.map(|v| x.apply(&v)) }
+    if side == 0 {
+        c
+    } else {
+        [x.apply(&c[0]), x.apply(&c[1]), x.apply(&c[2])]
+    }
 }
 
 /// The plane (unit normal, point) in A's frame of the triangle on the other side of hit `h`.
 #[inline]
-fn other_plane(side: u8, hit: &Hit) -> (Vector3, Vector3) {
+pub(crate) fn other_plane(side: u8, hit: &Hit) -> (Vector3, Vector3) {
     if side == 0 { hit.plane_b } else { hit.plane_a }
-}
-
-/// Floods each surface from its crossing triangles into the triangles inside the other solid,
-/// summing them (in their own mesh frame) into the seed node's `inside` sums.
-fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
-    let crossing_count = s.nodes.len();
-    // Corners of crossing triangles: inside when strictly behind every crossed plane.
-    for id in 0..crossing_count {
-        let node = s.nodes[id];
-        let mesh = if node.side == 0 { a } else { b };
-        let c = corners_in_a(mesh, node.side, node.tri, x);
-        let eps = 1e-12 * mesh.size;
-        let mut bits = 0u8;
-        for (k, v) in c.iter().enumerate() {
-            let inside = (0..node.hit_count).all(|i| {
-                let hit = s.hits[s.node_hits[(node.hit_start + i) as usize] as usize];
-                let (n, p0) = other_plane(node.side, &hit);
-                n.dot(&(v - p0)) < -eps
-            });
-            bits |= u8::from(inside) << k;
-        }
-        s.nodes[id].inside_corners = bits;
-    }
-    for id in 0..crossing_count as u32 {
-        let node = s.nodes[id as usize];
-        let (mesh, other) = if node.side == 0 { (a, b) } else { (b, a) };
-        // The other mesh's root box in this mesh's frame, as an axis-aligned box: the leak guard.
-        let guard = aabb(&if node.side == 0 {
-            x.box_in_a(other.tree.root())
-        } else {
-            x.box_in_b(other.tree.root())
-        });
-        s.queue.clear();
-        for k in 0..3 {
-            let both_inside = node.inside_corners & (1 << k) != 0
-                && node.inside_corners & (1 << ((k + 1) % 3)) != 0;
-            if both_inside {
-                let t = mesh.neighbors[node.tri as usize][k];
-                visit(mesh, &guard, s, id, t);
-            }
-        }
-        while let Some(t) = s.queue.pop() {
-            for k in 0..3 {
-                let next = mesh.neighbors[t as usize][k];
-                visit(mesh, &guard, s, id, next);
-            }
-        }
-    }
-}
-
-/// Flood mark: an inside triangle's slot holds its seed node with this bit set.
-const INSIDE_BIT: u32 = 1 << 31;
-
-/// The axis-aligned box `(min, max)` around an oriented box.
-fn aabb(o: &crate::obb::Obb) -> (Vector3, Vector3) {
-    let reach = o.axes.abs() * o.half_extents;
-    (o.center - reach, o.center + reach)
-}
-
-#[inline]
-fn visit(mesh: &FacetMesh, guard: &(Vector3, Vector3), s: &mut Scratch, seed: u32, tri: u32) {
-    if tri == crate::facet_mesh::NO_NEIGHBOR {
-        return;
-    }
-    let side = s.nodes[seed as usize].side as usize;
-    if let Some(mark) = s.slots[side].get(tri) {
-        let owner = mark & !INSIDE_BIT;
-        if owner != seed {
-            union(&mut s.nodes, seed, owner);
-        }
-        return;
-    }
-    let [p, q, r] = mesh.corners(tri);
-    // Leak guard: an inside triangle lies in the other mesh's root box.
-    if p.x < guard.0.x
-        || p.y < guard.0.y
-        || p.z < guard.0.z
-        || p.x > guard.1.x
-        || p.y > guard.1.y
-        || p.z > guard.1.z
-    {
-        return;
-    }
-    s.slots[side].insert(tri, seed | INSIDE_BIT);
-    let apex = s.apex[side];
-    s.nodes[seed as usize]
-        .inside
-        .add_triangle(&p, &q, &r, &apex);
-    s.queue.push(tri);
 }
 
 /// Sets each node's `region` to the index of its set, numbered in order of first appearance;

@@ -110,7 +110,13 @@ impl FacetMesh {
     /// The corners of triangle `t`.
     #[inline]
     pub fn corners(&self, t: u32) -> [Vector3; 3] {
-        self.triangles[t as usize].map(|v| self.vertices[v as usize].coords)
+        // Spelled out rather than `array::map`, which compiles to a slower loop on this hot path.
+        let [i, j, k] = self.triangles[t as usize];
+        [
+            self.vertices[i as usize].coords,
+            self.vertices[j as usize].coords,
+            self.vertices[k as usize].coords,
+        ]
     }
 
     /// Heap bytes held.

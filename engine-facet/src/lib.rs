@@ -22,7 +22,8 @@
 //! - [`obb`], [`obb_tree`]: boxes, the 15-axis separating-axis test, trees and their descent.
 //! - [`triangle_pair`]: the triangle–triangle test with its crossing segment.
 //! - [`contact_region`]: crossings → regions → contacts (the method and its error bound);
-//!   half-spaces in `plane_contact`.
+//!   the flood into the triangles inside the other solid in `inside_flood`; half-spaces in
+//!   `plane_contact`.
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
 //! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve) on
 //!   polylines, with the polyline's true-normal field (exact normals for circles and arcs).
@@ -76,6 +77,7 @@
 pub mod contact_region;
 mod engine;
 pub mod facet_mesh;
+mod inside_flood;
 pub mod obb;
 pub mod obb_tree;
 pub mod parry_adapter;

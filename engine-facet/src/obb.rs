@@ -80,7 +80,6 @@ impl Obb {
 /// or touch). `abs_eps` pads `|r|` against round-off on near-parallel edge axes, relative to 1.
 #[inline]
 pub fn boxes_overlap(a: &Vector3, b: &Vector3, r: &Matrix3, t: &Vector3) -> bool {
-    const ABS_EPS: f64 = 1e-12;
     let mut ar = [[0.0; 3]; 3];
     for i in 0..3 {
         for j in 0..3 {
@@ -94,6 +93,22 @@ pub fn boxes_overlap(a: &Vector3, b: &Vector3, r: &Matrix3, t: &Vector3) -> bool
             return false;
         }
     }
+    overlap_on_b_and_edge_axes(a, b, r, &ar, t)
+}
+
+/// Pads `|r|` against round-off on near-parallel edge axes, relative to 1.
+const ABS_EPS: f64 = 1e-12;
+
+/// The last 12 axes of [`boxes_overlap`] (B's faces, then the edge–edge axes), given `|r| + ε`
+/// as `ar`: true when none of them separates the boxes.
+#[inline]
+fn overlap_on_b_and_edge_axes(
+    a: &Vector3,
+    b: &Vector3,
+    r: &Matrix3,
+    ar: &[[f64; 3]; 3],
+    t: &Vector3,
+) -> bool {
     // B's face axes.
     for j in 0..3 {
         let ra = a.x * ar[0][j] + a.y * ar[1][j] + a.z * ar[2][j];
@@ -121,7 +136,8 @@ pub fn boxes_overlap(a: &Vector3, b: &Vector3, r: &Matrix3, t: &Vector3) -> bool
 /// The same test as [`boxes_overlap`] from the boxes' frames directly: box A's axes (columns)
 /// and centre, box B's axes and centre already in A's frame. `R = Aᵀ·B` and `T = Aᵀ·(c_B − c_A)`
 /// are formed one row at a time, so a pair separated along one of A's axes (the common case
-/// deep in a descent) costs a third of the full product.
+/// deep in a descent) costs a third of the full product; the padded `|R|` of those rows is kept
+/// for the remaining axes rather than formed again.
 #[inline]
 pub fn boxes_overlap_in_frame(
     a_axes: &Matrix3,
@@ -131,9 +147,9 @@ pub fn boxes_overlap_in_frame(
     b_center: &Vector3,
     b_half: &Vector3,
 ) -> bool {
-    const ABS_EPS: f64 = 1e-12;
     let d = b_center - a_center;
     let mut r = Matrix3::zeros();
+    let mut ar = [[0.0; 3]; 3];
     let mut t = Vector3::zeros();
     for i in 0..3 {
         let ai = a_axes.column(i);
@@ -142,13 +158,14 @@ pub fn boxes_overlap_in_frame(
         for j in 0..3 {
             let rij = ai.dot(&b_axes.column(j));
             r[(i, j)] = rij;
-            rb += b_half[j] * (rij.abs() + ABS_EPS);
+            ar[i][j] = rij.abs() + ABS_EPS;
+            rb += b_half[j] * ar[i][j];
         }
         if t[i].abs() > a_half[i] + rb {
             return false;
         }
     }
-    boxes_overlap(a_half, b_half, &r, &t)
+    overlap_on_b_and_edge_axes(a_half, b_half, &r, &ar, &t)
 }
 
 #[cfg(test)]

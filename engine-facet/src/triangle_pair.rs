@@ -30,10 +30,11 @@ pub enum TrianglePair {
 /// within `eps` snapped to zero.
 #[inline]
 fn distances(p: &[Vector3; 3], n: &Vector3, q0: &Vector3, eps: f64) -> [f64; 3] {
-    p.map(|v| {
+    let snap = |v: &Vector3| {
         let d = n.dot(&(v - q0));
         if d.abs() <= eps { 0.0 } else { d }
-    })
+    };
+    [snap(&p[0]), snap(&p[1]), snap(&p[2])]
 }
 
 #[inline]
@@ -45,18 +46,14 @@ fn same_side(d: &[f64; 3]) -> bool {
 pub fn intersect(p: &[Vector3; 3], q: &[Vector3; 3]) -> TrianglePair {
     let np = (p[1] - p[0]).cross(&(p[2] - p[0]));
     let nq = (q[1] - q[0]).cross(&(q[2] - q[0]));
-    let scale = [
-        p[1] - p[0],
-        p[2] - p[1],
-        p[0] - p[2],
-        q[1] - q[0],
-        q[2] - q[1],
-        q[0] - q[2],
-    ]
-    .iter()
-    .map(|e| e.norm_squared())
-    .fold(0.0, f64::max)
-    .sqrt();
+    let scale = 0.0f64
+        .max((p[1] - p[0]).norm_squared())
+        .max((p[2] - p[1]).norm_squared())
+        .max((p[0] - p[2]).norm_squared())
+        .max((q[1] - q[0]).norm_squared())
+        .max((q[2] - q[1]).norm_squared())
+        .max((q[0] - q[2]).norm_squared())
+        .sqrt();
     let dp = distances(p, &nq, &q[0], PLANE_EPS * scale * nq.norm());
     if same_side(&dp) {
         return TrianglePair::Disjoint;
