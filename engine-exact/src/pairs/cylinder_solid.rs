@@ -324,6 +324,7 @@ pub(crate) fn contact(
         centroid,
         area_vector_a: rot_a * m.area_vector_a * (unit * unit),
         surface_area: (m.area_a + m.area_b) * unit * unit,
+        length: unit,
     };
     let solid_a = Solid::Cylinder(*a);
     let exit_a = |g: &Point3, d: &Vector3| {

@@ -613,7 +613,11 @@ fn scaling_the_scene_scales_depth_and_points() {
             for s in [1e-6, 1e6] {
                 let sc = make(&mut state.clone(), s);
                 let got = query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j);
-                assert_eq!(got.len(), reference.len(), "{name} at scale {s:e}");
+                assert_eq!(
+                    got.len(),
+                    reference.len(),
+                    "{name} at scale {s:e}: {reference:?} vs {got:?}"
+                );
                 for (g, r) in got.iter().zip(&reference) {
                     // A 2-D contact's "area" is a length.
                     let area_power = if sc.i.geometry.is_planar() { 1 } else { 2 };

@@ -249,6 +249,7 @@ pub(crate) fn to_world(
         centroid: frame * Point3::from(integrals.centroid * unit),
         area_vector_a: frame.rotation * integrals.area_vector_a * (unit * unit),
         surface_area: (integrals.surface_a + integrals.surface_b) * (unit * unit),
+        length: unit,
     }
 }
 
