@@ -2,7 +2,7 @@
 //!
 //! Slicing frame: the box's frame at its centre. Every slice of the box is the same rectangle,
 //! overlapped with the ellipsoid's section in closed form
-//! ([`super::ellipsoid_sliced::disc_overlap`]: a disc against a polygon after the map that
+//! (`super::ellipsoid_sliced::disc_overlap`: a disc against a polygon after the map that
 //! makes the section a circle). The quadrature is cut wherever the overlap's shape changes,
 //! all in closed form, so each piece is smooth (or has a square-root end, which the
 //! sine-mapped rule absorbs): the ends of the common `z` range, the heights where a section
@@ -14,7 +14,7 @@
 //! The contact follows [`super::volume_contact`]. When the area vector vanishes: with the
 //! ellipsoid inside the box, the normal is the outward normal of the box's face nearest the
 //! centroid; with the box inside the ellipsoid, against the ellipsoid's level-surface normal
-//! at the centroid ([`super::ellipsoid_sliced::inward_of_ellipsoid`]).
+//! at the centroid (`super::ellipsoid_sliced::inward_of_ellipsoid`).
 
 use super::clipped::unit_for;
 use super::ellipsoid_sliced::disc_overlap::disc_polygon;

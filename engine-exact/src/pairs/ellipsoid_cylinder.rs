@@ -2,10 +2,10 @@
 //!
 //! Slicing frame: the cylinder's frame (axis `z`, from `0` to its length). Every slice of the
 //! cylinder is the same disc, overlapped with the ellipsoid's section in closed form
-//! ([`super::ellipsoid_sliced::disc_overlap`]: an ellipse against a circle, the crossings a
+//! (`super::ellipsoid_sliced::disc_overlap`: an ellipse against a circle, the crossings a
 //! quartic's roots). The slices are integrated between the lowest and highest `z` of the
 //! ellipsoid's intersection with the infinite cylinder (duality over the pencil of the two
-//! quadrics, [`super::ellipsoid_sliced::extent`], which also proves them apart), clipped to
+//! quadrics, `super::ellipsoid_sliced::extent`, which also proves them apart), clipped to
 //! the caps. Where the sections become tangent inside that range the quadrature halves its
 //! pieces down to the kink. The caps add their overlap with the ellipsoid's section to the
 //! unsigned surface; the side's part inside the ellipsoid is `r·Δφ` per slice.

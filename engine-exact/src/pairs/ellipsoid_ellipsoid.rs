@@ -2,10 +2,10 @@
 //!
 //! Slicing frame: origin at `b`'s centre, `z` along the line of centres (from `b` to `a`;
 //! `b`'s `+z` when the centres coincide). Each slice overlaps two ellipse sections in closed
-//! form ([`super::ellipsoid_sliced::disc_overlap`]: the crossings are a quartic's roots), and
+//! form (`super::ellipsoid_sliced::disc_overlap`: the crossings are a quartic's roots), and
 //! the slices are integrated between the intersection's lowest and highest `z`, found by
 //! duality over the pencil of the two quadrics
-//! ([`super::ellipsoid_sliced::extent`]); the pencil also proves the ellipsoids apart.
+//! (`super::ellipsoid_sliced::extent`); the pencil also proves the ellipsoids apart.
 //! Converged to 1e-13 of the volume (round-off away from kinks); where the sections become
 //! tangent inside that range the quadrature halves its pieces down to the kink.
 //!

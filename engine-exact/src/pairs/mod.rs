@@ -7,7 +7,7 @@
 //! inside `a` (the direction of the net force of a uniform pressure on that surface).
 //!
 //! Points by SPEC §4, taken along the normal through the intersection's centroid (where that
-//! line leaves each body; see [`crate::ray_exit`]); the curved solid–solid pairs share that
+//! line leaves each body; see `crate::ray_exit`); the curved solid–solid pairs share that
 //! last step in [`volume_contact`].
 
 pub mod bounded_plane;

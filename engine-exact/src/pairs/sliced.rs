@@ -6,7 +6,7 @@
 //! Coordinates `(t, u, v)`: origin at `a`'s centre, `t` along the slicing direction `n`, `v`
 //! along `a`'s axis, `u` across both, lengths divided by a power of two near the pair's size.
 //! The plane `t` cuts `a` in the rectangle `|u| ≤ w(t) = √(r² − t²)`, `|v| ≤ ℓ` (its half
-//! length); `b` is a list of [`Bound`]s, each the half-plane `g·(u, v) ≤ d(t)` in every slice:
+//! length); `b` is a list of `Bound`s, each the half-plane `g·(u, v) ≤ d(t)` in every slice:
 //! a plane of `b` (`g` its normal's in-plane part, `d` linear in `t`), or one side of a
 //! cylinder whose axis lies in the slicing planes (`d = e·c ± w_b(t)`).
 //!
