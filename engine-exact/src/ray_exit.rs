@@ -12,8 +12,8 @@
 //! centroid outside a non-convex solid: the caller then falls back to the closest point).
 
 use crate::pairs::solid_distance::{Solid, signed_distance};
-use contact_core::Vector3;
 use contact_core::geometry::{Cylinder, Frustum, Torus};
+use contact_core::{Isometry3, Point3, Vector3};
 
 /// The point of `solid`'s surface on the ray from `g` along the unit `direction` where it
 /// leaves the solid; when `g` is outside the solid (a centroid in a torus' hole), the point of
@@ -29,6 +29,19 @@ pub(crate) fn surface_point_along(solid: &Solid, g: &Vector3, direction: &Vector
         Some(t) => g + t * direction,
         None => signed_distance(solid, g).1,
     }
+}
+
+/// [`surface_point_along`] for a solid at `pose` (`X_WG`), with `g` and `direction` in the
+/// world.
+pub(crate) fn surface_point_along_w(
+    solid: &Solid,
+    pose: &Isometry3,
+    g: &Point3,
+    direction: &Vector3,
+) -> Point3 {
+    let local = pose.inverse_transform_point(g).coords;
+    let d = pose.inverse_transform_vector(direction);
+    pose * Point3::from(surface_point_along(solid, &local, &d))
 }
 
 /// The larger root of `a t² + b t + c` with `c ≤ 0 < a` (one root ≤ 0 ≤ the other), stably.

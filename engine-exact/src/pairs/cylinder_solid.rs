@@ -33,7 +33,7 @@ use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedPair};
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
-use crate::ray_exit::surface_point_along;
+use crate::ray_exit::{surface_point_along, surface_point_along_w};
 use contact_core::geometry::{Cuboid, Cylinder, Plane};
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
@@ -327,11 +327,7 @@ pub(crate) fn contact(
         length: unit,
     };
     let solid_a = Solid::Cylinder(*a);
-    let exit_a = |g: &Point3, d: &Vector3| {
-        let p = pose_a.inverse_transform_point(g);
-        let dir = pose_a.inverse_transform_vector(d);
-        pose_a * Point3::from(surface_point_along(&solid_a, &p.coords, &dir))
-    };
+    let exit_a = |g: &Point3, d: &Vector3| surface_point_along_w(&solid_a, pose_a, g, d);
     let solid_b = match b {
         Other::Cylinder(c) => Some(Solid::Cylinder(*c)),
         Other::Box(c) => Some(Solid::Box(*c)),

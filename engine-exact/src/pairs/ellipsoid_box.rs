@@ -19,12 +19,12 @@
 use super::clipped::unit_for;
 use super::ellipsoid_sliced::disc_overlap::disc_polygon;
 use super::ellipsoid_sliced::{
-    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, finish, integrand, integrate,
+    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
     inward_of_ellipsoid, quadratic_roots, shape_events, to_world,
 };
 use super::solid_distance::{Solid, signed_distance};
 use crate::kernel::PairContact;
-use crate::ray_exit::box_exit;
+use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Vector3, WorkCounters};
 use nalgebra::{Translation3, Vector2};
@@ -128,17 +128,11 @@ pub(crate) fn contact(
     }
     let inside_box = integrals.surface_b == 0.0;
     let moments = to_world(&integrals, &frame, unit);
-    let center_b = cuboid.center().coords;
-    let half_b = cuboid.half_extents();
     let g = moments.centroid;
-    finish(
+    super::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
-        |g, d| {
-            let o = pose_b.inverse_transform_point(g).coords;
-            let dl = pose_b.inverse_transform_vector(d);
-            g + box_exit(&center_b, &half_b, &o, &dl).unwrap_or(0.0) * d
-        },
+        |g, d| surface_point_along_w(&Solid::Box(*cuboid), pose_b, g, d),
         || {
             if inside_box {
                 let p = pose_b.inverse_transform_point(&g).coords;

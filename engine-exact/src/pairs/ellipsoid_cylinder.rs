@@ -19,12 +19,12 @@ use super::clipped::unit_for;
 use super::ellipsoid_sliced::disc_overlap::disc_ellipse;
 use super::ellipsoid_sliced::extent::{Quadric, z_extent};
 use super::ellipsoid_sliced::{
-    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, finish, integrand, integrate,
+    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
     inward_of_ellipsoid, shape_events, to_world,
 };
 use super::solid_distance::{Solid, signed_distance};
 use crate::kernel::PairContact;
-use crate::ray_exit::cylinder_exit;
+use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Vector3, WorkCounters};
 use nalgebra::{Matrix2, Matrix3};
@@ -100,14 +100,10 @@ pub(crate) fn contact(
     let inside_cylinder = integrals.surface_b == 0.0;
     let moments = to_world(&integrals, pose_b, unit);
     let g = moments.centroid;
-    finish(
+    super::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
-        |g, d| {
-            let o = pose_b.inverse_transform_point(g).coords;
-            let dl = pose_b.inverse_transform_vector(d);
-            g + cylinder_exit(cylinder, &o, &dl).unwrap_or(0.0) * d
-        },
+        |g, d| surface_point_along_w(&Solid::Cylinder(*cylinder), pose_b, g, d),
         || {
             if inside_cylinder {
                 let p = pose_b.inverse_transform_point(&g).coords;

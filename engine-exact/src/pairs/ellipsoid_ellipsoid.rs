@@ -17,8 +17,8 @@ use super::clipped::unit_for;
 use super::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
 use super::ellipsoid_sliced::extent::{Quadric, z_extent};
 use super::ellipsoid_sliced::{
-    COMPONENTS, Section, SlicedEllipsoid, curved_area, ellipsoid_exit_w, ellipsoid_in, finish,
-    integrand, integrate, shape_events, to_world,
+    COMPONENTS, Section, SlicedEllipsoid, curved_area, ellipsoid_exit_w, ellipsoid_in, integrand,
+    integrate, shape_events, to_world,
 };
 use crate::kernel::PairContact;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -55,7 +55,7 @@ pub(crate) fn contact(
         return None;
     }
     let moments = moments_along(semi_a, pose_a, semi_b, pose_b, &axis, unit, work)?;
-    finish(
+    super::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_a, pose_a, g, d),
         |g, d| ellipsoid_exit_w(semi_b, pose_b, g, d),

@@ -24,7 +24,6 @@
 pub(crate) mod disc_overlap;
 pub(crate) mod extent;
 
-use crate::kernel::PairContact;
 use crate::quadrature::{self, Adaptive};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use disc_overlap::DiscOverlap;
@@ -284,16 +283,6 @@ pub(crate) fn inward_of_ellipsoid(
     } else {
         -(pose_b.rotation * Vector3::z())
     }
-}
-
-/// Finishes a pair: the contact of the moments, `None` without volume.
-pub(crate) fn finish(
-    moments: &super::volume_contact::VolumeMoments,
-    exit_a: impl Fn(&Point3, &Vector3) -> Point3,
-    exit_b: impl Fn(&Point3, &Vector3) -> Point3,
-    fallback_normal: impl FnOnce() -> Vector3,
-) -> Option<PairContact> {
-    super::volume_contact::contact(moments, exit_a, exit_b, fallback_normal)
 }
 
 /// The real roots of `a x² + b x + c` (`a ≠ 0`), without cancellation, and how many.
