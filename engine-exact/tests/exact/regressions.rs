@@ -1,8 +1,9 @@
 //! Regressions, each named after what went wrong, with its reproducer.
 
-use crate::common::{instance, one};
-use contact_core::geometry::{Curve, CurvePoints};
-use contact_core::{Geometry, Isometry3, Point2};
+use crate::common::{Rng, instance, one};
+use contact_core::geometry::{Curve, CurvePoints, Cylinder, Plane};
+use contact_core::{Geometry, Isometry3, Point2, UnitQuaternion, Vector3};
+use std::f64::consts::PI;
 use std::sync::Arc;
 
 /// At the end of a knot span the knot lookup switched to the next span, so Newton on a
@@ -38,4 +39,66 @@ fn closest_point_near_a_polyline_vertex_stays_on_its_own_segment() {
         "{c:?} vs {expected_depth}"
     );
     assert!((c.point_j_w.x - q.x).abs() < 1e-14 && (c.point_j_w.y - q.y).abs() < 1e-14);
+}
+
+/// A cylinder lying on a plane at a grazing depth (1e-12 of its radius), its axis parallel to
+/// the plane up to the round-off of composing the poses (a tilt of about 1e-16): the line
+/// contact's centroid slid along the axis by up to 1e-3 of the length, because a tilt that
+/// small over the length is comparable to the depth itself. The axis is now taken as parallel
+/// when its tilt is below round-off, so the contact sits at the middle of the axis, as the
+/// closed form of the parallel pose says; a tilt well above round-off is still followed.
+#[test]
+fn a_grazing_line_contact_does_not_amplify_round_off_along_its_axis() {
+    let (radius, length) = (0.5, 2.0);
+    let cylinder = instance(Geometry::Cylinder(Cylinder::new(radius, length).unwrap()));
+    let plane = instance(Geometry::Plane(Plane::unbounded()));
+    let mut rng = Rng::new(7);
+    for k in 0..200 {
+        let depth = radius * [1e-12, 1e-9, 1e-6][k % 3];
+        // The plane at a random world pose; the cylinder lying on it, axis along a random
+        // direction in the plane, its middle above the plane's point (x, y).
+        let world_plane = rng.pose(5.0);
+        let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.uniform(0.0, 6.3));
+        let lying = spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.5 * PI);
+        let (x, y) = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+        let middle = Vector3::new(x, y, radius - depth);
+        let base = middle - lying * Vector3::new(0.0, 0.0, 0.5 * length);
+        let plane_cylinder = Isometry3::from_parts(base.into(), lying);
+        let c = one(
+            &cylinder,
+            &plane,
+            &(world_plane * plane_cylinder),
+            &world_plane,
+        );
+        // Independent answer for the parallel pose: the segment of depth `depth` under the
+        // whole length, its centroid below the middle; the points on the line through it.
+        let on_plane = world_plane * nalgebra::Point3::new(x, y, 0.0);
+        let along = (c.point_j_w - on_plane).norm();
+        assert!(
+            along <= 1e-12 * length,
+            "pose {k}, depth {depth:e}: the plane point is {along:e} from below the middle"
+        );
+        assert!((c.penetration - depth).abs() <= 1e-12 * radius, "{c:?}");
+    }
+    // A tilt τ = 1e-9 rad at a depth h = 1e-6 of the radius is resolved, not snapped: the
+    // sections' areas grow as (h + τs)^(3/2) along the axis, so the centroid moves off the
+    // middle by τL²/(8h) to first order in τL/h (4e-3 here).
+    let tau = 1e-9;
+    let tilt = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), tau);
+    let lying = tilt * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.5 * PI);
+    let depth = 1e-6 * radius;
+    let middle = Vector3::new(0.0, 0.0, radius - depth);
+    let base = middle - lying * Vector3::new(0.0, 0.0, 0.5 * length);
+    let c = one(
+        &cylinder,
+        &plane,
+        &Isometry3::from_parts(base.into(), lying),
+        &Isometry3::identity(),
+    );
+    let slide = tau * length * length / (8.0 * depth);
+    let got = c.point_j_w.y.abs();
+    assert!(
+        (got - slide).abs() <= 1e-2 * slide,
+        "{got:e} vs {slide:e}: {c:?}"
+    );
 }
