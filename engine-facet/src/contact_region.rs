@@ -375,7 +375,10 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         r.volume = r.sums_a.volume + r.sums_b.volume;
         r.volume_moment = r.sums_a.moment + x.rot * r.sums_b.moment;
         let scale = r.loop_length.max(1e-300);
-        r.centroid = if r.volume > 1e-15 * scale * scale * scale {
+        // A loop that encloses no area bounds no measurable volume: its sums are round-off
+        // (at a corner grazing a face, crossing triangles clipped by one plane each leave
+        // slivers whose cones do not cancel), and their centroid can lie anywhere.
+        r.centroid = if r.volume > 1e-15 * scale * scale * scale && loop_normal(r).is_some() {
             apex[0] + r.volume_moment / r.volume
         } else {
             r.apex

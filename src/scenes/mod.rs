@@ -15,7 +15,7 @@ mod support;
 pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
 pub use from_model::{ModelSceneError, from_model};
 pub use rng::SplitMix64;
-pub use support::support;
+pub use support::{support, support_point};
 
 use contact_core::geometry::{
     Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus,
@@ -217,7 +217,7 @@ pub fn scene(name: &str) -> Option<Scene> {
         ),
         "box_box" => Scene::pair(
             name,
-            "two boxes at random orientations",
+            "a turned box's corner into the middle of a face of another box",
             single(Geometry::Cuboid(
                 Cuboid::centered(1.0, 0.7, 0.5).expect("valid literal"),
             )),
@@ -225,7 +225,7 @@ pub fn scene(name: &str) -> Option<Scene> {
                 Cuboid::centered(0.6, 0.6, 0.9).expect("valid literal"),
             )),
             0.5,
-            free,
+            Orientation::RandomOntoFace,
         ),
         "frustum_plane" => Scene::on_plane(
             name,
@@ -417,6 +417,9 @@ enum Orientation {
     CrossedAxes,
     /// Random rotation; approach direction in J's x-y plane.
     RandomInPlane,
+    /// Random rotation; approach along one of J's axes, chosen at random with its sign: a
+    /// corner of a turned box dips into the middle of a face of J.
+    RandomOntoFace,
     /// 2-D shapes: rotation about J's z only; approach direction in J's x-y plane.
     Planar,
 }
@@ -498,14 +501,32 @@ impl Scene {
                     Vector3::new(a.cos(), a.sin(), 0.0)
                 }
                 Orientation::CrossedAxes => Vector3::x(),
+                Orientation::RandomOntoFace => {
+                    let k = (rng.range(0.0, 6.0) as usize).min(5);
+                    let sign = if k.is_multiple_of(2) { 1.0 } else { -1.0 };
+                    Vector3::ith(k / 2, sign)
+                }
                 _ => rng.unit_vector(),
             };
             let placed = Isometry3::from_parts(Default::default(), rotation);
-            let reach = support_of(&scene.j, &Isometry3::identity(), &u)
-                + support_of(&scene.i, &placed, &-u);
+            // Ellipsoids and boxes touch where their support points along u and −u meet (their
+            // extents along u alone can overlap beside each other); the other shapes are
+            // placed by their support extents along u, their extreme points lying on one line
+            // along the approach for the orientations used here.
+            let offset = match (
+                single_support_point(&scene.j, &Isometry3::identity(), &u),
+                single_support_point(&scene.i, &placed, &-u),
+            ) {
+                (Some(on_j), Some(on_i)) => on_j - on_i - u * depth,
+                _ => {
+                    let reach = support_of(&scene.j, &Isometry3::identity(), &u)
+                        + support_of(&scene.i, &placed, &-u);
+                    u * (reach - depth)
+                }
+            };
             scene.push(
                 depth,
-                Isometry3::from_parts((u * (reach - depth)).into(), rotation),
+                Isometry3::from_parts(offset.into(), rotation),
                 &mut rng,
             );
         }
@@ -610,7 +631,9 @@ fn seed(name: &str) -> u64 {
 fn orient(orientation: Orientation, rng: &mut SplitMix64) -> UnitQuaternion {
     let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU));
     match orientation {
-        Orientation::Random | Orientation::RandomInPlane => rng.rotation(),
+        Orientation::Random | Orientation::RandomInPlane | Orientation::RandomOntoFace => {
+            rng.rotation()
+        }
         // A random roll about I's own axis too, so faceted shapes show every facet phase.
         Orientation::AxisParallelToPlane => {
             spin * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), FRAC_PI_2) * roll(rng)
@@ -629,6 +652,19 @@ fn orient(orientation: Orientation, rng: &mut SplitMix64) -> UnitQuaternion {
 /// A random rotation about z (a shape's own axis).
 fn roll(rng: &mut SplitMix64) -> UnitQuaternion {
     UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(0.0, TAU))
+}
+
+/// The support point of a one-member list placed at part pose `pose`, where it is unique
+/// ([`support_point`]).
+fn single_support_point(
+    list: &[GeometryInstance],
+    pose: &Isometry3,
+    d: &Vector3,
+) -> Option<contact_core::Point3> {
+    match list {
+        [g] => support_point(&g.geometry, &(pose * g.pose_part_geometry), d),
+        _ => None,
+    }
 }
 
 /// The support of a list placed at part pose `pose` (the largest over its members).

@@ -92,3 +92,35 @@ fn scaled_curves_stay_the_same_shape() {
         assert!((b.point(u) - a.point(u) * 1e3).norm() < 1e-9);
     }
 }
+
+/// Every graded pose (nominal depth 1e-4 of the scale and deeper) touches, and every
+/// separated pose does not, by the exact engine wherever it answers the scene: a placement
+/// that misses (two turned ellipsoids placed by their support extents alone never touched)
+/// would leave a scene without contacts to measure.
+#[test]
+fn graded_poses_touch_and_separated_poses_do_not() {
+    use contact_core::{GeometryEngine, PrepareError, WorkCounters};
+    for s in suite() {
+        let pair = match engine_exact::ExactEngine.prepare(&s.i, &s.j) {
+            Ok(pair) => pair,
+            Err(PrepareError::Unsupported(_)) => continue,
+            Err(e) => panic!("{}: {e}", s.name),
+        };
+        for (k, p) in s.poses.iter().enumerate() {
+            let mut out = Vec::new();
+            pair.query(
+                &p.pose_world_i,
+                &p.pose_world_j,
+                &mut out,
+                &mut WorkCounters::default(),
+            )
+            .unwrap();
+            let relative = p.nominal_depth / s.scale;
+            if relative >= 1e-4 {
+                assert!(!out.is_empty(), "{} pose {k} (depth {relative:e})", s.name);
+            } else if relative < 0.0 {
+                assert!(out.is_empty(), "{} pose {k}: {out:?}", s.name);
+            }
+        }
+    }
+}

@@ -49,19 +49,7 @@ fn exact_matches_closed_forms_and_faceted_errors_shrink_with_the_tolerance() {
                 exact.depth_error
             );
             assert!(exact.normal_error_deg.unwrap() <= 1e-7, "{name}");
-            // A line contact's point along the line is ill-posed at grazing (δ = 1e-12 of the
-            // size): round-off of 1e-15 in the pose tilts the depth profile by 0.2%, and the
-            // centroid slides along the line by up to 1e-3 of the size. Elsewhere the point is
-            // as exact as the depth.
-            let point_bound = if name == "cylinder_plane_side" {
-                2e-3
-            } else {
-                1e-9
-            };
-            assert!(
-                exact.point_error.unwrap() <= point_bound,
-                "{name}: {exact:?}"
-            );
+            assert!(exact.point_error.unwrap() <= 1e-9, "{name}: {exact:?}");
             assert_eq!(exact.missed_contacts + exact.extra_contacts, 0, "{name}");
         }
         let faceted: Vec<f64> = rows
@@ -82,6 +70,28 @@ fn exact_matches_closed_forms_and_faceted_errors_shrink_with_the_tolerance() {
             faceted[3] < 0.2 * faceted[0],
             "{name}: faceted errors {faceted:?}"
         );
+        // Normal and point errors are the worst over the contacts found, and the shallowest
+        // contacts found at each tolerance are slivers within a facet of the band, whose
+        // point and normal depend on the facet phase: they fall over the sweep, not at every
+        // step. A normal exact by construction (a plane's) stays at round-off.
+        let faceted_rows: Vec<_> = rows.iter().filter(|r| r.engine == "faceted").collect();
+        for (what, first, last) in [
+            (
+                "normal",
+                faceted_rows[0].normal_error_deg.unwrap(),
+                faceted_rows[3].normal_error_deg.unwrap(),
+            ),
+            (
+                "point",
+                faceted_rows[0].point_error.unwrap(),
+                faceted_rows[3].point_error.unwrap(),
+            ),
+        ] {
+            assert!(
+                last <= 1e-9 || last < 0.5 * first,
+                "{name}: faceted {what} error {first:e} at FT 100, {last:e} at FT 3000"
+            );
+        }
     }
     let json: serde_json::Value =
         serde_json::from_str(&tradeoff::json(&report.records).unwrap()).unwrap();

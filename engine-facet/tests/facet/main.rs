@@ -3,6 +3,7 @@
 mod common;
 mod convergence;
 mod engine;
+mod grazing_corner;
 mod pinned;
 mod planar;
 mod stl_files;
