@@ -5,6 +5,7 @@ mod convergence;
 mod engine;
 mod pinned;
 mod planar;
+mod planar_overlap;
 mod stl_files;
 mod tessellation;
 mod threads;
