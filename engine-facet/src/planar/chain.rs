@@ -333,3 +333,26 @@ pub(crate) fn bezier_derivative(c: &[Vector2; 4], s: f64) -> Vector2 {
 pub(crate) fn bezier_second(c: &[Vector2; 4], s: f64) -> Vector2 {
     (c[2] - c[1] * 2.0 + c[0]) * (6.0 * (1.0 - s)) + (c[3] - c[2] * 2.0 + c[1]) * (6.0 * s)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tessellate::arc_polyline;
+    use contact_core::geometry::Arc;
+
+    #[test]
+    fn the_foot_is_a_stationary_point_of_the_distance_on_the_lifted_arcs() {
+        let arc = Arc::new(1.0, std::f64::consts::TAU).unwrap();
+        let boundary = Boundary::new(arc_polyline(&arc, 2.83 / 300.0), false, 2.83);
+        let mut chain = Chain::default();
+        chain.fill_placed(&boundary, &nalgebra::Matrix2::identity(), &Vector2::zeros());
+        for g in [Vector2::new(0.4, 0.1), Vector2::new(-1.3, 0.2)] {
+            let (tau, q) = chain.foot(&g, 2.0).unwrap();
+            let (_, d1, _) = chain.jet(tau);
+            assert!(((q - g).dot(&d1) / d1.norm()).abs() < 1e-12, "{q:?}");
+            // On the circle to the lifted arcs' accuracy, near the ray from the centre.
+            assert!((q.norm() - 1.0).abs() < 1e-5);
+            assert!((q.normalize() - g.normalize()).norm() < 2e-3);
+        }
+    }
+}

@@ -303,3 +303,242 @@ fn swapping_and_moving_the_pair_moves_the_contact() {
         }
     }
 }
+
+/// Touching, grazing, coincident, contained and scaled scenes: no panic, no NaN (every
+/// contact is checked well formed), and the answers the module doc states.
+#[test]
+fn degenerate_scenes_answer_without_panic_or_nan() {
+    let exact = ExactEngine;
+    for ft in [100.0, 300.0028, 10000.0] {
+        let e = facet(ft);
+        let ring = arc(1.0, TAU);
+        let pair = prepare(&e, &ring, false, &ring, false);
+        // Coincident: the same closed boundary at the same pose, and a blob on itself.
+        assert!(query(pair.as_ref(), &pose(0.3, 0.2, 0.1), &pose(0.3, 0.2, 0.1)).is_empty());
+        let b = blob(0.5, 5, 0.15);
+        let blobs = prepare(&e, &b, false, &b, false);
+        assert!(query(blobs.as_ref(), &pose(0.0, 0.0, 1.0), &pose(0.0, 0.0, 1.0)).is_empty());
+        // Touching and grazing: at most a contact of depth far below d.
+        let d = ring.characteristic_length().unwrap() / ft;
+        for gap in [0.0, 1e-12, -1e-12, -1e-9, 1e-9] {
+            for c in query(
+                pair.as_ref(),
+                &pose(2.0 + gap, 0.0, 0.3),
+                &pose(0.0, 0.0, 0.0),
+            ) {
+                assert!(c.penetration <= d * d, "FT {ft} gap {gap}: {c:?}");
+            }
+        }
+        // Contained: a small ring inside a large one (no crossing, both closed), against
+        // the exact engine.
+        let small = arc(0.3, TAU);
+        let big = arc(1.0, TAU);
+        let (pi, pj) = (pose(0.4, 0.1, 0.2), pose(0.0, 0.0, 0.0));
+        let f = query(prepare(&e, &small, false, &big, false).as_ref(), &pi, &pj);
+        let x = query(
+            prepare(&exact, &small, false, &big, false).as_ref(),
+            &pi,
+            &pj,
+        );
+        assert_eq!((f.len(), x.len()), (1, 1));
+        let (de, ne, pe) = errors(&f[0], &x[0]);
+        let bound = d * d / 0.3;
+        // The contained branch's normal points at the closest point of the lifted arcs,
+        // whose tangents are third order in the chord angle: (d/ρ)^(3/2).
+        let normal_bound = (d / 0.3f64).powf(1.5);
+        // The outer point is that foot: off along the outer chain by the normal's error
+        // times the depth.
+        let point_bound = bound + normal_bound * x[0].penetration;
+        assert!(
+            de <= bound && pe <= point_bound && ne <= normal_bound,
+            "{f:?} vs {x:?}"
+        );
+        // Reversed roles: the big ring inside... the small one holds nothing; swapped I/J.
+        let g = query(prepare(&e, &big, false, &small, false).as_ref(), &pj, &pi);
+        assert_eq!(g.len(), 1);
+        assert!((g[0].normal_w + f[0].normal_w).norm() <= 1e-9);
+    }
+    // Huge and tiny scenes: the contact scales with the scene.
+    let reference = {
+        let e = facet(300.0028);
+        let pair = prepare(&e, &blob(0.5, 5, 0.15), false, &cam(), false);
+        query(pair.as_ref(), &pose(1.3, 0.2, 0.4), &pose(0.0, 0.0, 0.0))
+    };
+    assert_eq!(reference.len(), 1);
+    for scale in [1e-6, 1e6] {
+        let e = facet(300.0028);
+        let pair = prepare(
+            &e,
+            &blob(0.5 * scale, 5, 0.15),
+            false,
+            &cam_scaled(scale),
+            false,
+        );
+        let found = query(
+            pair.as_ref(),
+            &pose(1.3 * scale, 0.2 * scale, 0.4),
+            &pose(0.0, 0.0, 0.0),
+        );
+        assert_eq!(found.len(), 1, "scale {scale}");
+        let (c, r) = (found[0], reference[0]);
+        assert!((c.penetration / scale - r.penetration).abs() <= 1e-9 * r.penetration.max(1.0));
+        assert!((c.normal_w - r.normal_w).norm() <= 1e-9);
+        assert!((c.point_i_w / scale - r.point_i_w).norm() <= 1e-9);
+        assert!((c.area / scale - r.area).abs() <= 1e-9);
+    }
+}
+
+/// Open and closed curves against lines (bounded and not, flipped, the line as I or J) match
+/// the exact engine within d²/ρ.
+#[test]
+fn curves_on_lines_match_the_exact_engine() {
+    let exact = ExactEngine;
+    let lines = [
+        Geometry::Line(Line::unbounded()),
+        Geometry::Line(Line::bounded(-0.4, 5.0).unwrap()),
+    ];
+    let shapes = [wave(), blob(0.5, 5, 0.15)];
+    let mut rng = Rng(404);
+    for line in &lines {
+        for shape in &shapes {
+            for flip_line in [false, true] {
+                let ft = 1000.0;
+                let rho = smallest_radius(shape);
+                let d = shape.characteristic_length().unwrap() / ft;
+                let bound = d * d / rho;
+                let f_pair = prepare(&facet(ft), shape, false, line, flip_line);
+                let x_pair = prepare(&exact, shape, false, line, flip_line);
+                let f_back = prepare(&facet(ft), line, flip_line, shape, false);
+                let mut compared = 0;
+                for _ in 0..30 {
+                    let pose_j = pose(
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        rng.range(0.0, TAU),
+                    );
+                    let rel = pose(
+                        rng.range(-0.5, 0.5),
+                        rng.range(-0.3, 0.3),
+                        rng.range(0.0, TAU),
+                    );
+                    let pose_i = pose_j * rel;
+                    let x = query(x_pair.as_ref(), &pose_i, &pose_j);
+                    let f = query(f_pair.as_ref(), &pose_i, &pose_j);
+                    let back = query(f_back.as_ref(), &pose_j, &pose_i);
+                    assert_eq!(f.len(), back.len());
+                    for (c, s) in f.iter().zip(&back) {
+                        assert!((c.penetration - s.penetration).abs() <= 1e-9);
+                        assert!((c.normal_w + s.normal_w).norm() <= 1e-9);
+                    }
+                    // Compare where every exact region is deep enough to be decided on the
+                    // polylines.
+                    if x.iter().all(|c| c.penetration > 0.02) && x.len() == f.len() {
+                        for c in &f {
+                            let xc = x
+                                .iter()
+                                .min_by(|a, b| {
+                                    (a.point_i_w - c.point_i_w)
+                                        .norm()
+                                        .total_cmp(&(b.point_i_w - c.point_i_w).norm())
+                                })
+                                .unwrap();
+                            let best = x
+                                .iter()
+                                .map(|xx| errors(c, xx))
+                                .min_by(|a, b| a.2.total_cmp(&b.2))
+                                .unwrap();
+                            // The normal's error d²/(ρ·w) carried along the depth adds to
+                            // the points' and the depth's.
+                            // The open wave's Hermite error follows its fourth derivative
+                            // (h⁴·|x⁗|/384), large against its curvature: a factor 4.
+                            let bound = 4.0 * bound * (1.0 + xc.penetration / xc.area);
+                            assert!(
+                                best.0 <= bound && best.2 <= bound,
+                                "{best:?} > {bound} for {shape:?} on {line:?} flipped \
+                                 {flip_line}: {c:?} vs {x:?}"
+                            );
+                        }
+                        compared += x.len();
+                    }
+                }
+                assert!(
+                    compared > 0,
+                    "no contact compared for {shape:?} on {line:?}"
+                );
+            }
+        }
+    }
+}
+
+/// The contact/no-contact answer of random closed-curve pairs agrees with the exact engine
+/// wherever the pose is farther than the chord deviation from touching: a contact of depth
+/// above `2d`, or curves more than `2d` apart (a dense sample of the true curves).
+#[test]
+fn random_closed_curves_agree_with_the_exact_engine_away_from_touching() {
+    let exact = ExactEngine;
+    let ft = 1000.0;
+    let mut rng = Rng(2024);
+    let (mut agreed_contact, mut agreed_free) = (0, 0);
+    for _ in 0..12 {
+        let gi = blob(
+            rng.range(0.3, 0.7),
+            3 + (rng.next_f64() * 4.0) as usize,
+            rng.range(0.0, 0.2),
+        );
+        let gj = blob(
+            rng.range(0.3, 0.7),
+            3 + (rng.next_f64() * 4.0) as usize,
+            rng.range(0.0, 0.2),
+        );
+        let d = gi
+            .characteristic_length()
+            .unwrap()
+            .max(gj.characteristic_length().unwrap())
+            / ft;
+        let f_pair = prepare(&facet(ft), &gi, false, &gj, false);
+        let x_pair = prepare(&exact, &gi, false, &gj, false);
+        let samples = |g: &Geometry, p: &Isometry3| -> Vec<Vector3> {
+            let Geometry::Curve(c) = g else {
+                unreachable!()
+            };
+            let [u0, u1] = c.domain();
+            (0..600)
+                .map(|k| {
+                    let q = c.point(u0 + (u1 - u0) * k as f64 / 600.0);
+                    (p * nalgebra::Point3::new(q.x, q.y, 0.0)).coords
+                })
+                .collect()
+        };
+        for _ in 0..10 {
+            let a = rng.range(0.0, TAU);
+            let dist = rng.range(0.4, 1.6);
+            let pose_j = pose(0.0, 0.0, rng.range(0.0, TAU));
+            let pose_i = pose(dist * a.cos(), dist * a.sin(), rng.range(0.0, TAU));
+            let x = query(x_pair.as_ref(), &pose_i, &pose_j);
+            let f = query(f_pair.as_ref(), &pose_i, &pose_j);
+            if !x.is_empty() && x.iter().all(|c| c.penetration > 2.0 * d) {
+                assert_eq!(f.len(), x.len(), "{f:?} vs {x:?}");
+                agreed_contact += 1;
+            } else if x.is_empty() {
+                let (si, sj) = (samples(&gi, &pose_i), samples(&gj, &pose_j));
+                let spacing = si
+                    .windows(2)
+                    .chain(sj.windows(2))
+                    .map(|w| (w[1] - w[0]).norm())
+                    .fold(0.0, f64::max);
+                let gap = si
+                    .iter()
+                    .flat_map(|p| sj.iter().map(move |q| (p - q).norm()))
+                    .fold(f64::INFINITY, f64::min);
+                if gap > 2.0 * d + spacing {
+                    assert!(f.is_empty(), "gap {gap}: {f:?}");
+                    agreed_free += 1;
+                }
+            }
+        }
+    }
+    assert!(
+        agreed_contact >= 20 && agreed_free >= 10,
+        "{agreed_contact} {agreed_free}"
+    );
+}
