@@ -239,7 +239,7 @@ impl Chain {
             let c = p - q;
             let g = c.dot(&d1);
             let dg = d1.norm_squared() + c.dot(&d2);
-            if !(dg > 0.0) {
+            if dg.is_nan() || dg <= 0.0 {
                 break;
             }
             let mut next = tau - g / dg;

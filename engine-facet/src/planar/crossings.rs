@@ -242,7 +242,7 @@ fn refine(
         let (pb, db) = eval(b, tb);
         let r = pb - pa;
         let det = -cross(&da, &db);
-        if !(det.abs() > MIN_SINE * da.norm() * db.norm()) {
+        if det.is_nan() || det.abs() <= MIN_SINE * da.norm() * db.norm() {
             return None;
         }
         // [da, −db]·(Δa, Δb) = pb − pa.

@@ -257,7 +257,7 @@ fn boundaries(
                 let (cut0, cut1) = (lo.x - margin, hi.x + margin);
                 let [x0, x1] = line.x_range();
                 let (c0, c1) = (x0.max(cut0), x1.min(cut1));
-                if !(c0 < c1) {
+                if c0.is_nan() || c1.is_nan() || c0 >= c1 {
                     return;
                 }
                 buffers.b.fill_line(c0, c1, [x0 >= cut0, x1 <= cut1], *side);

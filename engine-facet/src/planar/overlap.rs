@@ -404,7 +404,7 @@ fn line_hits(chain: &Chain, g: &Vector2, direction: &Vector2, size: f64, hits: &
             let arc = chain.arc(kk);
             let f = side(&bezier_point(&arc, s));
             let df = cross(direction, &bezier_derivative(&arc, s));
-            if !(df.abs() > 0.0) {
+            if df.is_nan() || df == 0.0 {
                 break;
             }
             let step = f / df;
@@ -472,14 +472,14 @@ fn inner_contact(
         sums.add(&inner.arc(k), 0.0, 1.0);
     }
     let area = 0.5 * sums.twice_area;
-    if !(area > 1e-12 * size * size) {
+    if area.is_nan() || area <= 1e-12 * size * size {
         return None;
     }
     let g = sums.origin + sums.moment / area;
     let (_, q) = outer.foot(&g, size)?;
     let towards = q - g;
     let distance = towards.norm();
-    if !(distance > 1e-12 * size) {
+    if distance.is_nan() || distance <= 1e-12 * size {
         return None;
     }
     let n = towards / distance;
