@@ -17,7 +17,8 @@ use std::sync::Arc;
 ///
 /// Supports every pair of 3-D solids and meshes, and solids against a 3-D PLANE (half-space),
 /// except PLANE against PLANE; and the 2-D pairs of [`crate::planar`] (a point or a circle
-/// against a line, circle, arc or curve, on polylines). A flipped 3-D solid (IFLIP_NORMAL,
+/// against a line, circle, arc or curve, and an arc or curve against an arc, curve or line,
+/// on polylines). A flipped 3-D solid (IFLIP_NORMAL,
 /// "the space outside it") is rejected by `prepare`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FacetEngine {
@@ -261,8 +262,14 @@ impl GeometryEngine for FacetEngine {
 }
 
 /// The 2-D pairs by kind (flips are checked when the pair is prepared): a point or a circle
-/// against a line, circle, arc or curve, and never a circle against a bounded line.
+/// against a line, circle, arc or curve, never a circle against a bounded line; and two
+/// boundaries (arc or curve against arc, curve or line).
 fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str> {
+    let boundary = |g: &Geometry| matches!(g, Geometry::Arc(_) | Geometry::Curve(_));
+    let line = |g: &Geometry| matches!(g, Geometry::Line(_));
+    if (boundary(i) && (boundary(j) || line(j))) || (line(i) && boundary(j)) {
+        return Ok(());
+    }
     let mover = |g: &Geometry| matches!(g, Geometry::Point | Geometry::Circle(_));
     let surface = |g: &Geometry| {
         matches!(
@@ -272,7 +279,7 @@ fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str
     };
     if !((mover(i) && surface(j)) || (mover(j) && surface(i))) {
         return Err(
-            "the faceted engine answers a point or a circle against a line, circle, arc or curve; not this pair",
+            "the faceted engine answers a point or a circle against a line, circle, arc or curve, and an arc or curve against an arc, curve or line; not this pair",
         );
     }
     let bounded =

@@ -25,8 +25,10 @@
 //!   the flood into the triangles inside the other solid in `inside_flood`; half-spaces in
 //!   `plane_contact`.
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
-//! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve) on
-//!   polylines, with the polyline's true-normal field (exact normals for circles and arcs).
+//! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve; an
+//!   arc or curve against an arc, curve or line, one contact per overlap region) on polylines,
+//!   with the polyline's true-normal field (exact normals for circles and arcs) and the
+//!   chords lifted onto Hermite arcs through the true tangents.
 //! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for side-by-side comparisons.
 //!
 //! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)

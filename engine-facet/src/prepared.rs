@@ -126,21 +126,27 @@ impl PreparedPair for PreparedFacetPair {
                                 (Some(x), Some(y)) => x.max(y),
                                 (x, y) => x.or(y).unwrap_or(1.0),
                             };
-                            let found =
-                                planar::contact(&pa.shape, &pose_wa, &pb.shape, &pose_wb, length)
-                                    .map_err(|e| QueryError::OutOfPlane {
-                                        i: pa.kind,
-                                        j: pb.kind,
-                                        label_i: a.label.clone(),
-                                        label_j: b.label.clone(),
-                                        angle_rad: e.angle_rad,
-                                        offset: e.offset,
-                                        pose_i: format_pose(pose_world_i),
-                                        pose_j: format_pose(pose_world_j),
-                                    });
+                            let found = planar::contacts(
+                                &pa.shape,
+                                &pose_wa,
+                                &pb.shape,
+                                &pose_wb,
+                                length,
+                                work,
+                                &mut |c| contacts.push(planar_to_contact(&c, gi, gj)),
+                            )
+                            .map_err(|e| QueryError::OutOfPlane {
+                                i: pa.kind,
+                                j: pb.kind,
+                                label_i: a.label.clone(),
+                                label_j: b.label.clone(),
+                                angle_rad: e.angle_rad,
+                                offset: e.offset,
+                                pose_i: format_pose(pose_world_i),
+                                pose_j: format_pose(pose_world_j),
+                            });
                             match found {
-                                Ok(Some(c)) => contacts.push(planar_to_contact(&c, gi, gj)),
-                                Ok(None) => {}
+                                Ok(()) => {}
                                 Err(e) => {
                                     failure = Some(e);
                                     break 'pairs;

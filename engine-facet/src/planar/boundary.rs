@@ -49,6 +49,21 @@ impl Boundary {
         &self.points
     }
 
+    /// The true outward unit normal at each point (reversed when flipped).
+    pub fn normals(&self) -> &[Vector2] {
+        &self.normals
+    }
+
+    /// True for a closed polyline.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// +1, or −1 when flipped (the material on the right of the polyline's travel).
+    pub fn flip_side(&self) -> f64 {
+        self.side
+    }
+
     /// Number of chords.
     pub fn chords(&self) -> usize {
         match (self.closed, self.points.len()) {

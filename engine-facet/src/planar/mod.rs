@@ -40,11 +40,15 @@
 //! [`QueryError::OutOfPlane`](contact_core::QueryError::OutOfPlane).
 
 mod boundary;
+mod chain;
+mod crossings;
+mod orient;
+mod overlap;
 
 pub use boundary::{Boundary, Nearest};
 
 use contact_core::geometry::{Line, plane_departure};
-use contact_core::{GeometryKind, Isometry3, Point2, Point3, Vector2, Vector3};
+use contact_core::{GeometryKind, Isometry3, Point2, Point3, Vector2, Vector3, WorkCounters};
 
 pub use contact_core::geometry::{PLANE_ANGLE_TOLERANCE, PLANE_OFFSET_TOLERANCE};
 
@@ -137,14 +141,24 @@ fn as_mover(shape: &PlanarShape) -> Option<Mover<'_>> {
     }
 }
 
+/// True for the two boundaries of an overlap pair: arcs, curves and lines, not two lines.
+fn overlap_pair(i: &PlanarShape, j: &PlanarShape) -> bool {
+    let boundary = |s: &PlanarShape| matches!(s, PlanarShape::Boundary(_));
+    let line = |s: &PlanarShape| matches!(s, PlanarShape::Line { .. });
+    (boundary(i) && (boundary(j) || line(j))) || (line(i) && boundary(j))
+}
+
 /// Whether the faceted engine answers `i` against `j` (flips included): the pairs of the
 /// module doc. Returns the reason when not.
 pub fn supported(i: &PlanarShape, j: &PlanarShape) -> Result<(), &'static str> {
+    if overlap_pair(i, j) {
+        return Ok(());
+    }
     let roles = (as_mover(i).is_some() && as_surface(j).is_some())
         || (as_mover(j).is_some() && as_surface(i).is_some());
     if !roles {
         return Err(
-            "the faceted engine answers a point or a solid circle against a line, circle, arc or curve (and a solid circle in a flipped one); this pair has neither",
+            "the faceted engine answers a point or a solid circle against a line, circle, arc or curve (and a solid circle in a flipped one), and arcs and curves against arcs, curves and lines; this pair is none of these",
         );
     }
     let bounded_line_for_disc = |m: &PlanarShape, s: &PlanarShape| {
@@ -157,8 +171,30 @@ pub fn supported(i: &PlanarShape, j: &PlanarShape) -> Result<(), &'static str> {
     Ok(())
 }
 
-/// The contact of 2-D geometry `i` at `pose_wi` (`X_WG`) against `j` at `pose_wj`; `length`
-/// is the pair's length scale.
+/// The contacts of 2-D geometry `i` at `pose_wi` (`X_WG`) against `j` at `pose_wj`, passed
+/// to `emit` (at most one for a mover pair, one per overlap region for two boundaries);
+/// `length` is the pair's length scale.
+pub fn contacts(
+    i: &PlanarShape,
+    pose_wi: &Isometry3,
+    j: &PlanarShape,
+    pose_wj: &Isometry3,
+    length: f64,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PlanarContact),
+) -> Result<(), OutOfPlane> {
+    if overlap_pair(i, j) {
+        return boundaries(i, pose_wi, j, pose_wj, length, work, emit);
+    }
+    if let Some(c) = contact(i, pose_wi, j, pose_wj, length)? {
+        emit(c);
+    }
+    Ok(())
+}
+
+/// The contact of a mover pair (a point or a solid circle against a surface): `i` at
+/// `pose_wi` (`X_WG`) against `j` at `pose_wj`; `length` is the pair's length scale. Two
+/// boundaries answer `None` here: see [`contacts`].
 pub fn contact(
     i: &PlanarShape,
     pose_wi: &Isometry3,
@@ -175,9 +211,72 @@ pub fn contact(
         (Some(mover), Some(surface)) => {
             Ok(mover_surface(&mover, pose_wj, &surface, pose_wi, length)?.map(swap))
         }
-        // `prepare` refuses every other pair.
+        // `prepare` refuses every other pair; two boundaries go through `contacts`.
         _ => Ok(None),
     }
+}
+
+/// Two boundaries (arcs, curves, lines): the overlap regions of [`overlap`], computed in
+/// J's plane, or in the line's when I is the line (then swapped back).
+fn boundaries(
+    i: &PlanarShape,
+    pose_wi: &Isometry3,
+    j: &PlanarShape,
+    pose_wj: &Isometry3,
+    length: f64,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PlanarContact),
+) -> Result<(), OutOfPlane> {
+    let (a, pose_wa, b, pose_wb, swapped) = match i {
+        PlanarShape::Line { .. } => (j, pose_wj, i, pose_wi, true),
+        _ => (i, pose_wi, j, pose_wj, false),
+    };
+    let PlanarShape::Boundary(a) = a else {
+        return Ok(());
+    };
+    let relative = pose_wb.inv_mul(pose_wa);
+    if let Some((angle_rad, offset)) = plane_departure(&relative, length) {
+        return Err(OutOfPlane { angle_rad, offset });
+    }
+    let x = relative.rotation * Vector3::x();
+    let y = relative.rotation * Vector3::y();
+    let m = nalgebra::Matrix2::new(x.x, y.x, x.y, y.y);
+    let t = relative.translation.vector.xy();
+    overlap::with_buffers(|buffers| {
+        buffers.a.fill_placed(a, &m, &t);
+        match b {
+            PlanarShape::Boundary(b) => {
+                buffers
+                    .b
+                    .fill_placed(b, &nalgebra::Matrix2::identity(), &Vector2::zeros());
+            }
+            PlanarShape::Line { line, side } => {
+                // The line cut to where `a` can reach it: `a`'s x extent widened by its size.
+                let (lo, hi) = buffers.a.bounding_box();
+                let margin = (hi - lo).norm();
+                let (cut0, cut1) = (lo.x - margin, hi.x + margin);
+                let [x0, x1] = line.x_range();
+                let (c0, c1) = (x0.max(cut0), x1.min(cut1));
+                if c0.is_nan() || c1.is_nan() || c0 >= c1 {
+                    return;
+                }
+                buffers.b.fill_line(c0, c1, [x0 >= cut0, x1 <= cut1], *side);
+            }
+            PlanarShape::Point | PlanarShape::Disc { .. } => return,
+        }
+        let point_w = |p: Vector2| pose_wb * Point3::new(p.x, p.y, 0.0);
+        overlap::contacts(buffers, work, &mut |c| {
+            let found = PlanarContact {
+                point_i: point_w(c.point_a),
+                point_j: point_w(c.point_b),
+                normal: pose_wb.rotation * Vector3::new(c.normal.x, c.normal.y, 0.0),
+                depth: c.depth,
+                length: c.length,
+            };
+            emit(if swapped { swap(found) } else { found });
+        });
+    });
+    Ok(())
 }
 
 fn swap(c: PlanarContact) -> PlanarContact {

@@ -6,6 +6,7 @@ mod engine;
 mod grazing_corner;
 mod pinned;
 mod planar;
+mod planar_overlap;
 mod stl_files;
 mod tessellation;
 mod threads;

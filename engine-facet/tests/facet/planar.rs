@@ -365,11 +365,27 @@ fn leaving_the_plane_is_an_error_not_a_miss() {
 }
 
 #[test]
-fn pairs_without_a_point_or_solid_circle_are_refused_when_checked() {
+fn pairs_without_an_area_to_overlap_are_refused_when_checked() {
     let e = engine(300.0028);
     let arc = Geometry::Arc(Arc::new(1.0, 1.0).unwrap());
     let curve = Geometry::Curve(std::sync::Arc::new(blob()));
-    assert!(e.supports(&arc, &curve).is_err());
+    // Two boundaries overlap in regions (the exact engine's pairs, flips included).
+    assert!(e.supports(&arc, &curve).is_ok());
+    assert!(e.supports(&curve, &curve).is_ok());
+    assert!(e.supports(&arc, &Geometry::Line(Line::unbounded())).is_ok());
+    assert!(
+        e.supports(&Geometry::Line(Line::unbounded()), &curve)
+            .is_ok()
+    );
+    assert!(
+        e.prepare(
+            &[instance(arc.clone(), true)],
+            &[instance(curve.clone(), true)]
+        )
+        .is_ok()
+    );
+    let lines = Geometry::Line(Line::unbounded());
+    assert!(e.supports(&lines, &lines).is_err());
     assert!(e.supports(&Geometry::Point, &Geometry::Point).is_err());
     let bounded = Geometry::Line(Line::bounded(-1.0, 1.0).unwrap());
     assert!(e.supports(&circle(1.0), &bounded).is_err());
