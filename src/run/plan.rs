@@ -462,7 +462,7 @@ mod tests {
         );
         // A DYNAMICS followed by a TRANSIENT that chooses dynamics runs as one span.
         let (steps, _) = plan_with_dof(
-            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2\nSTOP\n",
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2, DTOUT = 0.1\nSTOP\n",
             PlanOverrides::default(),
             Some(1),
         );
