@@ -136,7 +136,6 @@ fn an_augmented_box_pressed_into_the_plane_rests_within_the_tolerance_carrying_i
 }
 
 #[test]
-#[ignore = "open: the quasi-dynamic settling of an augmented POISSON box dropped from 1 cm runs for over 10 minutes in a debug build"]
 fn an_augmented_box_dropped_onto_the_plane_settles_within_the_tolerance() {
     let method = check_augmented("al_dropped_box.adm", -0.01);
     assert!(
