@@ -114,6 +114,17 @@ fn check_augmented(name: &str, depth: f64) -> StaticsMethod {
     // ½·(λ + p·δ) + ½·k_r·δ, with k_r = ε²·p before any compression work is recorded.
     let memory = multipliers.memory(0);
     if memory.compression_work == 0.0 {
+        // Each update multiplies the resting penetration by ε²/(1 + ε²) (the load is fixed):
+        // the first power of it that is within the tolerance is where the passes stop.
+        let ratio = RESTITUTION * RESTITUTION / (1.0 + RESTITUTION * RESTITUTION);
+        let mut expected = penalty_only;
+        while expected > tolerance {
+            expected *= ratio;
+        }
+        assert!(
+            (penetration - expected).abs() < 1e-6 * expected,
+            "δ = {penetration} vs {expected}"
+        );
         let e2 = RESTITUTION * RESTITUTION;
         let law = 0.5 * (memory.lambda + PENALTY * penetration) + 0.5 * e2 * PENALTY * penetration;
         assert!(
