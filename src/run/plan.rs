@@ -47,6 +47,10 @@ impl std::fmt::Display for TransientChoice {
                 f,
                 "SIMULATE/TRANSIENT ran as KINEMATICS: the model has 0 degrees of freedom (its joints and MOTIONs fix every part)"
             ),
+            1 => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as DYNAMICS: the model has 1 degree of freedom"
+            ),
             dof => write!(
                 f,
                 "SIMULATE/TRANSIENT ran as DYNAMICS: the model has {dof} degrees of freedom"

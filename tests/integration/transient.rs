@@ -108,7 +108,7 @@ fn transient_on_the_pendulum_runs_dynamics_with_the_same_frames() {
     );
     assert_eq!(code, 0, "{stderr}");
     assert!(
-        stdout.contains("SIMULATE/TRANSIENT ran as DYNAMICS: the model has 1 degrees of freedom"),
+        stdout.contains("SIMULATE/TRANSIENT ran as DYNAMICS: the model has 1 degree of freedom"),
         "{stdout}"
     );
     assert!(stdout.contains("s of dynamics"), "{stdout}");
