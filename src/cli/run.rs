@@ -11,7 +11,7 @@ use crate::run::plan::{AnalysisStep, PlanOverrides, plan_analyses};
 use crate::run::progress::RunProgress;
 use crate::solver::contact_force::Analysis;
 use crate::solver::frame::compute_frame;
-use crate::solver::kinematics::{KinematicsSettings, run_kinematics};
+use crate::solver::kinematics::{KinematicsSettings, initial_degrees_of_freedom, run_kinematics};
 use crate::solver::mbs::PartState;
 use crate::solver::simulate::{DynamicsSettings, Frame, RunSummary, simulate_with_progress};
 use crate::solver::statics::solve_statics;
@@ -97,21 +97,6 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         }
     };
     writeln!(out, "{selection}")?;
-    let plan = PlanOverrides {
-        end: args.end,
-        dtout: args.dtout,
-        steps: args.steps,
-    };
-    let (steps, notes) = match plan_analyses(model, plan) {
-        Ok(s) => s,
-        Err(message) => {
-            writeln!(err, "error: {message}")?;
-            return Ok(1);
-        }
-    };
-    for note in notes {
-        writeln!(err, "note: {note}")?;
-    }
     let threads = args
         .threads
         .or(model.preferences.threads.map(|n| n.get()))
@@ -134,6 +119,28 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         instance.faceting_tolerance = file.faceting_tolerance;
         Ok(instance)
     };
+    let plan = PlanOverrides {
+        end: args.end,
+        dtout: args.dtout,
+        steps: args.steps,
+    };
+    // SIMULATE/TRANSIENT chooses its analysis by the degrees of freedom of the constraints,
+    // which the lowered multibody system knows.
+    let mut transient_dof = |t: f64| -> Result<usize, String> {
+        let lowered = lower(model, engine.as_ref(), Analysis::Quasistatic, &meshes)
+            .map_err(|e| e.to_string())?;
+        initial_degrees_of_freedom(&lowered.system, t).map_err(|e| e.to_string())
+    };
+    let (steps, notes) = match plan_analyses(model, plan, &mut transient_dof) {
+        Ok(s) => s,
+        Err(message) => {
+            writeln!(err, "error: {message}")?;
+            return Ok(1);
+        }
+    };
+    for note in notes {
+        writeln!(err, "note: {note}")?;
+    }
     // Friction that acts in dynamics only needs the model lowered for the analysis at hand;
     // the state passes from one lowering to the next through the parts' states.
     let mut prepare_s = 0.0;
@@ -351,6 +358,7 @@ fn run_step(
             end,
             output_step,
             integrator,
+            ..
         } => {
             let settings = DynamicsSettings {
                 start,
@@ -395,6 +403,7 @@ fn run_step(
             start,
             end,
             output_step,
+            ..
         } => {
             let settings = KinematicsSettings {
                 start,
@@ -452,8 +461,20 @@ fn run_step(
             )
         }
     };
+    let result = match step.transient() {
+        Some(choice) => result.map(|line| format!("{choice}; {line}")),
+        None => result,
+    };
     if let Some(fields) = report.as_object_mut() {
         fields.insert("analysis".into(), json!(step.name()));
+        if let Some(choice) = step.transient() {
+            fields.insert("requested".into(), json!("TRANSIENT"));
+            fields.insert(
+                "degrees_of_freedom".into(),
+                json!(choice.degrees_of_freedom),
+            );
+            fields.insert("reason".into(), json!(choice.to_string()));
+        }
         let status = match &result {
             Ok(_) => "completed".to_string(),
             Err(e) => format!("failed: {e}"),

@@ -1,9 +1,15 @@
 //! The analyses a run performs, in order, from the command file's SIMULATE commands (or the
 //! `contact run` flags), with the INTEGRATOR and EQUILIBRIUM settings in force at each.
 //!
-//! - SIMULATE/DYNAMICS (and TRANSIENT, run as dynamics) and SIMULATE/KINEMATICS run from the
-//!   current time to END (or for DURATION); consecutive SIMULATEs of the same analysis run as
-//!   one span (a note says so).
+//! - SIMULATE/DYNAMICS and SIMULATE/KINEMATICS run from the current time to END (or for
+//!   DURATION); consecutive SIMULATEs of the same analysis run as one span (a note says so).
+//! - SIMULATE/TRANSIENT runs kinematics when the model has zero degrees of freedom and dynamics
+//!   otherwise, as in Adams. The degrees of freedom are `6n − rank(Φ_v)` at the model's
+//!   configuration assembled at the TRANSIENT's start time (`n` moving parts, `Φ_v` the
+//!   constraint Jacobian of joints, JPRIMs and MOTIONs): the rank, not the count of equations,
+//!   since redundant constraints are common (a planar slider-crank built from revolute joints
+//!   has more equations than coordinates). The step records the choice ([`TransientChoice`]) so
+//!   the run summary can say which analysis ran and why.
 //! - SIMULATE/STATICS finds the equilibrium at the current time; a following analysis starts
 //!   from it (Adams: dynamics after statics starts from equilibrium, at rest).
 //! - SIMULATE/INITIAL_CONDITIONS writes the assembled initial state at the current time.
@@ -14,6 +20,44 @@ use crate::model::{
 };
 use crate::solver::bdf::{Corrector, IntegratorSettings};
 use crate::solver::statics::StaticsSettings;
+
+/// Why a SIMULATE/TRANSIENT ran as kinematics or as dynamics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TransientChoice {
+    /// The model's degrees of freedom where the TRANSIENT starts: 6 per moving part minus the
+    /// rank of the constraint Jacobian.
+    pub degrees_of_freedom: usize,
+}
+
+impl TransientChoice {
+    /// The analysis the TRANSIENT runs: KINEMATICS with zero degrees of freedom, else DYNAMICS.
+    pub fn analysis(&self) -> &'static str {
+        if self.degrees_of_freedom == 0 {
+            "KINEMATICS"
+        } else {
+            "DYNAMICS"
+        }
+    }
+}
+
+impl std::fmt::Display for TransientChoice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.degrees_of_freedom {
+            0 => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as KINEMATICS: the model has 0 degrees of freedom (its joints and MOTIONs fix every part)"
+            ),
+            1 => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as DYNAMICS: the model has 1 degree of freedom"
+            ),
+            dof => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as DYNAMICS: the model has {dof} degrees of freedom"
+            ),
+        }
+    }
+}
 
 /// One analysis of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,6 +72,8 @@ pub enum AnalysisStep {
         output_step: f64,
         /// The integrator's settings.
         integrator: IntegratorSettings,
+        /// Set when a SIMULATE/TRANSIENT chose dynamics.
+        transient: Option<TransientChoice>,
     },
     /// Kinematics of a zero-DOF model.
     Kinematics {
@@ -37,6 +83,8 @@ pub enum AnalysisStep {
         end: f64,
         /// Time between frames.
         output_step: f64,
+        /// Set when a SIMULATE/TRANSIENT chose kinematics.
+        transient: Option<TransientChoice>,
     },
     /// Static equilibrium at time `t`.
     Statics {
@@ -62,6 +110,14 @@ impl AnalysisStep {
             Self::InitialConditions { .. } => "INITIAL_CONDITIONS",
         }
     }
+
+    /// Why a SIMULATE/TRANSIENT ran as this analysis (`None` when it was asked for by name).
+    pub fn transient(&self) -> Option<TransientChoice> {
+        match self {
+            Self::Dynamics { transient, .. } | Self::Kinematics { transient, .. } => *transient,
+            Self::Statics { .. } | Self::InitialConditions { .. } => None,
+        }
+    }
 }
 
 /// The flags of `contact run` that override the command file.
@@ -82,12 +138,17 @@ struct Span {
     end: f64,
     output: Option<OutputSteps>,
     integrator: IntegratorSettings,
+    transient: Option<TransientChoice>,
 }
 
 /// The analyses of `model`'s command file, in order, with notes on anything interpreted.
+///
+/// `degrees_of_freedom(t)` gives the model's degrees of freedom at its configuration assembled
+/// at time `t`; it is asked only for a SIMULATE/TRANSIENT (at that command's start time).
 pub fn plan_analyses(
     model: &Model,
     overrides: PlanOverrides,
+    degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, String>,
 ) -> Result<(Vec<AnalysisStep>, Vec<String>), String> {
     let mut notes = Vec::new();
     let mut integrator = convert_integrator(&model.integrator)?;
@@ -104,9 +165,21 @@ pub fn plan_analyses(
                 span: when,
                 output,
             } => {
+                let mut transient = None;
                 let timed = match analysis {
-                    ModelAnalysis::Dynamics | ModelAnalysis::Transient => {
-                        Some(ModelAnalysis::Dynamics)
+                    ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
+                    ModelAnalysis::Transient => {
+                        let choice = TransientChoice {
+                            degrees_of_freedom: degrees_of_freedom(time)
+                                .map_err(|e| format!("{origin}: SIMULATE/TRANSIENT: {e}"))?,
+                        };
+                        notes.push(format!("{origin}: {choice}"));
+                        transient = Some(choice);
+                        Some(if choice.degrees_of_freedom == 0 {
+                            ModelAnalysis::Kinematics
+                        } else {
+                            ModelAnalysis::Dynamics
+                        })
                     }
                     ModelAnalysis::Kinematics => Some(ModelAnalysis::Kinematics),
                     ModelAnalysis::Statics | ModelAnalysis::InitialConditions => None,
@@ -137,6 +210,7 @@ pub fn plan_analyses(
                         ));
                         current.end = stop;
                         current.output = current.output.or(*output);
+                        current.transient = current.transient.or(transient);
                     }
                     _ => {
                         if let Some(done) = span.take() {
@@ -148,6 +222,7 @@ pub fn plan_analyses(
                             end: stop,
                             output: *output,
                             integrator,
+                            transient,
                         });
                     }
                 }
@@ -171,6 +246,7 @@ pub fn plan_analyses(
                 end,
                 output: None,
                 integrator,
+                transient: None,
             };
             steps.push(finish(done, overrides, &mut notes, true));
         }
@@ -213,12 +289,14 @@ fn finish(
             start: span.start,
             end,
             output_step,
+            transient: span.transient,
         },
         _ => AnalysisStep::Dynamics {
             start: span.start,
             end,
             output_step,
             integrator: span.integrator,
+            transient: span.transient,
         },
     }
 }
@@ -272,13 +350,24 @@ mod tests {
     use std::path::Path;
 
     fn plan(acf: &str, overrides: PlanOverrides) -> (Vec<AnalysisStep>, Vec<String>) {
+        plan_with_dof(acf, overrides, None)
+    }
+
+    /// The plan of `acf`, the model having `dof` degrees of freedom (`None`: asking is an
+    /// error, the plan must not need them).
+    fn plan_with_dof(
+        acf: &str,
+        overrides: PlanOverrides,
+        dof: Option<usize>,
+    ) -> (Vec<AnalysisStep>, Vec<String>) {
         let loaded = read_str(
             "plan\nPART/1, GROUND\nEND\n",
             "plan.adm",
             Some((acf, Path::new("plan.acf"))),
         );
         assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-        plan_analyses(&loaded.model, overrides).unwrap()
+        let mut asked = |_: f64| dof.ok_or_else(|| "not asked for".to_string());
+        plan_analyses(&loaded.model, overrides, &mut asked).unwrap()
     }
 
     #[test]
@@ -309,7 +398,8 @@ mod tests {
             AnalysisStep::Kinematics {
                 start: 2.0,
                 end: 2.5,
-                output_step: 0.1
+                output_step: 0.1,
+                transient: None,
             }
         );
         assert_eq!(steps[3], AnalysisStep::InitialConditions { t: 2.5 });
@@ -342,5 +432,45 @@ mod tests {
             notes.iter().any(|n| n.contains("--end is not used")),
             "{notes:?}"
         );
+    }
+
+    #[test]
+    fn transient_runs_kinematics_without_degrees_of_freedom_and_dynamics_with_them() {
+        let acf = "plan.adm\nplan\nSIMULATE/TRANSIENT, END = 1, DTOUT = 0.1\nSTOP\n";
+        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(0));
+        let choice = TransientChoice {
+            degrees_of_freedom: 0,
+        };
+        assert_eq!(
+            steps,
+            vec![AnalysisStep::Kinematics {
+                start: 0.0,
+                end: 1.0,
+                output_step: 0.1,
+                transient: Some(choice),
+            }]
+        );
+        assert!(
+            notes.iter().any(|n| n.contains("ran as KINEMATICS")),
+            "{notes:?}"
+        );
+        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(2));
+        assert_eq!(steps.len(), 1);
+        assert_eq!(steps[0].name(), "DYNAMICS");
+        assert_eq!(steps[0].transient().map(|c| c.degrees_of_freedom), Some(2));
+        assert!(
+            notes
+                .iter()
+                .any(|n| n.contains("ran as DYNAMICS: the model has 2 degrees of freedom")),
+            "{notes:?}"
+        );
+        // A DYNAMICS followed by a TRANSIENT that chooses dynamics runs as one span.
+        let (steps, _) = plan_with_dof(
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2, DTOUT = 0.1\nSTOP\n",
+            PlanOverrides::default(),
+            Some(1),
+        );
+        assert_eq!(steps.len(), 1);
+        assert!(matches!(steps[0], AnalysisStep::Dynamics { end: 2.0, .. }));
     }
 }

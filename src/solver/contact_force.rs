@@ -335,6 +335,21 @@ impl ForceElement for SharedContact {
         }
     }
 
+    fn equilibrium_converged(&mut self, t: f64, state: &StateView<'_>) -> bool {
+        let Some(m) = &self.0.multipliers else {
+            return false;
+        };
+        // A failed query leaves the multipliers as they are; the next residual reports it.
+        match self.0.reports(t, state) {
+            Ok(reports) => {
+                let penetrations: Vec<f64> =
+                    reports.iter().map(|r| r.contact.penetration).collect();
+                m.equilibrium_converged(&penetrations)
+            }
+            Err(_) => false,
+        }
+    }
+
     fn corrector_converged(&mut self, t: f64, state: &StateView<'_>) -> bool {
         let Some(m) = &self.0.multipliers else {
             return false;

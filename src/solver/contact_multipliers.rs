@@ -25,6 +25,14 @@
 //! characteristic length of the two geometries), so a model in millimetres and one in metres
 //! iterate alike.
 //!
+//! **Statics** (ours). At rest δ̇ = 0, so the force is the blend's midpoint
+//! `½·F_c + ½·F_r`. The static solver finds the equilibrium with the multipliers it has, then
+//! every contact whose penetration exceeds the tolerance updates `λ ← max(0, λ + p·δ)` whatever
+//! its rate ([`Multipliers::equilibrium_converged`]) and the equilibrium is solved again, until
+//! every penetration is within the tolerance. For one contact carrying a fixed load, a pass
+//! multiplies the penetration by `k_r/(p + k_r)`, `k_r` the restitution stiffness: `ε²·p`
+//! before any compression work is recorded, so `ε²/(1 + ε²) ≤ ½`.
+//!
 //! **Memory.** Each attempt starts from the state of the last accepted step (an attempt that
 //! fails leaves no trace); an accepted step keeps it; a step the driver rolls back (contact
 //! prediction) restores the one before. A contact that disappears forgets its state.
@@ -168,6 +176,28 @@ impl Multipliers {
         again
     }
 
+    /// A static equilibrium was found with these penetrations per contact (engine order):
+    /// every contact whose δ exceeds the tolerance updates `λ ← max(0, λ + p·δ)` (at rest,
+    /// whatever the rate) and the call returns whether any did (the equilibrium must be solved
+    /// again). The multipliers are kept as the accepted state, since an equilibrium is one; the
+    /// caller bounds the passes.
+    pub fn equilibrium_converged(&self, penetrations: &[f64]) -> bool {
+        let Ok(mut l) = self.levels.lock() else {
+            return false;
+        };
+        l.current
+            .resize(penetrations.len(), ContactMemory::default());
+        let mut again = false;
+        for (m, &delta) in l.current.iter_mut().zip(penetrations) {
+            if delta > self.tolerance {
+                m.lambda = self.update.update(m.lambda, delta).0;
+                again = true;
+            }
+        }
+        l.accepted = l.current.clone();
+        again
+    }
+
     /// The step was accepted with these `(penetration, rate, normal force)` per contact: its
     /// state is the new start, with the compression work and deepest penetration updated.
     pub fn step_accepted(&self, contacts: &[(f64, f64, f64)]) {
@@ -264,6 +294,19 @@ mod tests {
             })
             .sum();
         assert!((returned - eps * eps * w).abs() < 1e-9 * w, "{returned}");
+    }
+
+    #[test]
+    fn at_equilibrium_every_contact_above_the_tolerance_updates_whatever_its_rate() {
+        let m = multipliers(0.6);
+        assert!(m.equilibrium_converged(&[2e-5, 1e-6]));
+        assert_eq!(m.memory(0).lambda, 1e6 * 2e-5);
+        assert_eq!(m.memory(1).lambda, 0.0);
+        // Kept as the accepted state: a new attempt starts from it.
+        m.attempt_started();
+        assert_eq!(m.memory(0).lambda, 20.0);
+        assert!(!m.equilibrium_converged(&[1e-5, 0.0]));
+        assert_eq!(m.memory(0).lambda, 20.0);
     }
 
     #[test]

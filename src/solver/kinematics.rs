@@ -116,6 +116,14 @@ pub fn degrees_of_freedom(system: &MultibodySystem, y: &DVector<f64>) -> Result<
     Ok(n6 - rank.min(n6))
 }
 
+/// The degrees of freedom of the model's given configuration assembled onto the constraints
+/// at time `t` ([`degrees_of_freedom`] there): what SIMULATE/TRANSIENT chooses its analysis by.
+pub fn initial_degrees_of_freedom(system: &MultibodySystem, t: f64) -> Result<usize, MbsError> {
+    let mut y = system.given_state().clone();
+    system.assemble(t, &mut y)?;
+    degrees_of_freedom(system, &y)
+}
+
 /// The kinematic state at `t`, the positions found by Newton from those of `guess`.
 pub fn solve_kinematic_state(
     system: &MultibodySystem,

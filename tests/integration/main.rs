@@ -16,8 +16,11 @@ mod out_of_plane;
 mod scenes_cli;
 mod select;
 mod statics;
+mod statics_augmented;
+mod statics_stability;
 mod trade_schema;
 mod tradeoff;
+mod transient;
 
 use contact::dataset::{Loaded, read_str};
 use std::path::{Path, PathBuf};

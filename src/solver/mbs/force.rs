@@ -131,6 +131,14 @@ pub trait ForceElement: Send + Sync {
     fn corrector_converged(&mut self, _t: f64, _state: &StateView<'_>) -> bool {
         false
     }
+
+    /// Called when a static equilibrium has been found, with its state: an element with an
+    /// inner iteration updates itself and returns `true` to have the equilibrium solved again
+    /// on the updated forces (the static solver bounds the passes). The default returns
+    /// `false`.
+    fn equilibrium_converged(&mut self, _t: f64, _state: &StateView<'_>) -> bool {
+        false
+    }
 }
 
 /// The partials of a force `f(d, ḋ)` acting on part a at marker point `p_I` and `−f` on part b at

@@ -10,9 +10,9 @@
 //! - **Static** (the default): Newton on `(q, λ)` in virtual displacements `[δr, δθ′]` per part,
 //!   with the Jacobian of the integrator's Newton matrix taken at `c = 0` (solver-notes §2.3),
 //!   each part's increment clamped to TLIMIT (translation) and ALIMIT (rotation), STABILITY
-//!   times the mass matrix added to the stiffness (Adams' regularization of neutral
-//!   equilibria), converged when the last relative correction is within ERROR and the force
-//!   imbalance within IMBALANCE, at most MAXIT iterations. A step after which a force element
+//!   times the mass and damping matrices added to the stiffness matrix, converged when the
+//!   last relative correction is within ERROR and the force imbalance within IMBALANCE, at
+//!   most MAXIT iterations. A step after which a force element
 //!   acts that did not act before (a contact coming into contact: Adams' contact-force
 //!   sensing) ends the static method, since the Jacobian had no stiffness for it.
 //! - **Quasi-dynamic** (EQUILIBRIUM/DYNAMIC, and the fallback when static Newton fails — a part
@@ -21,9 +21,25 @@
 //!   time, integrated by the BDF until the parts have settled, then the same Newton
 //!   ([`quasi_dynamic`]).
 //!
+//! **STABILITY** (Adams EQUILIBRIUM/STABILITY): the fraction of the mass matrix `M` and the
+//! damping matrix `C` added to the stiffness matrix `K` of the static Jacobian, so a neutral
+//! equilibrium — a direction in which the parts move without changing the potential energy, as
+//! a part resting on a contact is free to slide along it — keeps a solvable Newton matrix
+//! `K + s·(M + C)`. `C` is the partial of the forces with respect to the velocities (contact
+//! damping, damped SFORCEs), taken from the velocity columns of the residual's Jacobian at
+//! rest. The term multiplies the Newton step, not the state: the residual Newton drives to
+//! zero is the unmodified static residual, so STABILITY changes how the iteration converges,
+//! never the equilibrium it converges to. With STABILITY = 0 a neutral equilibrium makes the
+//! Jacobian singular and the static method hands over to the quasi-dynamic one.
+//!
+//! **AUGMENTED_LAGRANGIAN_FORMULATION**: the equilibrium found by either method is refined by
+//! outer multiplier updates, each followed by Newton, until every such contact's penetration
+//! is within its tolerance ([`augmented`]).
+//!
 //! A failure returns [`StaticsError::NotConverged`] with a diagnosis: the imbalance, the part
 //! and the force element that dominate it, the worst constraint, the iterations.
 
+pub mod augmented;
 mod diagnosis;
 pub mod newton;
 pub mod quasi_dynamic;
@@ -49,8 +65,9 @@ pub struct StaticsSettings {
     /// IMBALANCE: convergence needs every force row of the residual below this, and every
     /// torque row below `IMBALANCE·L` (force units; > 0).
     pub imbalance: f64,
-    /// STABILITY: the fraction of the mass matrix added to the static Jacobian, so neutral
-    /// equilibria (no stiffness in some direction) keep a solvable Newton matrix (≥ 0).
+    /// STABILITY: the fraction of the mass and damping matrices added to the stiffness
+    /// matrix of the static Jacobian, so neutral equilibria (no stiffness in some direction)
+    /// keep a solvable Newton matrix (≥ 0; it does not move the equilibrium).
     pub stability: f64,
     /// DYNAMIC: find the equilibrium by the quasi-dynamic method from the start.
     pub dynamic: bool,
@@ -182,17 +199,19 @@ pub fn solve_statics(
     let mut start = y.clone();
     system.assemble(t, &mut start)?;
     newton::zero_velocities(system, &mut start);
-    if settings.dynamic {
-        return quasi_dynamic::settle(system, t, &start, settings, None);
-    }
-    let mut trial = start.clone();
-    match newton::solve(system, t, &mut trial, settings, true) {
-        Ok(report) => Ok(Equilibrium {
-            y: trial,
-            method: StaticsMethod::Newton,
-            iterations: report.iterations,
-            imbalance: report.imbalance,
-        }),
-        Err(failure) => quasi_dynamic::settle(system, t, &start, settings, Some(failure)),
-    }
+    let found = if settings.dynamic {
+        quasi_dynamic::settle(system, t, &start, settings, None)?
+    } else {
+        let mut trial = start.clone();
+        match newton::solve(system, t, &mut trial, settings, true) {
+            Ok(report) => Equilibrium {
+                y: trial,
+                method: StaticsMethod::Newton,
+                iterations: report.iterations,
+                imbalance: report.imbalance,
+            },
+            Err(failure) => quasi_dynamic::settle(system, t, &start, settings, Some(failure))?,
+        }
+    };
+    augmented::augment(system, t, found, settings)
 }

@@ -71,7 +71,15 @@ pub fn imbalance(system: &MultibodySystem, r: &DVector<f64>) -> f64 {
 }
 
 /// The static Jacobian `∂[dynamic rows; Φ]/∂[δr, δθ′, λ]` at `y` (velocities zero), with
-/// `stability` times the mass matrix added to the position columns of the dynamic rows.
+/// `stability` times the mass and damping matrices added to the position columns of the
+/// dynamic rows: `K + s·(M + C)` in place of the stiffness `K`.
+///
+/// `C = ∂(ω′×Jω′ − Q)/∂[u, ω′]` is the damping matrix, the velocity columns of the same
+/// dynamic rows (the gyroscopic part vanishes at rest, so it is `−∂Q/∂v`: contact damping,
+/// damped SFORCEs). Velocities `[u, ω′]` and virtual displacements `[δr, δθ′]` are in the
+/// same frames (world, body), so `C` adds column for column. The added term only changes the
+/// Newton matrix, never the residual: it scales the iteration step, so the equilibrium that
+/// Newton converges to is the same for every `stability`.
 pub fn static_jacobian(
     system: &mut MultibodySystem,
     t: f64,
@@ -110,6 +118,15 @@ pub fn static_jacobian(
         }
     }
     if stability > 0.0 {
+        let velocity_columns: Vec<usize> = system
+            .moving_parts()
+            .flat_map(|p| (0..6).map(move |i| layout.velocity_offset(p) + i))
+            .collect();
+        for (i, &row) in rows.iter().take(6 * n).enumerate() {
+            for (j, &column) in velocity_columns.iter().enumerate() {
+                jacobian[(i, j)] += stability * full[(row, column)];
+            }
+        }
         for (k, (mass, inertia)) in system.mass_properties().enumerate() {
             for c in 0..3 {
                 jacobian[(6 * k + c, 6 * k + c)] += stability * mass;

@@ -13,6 +13,10 @@
 //!   part's speed is below `SETTLED_SPEED` (relative: `|u|·T/L`, `|ω|·T`), Newton starts from
 //!   the positions reached (velocities zeroed). Its success ends the method; its failure lets
 //!   the dynamics run on. After `MAX_WINDOWS` windows the method fails with a diagnosis.
+//! - **Augmented-Lagrangian contacts** settle on the multipliers they have: the inner update
+//!   of the dynamics is off (at rest it chatters — an approach adds `p·δ`, a separation drops
+//!   the multiplier from the force — and the settling crawls), and the statics augments the
+//!   multipliers once the parts are at rest ([`super::augmented`]).
 
 use super::newton::{self, NewtonFailure, static_jacobian, zero_velocities};
 use super::{Equilibrium, StaticsDiagnosis, StaticsError, StaticsMethod, StaticsSettings};
@@ -138,8 +142,10 @@ impl DaeSystem for FrozenTime<'_> {
         self.system.attempt_started(self.t, h);
     }
 
-    fn corrector_converged(&mut self, _t: f64, y: &DVector<f64>, yp: &DVector<f64>) -> bool {
-        self.system.corrector_converged(self.t, y, yp)
+    /// No inner iteration while the parts settle: augmented-Lagrangian multipliers stay as
+    /// they are and are augmented after the settling, at rest ([`super::augmented`]).
+    fn corrector_converged(&mut self, _t: f64, _y: &DVector<f64>, _yp: &DVector<f64>) -> bool {
+        false
     }
 
     fn step_accepted(&mut self, _t: f64, y: &DVector<f64>, yp: &DVector<f64>) {
