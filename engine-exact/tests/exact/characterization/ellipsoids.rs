@@ -23,7 +23,7 @@ const CLOSED_SAMPLES: usize = 60;
 /// Samples of the rows against the divergence-theorem oracle.
 const SURFACE_SAMPLES: usize = 3;
 /// The bound of the rows against the divergence-theorem oracle (its own accuracy).
-const ORACLE_LIMITED_BOUND: f64 = 1e-6;
+const ORACLE_LIMITED_BOUND: f64 = 1e-9;
 /// The divergence-theorem oracle's absolute tolerance per surface (sizes about 1).
 const SURFACE_TOL: f64 = 1e-11;
 
