@@ -228,12 +228,12 @@ fn spherical_pair(rng: &mut Rng, semi_i: Vector3, semi_j: Vector3) -> Option<Cas
 
 /// The general-pose rows, against the divergence-theorem oracle. Not in the table run by
 /// default: the oracle is slow unoptimized (minutes for three samples a row). With this
-/// seed the ellipsoid–ellipsoid, box and cylinder rows agree to 4e-12; one sphere–ellipsoid
-/// sample (a sphere of radius 0.665 through both faces of an ellipsoid 0.64 thin) differs
-/// by 4e-7 of the volume and 8.2e-7 in the normal, while the engine sliced along six
-/// directions agrees with itself to 1e-15 there. The spherical-polar reference cannot take
-/// that pose (neither surface's part inside the other is star-shaped), so which side is
-/// wrong is open; run with `--ignored --nocapture` to see the rows.
+/// seed one sphere–ellipsoid sample (a sphere of radius 0.665 through both faces of an
+/// ellipsoid 0.64 thin) differs by 4e-7 of the volume and 8.2e-7 in the normal; there the
+/// spherical-polar reference agrees with the engine to 1e-15 (see
+/// `spherical_reference::a_sphere_through_both_faces_of_a_flat_ellipsoid`): the oracle's
+/// outer integral, split only where a sampled crossing count changes, is the wrong side.
+/// Run with `--ignored --nocapture` to see the rows.
 fn general_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         oracle_limited(run(
@@ -334,7 +334,7 @@ fn general_rows(rng: &mut Rng) -> Vec<Row> {
 }
 
 #[test]
-#[ignore = "slow, and open: one sphere–ellipsoid sample differs by 8e-7 (see general_rows)"]
+#[ignore = "slow; the oracle is 4e-7 off on one sphere–ellipsoid sample (see general_rows)"]
 fn general_poses_against_the_divergence_oracle() {
     let mut rng = Rng::new(0x05ee_de11);
     for row in general_rows(&mut rng) {
