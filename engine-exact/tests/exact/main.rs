@@ -28,3 +28,4 @@ mod properties;
 mod regressions;
 mod revolved_oracles;
 mod sliced_oracles;
+mod spherical_reference;

@@ -1,11 +1,9 @@
 //! Characterization rows of the general ellipsoid pairs (sliced quadrature in the engine),
-//! against the oracles of [`crate::ellipsoid_oracles`]. The divergence-theorem oracle is
-//! slow unoptimized, so its rows take fewer samples, and it is the weaker side of those
-//! rows: its outer integral is split only where a sampled crossing count changes, and in
-//! general poses it disagrees with the engine by up to about 4e-7 of the size where the
-//! engine agrees with itself sliced in five directions to 1e-9. Those rows are held to
-//! [`ORACLE_LIMITED_BOUND`]; the closed-form rows (affine lens, affine caps, the sphere
-//! cross-check) to the iterative bound 1e-9.
+//! against the oracles of [`crate::ellipsoid_oracles`] (affine lens, affine caps, the sphere
+//! cross-check) and, for two ellipsoids in general poses, the spherical-polar reference of
+//! [`crate::spherical_reference`] (converged to 1e-12, `S_I + S_J = 0` checked): all held
+//! to the iterative bound 1e-9. The divergence-theorem oracle's general-pose rows are slow
+//! unoptimized and run only on request (see [`general_rows`]).
 
 use super::{Case, ITERATIVE_BOUND, Row, run};
 use crate::common::{Expected, Rng, instance, one};
@@ -14,16 +12,19 @@ use crate::ellipsoid_oracles::{
     cylinder_exit, ellipsoid_cap, ellipsoid_exit, ellipsoid_margin, lens_moments, mapped,
     surface_moments,
 };
+use crate::spherical_reference;
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid};
 use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector3};
 use nalgebra::{Matrix3, Translation3};
 
 /// Samples of the closed-form rows.
 const CLOSED_SAMPLES: usize = 60;
+/// Samples of the general-pose rows against the spherical-polar reference.
+const SPHERICAL_SAMPLES: usize = 12;
 /// Samples of the rows against the divergence-theorem oracle.
 const SURFACE_SAMPLES: usize = 3;
-/// The bound of the rows against the divergence-theorem oracle (its own accuracy).
-const ORACLE_LIMITED_BOUND: f64 = 1e-6;
+/// The bound of the rows against the divergence-theorem oracle: the iterative bound.
+const ORACLE_LIMITED_BOUND: f64 = ITERATIVE_BOUND;
 /// The divergence-theorem oracle's absolute tolerance per surface (sizes about 1).
 const SURFACE_TOL: f64 = 1e-11;
 
@@ -172,15 +173,67 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             },
         )),
         iterative(sphere_cross_check(rng)),
+        iterative(run(
+            rng,
+            SPHERICAL_SAMPLES,
+            "sphere–ellipsoid",
+            "sphere r ∈ [0.3, 1.2] against semi-axes ∈ [0.3, 1.5], random poses",
+            "sliced quadrature",
+            |rng| {
+                let r = rng.uniform(0.3, 1.2);
+                let semi_j = axes(rng, 0.3, 1.5);
+                spherical_pair(rng, Vector3::repeat(r), semi_j)
+            },
+        )),
+        iterative(run(
+            rng,
+            SPHERICAL_SAMPLES,
+            "ellipsoid–ellipsoid",
+            "semi-axes ∈ [0.3, 1.5], random poses",
+            "sliced quadrature",
+            |rng| {
+                let a = axes(rng, 0.3, 1.5);
+                let b = axes(rng, 0.3, 1.5);
+                spherical_pair(rng, a, b)
+            },
+        )),
     ]
 }
 
+/// An ellipsoid I with `semi_i` against an ellipsoid J with `semi_j` at the origin, poses
+/// random, by the spherical-polar reference; `None` where it does not apply (apart,
+/// containment, a region not star-shaped) or has not converged to 1e-12.
+fn spherical_pair(rng: &mut Rng, semi_i: Vector3, semi_j: Vector3) -> Option<Case> {
+    let (ri, rj) = (rng.rotation(), rng.rotation());
+    let (li, lj) = (matrix_of(&semi_i, &ri), matrix_of(&semi_j, &rj));
+    let c = rng.unit_vector() * rng.uniform(0.0, 1.0) * (semi_i.max() + semi_j.max());
+    let zero = Vector3::zeros();
+    let (moments, error, closure) = spherical_reference::converged(
+        &spherical_reference::Ellipsoid { c, l: li },
+        &spherical_reference::Ellipsoid { c: zero, l: lj },
+    )?;
+    if error > 1e-12 || closure > 1e-12 || moments.area_vector_i.norm() < 1e-3 {
+        return None;
+    }
+    let expected = expected_ellipsoid_i(&moments, &c, &li, |g, d| ellipsoid_exit(&zero, &lj, g, d));
+    Some(Case {
+        i: ellipsoid(&semi_i),
+        j: ellipsoid(&semi_j),
+        pose_i: pose(&c, ri),
+        pose_j: pose(&zero, rj),
+        expected,
+        length: semi_i.max().max(semi_j.max()),
+    })
+}
+
 /// The general-pose rows, against the divergence-theorem oracle. Not in the table run by
-/// default: the oracle is slow unoptimized (minutes for three samples a row) and in general
-/// poses it and the engine disagree by more than either should (normals up to 1.2e-4 for
-/// ellipsoid–ellipsoid, 5.4e-5 for ellipsoid–box, 1.6e-6 for the cylinder side), while the
-/// engine agrees with itself sliced in other directions (swap property, 1e-9). Which side
-/// is wrong is open; run with `--ignored --nocapture` to see the rows.
+/// default: the oracle is slow unoptimized (minutes for three samples a row). With this
+/// seed one sphere–ellipsoid sample (a sphere of radius 0.665 through both faces of an
+/// ellipsoid 0.64 thin) differs by 4e-7 of the volume and 8.2e-7 in the normal; there the
+/// spherical-polar reference agrees with the engine to 1e-15 (see
+/// `spherical_reference::a_sphere_through_both_faces_of_a_flat_ellipsoid`): the oracle's
+/// outer integral, split only where a sampled crossing count changes, is the wrong side.
+/// Run with `--ignored --nocapture` to see the rows.
 fn general_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         oracle_limited(run(
@@ -281,7 +334,7 @@ fn general_rows(rng: &mut Rng) -> Vec<Row> {
 }
 
 #[test]
-#[ignore = "open: the divergence-theorem oracle and the engine disagree in general poses (see general_rows)"]
+#[ignore = "slow; the oracle is 4e-7 off on one sphere–ellipsoid sample (see general_rows)"]
 fn general_poses_against_the_divergence_oracle() {
     let mut rng = Rng::new(0x05ee_de11);
     for row in general_rows(&mut rng) {
