@@ -35,6 +35,25 @@ pub(crate) struct VolumeMoments {
 /// this small is shallower than about 1e-14 of the size for curved surfaces.
 pub(crate) const ROUND_OFF_SURFACE: f64 = 1e-13;
 
+/// A region thinner than this fraction of the pair's size (volume over `|S|`) is checked for
+/// being resolved at all ([`unresolved_lens`]).
+pub(crate) const THIN: f64 = 1e-6;
+
+/// Whether a thin region's moments are noise: every intersection of two convex solids (all
+/// the pairs here) is convex, and a convex region's chord through its centroid along `n` is
+/// at most `3V/|S|` (`V ≥ ⅓·A·ℓ` for the projected area `A = |S|` and the longest chord `ℓ`
+/// along `n`), and the depth is that chord. A lens far thinner than the pair's size (overlaps
+/// of 1e-8 of it and less between curved surfaces) has sections whose overlap areas are at
+/// round-off, so its volume and centroid are noise, and the line through a centroid that lies
+/// outside the lens crosses the surfaces far apart (seen: a depth of 5e-3 of the size for an
+/// overlap of 4e-13). Such a region breaks the bound by orders of magnitude; it is touching
+/// within round-off, and gives no contact. Only thin regions are checked, so a solid passing
+/// through a thick plate (whose depth along the plate's normal can exceed the chord) is not.
+pub(crate) fn unresolved_lens(volume: f64, s_norm: f64, depth: f64, length: f64) -> bool {
+    let thickness = volume / s_norm;
+    thickness <= THIN * length && depth > 3.0 * thickness * (1.0 + 1e-6) + 1e-13 * length
+}
+
 /// `|S|` at or below this fraction of the intersection's surface counts as vanishing.
 pub(crate) const ENCLOSED: f64 = 1e-12;
 
@@ -68,6 +87,9 @@ pub(crate) fn contact(
     // A round-off sliver (a volume of a few ulps where the surfaces only touch) can leave no
     // depth along its normal: touching is not a contact.
     if depth.is_nan() || depth <= 0.0 {
+        return None;
+    }
+    if !enclosed && unresolved_lens(m.volume, s_norm, depth, m.length) {
         return None;
     }
     Some(PairContact {

@@ -102,3 +102,53 @@ fn a_grazing_line_contact_does_not_amplify_round_off_along_its_axis() {
         "{got:e} vs {slide:e}: {c:?}"
     );
 }
+
+/// Two turned ellipsoids touching at their support points, pressed together by 1e-12 of
+/// their size: the true lens is about 1e-6 across and 1e-12 thick, a volume far below the
+/// round-off of the slicing quadrature. Its computed centroid was then noise, and the line
+/// through it along the normal crossed the surfaces 1e-3 of the size apart: a penetration
+/// 1e9 times the true one. The answer must be a contact at most a few times deeper than the
+/// overlap, or none.
+#[test]
+fn a_grazing_ellipsoid_lens_is_not_deeper_than_its_overlap() {
+    use contact_core::geometry::Ellipsoid;
+    let a = Ellipsoid::new(1.0, 0.6, 0.4).unwrap();
+    let b = Ellipsoid::new(0.8, 0.8, 0.5).unwrap();
+    let (gi, gj) = (
+        instance(Geometry::Ellipsoid(a)),
+        instance(Geometry::Ellipsoid(b)),
+    );
+    // The support point of an ellipsoid with semi-axes `s`, turned by `r`, along `u`.
+    let support = |s: Vector3, r: &UnitQuaternion, u: &Vector3| {
+        let local = r.inverse() * u;
+        let scaled = s.component_mul(&local);
+        r * (s.component_mul(&scaled) / scaled.norm())
+    };
+    let mut rng = Rng::new(11);
+    for k in 0..40 {
+        let depth = [1e-12, 1e-10, 1e-8, 1e-6][k % 4] * 0.4;
+        let (ri, rj) = (rng.rotation(), rng.rotation());
+        let u = rng.unit_vector();
+        let on_j = support(b.semi_axes(), &rj, &u);
+        let on_i = support(a.semi_axes(), &ri, &-u);
+        let pose_j = Isometry3::from_parts(Vector3::zeros().into(), rj);
+        let pose_i = Isometry3::from_parts((on_j - on_i - u * depth).into(), ri);
+        let world = rng.pose(5.0);
+        let out = crate::common::query(&gi, &gj, &(world * pose_i), &(world * pose_j));
+        assert!(out.len() <= 1, "{out:?}");
+        for c in &out {
+            assert!(
+                c.penetration <= 4.0 * depth + 1e-12,
+                "pose {k}, overlap {depth:e}: {c:?}"
+            );
+        }
+        if depth >= 1e-6 * 0.4 {
+            assert_eq!(out.len(), 1, "pose {k}, overlap {depth:e}");
+            assert!(
+                (out[0].penetration - depth).abs() <= 0.05 * depth,
+                "{:?}",
+                out[0]
+            );
+        }
+    }
+}
