@@ -164,13 +164,14 @@ fn the_elastic_poisson_ball_rebounds_as_the_exact_one_within_the_chord_deviation
 fn the_augmented_poisson_ball_rebounds_as_the_exact_one_within_the_chord_deviation() {
     // The example's ball started 1 mm above the plane at the speed of its 1 m drop (the
     // augmented contact is the costly part of the run; the flight is ballistic). The bound's
-    // argument holds for any drop height H.
+    // argument holds for any drop height H. The default FT only: in the debug profile the
+    // faceted augmented bounce takes about 30 s at FT 300 and 50 s at FT 1000.
     let mut model = load("ball_poisson_al", "ball_poisson_al.adm", None);
     let part = model.parts.get_mut(&2).unwrap();
     // The part frame is at the ground origin, its CM marker 1.1 above it.
     part.pose_world_part.translation.vector.z += 0.1 + 1e-3 - 1.1;
     part.velocity_w.z = -(2.0 * G * (1.0 - 1e-3)).sqrt();
-    assert_ball_apexes_agree(&model, 0.02, 1, &[DEFAULT_FT, 1000.0]);
+    assert_ball_apexes_agree(&model, 0.02, 1, &[DEFAULT_FT]);
 }
 
 /// The first moving part's CM position at every frame.
