@@ -20,6 +20,8 @@ use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
 type Vector3 = nalgebra::Vector3<f64>;
+/// A lowered model's `(solver part, Adams PART id)`.
+type PartIds = (contact::solver::mbs::PartId, u32);
 
 /// Adams' default faceting tolerance.
 const DEFAULT_FT: f64 = 300.0028;
@@ -67,7 +69,7 @@ fn run(
     engine: &dyn GeometryEngine,
     end: f64,
     output_step: f64,
-    each: &mut dyn FnMut(&Frame, &[(contact::solver::mbs::PartId, u32)]),
+    each: &mut dyn FnMut(&Frame, &[PartIds]),
 ) {
     let mut lowered = lowered(model, engine);
     let settings = DynamicsSettings {
