@@ -3,6 +3,7 @@
 mod augmented_lagrangian;
 mod ball_drop;
 mod check;
+mod cross_engine;
 mod dataset;
 mod examples;
 mod expressions;
