@@ -14,6 +14,8 @@
 //! - [`output`] — plots;
 //! - [`engine_choice`] — PREFERENCES (or an override) to one `Box<dyn GeometryEngine>`;
 //! - [`run`] — a model lowered onto the solver, and its results written;
+//! - [`user_routines`] — NORMAL_ROUTINE / FRICTION_ROUTINE laws, registered in code or loaded
+//!   from shared libraries;
 //! - [`cli`] — the `contact` command-line subcommands.
 //!
 //! ```
@@ -53,6 +55,7 @@ pub mod run;
 pub mod scenes;
 pub mod solver;
 pub mod tradeoff;
+pub mod user_routines;
 
 /// The README's code blocks, compiled and run as doctests.
 #[doc = include_str!("../README.md")]

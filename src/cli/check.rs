@@ -62,8 +62,8 @@ fn instances(list: &[(u32, ContactGeometry)], probe: &Option<Geometry>) -> Vec<G
         .collect()
 }
 
-/// Checks every CONTACT's pairs against `engine` (2-D/3-D mixes, unsupported pairs). One error
-/// per contact that fails, at the CONTACT statement.
+/// Checks every CONTACT's pairs against `engine` (2-D/3-D mixes, unsupported pairs) and that
+/// its user force routines load. One error per failing check, at the CONTACT statement.
 pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnostic> {
     let probe = mesh_kind_probe();
     let mut out = Vec::new();
@@ -71,6 +71,14 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
         let i = instances(&c.i_geometries, &probe);
         let j = instances(&c.j_geometries, &probe);
         if let Err(e) = contact_core::check_lists(engine, &i, &j) {
+            out.push(Diagnostic::error(
+                c.origin.clone(),
+                format!("CONTACT/{}: {e}", c.id),
+            ));
+        }
+        // A NORMAL_ROUTINE or FRICTION_ROUTINE must load now, not fail at the first contact.
+        let routines = crate::user_routines::UserRoutines::default();
+        if let Err(e) = crate::run::lower::contact_user_laws(&c.params, &c.origin, &routines) {
             out.push(Diagnostic::error(
                 c.origin.clone(),
                 format!("CONTACT/{}: {e}", c.id),

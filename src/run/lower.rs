@@ -18,6 +18,7 @@ use crate::solver::mbs::{
     ConstraintId, ConstraintKind, MbsError, MotionDof, MultibodyBuilder, MultibodySystem, PartId,
     PartSpec, TimeFunction,
 };
+use crate::user_routines::{UserLaws, UserRoutineError, UserRoutines};
 use contact_core::{GeometryEngine, GeometryInstance, Isometry3, Matrix3, PrepareError};
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -64,6 +65,16 @@ pub enum LowerError {
         /// The engine's error.
         source: Box<PrepareError>,
     },
+    /// A CONTACT's NORMAL_ROUTINE or FRICTION_ROUTINE could not be found.
+    #[error("{origin}: error: CONTACT/{id}: {source}")]
+    UserRoutine {
+        /// Where the contact is.
+        origin: Origin,
+        /// Its id.
+        id: u32,
+        /// What was tried.
+        source: Box<UserRoutineError>,
+    },
     /// A mesh file could not be read.
     #[error("{origin}: error: {message}")]
     Mesh {
@@ -95,12 +106,46 @@ fn unsupported(origin: &Origin, message: impl Into<String>) -> LowerError {
 }
 
 /// Lowers `model` with `engine` for its contacts, in `analysis` (which decides whether
-/// DYNAMICS_ONLY friction acts).
+/// DYNAMICS_ONLY friction acts). User force routines come from shared libraries
+/// ([`lower_with_routines`] adds laws registered in code).
 pub fn lower(
     model: &Model,
     engine: &dyn GeometryEngine,
     analysis: Analysis,
     meshes: MeshLoader<'_>,
+) -> Result<LoweredModel, LowerError> {
+    lower_with_routines(model, engine, analysis, meshes, &UserRoutines::default())
+}
+
+/// The user laws a CONTACT names, found in `routines` (or their libraries, relative to the
+/// directory of the dataset the contact is in).
+pub fn contact_user_laws(
+    params: &contact_core::ContactParams,
+    origin: &Origin,
+    routines: &UserRoutines,
+) -> Result<UserLaws, UserRoutineError> {
+    let dir = origin
+        .file
+        .parent()
+        .map_or_else(|| std::path::PathBuf::from("."), |d| d.to_path_buf());
+    let normal = match &params.normal {
+        contact_core::NormalModel::User(r) => Some(routines.normal(r, &dir)?),
+        _ => None,
+    };
+    let friction = match &params.friction {
+        contact_core::FrictionModel::User(r) => Some(routines.friction(r, &dir)?),
+        _ => None,
+    };
+    Ok(UserLaws { normal, friction })
+}
+
+/// As [`lower`], with NORMAL_ROUTINE / FRICTION_ROUTINE laws looked up in `routines` first.
+pub fn lower_with_routines(
+    model: &Model,
+    engine: &dyn GeometryEngine,
+    analysis: Analysis,
+    meshes: MeshLoader<'_>,
+    routines: &UserRoutines,
 ) -> Result<LoweredModel, LowerError> {
     let mut builder = MultibodyBuilder::new(model.gravity);
     // Part frame → CM frame, per Adams part id.
@@ -358,13 +403,21 @@ pub fn lower(
                 source: Box::new(source),
             })?;
         let (pi, pj) = (cm_of[&c.i_part].0, cm_of[&c.j_part].0);
-        let force = ContactForce::new(
+        let user = contact_user_laws(&c.params, &c.origin, routines).map_err(|source| {
+            LowerError::UserRoutine {
+                origin: c.origin.clone(),
+                id: c.id,
+                source: Box::new(source),
+            }
+        })?;
+        let force = ContactForce::with_user_laws(
             format!("CONTACT/{}", c.id),
             pi,
             pj,
             pair,
             c.params.clone(),
             analysis,
+            user,
         )
         .map_err(|e| unsupported(&c.origin, e.to_string()))?;
         let length = i_list

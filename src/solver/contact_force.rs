@@ -10,6 +10,11 @@
 //!   `(2/3)·R·μ(ω_n·R)·Fn` about `n`, `R = sqrt(A/π)`;
 //! - I receives `Fn·n + F_t` at `p` and the torque; J the opposite.
 //!
+//! NORMAL_ROUTINE and FRICTION_ROUTINE replace the normal law and the friction law by user
+//! laws ([`crate::user_routines`]) given the same contact, rate, slip and spin; a user friction
+//! law returns the force and torque on I itself. A user law's error or non-finite result stops
+//! the run, naming the contact and the routine.
+//!
 //! Partials are left to the system's element-local difference (12 evaluations per moving part).
 //!
 //! A 2-D contact carries a [`PlanarGuard`]: before the engine is asked, the two parts' planes
@@ -20,9 +25,11 @@ use crate::solver::contact_multipliers::Multipliers;
 use crate::solver::contact_plane::PlanarGuard;
 use crate::solver::dae::EvaluationError;
 use crate::solver::mbs::{ForceElement, Load, PartId, StateView};
+use crate::user_routines::UserLaws;
 use contact_core::{
     Contact, ContactParams, FrictionModel, InvalidArgument, NormalModel, PreparedPair, Vector3,
-    WorkCounters, laws::NormalForce,
+    WorkCounters,
+    laws::{NormalForce, UserContact, checked_friction, checked_normal_force},
 };
 use std::sync::Mutex;
 
@@ -53,9 +60,8 @@ pub struct ContactReport {
 /// Why a CONTACT cannot become a force element.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ContactForceError {
-    /// NORMAL_ROUTINE / FRICTION_ROUTINE: loading user routines from shared libraries is not
-    /// built yet; the model check reports it before a run.
-    #[error("{contact}: user force routine {routine} cannot be loaded by this build")]
+    /// NORMAL_ROUTINE / FRICTION_ROUTINE without its law ([`ContactForce::with_user_laws`]).
+    #[error("{contact}: the user force routine {routine} has no law (it was not resolved)")]
     UserRoutine {
         /// The contact's name.
         contact: String,
@@ -83,11 +89,13 @@ pub struct ContactForce {
     work: Mutex<WorkCounters>,
     planar: Option<PlanarGuard>,
     multipliers: Option<Multipliers>,
+    user: UserLaws,
 }
 
 impl ContactForce {
     /// A contact named `name` (e.g. `CONTACT/3`) between `part_i` (the I geometry's part) and
-    /// `part_j`, with geometry prepared as `pair` in the parts' CM frames.
+    /// `part_j`, with geometry prepared as `pair` in the parts' CM frames. A contact with a
+    /// NORMAL_ROUTINE or FRICTION_ROUTINE needs [`Self::with_user_laws`].
     pub fn new(
         name: impl Into<String>,
         part_i: PartId,
@@ -96,9 +104,34 @@ impl ContactForce {
         params: ContactParams,
         analysis: Analysis,
     ) -> Result<Self, ContactForceError> {
+        Self::with_user_laws(
+            name,
+            part_i,
+            part_j,
+            pair,
+            params,
+            analysis,
+            UserLaws::default(),
+        )
+    }
+
+    /// As [`Self::new`], with the laws of the contact's NORMAL_ROUTINE and FRICTION_ROUTINE
+    /// (each must be given when the parameters name one; laws not named are not used).
+    pub fn with_user_laws(
+        name: impl Into<String>,
+        part_i: PartId,
+        part_j: PartId,
+        pair: Box<dyn PreparedPair>,
+        params: ContactParams,
+        analysis: Analysis,
+        user: UserLaws,
+    ) -> Result<Self, ContactForceError> {
         let name = name.into();
         let routine = match (&params.normal, &params.friction) {
-            (NormalModel::User(u), _) | (_, FrictionModel::User(u)) => {
+            (NormalModel::User(u), _) if user.normal.is_none() => {
+                Some(format!("{}::{}", u.library, u.function))
+            }
+            (_, FrictionModel::User(u)) if user.friction.is_none() => {
                 Some(format!("{}::{}", u.library, u.function))
             }
             _ => None,
@@ -123,6 +156,7 @@ impl ContactForce {
             work: Mutex::new(WorkCounters::default()),
             planar: None,
             multipliers,
+            user,
         })
     }
 
@@ -216,17 +250,52 @@ impl ContactForce {
             let n = contact.normal_w;
             let v = si.point_velocity_w(&p) - sj.point_velocity_w(&p);
             let rate = -n.dot(&v);
-            let normal = self.normal_force(index, contact.penetration, rate);
-            let (friction_force_w, friction_torque) = match friction {
-                Some(c) => {
-                    let slip = v - n * n.dot(&v);
-                    let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
-                    (
-                        c.force(&slip, normal.force).force,
-                        c.torque(spin, normal.force, contact.area).torque,
-                    )
+            let slip = v - n * n.dot(&v);
+            let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
+            let mut user = UserContact {
+                time: t,
+                index,
+                point_i: contact.point_i_w.coords,
+                point_j: contact.point_j_w.coords,
+                normal: n,
+                penetration: contact.penetration,
+                penetration_rate: rate,
+                area: contact.area,
+                slip_velocity: slip,
+                spin,
+                normal_force: 0.0,
+                parameters: &[],
+            };
+            let normal = match (&self.params.normal, &self.user.normal) {
+                (NormalModel::User(routine), Some(law)) => {
+                    user.parameters = &routine.parameters;
+                    let force = checked_normal_force(law.as_ref(), &user)
+                        .map_err(|e| self.user_error(routine, t, &e))?;
+                    NormalForce {
+                        force,
+                        d_penetration: 0.0,
+                        d_rate: 0.0,
+                    }
                 }
-                None => (Vector3::zeros(), 0.0),
+                _ => self.normal_force(index, contact.penetration, rate),
+            };
+            let (friction_force_w, friction_torque) = match (&self.params.friction, friction) {
+                (FrictionModel::User(routine), _) => match &self.user.friction {
+                    Some(law) => {
+                        user.parameters = &routine.parameters;
+                        user.normal_force = normal.force;
+                        let f = checked_friction(law.as_ref(), &user)
+                            .map_err(|e| self.user_error(routine, t, &e))?;
+                        (f.force_w, f.torque)
+                    }
+                    // Refused in `with_user_laws`.
+                    None => (Vector3::zeros(), 0.0),
+                },
+                (_, Some(c)) => (
+                    c.force(&slip, normal.force).force,
+                    c.torque(spin, normal.force, contact.area).torque,
+                ),
+                (_, None) => (Vector3::zeros(), 0.0),
             };
             out.push(ContactReport {
                 contact,
@@ -246,8 +315,25 @@ impl ContactForce {
                 Some(m) => m.force(index, delta, rate),
                 None => law.force(delta, rate),
             },
-            // Rejected in `new`.
+            // Answered by the user law in `reports` (refused in `with_user_laws` without one).
             NormalModel::User(_) => NormalForce::ZERO,
+        }
+    }
+
+    /// A user law's failure: fatal, since no step size makes a routine's error go away.
+    fn user_error(
+        &self,
+        routine: &contact_core::UserRoutine,
+        t: f64,
+        error: &contact_core::laws::UserLawError,
+    ) -> EvaluationError {
+        EvaluationError {
+            element: self.name.clone(),
+            message: format!(
+                "user routine {}::{} at t = {t}: {error}",
+                routine.library, routine.function
+            ),
+            fatal: true,
         }
     }
 }

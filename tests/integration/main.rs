@@ -22,6 +22,7 @@ mod statics_stability;
 mod trade_schema;
 mod tradeoff;
 mod transient;
+mod user_routines;
 
 use contact::dataset::{Loaded, read_str};
 use std::path::{Path, PathBuf};

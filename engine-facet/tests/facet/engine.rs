@@ -150,7 +150,10 @@ fn unsupported_pairs_and_bad_input_are_errors() {
     let circle = Geometry::Circle(contact_core::geometry::Circle::new(1.0).unwrap());
     assert!(e.supports(&circle, &circle).is_ok());
     let arc = Geometry::Arc(contact_core::geometry::Arc::new(1.0, 1.0).unwrap());
-    assert!(e.supports(&arc, &arc).is_ok(), "two arcs overlap as regions");
+    assert!(
+        e.supports(&arc, &arc).is_ok(),
+        "two arcs overlap as regions"
+    );
     let err = e.supports(&Geometry::Point, &Geometry::Point).unwrap_err();
     assert!(err.to_string().contains("point or a circle"), "{err}");
     let ball = Geometry::sphere(1.0).unwrap();
