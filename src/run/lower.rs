@@ -3,14 +3,16 @@
 //!
 //! What the solver does not model yet is an error naming the statement and its `file:line:col`
 //! (never dropped silently): massless parts, CONVEL/RACKPIN/SCREW joints, MOTIONs on marker
-//! pairs or given as velocity/acceleration, and expressions reading element forces.
+//! pairs, and expressions reading element forces. MOTIONs given as a velocity or an acceleration
+//! are integrated ([`super::motion_level`]).
 
 use super::frames::{MarkerTable, PlacedMarker};
+use super::motion_level::integrated_motion;
 use super::sforce::SForceElement;
 use crate::dataset::Origin;
 use crate::expr::{Expr, TimeOnly};
 use crate::model::{
-    ContactGeometry, Freedom, JointKind, MeshFile, Model, MotionLevel, MotionTarget, PrimitiveKind,
+    ContactGeometry, Freedom, JointKind, MeshFile, Model, MotionTarget, PrimitiveKind,
 };
 use crate::solver::contact_force::{Analysis, ContactForce, SharedContact};
 use crate::solver::contact_plane::PlanarGuard;
@@ -283,15 +285,6 @@ pub fn lower_with_routines(
                 ),
             ));
         };
-        if m.level != MotionLevel::Displacement {
-            return Err(unsupported(
-                &m.origin,
-                format!(
-                    "MOTION/{}: {:?} motions are not supported by the solver; give the displacement",
-                    m.id, m.level
-                ),
-            ));
-        }
         if !m.function.is_time_only() {
             return Err(unsupported(
                 &m.origin,
@@ -313,7 +306,13 @@ pub fn lower_with_routines(
                 format!("MOTION/{}", m.id),
                 target,
                 dof,
-                time_function(m.function.clone()),
+                integrated_motion(
+                    m.function.clone(),
+                    m.level,
+                    m.ic_displacement.unwrap_or(0.0),
+                    m.ic_velocity.unwrap_or(0.0),
+                )
+                .unwrap_or_else(|| time_function(m.function.clone())),
             )
             .map_err(element(&m.origin))?;
     }

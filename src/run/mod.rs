@@ -4,6 +4,7 @@
 pub mod frames;
 pub mod lower;
 pub mod measures;
+pub mod motion_level;
 pub mod output;
 pub mod plan;
 pub mod progress;

@@ -201,3 +201,71 @@ fn contacts_in_kinematics_are_outputs_and_the_motion_carries_them() {
     .unwrap();
     assert_eq!(checked, 9);
 }
+
+/// The slider-crank with its MOTION given as a velocity (a constant 360°/s) and as an
+/// acceleration (a constant α from rest, so θ = α·t²/2): the slider follows the closed form
+/// at the integrated crank angle.
+#[test]
+fn velocity_and_acceleration_motions_drive_the_slider_crank_as_the_closed_form() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/slider_crank");
+    let text = std::fs::read_to_string(dir.join("slider_crank.adm")).unwrap();
+    let line = "MOTION/1, JOINT = 1, FUNCTION = 360D * TIME";
+    assert!(text.contains(line));
+    let alpha = 3.0;
+    for (motion, angle) in [
+        (
+            "MOTION/1, JOINT = 1, VELOCITY, FUNCTION = 360D".to_string(),
+            Box::new(|t: f64| (TAU * t, TAU)) as Box<dyn Fn(f64) -> (f64, f64)>,
+        ),
+        (
+            format!("MOTION/1, JOINT = 1, ACCELERATION, FUNCTION = {alpha}"),
+            Box::new(move |t: f64| (0.5 * alpha * t * t, alpha * t)),
+        ),
+    ] {
+        let loaded = dataset::read_str(&text.replace(line, &motion), dir.join("driven.adm"), None);
+        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+        let no_meshes = |_: &contact::model::MeshFile| Err("no meshes".to_string());
+        let model = lower(
+            &loaded.model,
+            &engine_exact::ExactEngine,
+            Analysis::Quasistatic,
+            &no_meshes,
+        )
+        .unwrap();
+        let slider = model.parts.iter().find(|p| p.1 == 4).unwrap().0;
+        let settings = KinematicsSettings {
+            start: 0.0,
+            end: 1.5,
+            output_step: 0.05,
+        };
+        let mut checked = 0;
+        run_kinematics(
+            &model.system,
+            &model.contacts,
+            &settings,
+            &mut |frame, _| {
+                let (theta, rate) = angle(frame.t);
+                // At unit angular speed the closed form's derivatives are d/dθ.
+                let (x, dx, _) = slider_closed_form(0.1, 0.3, 1.0, theta);
+                let s = frame.parts[slider.0];
+                assert!(
+                    (s.pose_w.translation.x - x).abs() < 1e-9,
+                    "{motion} t = {}: x = {} vs {x}",
+                    frame.t,
+                    s.pose_w.translation.x
+                );
+                assert!(
+                    (s.velocity_w.x - dx * rate).abs() < 1e-9 * (1.0 + rate),
+                    "{motion} t = {}: v = {} vs {}",
+                    frame.t,
+                    s.velocity_w.x,
+                    dx * rate
+                );
+                checked += 1;
+                Ok(())
+            },
+        )
+        .unwrap();
+        assert_eq!(checked, 31, "{motion}");
+    }
+}
