@@ -1,10 +1,11 @@
 //! Lowering a validated [`Model`] onto the solver: parts at their centres of mass, markers,
-//! joints and JPRIMs as constraints, MOTIONs on joints, SFORCEs and CONTACTs as force elements.
+//! joints and JPRIMs as constraints, MOTIONs on joints and marker pairs (given as a
+//! displacement, or as a velocity or acceleration integrated by [`super::motion_level`]),
+//! SFORCEs and CONTACTs as force elements.
 //!
 //! What the solver does not model yet is an error naming the statement and its `file:line:col`
-//! (never dropped silently): massless parts, CONVEL/RACKPIN/SCREW joints, MOTIONs on marker
-//! pairs, and expressions reading element forces. MOTIONs given as a velocity or an acceleration
-//! are integrated ([`super::motion_level`]).
+//! (never dropped silently): massless parts, CONVEL/RACKPIN/SCREW joints, and expressions
+//! reading element forces.
 
 use super::frames::{MarkerTable, PlacedMarker};
 use super::motion_level::integrated_motion;
@@ -17,8 +18,8 @@ use crate::model::{
 use crate::solver::contact_force::{Analysis, ContactForce, SharedContact};
 use crate::solver::contact_plane::PlanarGuard;
 use crate::solver::mbs::{
-    ConstraintId, ConstraintKind, MbsError, MotionDof, MultibodyBuilder, MultibodySystem, PartId,
-    PartSpec, TimeFunction,
+    ConstraintId, ConstraintKind, MarkerMotionAxis, MbsError, MotionDof, MultibodyBuilder,
+    MultibodySystem, PartId, PartSpec, TimeFunction,
 };
 use crate::user_routines::{UserLaws, UserRoutineError, UserRoutines};
 use contact_core::{GeometryEngine, GeometryInstance, Isometry3, Matrix3, PrepareError};
@@ -276,21 +277,32 @@ pub fn lower_with_routines(
             .map_err(element(&p.origin))?;
     }
     for m in &model.motions {
-        let MotionTarget::Joint { joint, freedom } = m.target else {
-            return Err(unsupported(
-                &m.origin,
-                format!(
-                    "MOTION/{}: motions between markers (I, J with X…B3) are not supported by the solver; use JOINT =",
-                    m.id
-                ),
-            ));
-        };
         if !m.function.is_time_only() {
             return Err(unsupported(
                 &m.origin,
                 format!("MOTION/{}: the FUNCTION must depend on TIME only", m.id),
             ));
         }
+        let function = integrated_motion(
+            m.function.clone(),
+            m.level,
+            m.ic_displacement.unwrap_or(0.0),
+            m.ic_velocity.unwrap_or(0.0),
+        )
+        .unwrap_or_else(|| time_function(m.function.clone()));
+        let (joint, freedom) = match m.target {
+            MotionTarget::Joint { joint, freedom } => (joint, freedom),
+            MotionTarget::Markers { i, j, axis } => {
+                let axis = MarkerMotionAxis::from_index(axis).ok_or_else(|| {
+                    unsupported(&m.origin, format!("MOTION/{}: no such axis {axis}", m.id))
+                })?;
+                let (mi, mj) = (marker(i, &m.origin)?, marker(j, &m.origin)?);
+                builder
+                    .add_marker_motion(format!("MOTION/{}", m.id), mi, mj, axis, function)
+                    .map_err(element(&m.origin))?;
+                continue;
+            }
+        };
         let target = *joints.get(&joint).ok_or_else(|| {
             unsupported(
                 &m.origin,
@@ -302,18 +314,7 @@ pub fn lower_with_routines(
             Freedom::Rotational => MotionDof::Rotational,
         };
         builder
-            .add_motion(
-                format!("MOTION/{}", m.id),
-                target,
-                dof,
-                integrated_motion(
-                    m.function.clone(),
-                    m.level,
-                    m.ic_displacement.unwrap_or(0.0),
-                    m.ic_velocity.unwrap_or(0.0),
-                )
-                .unwrap_or_else(|| time_function(m.function.clone())),
-            )
+            .add_motion(format!("MOTION/{}", m.id), target, dof, function)
             .map_err(element(&m.origin))?;
     }
 

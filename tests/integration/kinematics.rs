@@ -269,3 +269,102 @@ fn velocity_and_acceleration_motions_drive_the_slider_crank_as_the_closed_form()
         assert_eq!(checked, 31, "{motion}");
     }
 }
+
+/// A joint, its markers' REULER, the MOTION's axis, a point of the part and that point's
+/// world position in time.
+type MarkerMotionCase = (
+    &'static str,
+    &'static str,
+    &'static str,
+    [f64; 3],
+    Box<dyn Fn(f64) -> [f64; 3]>,
+);
+
+/// MOTIONs on marker pairs: a crank on a REVOLUTE joint about world x, y or z turned by a
+/// B1, B2 or B3 MOTION between two unrotated markers, and a slider on a TRANSLATIONAL joint
+/// along world x moved by an X MOTION: a point of the part follows the rotation or the
+/// displacement in closed form.
+#[test]
+fn marker_pair_motions_turn_and_move_parts_as_the_closed_form() {
+    let w = 2.0;
+    let cases: [MarkerMotionCase; 4] = [
+        (
+            "REVOLUTE",
+            "90D, 90D, 0D",
+            "B1",
+            [0.0, 0.1, 0.0],
+            Box::new(move |t: f64| [0.0, 0.1 * (w * t).cos(), 0.1 * (w * t).sin()]),
+        ),
+        (
+            "REVOLUTE",
+            "0D, -90D, 0D",
+            "B2",
+            [0.0, 0.0, 0.1],
+            Box::new(move |t: f64| [0.1 * (w * t).sin(), 0.0, 0.1 * (w * t).cos()]),
+        ),
+        (
+            "REVOLUTE",
+            "0D, 0D, 0D",
+            "B3",
+            [0.1, 0.0, 0.0],
+            Box::new(move |t: f64| [0.1 * (w * t).cos(), 0.1 * (w * t).sin(), 0.0]),
+        ),
+        (
+            "TRANSLATIONAL",
+            "90D, 90D, 0D",
+            "X",
+            [0.0, 0.0, 0.0],
+            Box::new(move |t: f64| [w * t, 0.0, 0.0]),
+        ),
+    ];
+    for (joint, euler, axis, point, expected) in cases {
+        let text = format!(
+            "driven part\n\
+UNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND\n\
+PART/1, GROUND\nMARKER/10, PART = 1\nMARKER/11, PART = 1, REULER = {euler}\n\
+PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\nMARKER/20, PART = 2\nMARKER/21, PART = 2, REULER = {euler}\n\
+MARKER/22, PART = 2, QP = {}, {}, {}\n\
+JOINT/1, {joint}, I = 21, J = 11\n\
+MOTION/1, I = 20, J = 10, {axis}, FUNCTION = {w} * TIME\nEND\n",
+            point[0], point[1], point[2]
+        );
+        let loaded = dataset::read_str(&text, "driven.adm", None);
+        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+        let no_meshes = |_: &contact::model::MeshFile| Err("no meshes".to_string());
+        let model = lower(
+            &loaded.model,
+            &engine_exact::ExactEngine,
+            Analysis::Quasistatic,
+            &no_meshes,
+        )
+        .unwrap();
+        let part = model.parts[0].0;
+        let settings = KinematicsSettings {
+            start: 0.0,
+            end: 2.0,
+            output_step: 0.1,
+        };
+        let mut checked = 0;
+        run_kinematics(
+            &model.system,
+            &model.contacts,
+            &settings,
+            &mut |frame, _| {
+                let pose = frame.parts[part.0].pose_w;
+                let got = pose * nalgebra::Point3::from(nalgebra::Vector3::from(point));
+                let want = expected(frame.t);
+                for k in 0..3 {
+                    assert!(
+                        (got[k] - want[k]).abs() < 1e-9,
+                        "{axis} t = {}: {got} vs {want:?}",
+                        frame.t
+                    );
+                }
+                checked += 1;
+                Ok(())
+            },
+        )
+        .unwrap();
+        assert_eq!(checked, 21, "{axis}");
+    }
+}

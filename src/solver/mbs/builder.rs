@@ -5,11 +5,11 @@ use super::constraints::{ConstraintElement, ConstraintKind};
 use super::error::MbsError;
 use super::force::ForceElement;
 use super::layout::{Formulation, StateLayout};
-use super::motion::{MotionDof, TimeFunction};
+use super::motion::{MarkerMotionAxis, MotionDof, TimeFunction};
 use super::part::{Marker, MarkerId, PartId, PartSpec};
 use super::quaternion::parameters_of;
 use super::system::{MultibodySystem, PartData};
-use nalgebra::{DVector, Isometry3, UnitQuaternion, Vector3};
+use nalgebra::{DVector, Isometry3, Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 /// A constraint's index in the builder (joints, JPRIMs and MOTIONs, in the order added).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -187,6 +187,67 @@ impl MultibodyBuilder {
             ..target.clone()
         };
         self.constraints.push(motion);
+        Ok(ConstraintId(self.constraints.len() - 1))
+    }
+
+    /// Adds a MOTION between marker I and marker J (on different parts) driving `axis` (see
+    /// [`MarkerMotionAxis`] for the measure) with `function`.
+    pub fn add_marker_motion(
+        &mut self,
+        name: impl Into<String>,
+        marker_i: MarkerId,
+        marker_j: MarkerId,
+        axis: MarkerMotionAxis,
+        function: TimeFunction,
+    ) -> Result<ConstraintId, MbsError> {
+        let name = name.into();
+        let (part_i, pose_i) = self.marker(marker_i)?;
+        let (part_j, pose_j) = self.marker(marker_j)?;
+        if part_i == part_j {
+            return Err(MbsError::SamePart {
+                element: name,
+                part: part_i.0,
+            });
+        }
+        // Rotations about x or y: both frames turned so that axis is their z and the angle
+        // primitive (x about z) measures the cyclically next axis about it.
+        let cyclic = |columns: [Vector3<f64>; 3]| {
+            UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(
+                Matrix3::from_columns(&columns),
+            ))
+        };
+        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+        let (primitive, turn) = match axis {
+            MarkerMotionAxis::X | MarkerMotionAxis::Y | MarkerMotionAxis::Z => (
+                Primitive::InPlane {
+                    normal_j: match axis {
+                        MarkerMotionAxis::X => Axis::X,
+                        MarkerMotionAxis::Y => Axis::Y,
+                        _ => Axis::Z,
+                    },
+                    drive: Some(function),
+                },
+                UnitQuaternion::identity(),
+            ),
+            MarkerMotionAxis::B1 => (Primitive::Angle { drive: function }, cyclic([y, z, x])),
+            MarkerMotionAxis::B2 => (Primitive::Angle { drive: function }, cyclic([z, x, y])),
+            MarkerMotionAxis::B3 => (
+                Primitive::Angle { drive: function },
+                UnitQuaternion::identity(),
+            ),
+        };
+        let turned =
+            |pose: Isometry3<f64>| Isometry3::from_parts(pose.translation, pose.rotation * turn);
+        self.constraints.push(ConstraintElement {
+            name,
+            kind: None,
+            part_i,
+            part_j,
+            marker_i: turned(pose_i),
+            marker_j: turned(pose_j),
+            primitives: vec![primitive],
+            row: 0,
+        });
         Ok(ConstraintId(self.constraints.len() - 1))
     }
 

@@ -98,7 +98,7 @@ pub use force::{
 };
 pub use initial::InitialState;
 pub use layout::{Formulation, StateLayout};
-pub use motion::{MotionDof, TimeFunction};
+pub use motion::{MarkerMotionAxis, MotionDof, TimeFunction};
 pub use part::{MarkerId, PartId, PartSpec};
 pub use springs::{RotationalSpringDamper, SpringParams, TranslationalSpringDamper};
 pub use system::MultibodySystem;
