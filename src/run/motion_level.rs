@@ -7,8 +7,8 @@
 //!   `d̈ = f(t)`, `G(t) = ∫₀ᵗ s·f(s) ds` (Cauchy's formula for the double integral).
 //!
 //! The integrals come from cumulative sums over panels of width [`PANEL`] (model time units),
-//! each integrated by adaptive Gauss–Legendre quadrature (8 nodes against two halves of 8,
-//! bisected until they agree to 1e-14 of the panel's magnitude), kept as they are first needed:
+//! each integrated by adaptive Gauss–Legendre quadrature (the exact engine's 12-node rule
+//! against its two halves, bisected until they agree to 1e-14 of the panel's magnitude), kept as they are first needed:
 //! a query costs one partial panel, and every thread sees the same sums, since each panel's
 //! value depends only on the panel. The derivative `f′` of a velocity motion is the same
 //! central difference as a displacement motion's ([`super::lower`]).
@@ -16,85 +16,41 @@
 use crate::expr::{Expr, TimeOnly};
 use crate::model::MotionLevel;
 use crate::solver::mbs::TimeFunction;
+use engine_exact::quadrature::for_each_node;
 use std::sync::{Arc, Mutex};
 
 /// The width of the cumulative panels, in model time units.
 pub const PANEL: f64 = 1.0 / 64.0;
 
-/// Gauss–Legendre nodes and weights on [−1, 1] (8 points), by Newton on P₈.
-fn gauss_legendre_8() -> ([f64; 8], [f64; 8]) {
-    const N: usize = 8;
-    let (mut x, mut w) = ([0.0; N], [0.0; N]);
-    for i in 0..N {
-        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (N as f64 + 0.5)).cos();
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, z);
-            for k in 2..=N {
-                let k = k as f64;
-                let p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            let dp = N as f64 * (z * p1 - p0) / (z * z - 1.0);
-            let step = p1 / dp;
-            z -= step;
-            if step.abs() < 1e-16 {
-                let (mut q0, mut q1) = (1.0, z);
-                for k in 2..=N {
-                    let k = k as f64;
-                    let q2 = ((2.0 * k - 1.0) * z * q1 - (k - 1.0) * q0) / k;
-                    q0 = q1;
-                    q1 = q2;
-                }
-                let dq = N as f64 * (z * q1 - q0) / (z * z - 1.0);
-                x[i] = z;
-                w[i] = 2.0 / ((1.0 - z * z) * dq * dq);
-                break;
-            }
-        }
-    }
-    (x, w)
-}
-
-/// `(∫ f, ∫ s·f)` over `[a, b]` by one 8-point rule.
-fn rule(f: &dyn Fn(f64) -> f64, nodes: &([f64; 8], [f64; 8]), a: f64, b: f64) -> (f64, f64) {
-    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+/// `(∫ f, ∫ s·f)` over `[a, b]` by one Gauss–Legendre rule.
+fn rule(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     let (mut first, mut moment) = (0.0, 0.0);
-    for (x, w) in nodes.0.iter().zip(&nodes.1) {
-        let s = mid + half * x;
+    for_each_node(a, b, |s, w| {
         let v = f(s);
         first += w * v;
         moment += w * s * v;
-    }
-    (first * half, moment * half)
+    });
+    (first, moment)
 }
 
 /// `(∫ f, ∫ s·f)` over `[a, b]`, bisected until a rule and its two halves agree.
-fn adaptive(
-    f: &dyn Fn(f64) -> f64,
-    nodes: &([f64; 8], [f64; 8]),
-    a: f64,
-    b: f64,
-    whole: (f64, f64),
-    depth: u32,
-) -> (f64, f64) {
+fn adaptive(f: &dyn Fn(f64) -> f64, a: f64, b: f64, whole: (f64, f64), depth: u32) -> (f64, f64) {
     let m = 0.5 * (a + b);
-    let (l, r) = (rule(f, nodes, a, m), rule(f, nodes, m, b));
+    let (l, r) = (rule(f, a, m), rule(f, m, b));
     let halves = (l.0 + r.0, l.1 + r.1);
     let scale = halves.0.abs() + halves.1.abs() + f64::MIN_POSITIVE;
     let agree = (halves.0 - whole.0).abs() + (halves.1 - whole.1).abs() <= 1e-14 * scale;
     if agree || depth >= 30 || !(halves.0.is_finite() && halves.1.is_finite()) {
         return halves;
     }
-    let left = adaptive(f, nodes, a, m, l, depth + 1);
-    let right = adaptive(f, nodes, m, b, r, depth + 1);
+    let left = adaptive(f, a, m, l, depth + 1);
+    let right = adaptive(f, m, b, r, depth + 1);
     (left.0 + right.0, left.1 + right.1)
 }
 
 /// The integrals `(F, G)` of a function from 0, with cumulative sums at panel ends.
 struct Integrals {
     function: Expr,
-    nodes: ([f64; 8], [f64; 8]),
     /// `(F, G)` at `k·PANEL`, k = 0, 1, …
     cumulative: Mutex<Vec<(f64, f64)>>,
 }
@@ -103,7 +59,6 @@ impl Integrals {
     fn new(function: Expr) -> Self {
         Self {
             function,
-            nodes: gauss_legendre_8(),
             cumulative: Mutex::new(vec![(0.0, 0.0)]),
         }
     }
@@ -114,8 +69,8 @@ impl Integrals {
 
     fn over(&self, a: f64, b: f64) -> (f64, f64) {
         let f = |s: f64| self.value(s);
-        let whole = rule(&f, &self.nodes, a, b);
-        adaptive(&f, &self.nodes, a, b, whole, 0)
+        let whole = rule(&f, a, b);
+        adaptive(&f, a, b, whole, 0)
     }
 
     /// `(F(t), G(t))`.
@@ -236,13 +191,5 @@ mod tests {
             )
             .is_none()
         );
-    }
-
-    #[test]
-    fn gauss_legendre_integrates_degree_15_exactly() {
-        let nodes = gauss_legendre_8();
-        assert!((nodes.1.iter().sum::<f64>() - 2.0).abs() < 1e-15);
-        let (f, _) = rule(&|x: f64| x.powi(14), &nodes, -1.0, 1.0);
-        assert!((f - 2.0 / 15.0).abs() < 1e-15, "{f}");
     }
 }

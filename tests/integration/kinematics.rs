@@ -9,7 +9,11 @@ use std::path::Path;
 
 fn example(path: &str) -> LoweredModel {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
-    let loaded = dataset::read(&dir.join(path), None).unwrap();
+    lowered(dataset::read(&dir.join(path), None).unwrap())
+}
+
+/// A read dataset without errors, lowered for kinematics with the exact engine.
+fn lowered(loaded: dataset::Loaded) -> LoweredModel {
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
     let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
     lower(
@@ -139,16 +143,10 @@ ACCGRAV/ KGRAV = -9.81\nEND\n";
 
 #[test]
 fn contacts_in_kinematics_are_outputs_and_the_motion_carries_them() {
-    let loaded = crate::inline("kinematics_pressed_sphere.adm", PRESSED_SPHERE);
-    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
-    let model = lower(
-        &loaded.model,
-        &engine_exact::ExactEngine,
-        Analysis::Quasistatic,
-        &no_meshes,
-    )
-    .unwrap();
+    let model = lowered(crate::inline(
+        "kinematics_pressed_sphere.adm",
+        PRESSED_SPHERE,
+    ));
     let settings = KinematicsSettings {
         start: 0.0,
         end: 1.0,
@@ -222,16 +220,11 @@ fn velocity_and_acceleration_motions_drive_the_slider_crank_as_the_closed_form()
             Box::new(move |t: f64| (0.5 * alpha * t * t, alpha * t)),
         ),
     ] {
-        let loaded = dataset::read_str(&text.replace(line, &motion), dir.join("driven.adm"), None);
-        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-        let no_meshes = |_: &contact::model::MeshFile| Err("no meshes".to_string());
-        let model = lower(
-            &loaded.model,
-            &engine_exact::ExactEngine,
-            Analysis::Quasistatic,
-            &no_meshes,
-        )
-        .unwrap();
+        let model = lowered(dataset::read_str(
+            &text.replace(line, &motion),
+            dir.join("driven.adm"),
+            None,
+        ));
         let slider = model.parts.iter().find(|p| p.1 == 4).unwrap().0;
         let settings = KinematicsSettings {
             start: 0.0,
@@ -328,16 +321,7 @@ JOINT/1, {joint}, I = 21, J = 11\n\
 MOTION/1, I = 20, J = 10, {axis}, FUNCTION = {w} * TIME\nEND\n",
             point[0], point[1], point[2]
         );
-        let loaded = dataset::read_str(&text, "driven.adm", None);
-        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-        let no_meshes = |_: &contact::model::MeshFile| Err("no meshes".to_string());
-        let model = lower(
-            &loaded.model,
-            &engine_exact::ExactEngine,
-            Analysis::Quasistatic,
-            &no_meshes,
-        )
-        .unwrap();
+        let model = lowered(dataset::read_str(&text, "driven.adm", None));
         let part = model.parts[0].0;
         let settings = KinematicsSettings {
             start: 0.0,
