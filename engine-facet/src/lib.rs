@@ -11,14 +11,15 @@
 //!
 //! This crate is the faceted engine, in the part RAPID plays in Adams: every geometry of a
 //! CONTACT becomes a triangle mesh (native primitives are tessellated at a faceting tolerance
-//! FT, meshes read from STL keep their facets, 3-D planes stay exact half-spaces), meshes are
+//! FT, meshes read from STL or OBJ keep their facets, 3-D planes stay exact half-spaces), meshes are
 //! indexed by OBB trees, and a query returns one Adams-style
 //! [`Contact`](contact_core::Contact) per intersection region — point on each body, normal,
 //! penetration, area — whose error shrinks as FT rises.
 //!
 //! Pipeline and modules:
 //! - [`tessellate`]: primitives → closed meshes (FT → segment counts documented there);
-//!   2-D shapes → polylines. [`stl`]: reading and checking STL files.
+//!   2-D shapes → polylines. [`stl`], [`obj`]: reading and checking STL and OBJ files
+//!   ([`mesh_file`] picks by extension).
 //! - [`obb`], [`obb_tree`]: boxes, the 15-axis separating-axis test, trees and their descent.
 //! - [`triangle_pair`]: the triangle–triangle test with its crossing segment.
 //! - [`contact_region`]: crossings → regions → contacts (the method and its error bound);
@@ -80,8 +81,10 @@ pub mod contact_region;
 mod engine;
 pub mod facet_mesh;
 mod inside_flood;
+pub mod mesh_file;
 pub mod obb;
 pub mod obb_tree;
+pub mod obj;
 pub mod parry_adapter;
 pub mod planar;
 mod plane_contact;

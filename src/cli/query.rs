@@ -15,8 +15,9 @@ use contact_core::{
     Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, InvalidArgument,
     Isometry3, PrepareError, QueryError, UnitQuaternion, Vector3, WorkCounters,
 };
+use engine_facet::mesh_file::{MeshFileError, read_mesh_file};
 use engine_facet::parry_adapter::{ParryError, ParryPeer};
-use engine_facet::stl::{StlError, read_stl};
+use engine_facet::stl::read_stl;
 use engine_facet::{FacetEngine, Shape};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -86,9 +87,9 @@ pub enum QueryCliError {
     /// A size or setting is out of range.
     #[error("{0}")]
     Invalid(#[from] InvalidArgument),
-    /// An STL file could not be used.
+    /// A mesh file could not be used.
     #[error(transparent)]
-    Stl(#[from] StlError),
+    Mesh(#[from] MeshFileError),
     /// A line of the poses file is wrong.
     #[error("poses file '{path}', line {line}: {reason}")]
     Poses {
@@ -157,8 +158,15 @@ pub fn parse_geometry(
         "torus" => Geometry::Torus(Torus::new(get("R")?, get("r")?)?),
         "plane" => Geometry::Plane(Plane::unbounded()),
         _ if rest.is_empty() => {
-            let stl = read_stl(Path::new(spec), accept_open)?;
-            return Ok((Geometry::Mesh(Arc::new(stl.mesh)), stl.warnings));
+            // `.obj` by its extension; anything else is read as STL, whatever its name.
+            let path = Path::new(spec);
+            let read = if engine_facet::mesh_file::is_mesh_file(path) {
+                read_mesh_file(path, accept_open)
+            } else {
+                read_stl(path, accept_open).map_err(MeshFileError::from)
+            };
+            let mesh = read?;
+            return Ok((Geometry::Mesh(Arc::new(mesh.mesh)), mesh.warnings));
         }
         other => return Err(bad(format!("unknown shape '{other}'"))),
     };

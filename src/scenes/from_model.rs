@@ -169,7 +169,8 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
 
 /// Reads an STL file into a geometry placed on its part.
 fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let stl = engine_facet::stl::read_stl(&file.path, false).map_err(|e| e.to_string())?;
+    let stl =
+        engine_facet::mesh_file::read_mesh_file(&file.path, false).map_err(|e| e.to_string())?;
     let mut instance = GeometryInstance::new(Geometry::Mesh(Arc::new(stl.mesh)))
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());

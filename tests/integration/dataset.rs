@@ -431,3 +431,45 @@ sim/stat\nsim/dyn, dur = .5, dtout = .001\ndeact/contact, id = 3\nENVIRONMENT/NA
         assert!(p.contains(&expected.to_string()), "{expected}\n{p:#?}");
     }
 }
+
+/// EXTERNAL geometry from an OBJ file lowers as the STL one does, and both files give the same
+/// solid and the same contact with a sphere pressed into it.
+#[test]
+fn an_obj_file_is_the_same_solid_as_the_stl_file() {
+    use contact_core::{GeometryEngine, GeometryInstance, Isometry3, WorkCounters};
+    let text = |file: &str| {
+        format!(
+            "mesh model\nPART/1, GROUND\nMARKER/10, PART = 1\n\
+GRAPHICS/1, EXTERNAL, RM = 10, FILE = {file}\n\
+PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\nMARKER/20, PART = 2, QP = 0.2, 0.2, 0.5\n\
+GRAPHICS/2, ELLIPSOID, CM = 20, XSCALE = 0.4, YSCALE = 0.4, ZSCALE = 0.4\n\
+CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT\nEND\n"
+        )
+    };
+    let mut answers = Vec::new();
+    for file in ["tetra.stl", "tetra.obj"] {
+        let loaded = crate::inline("mesh.adm", &text(file));
+        assert!(!loaded.has_errors(), "{:#?}", printed(&loaded));
+        let ContactGeometry::MeshFile(mesh) = &loaded.model.contacts[0].j_geometries[0].1 else {
+            panic!("not a mesh file")
+        };
+        let read = engine_facet::mesh_file::read_mesh_file(&mesh.path, false).unwrap();
+        let ball = GeometryInstance::new(Geometry::sphere(0.2).unwrap());
+        let solid = GeometryInstance::new(Geometry::Mesh(std::sync::Arc::new(read.mesh.clone())));
+        let pair = engine_facet::FacetEngine::default()
+            .prepare(&[ball], &[solid])
+            .unwrap();
+        let (mut contacts, mut work) = (Vec::new(), WorkCounters::default());
+        pair.query(
+            &Isometry3::translation(0.2, 0.2, 0.35),
+            &Isometry3::identity(),
+            &mut contacts,
+            &mut work,
+        )
+        .unwrap();
+        assert_eq!(contacts.len(), 1, "{file}");
+        answers.push((read.mesh.signed_volume(), contacts[0].penetration));
+    }
+    assert!((answers[0].0 - 1.0 / 6.0).abs() < 1e-15, "{answers:?}");
+    assert_eq!(answers[0], answers[1]);
+}

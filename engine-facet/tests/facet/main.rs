@@ -4,6 +4,7 @@ mod common;
 mod convergence;
 mod engine;
 mod grazing_corner;
+mod obj_files;
 mod pinned;
 mod planar;
 mod planar_overlap;

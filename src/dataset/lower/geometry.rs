@@ -402,11 +402,11 @@ fn graphic(
                     ),
                 ));
             }
-            if !lower.ends_with(".stl") {
+            if !(lower.ends_with(".stl") || lower.ends_with(".obj")) {
                 return Err(Problem::new(
                     loc,
                     format!(
-                        "{label}: FILE = {file}: only STL files (.stl) are supported for EXTERNAL geometry"
+                        "{label}: FILE = {file}: only STL (.stl) and OBJ (.obj) files are supported for EXTERNAL geometry"
                     ),
                 ));
             }
