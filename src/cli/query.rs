@@ -44,7 +44,7 @@ pub enum Peer {
 /// Arguments of `contact query`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct QueryArgs {
-    /// The I geometry: an STL file or a primitive spec (`sphere:r=1`, `box:x=1,y=2,z=3`,
+    /// The I geometry: an STL or OBJ file or a primitive spec (`sphere:r=1`, `box:x=1,y=2,z=3`,
     /// `cylinder:r=1,l=2`, `frustum:r0=1,r1=0.5,l=2`, `ellipsoid:a=1,b=2,c=3`,
     /// `torus:R=2,r=0.5`, `plane`).
     pub geometry_i: String,
