@@ -15,7 +15,10 @@
 //! law returns the force and torque on I itself. A user law's error or non-finite result stops
 //! the run, naming the contact and the routine.
 //!
-//! Partials are left to the system's element-local difference (12 evaluations per moving part).
+//! Partials come from one query at the state: the force laws' analytic partials with the
+//! contact geometry frozen ([`crate::solver::contact_partials`]); user force routines, and a
+//! query that fails, are left to the system's element-local difference (12 evaluations per
+//! moving part).
 //!
 //! A 2-D contact carries a [`PlanarGuard`]: before the engine is asked, the two parts' planes
 //! are checked, and a part that left the plane stops the run with a fatal error naming the
@@ -31,6 +34,7 @@ use contact_core::{
     WorkCounters,
     laws::{NormalForce, UserContact, checked_friction, checked_normal_force},
 };
+use nalgebra::DMatrix;
 use std::sync::Mutex;
 
 /// Which analysis is running: DYNAMICS_ONLY friction acts in dynamics only.
@@ -180,6 +184,11 @@ impl ContactForce {
             } => Multipliers::new(*law, *al, length).map(Some),
             _ => Ok(None),
         }
+    }
+
+    /// The force-law parameters and the analysis they are evaluated for.
+    pub fn laws(&self) -> (&ContactParams, Analysis) {
+        (&self.params, self.analysis)
     }
 
     /// The augmented-Lagrangian multipliers, for a POISSON contact that has them.
@@ -375,6 +384,14 @@ impl ForceElement for ContactForce {
         loads[1] = on_j;
         Ok(())
     }
+
+    fn partials(
+        &self,
+        t: f64,
+        state: &StateView<'_>,
+    ) -> Option<Result<DMatrix<f64>, EvaluationError>> {
+        crate::solver::contact_partials::compute_contact_partials(self, t, state)
+    }
 }
 
 /// A [`ContactForce`] shared between the system (which evaluates it) and the driver (which
@@ -398,6 +415,14 @@ impl ForceElement for SharedContact {
         loads: &mut [Load],
     ) -> Result<(), EvaluationError> {
         self.0.evaluate(t, state, loads)
+    }
+
+    fn partials(
+        &self,
+        t: f64,
+        state: &StateView<'_>,
+    ) -> Option<Result<DMatrix<f64>, EvaluationError>> {
+        self.0.partials(t, state)
     }
 
     fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {

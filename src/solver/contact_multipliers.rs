@@ -137,11 +137,18 @@ impl Multipliers {
             e2 * p
         };
         let restitution = restitution_stiffness * delta;
+        // Deeper than ever before, the line's slope is 2·ε²·W/δ² itself: `F_r = 2·ε²·W/δ`
+        // falls with δ.
+        let d_restitution = if m.compression_work > 0.0 && delta > m.deepest {
+            -restitution_stiffness
+        } else {
+            restitution_stiffness
+        };
         let s = self.blend.cubic(rate);
         let force = s.value * compression + (1.0 - s.value) * restitution;
         NormalForce {
             force,
-            d_penetration: s.value * p + (1.0 - s.value) * restitution_stiffness,
+            d_penetration: s.value * p + (1.0 - s.value) * d_restitution,
             d_rate: s.slope * (compression - restitution),
         }
     }

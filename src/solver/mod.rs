@@ -7,6 +7,7 @@
 //! - [`mbs`] — the multibody equations: parts, joints, JPRIMs, MOTIONs and force elements as an
 //!   index-3 (or stabilized index-2) DAE.
 //! - [`contact_force`] — a CONTACT as a force element: engine kinematics and force laws.
+//! - [`contact_partials`] — a CONTACT's partials for the Newton matrix from one query.
 //! - [`contact_multipliers`] — AUGMENTED_LAGRANGIAN_FORMULATION's multipliers and update.
 //! - [`contact_plane`] — the check that keeps both parts of a 2-D contact in one plane.
 //! - [`frame`] — output frames from a state; a state handed to the next analysis.
@@ -19,6 +20,7 @@
 pub mod bdf;
 pub mod contact_force;
 pub mod contact_multipliers;
+pub mod contact_partials;
 pub mod contact_plane;
 pub mod dae;
 pub mod frame;

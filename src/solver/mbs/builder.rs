@@ -362,6 +362,7 @@ impl MultibodyBuilder {
             constraints,
             forces: self.forces,
             parallelism: crate::solver::parallel::Parallelism::serial(),
+            force_partials: super::force::ForcePartials::default(),
             gravity_w: self.gravity_w,
             layout,
             length_scale,

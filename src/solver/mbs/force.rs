@@ -141,6 +141,20 @@ pub trait ForceElement: Send + Sync {
     }
 }
 
+/// Where the Newton matrix takes the force elements' partials from
+/// ([`super::MultibodySystem::set_force_partials`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ForcePartials {
+    /// Each element's analytic [`ForceElement::partials`] where it supplies them (contacts: one
+    /// engine query per Jacobian), the element-local difference otherwise.
+    #[default]
+    Analytic,
+    /// The element-local difference ([`difference_partials`]) for every element: 12
+    /// evaluations (for a contact, 12 engine queries) per moving part per Jacobian. A check
+    /// of the analytic partials, and a way around one that misleads Newton.
+    Difference,
+}
+
 /// The partials of a force `f(d, ḋ)` acting on part a at marker point `p_I` and `−f` on part b at
 /// `p_J`, with `d = p_I − p_J`, in the layout of the module docs (12 × 24).
 ///

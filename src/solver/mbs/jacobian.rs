@@ -6,12 +6,14 @@
 //! - `∂(Φ_vᵀλ)/∂q` (and under SI2 `∂(Φ_qᵀη)/∂q`, `∂(Φ_v v)/∂q`): a central difference of one
 //!   element at a time over the 7 coordinates of each of its two parts (see
 //!   `jacobian_constraints`).
-//! - Force elements: their analytic partials, or an element-local forward difference
-//!   ([`super::force::difference_partials`]), mapped from world `(δr, θ, u, ω)` to the state:
+//! - Force elements: their analytic partials (contacts: the force laws' partials with the
+//!   contact geometry frozen, from one engine query, `crate::solver::contact_partials`), or an
+//!   element-local forward difference ([`super::force::difference_partials`]) where an element
+//!   has none or [`super::ForcePartials::Difference`] asks for it everywhere, mapped from world `(δr, θ, u, ω)` to the state:
 //!   `∂/∂e = (D_θ − D_ω ω̃) A · 2G(e)/|e|²`, `∂/∂ω′ = D_ω A`, and for the body torque
 //!   `Aᵀn` of a part the extra `∂/∂e_p = ñ′ · 2G(e_p)/|e_p|²`.
 
-use super::force::{StateView, difference_partials};
+use super::force::{ForcePartials, StateView, difference_partials};
 use super::quaternion::{g_matrix, g_transpose_omega_partial, rotation_per_parameter, skew};
 use super::system::MultibodySystem;
 use crate::solver::dae::EvaluationError;
@@ -82,7 +84,11 @@ impl MultibodySystem {
         // assembled below in index order: the same matrix at every thread count.
         let all_partials = self.parallelism.map_indexed(self.forces.len(), |k| {
             let element = &self.forces[k];
-            match element.partials(t, &view) {
+            let analytic = match self.force_partials {
+                ForcePartials::Analytic => element.partials(t, &view),
+                ForcePartials::Difference => None,
+            };
+            match analytic {
                 Some(result) => result,
                 None => difference_partials(element.as_ref(), t, states, self.length_scale),
             }

@@ -94,7 +94,8 @@ pub use builder::{ConstraintId, MultibodyBuilder};
 pub use constraints::ConstraintKind;
 pub use error::MbsError;
 pub use force::{
-    ForceElement, Load, PartState, StateView, difference_partials, point_pair_partials,
+    ForceElement, ForcePartials, Load, PartState, StateView, difference_partials,
+    point_pair_partials,
 };
 pub use initial::InitialState;
 pub use layout::{Formulation, StateLayout};

@@ -44,6 +44,8 @@ pub struct MultibodySystem {
     pub(crate) initial_y: DVector<f64>,
     /// Threads for force-element evaluation.
     pub(crate) parallelism: crate::solver::parallel::Parallelism,
+    /// Where the Newton matrix takes the force elements' partials from.
+    pub(crate) force_partials: super::force::ForcePartials,
 }
 
 impl std::fmt::Debug for MultibodySystem {
@@ -183,6 +185,17 @@ impl MultibodySystem {
             }
         });
         results.into_iter().collect()
+    }
+
+    /// Takes the force elements' partials in the Newton matrix from `source` from now on
+    /// (default [`super::ForcePartials::Analytic`]).
+    pub fn set_force_partials(&mut self, source: super::ForcePartials) {
+        self.force_partials = source;
+    }
+
+    /// Where the Newton matrix takes the force elements' partials from.
+    pub fn force_partials(&self) -> super::ForcePartials {
+        self.force_partials
     }
 
     /// Uses `parallelism` to evaluate force elements from now on (results do not depend on it).
