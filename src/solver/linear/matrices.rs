@@ -151,7 +151,7 @@ pub fn null_space_basis(constraint_jacobian: &DMatrix<f64>, length_scale: f64) -
         return DMatrix::identity(n6, n6);
     };
     let null: Vec<usize> = (0..svd.singular_values.len())
-        .filter(|&i| !(svd.singular_values[i] > RANK_TOLERANCE * largest))
+        .filter(|&i| svd.singular_values[i] <= RANK_TOLERANCE * largest)
         .collect();
     if null.is_empty() {
         return DMatrix::zeros(n6, 0);
