@@ -12,6 +12,7 @@ mod faceted_ball;
 mod fuzz_seeds;
 mod geneva;
 mod kinematics;
+mod linear;
 mod malformed;
 mod out_of_plane;
 mod scenes_cli;
