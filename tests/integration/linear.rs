@@ -3,12 +3,16 @@
 //! redundant constraint), and a ball resting on an IMPACT contact.
 
 use crate::statics::lowered;
+use contact::run::lower::lower;
+use contact::solver::contact_force::Analysis;
 use contact::solver::linear::{Eigenvalue, LinearSettings, linearize};
 use contact::solver::mbs::{
     ConstraintKind, MarkerId, MultibodyBuilder, MultibodySystem, PartId, PartSpec, SpringParams,
     TranslationalSpringDamper,
 };
 use contact::solver::statics::{StaticsSettings, solve_statics};
+use contact_core::FacetingTolerance;
+use engine_facet::FacetEngine;
 use nalgebra::{DVector, Isometry3, Matrix3, Translation3, UnitQuaternion, Vector3};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -345,4 +349,61 @@ fn the_multipliers_of_the_operating_point_are_solved_for_not_read() {
         .eigenvalues;
     let omega = (m * G * d / (i_cm + m * d * d)).sqrt();
     assert!(relative(values[0].imaginary, omega) < 1e-9, "{values:?}");
+}
+
+#[test]
+fn the_faceted_ball_has_the_exact_vertical_mode_and_rocks_on_its_facets() {
+    let (m, k, e, c, radius, inertia) = (1.0, 1e6, 1.5, 50.0, 0.1, 0.004);
+    let loaded = crate::inline("linear_ball_facet.adm", &ball(0.099));
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
+    let engine = FacetEngine::new(FacetingTolerance::new(300.0028).unwrap());
+    let mut model = lower(&loaded.model, &engine, Analysis::Quasistatic, &no_meshes).unwrap();
+    let y = model.system.given_state().clone();
+    let settings = StaticsSettings {
+        error: 1e-12,
+        imbalance: 1e-10,
+        ..StaticsSettings::default()
+    };
+    let found = solve_statics(&mut model.system, 0.0, &y, &settings).unwrap();
+    let values = linearize(&mut model.system, 0.0, &found.y, &LinearSettings::default())
+        .unwrap()
+        .eigenvalues;
+    assert_eq!(values.len(), 12);
+    // The ground PLANE is exact in both engines and the faceted depth changes one for one
+    // with a vertical lift, as the exact depth does: the vertical pair is the exact engine's,
+    // within the same difference bound.
+    let delta = (m * G / k).powf(1.0 / e);
+    let stiffness = k * e * delta.powf(e - 1.0);
+    let omega = (stiffness / m).sqrt();
+    let r = found.y.fixed_rows::<3>(0).norm();
+    let h = f64::EPSILON.sqrt() * r.max(model.system.length_scale());
+    let secant = k * (delta.powf(e) - (delta - h).powf(e)) / h;
+    let bound = 1.01 * (1.0 - (secant / stiffness).sqrt()) + 1e-12;
+    let vertical = &values[10..];
+    let error = relative(vertical[0].magnitude(), omega);
+    println!("faceted ball: vertical frequency error {error:e} (bound {bound:e})");
+    assert!(error < bound, "{values:?}");
+    assert!(
+        relative(vertical[0].real, -c / (2.0 * m)) < 1e-9,
+        "{values:?}"
+    );
+    // Sliding (x, y) and spinning about the normal stay free.
+    let free = values
+        .iter()
+        .filter(|s| s.magnitude() < 1e-6 * omega)
+        .count();
+    assert_eq!(free, 6, "{values:?}");
+    // Tilting moves the facets' contact off the line through the CM: the faceted ball rocks
+    // like a body on a tip (a real pair ±s), never faster than the point contact at the full
+    // radius, s² = m·g·r/J.
+    let rocking = &values[6..10];
+    for s in rocking {
+        assert_eq!(s.imaginary, 0.0, "{values:?}");
+        assert!(
+            s.magnitude() <= (m * G * radius / inertia).sqrt(),
+            "{values:?}"
+        );
+    }
+    println!("faceted ball: rocking {rocking:?}");
 }
