@@ -13,6 +13,7 @@ mod fuzz_seeds;
 mod geneva;
 mod kinematics;
 mod linear;
+mod linear_cli;
 mod malformed;
 mod out_of_plane;
 mod scenes_cli;

@@ -27,9 +27,10 @@ impl Eigenvalue {
     /// The eigenvalue `real + i·imaginary` with its frequency and damping ratio.
     pub fn new(real: f64, imaginary: f64) -> Self {
         let magnitude = real.hypot(imaginary);
+        // `+ 0.0` turns a −0 into 0, so a zero eigenvalue prints as one.
         Self {
-            real,
-            imaginary,
+            real: real + 0.0,
+            imaginary: imaginary + 0.0,
             frequency: magnitude / (2.0 * std::f64::consts::PI),
             damping_ratio: (magnitude > 0.0).then(|| -real / magnitude),
         }
