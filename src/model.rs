@@ -475,6 +475,11 @@ pub enum Command {
     },
     /// ACCGRAV: new gravity.
     Gravity(Vector3),
+    /// LINEAR/EIGENSOL: the eigenvalues at the state reached so far.
+    Linear {
+        /// False with NODAMPIN: the damping matrix is left out.
+        damping: bool,
+    },
     /// STOP.
     Stop,
 }

@@ -1,10 +1,12 @@
 //! `contact run MODEL.adm [MODEL.acf]`: reads, checks and lowers a dataset, runs the command
-//! file's analyses in order (dynamics, kinematics, statics, initial conditions: see
-//! [`crate::run::plan`]), streams every frame into `--out`, and prints a summary line per
-//! analysis with the engine that ran.
+//! file's analyses in order (dynamics, kinematics, statics, initial conditions, LINEAR
+//! eigenvalues: see [`crate::run::plan`]), streams every frame into `--out` (and the
+//! eigenvalues into `eigenvalues.csv`/`.json`, [`crate::run::eigenvalues`]), and prints a
+//! summary line per analysis with the engine that ran.
 
 use crate::dataset::{self, Severity};
 use crate::engine_choice::{self, Overrides};
+use crate::run::eigenvalues::{self, EigenvalueFiles};
 use crate::run::lower::{LoweredModel, lower};
 use crate::run::output::ResultWriter;
 use crate::run::plan::{AnalysisStep, PlanOverrides, plan_analyses};
@@ -12,6 +14,7 @@ use crate::run::progress::RunProgress;
 use crate::solver::contact_force::Analysis;
 use crate::solver::frame::compute_frame;
 use crate::solver::kinematics::{KinematicsSettings, initial_degrees_of_freedom, run_kinematics};
+use crate::solver::linear::linearize;
 use crate::solver::mbs::PartState;
 use crate::solver::simulate::{DynamicsSettings, Frame, RunSummary, simulate_with_progress};
 use crate::solver::statics::solve_statics;
@@ -180,6 +183,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         carried: None,
         write_error: None,
         frames: 0,
+        eigenvalues: EigenvalueFiles::default(),
     };
     let started = Instant::now();
     let mut work = WorkCounters::default();
@@ -262,9 +266,14 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     }
     match failure {
         None => {
+            let linear = if sink.eigenvalues.is_empty() {
+                ""
+            } else {
+                ", eigenvalues.csv, eigenvalues.json"
+            };
             writeln!(
                 out,
-                "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg)",
+                "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg{linear})",
                 sink.writer.dir().display()
             )?;
             Ok(0)
@@ -285,10 +294,11 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
     }
 }
 
-/// The contact analysis mode a step's model is lowered for.
+/// The contact analysis mode a step's model is lowered for (LINEAR linearizes the equations
+/// of motion, where DYNAMICS_ONLY friction acts).
 fn solver_analysis(step: &AnalysisStep) -> Analysis {
     match step {
-        AnalysisStep::Dynamics { .. } => Analysis::Dynamics,
+        AnalysisStep::Dynamics { .. } | AnalysisStep::Linear { .. } => Analysis::Dynamics,
         _ => Analysis::Quasistatic,
     }
 }
@@ -299,7 +309,9 @@ fn span_of(steps: &[AnalysisStep]) -> (f64, f64) {
         AnalysisStep::Dynamics { start, end, .. } | AnalysisStep::Kinematics { start, end, .. } => {
             (start, end)
         }
-        AnalysisStep::Statics { t, .. } | AnalysisStep::InitialConditions { t } => (t, t),
+        AnalysisStep::Statics { t, .. }
+        | AnalysisStep::InitialConditions { t }
+        | AnalysisStep::Linear { t, .. } => (t, t),
     };
     let start = steps.first().map_or(0.0, |s| times(s).0);
     let end = steps.iter().map(|s| times(s).1).fold(start, f64::max);
@@ -317,6 +329,7 @@ struct FrameSink {
     carried: Option<Vec<PartState>>,
     write_error: Option<String>,
     frames: u64,
+    eigenvalues: EigenvalueFiles,
 }
 
 impl FrameSink {
@@ -460,6 +473,35 @@ fn run_step(
                 written.map(|()| format!("initial conditions at t = {t} written")),
                 json!({"t": t}),
             )
+        }
+        AnalysisStep::Linear { t, settings } => {
+            // The state reached so far, assembled and with consistent velocities (the
+            // multipliers are solved for by the linearization itself).
+            let mut y = system.given_state().clone();
+            let linear = system
+                .assemble(t, &mut y)
+                .and_then(|_| system.project_velocities(t, &mut y))
+                .map_err(|e| e.to_string())
+                .and_then(|()| linearize(system, t, &y, &settings).map_err(|e| e.to_string()));
+            match linear {
+                Ok(linear) => {
+                    let dir = sink.writer.dir().to_path_buf();
+                    let written = sink
+                        .eigenvalues
+                        .record(&dir, &linear, settings.damping)
+                        .map_err(|e| e.to_string());
+                    let wall_ms = 1e3 * started.elapsed().as_secs_f64();
+                    let report = json!({"t": t, "degrees_of_freedom": linear.degrees_of_freedom,
+                        "damping": settings.damping, "eigenvalues": linear.eigenvalues.len(),
+                        "unstable": eigenvalues::unstable(&linear),
+                        "files": ["eigenvalues.csv", "eigenvalues.json"]});
+                    (
+                        written.map(|_| eigenvalues::summary_line(&linear, wall_ms)),
+                        report,
+                    )
+                }
+                Err(e) => (Err(e), json!({"t": t})),
+            }
         }
     };
     let result = match step.transient() {

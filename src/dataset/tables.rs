@@ -401,6 +401,27 @@ const ACTIVATE: &[ArgSpec] = &[
     vals("RANGE"),
 ];
 const FILE: &[ArgSpec] = &[vals("MODEL"), vals("COMMAND")];
+/// LINEAR: EIGENSOL (with NODAMPIN; NOVECTOR is what is done anyway, no eigenvectors are
+/// written) is modelled; STATEMAT and MKB are read so the lowering can refuse them by name;
+/// the options that select eigenvector and energy output are reported as ignored.
+const LINEAR: &[ArgSpec] = &[
+    flag("EIGENSOL"),
+    flag("NODAMPIN"),
+    flag("NOVECTOR"),
+    flag("STATEMAT"),
+    flag("MKB"),
+    ignored(vals("COORDS")),
+    ignored(vals("DISSIPAT")),
+    ignored(vals("ENERGY")),
+    ignored(vals("KINETIC")),
+    ignored(vals("STRAIN")),
+    ignored(vals("PSTATE")),
+    ignored(vals("RM")),
+    ignored(vals("FILE")),
+    ignored(vals("FORMAT")),
+    ignored(vals("PINPUT")),
+    ignored(vals("POUTPUT")),
+];
 
 /// Statements of a dataset (`.adm`).
 pub const DATASET_STATEMENTS: &[StatementSpec] = &[
@@ -482,6 +503,7 @@ pub const COMMANDS: &[StatementSpec] = &[
     stmt("OUTPUT", NoId, OUTPUT),
     stmt("PREFERENCES", NoId, PREFERENCES),
     stmt("ACCGRAV", NoId, ACCGRAV),
+    stmt("LINEAR", NoId, LINEAR),
     not_modelled("ARRAY"),
     not_modelled("BUSHING"),
     not_modelled("CONTROL"),
@@ -489,7 +511,6 @@ pub const COMMANDS: &[StatementSpec] = &[
     not_modelled("ENVIRONMENT"),
     not_modelled("HELP"),
     not_modelled("INFO"),
-    not_modelled("LINEAR"),
     not_modelled("MARKER"),
     not_modelled("MENU"),
     not_modelled("MOTION"),

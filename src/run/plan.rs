@@ -13,12 +13,16 @@
 //! - SIMULATE/STATICS finds the equilibrium at the current time; a following analysis starts
 //!   from it (Adams: dynamics after statics starts from equilibrium, at rest).
 //! - SIMULATE/INITIAL_CONDITIONS writes the assembled initial state at the current time.
+//! - LINEAR/EIGENSOL linearizes at the state reached so far, at the current time: after a
+//!   SIMULATE/STATICS the equilibrium, after a SIMULATE/DYNAMICS its last state, first in the
+//!   file the initial state ([`crate::solver::linear`]). It ends a span of SIMULATEs.
 //! - Without SIMULATE commands: dynamics from 0 to `--end`.
 
 use crate::model::{
     Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
 };
 use crate::solver::bdf::{Corrector, IntegratorSettings};
+use crate::solver::linear::LinearSettings;
 use crate::solver::statics::StaticsSettings;
 
 /// Why a SIMULATE/TRANSIENT ran as kinematics or as dynamics.
@@ -98,6 +102,13 @@ pub enum AnalysisStep {
         /// Time.
         t: f64,
     },
+    /// LINEAR/EIGENSOL: the eigenvalues at the state reached so far, at time `t`.
+    Linear {
+        /// Time.
+        t: f64,
+        /// NODAMPIN.
+        settings: LinearSettings,
+    },
 }
 
 impl AnalysisStep {
@@ -108,6 +119,7 @@ impl AnalysisStep {
             Self::Kinematics { .. } => "KINEMATICS",
             Self::Statics { .. } => "STATICS",
             Self::InitialConditions { .. } => "INITIAL_CONDITIONS",
+            Self::Linear { .. } => "LINEAR",
         }
     }
 
@@ -115,7 +127,7 @@ impl AnalysisStep {
     pub fn transient(&self) -> Option<TransientChoice> {
         match self {
             Self::Dynamics { transient, .. } | Self::Kinematics { transient, .. } => *transient,
-            Self::Statics { .. } | Self::InitialConditions { .. } => None,
+            Self::Statics { .. } | Self::InitialConditions { .. } | Self::Linear { .. } => None,
         }
     }
 }
@@ -227,6 +239,15 @@ pub fn plan_analyses(
                     }
                 }
                 time = stop;
+            }
+            Command::Linear { damping } => {
+                if let Some(done) = span.take() {
+                    steps.push(finish(done, overrides, &mut notes, false));
+                }
+                steps.push(AnalysisStep::Linear {
+                    t: time,
+                    settings: LinearSettings { damping: *damping },
+                });
             }
             Command::Stop => break,
             other => notes.push(format!(
@@ -407,6 +428,38 @@ mod tests {
             notes.iter().any(|n| n.contains("one span to END = 2")),
             "{notes:?}"
         );
+    }
+
+    #[test]
+    fn linear_runs_at_the_state_reached_so_far_and_ends_a_span() {
+        let (steps, _) = plan(
+            "plan.adm\nplan\nLINEAR/EIGENSOL\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
+             LIN/EIGEN, NODAMP\nSIMULATE/DYNAMICS, END = 2, DTOUT = 0.1\nSIMULATE/STATICS\nLINEAR/EIGENSOL\nSTOP\n",
+            PlanOverrides::default(),
+        );
+        let names: Vec<&str> = steps.iter().map(AnalysisStep::name).collect();
+        assert_eq!(
+            names,
+            [
+                "LINEAR", "DYNAMICS", "LINEAR", "DYNAMICS", "STATICS", "LINEAR"
+            ]
+        );
+        let undamped = LinearSettings { damping: false };
+        assert_eq!(
+            steps[0],
+            AnalysisStep::Linear {
+                t: 0.0,
+                settings: LinearSettings::default()
+            }
+        );
+        assert_eq!(
+            steps[2],
+            AnalysisStep::Linear {
+                t: 1.0,
+                settings: undamped
+            }
+        );
+        assert!(matches!(steps[5], AnalysisStep::Linear { t: 2.0, .. }));
     }
 
     #[test]

@@ -12,6 +12,7 @@
 //! - [`contact_plane`] — the check that keeps both parts of a 2-D contact in one plane.
 //! - [`frame`] — output frames from a state; a state handed to the next analysis.
 //! - [`kinematics`] — kinematic analysis of a model with zero degrees of freedom.
+//! - [`linear`] — linearization about an operating point: reduced M, C, K and the eigenvalues.
 //! - [`parallel`] — force elements evaluated on several threads with serial-identical bits.
 //! - [`simulate`] — transient dynamics with contact prediction and output frames.
 //! - [`statics`] — static equilibrium: Newton on the static residual, and the quasi-dynamic
@@ -25,6 +26,7 @@ pub mod contact_plane;
 pub mod dae;
 pub mod frame;
 pub mod kinematics;
+pub mod linear;
 pub mod mbs;
 pub mod parallel;
 pub mod simulate;

@@ -12,6 +12,8 @@ mod faceted_ball;
 mod fuzz_seeds;
 mod geneva;
 mod kinematics;
+mod linear;
+mod linear_cli;
 mod malformed;
 mod out_of_plane;
 mod scenes_cli;

@@ -1,5 +1,5 @@
-//! Command files (`.acf`): SIMULATE, INTEGRATOR, EQUILIBRIUM, ACTIVATE/DEACTIVATE, ACCGRAV,
-//! PREFERENCES, OUTPUT, FILE and STOP.
+//! Command files (`.acf`): SIMULATE, LINEAR, INTEGRATOR, EQUILIBRIUM, ACTIVATE/DEACTIVATE,
+//! ACCGRAV, PREFERENCES, OUTPUT, FILE and STOP.
 
 use super::Lowering;
 use super::bodies::{apply_preferences, gravity};
@@ -81,6 +81,28 @@ fn simulate(r: &Reader<'_>) -> Result<Command, Problem> {
     })
 }
 
+/// LINEAR/EIGENSOL [, NODAMPIN] [, NOVECTOR]. STATEMAT and MKB (state matrices and M, K, B
+/// matrices written to files) are not modelled: an error at the keyword, so a run never
+/// silently skips an analysis the command file asks for.
+fn linear(r: &Reader<'_>) -> Result<Command, Problem> {
+    for other in ["STATEMAT", "MKB"] {
+        if r.flag(other) {
+            return Err(Problem::new(
+                r.loc_of(other),
+                format!(
+                    "LINEAR/{other} is not modelled: only LINEAR/EIGENSOL (eigenvalues) is available"
+                ),
+            ));
+        }
+    }
+    if !r.flag("EIGENSOL") {
+        return Err(r.missing("EIGENSOL (the only LINEAR analysis modelled)"));
+    }
+    Ok(Command::Linear {
+        damping: !r.flag("NODAMPIN"),
+    })
+}
+
 fn activate(r: &Reader<'_>, active: bool) -> Result<Command, Problem> {
     const CLASSES: [&str; 8] = [
         "JOINT", "JPRIM", "CONTACT", "MOTION", "SFORCE", "SENSOR", "VARIABLE", "REQUEST",
@@ -124,6 +146,7 @@ fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) ->
     let r = Reader::new(st);
     match st.spec.name {
         "SIMULATE" => low.ok(simulate(&r)),
+        "LINEAR" => low.ok(linear(&r)),
         "ACTIVATE" => low.ok(activate(&r, true)),
         "DEACTIVATE" => low.ok(activate(&r, false)),
         "INTEGRATOR" => integrator(low, st).map(Command::Integrator),

@@ -249,7 +249,11 @@ impl MultibodySystem {
 
     /// `γ = −Φ_tt − (dΦ_v/dt)·v`, the second term by a central difference of `Φ_v v` along the
     /// motion over `±h`, `h = ε^(1/3) / max(|u|/L, |ω′|)` (zero when nothing moves).
-    fn acceleration_right_side(&self, t: f64, y: &DVector<f64>) -> Result<DVector<f64>, MbsError> {
+    pub(crate) fn acceleration_right_side(
+        &self,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<DVector<f64>, MbsError> {
         let (_, phi_tt) = self.constraint_time_derivatives(t);
         let vo = self.layout.velocity_offset(PartId(1));
         let v = y.rows(vo, 6 * self.parts.len()).into_owned();
