@@ -392,6 +392,10 @@ impl ForceElement for ContactForce {
     ) -> Option<Result<DMatrix<f64>, EvaluationError>> {
         crate::solver::contact_partials::compute_contact_partials(self, t, state)
     }
+
+    fn partials_are_exact(&self) -> bool {
+        false
+    }
 }
 
 /// A [`ContactForce`] shared between the system (which evaluates it) and the driver (which
@@ -423,6 +427,10 @@ impl ForceElement for SharedContact {
         state: &StateView<'_>,
     ) -> Option<Result<DMatrix<f64>, EvaluationError>> {
         self.0.partials(t, state)
+    }
+
+    fn partials_are_exact(&self) -> bool {
+        self.0.partials_are_exact()
     }
 
     fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {

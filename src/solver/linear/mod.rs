@@ -19,8 +19,11 @@
 //! `K` is the static Jacobian of [`crate::solver::statics::newton::static_jacobian`] and `C`
 //! the velocity columns of the integrator's Newton matrix at `c = 0`
 //! ([`MultibodySystem::compute_newton_matrix`]): the same blocks the integrator and the statics
-//! use, so a force element's partials (analytic, or the element-local difference) enter all
-//! three analyses alike. A CONTACT acts through `∂Q/∂q` and `∂Q/∂v`: one in contact at the
+//! use, with one difference: here a force element whose analytic partials are approximate is
+//! differenced element-locally ([`crate::solver::mbs::ForcePartials::Exact`]), since the
+//! eigenvalues are the answer: the contacts' analytic partials hold the contact geometry
+//! frozen, good enough for Newton, but leave out how the contact point and normal move with the
+//! pose. A CONTACT acts through `∂Q/∂q` and `∂Q/∂v`: one in contact at the
 //! operating point adds its normal stiffness `dFn/dδ` (the high frequency the Adams CONTACT
 //! document describes) and its damping; one out of contact exerts no force whatever the
 //! perturbation and adds nothing.
@@ -167,7 +170,15 @@ pub fn linearize(
     y: &DVector<f64>,
     settings: &LinearSettings,
 ) -> Result<Linearization, LinearError> {
-    let matrices = compute_operating_matrices(system, t, y)?;
+    // The eigenvalues are the answer here, not a Newton matrix: elements whose analytic
+    // partials are approximate are differenced, so a contact's stiffness includes how its
+    // point and normal move with the pose (the frozen-geometry analytic contact partials leave
+    // that out; a faceted ball rocking on its facets is the case that shows it).
+    let source = system.force_partials();
+    system.set_force_partials(crate::solver::mbs::ForcePartials::Exact);
+    let matrices = compute_operating_matrices(system, t, y);
+    system.set_force_partials(source);
+    let matrices = matrices?;
     let basis = null_space_basis(&matrices.constraint_jacobian, system.length_scale());
     let degrees_of_freedom = basis.ncols();
     let project = |matrix: &DMatrix<f64>| basis.transpose() * matrix * &basis;

@@ -113,6 +113,14 @@ pub trait ForceElement: Send + Sync {
         None
     }
 
+    /// Whether [`Self::partials`] are the loads' true derivatives (to round-off), rather than
+    /// an approximation good enough for Newton (a contact's, which hold its geometry frozen).
+    /// [`ForcePartials::Exact`] differences the elements that answer `false`. The default
+    /// answers `true`.
+    fn partials_are_exact(&self) -> bool {
+        true
+    }
+
     /// Called once after each step the integrator accepts, with the state at its end: where an
     /// element keeps history (contact onset, augmented-Lagrangian multipliers, output
     /// samples). Evaluations between accepted steps must not change the element. The default
@@ -149,6 +157,10 @@ pub enum ForcePartials {
     /// engine query per Jacobian), the element-local difference otherwise.
     #[default]
     Analytic,
+    /// Analytic partials only where they are exact ([`ForceElement::partials_are_exact`]),
+    /// the element-local difference elsewhere: where the Jacobian is the answer
+    /// (linearization), not a Newton matrix.
+    Exact,
     /// The element-local difference ([`difference_partials`]) for every element: 12
     /// evaluations (for a contact, 12 engine queries) per moving part per Jacobian. A check
     /// of the analytic partials, and a way around one that misleads Newton.

@@ -86,6 +86,8 @@ impl MultibodySystem {
             let element = &self.forces[k];
             let analytic = match self.force_partials {
                 ForcePartials::Analytic => element.partials(t, &view),
+                ForcePartials::Exact if element.partials_are_exact() => element.partials(t, &view),
+                ForcePartials::Exact => None,
                 ForcePartials::Difference => None,
             };
             match analytic {
