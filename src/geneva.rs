@@ -12,12 +12,14 @@
 //! centred at the centre distance along the crank, so the wheel's tips swing through while the
 //! pin drives it, and the disc locks again as the pin leaves.
 //!
-//! Why the example runs without it: with 0.05 mm of lock clearance, the wheel rattles in the
-//! lock after each index, and where the disc touches a locking arc the two faceted surfaces
-//! overlap in a thin crescent along the arc whose centroid lies outside it; the faceted
-//! engine's penetration along the normal through that centroid then reached 69 mm for an
-//! overlap some 0.2 mm thick, and the run was 35 times slower (5.4 s of wall time per
-//! simulated second against 0.15 s).
+//! Why the example runs without it: with 0.05 mm of lock clearance the wheel rattles in the
+//! lock after each index, and the faceted run took 2.1 s of wall time per simulated second
+//! against 0.07 s without the disc (the contact persists, and the long thin cap triangles of
+//! the disc and the wheel make every query dear). Where the disc touches a locking arc the two
+//! faceted surfaces overlap in a thin crescent whose centroid lies outside it; the faceted
+//! engine once measured such a region along the line through that centroid, 69 mm for an
+//! overlap 0.2 mm thick, and now holds it to the convex bound `3V/|S|` (a test in
+//! `tests/integration/geneva.rs`).
 //!
 //! Frames: the driver's mesh is in the driver's frame (axis at the origin, +z), the wheel's in
 //! the wheel's (axis at the origin, +z); in the assembly the wheel's axis is at
@@ -54,9 +56,8 @@ pub struct GenevaDimensions {
     /// Segments of each rim arc between two slots.
     pub rim_segments: usize,
     /// Whether the drive has its locking disc (and the wheel its concave locking arcs). The
-    /// example runs without (a detent SFORCE holds its wheel): the disc's conformal contact with
-    /// the arcs, a thin crescent when they touch, is beyond what the faceted engine's contact
-    /// answers well (see the module docs).
+    /// example runs without (a detent SFORCE holds its wheel): the wheel rattling in the lock
+    /// makes its faceted run 30 times slower (see the module docs).
     pub locking_disc: bool,
     /// Radial gap between the locking disc and the wheel's concave arcs.
     pub lock_clearance: f64,

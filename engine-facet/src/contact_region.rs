@@ -23,6 +23,11 @@
 //!    line meets nothing), lifted from the facet onto the curved PN triangle through the
 //!    facet's corners and true corner normals ([`FacetMesh::lift_to_surface`]); the penetration
 //!    is their distance. Every one of these is continuous in the pose, which dynamics needs.
+//!    A region whose centroid lies outside one of the (closed) bodies is not convex — a thin
+//!    crescent where a convex surface presses into a nearly conforming concave one — and the
+//!    line through the centroid crosses a body's far side: its penetration is held to the
+//!    convex bound `3V/|S|` (no convex region of volume `V` and cross-section `|S|` is
+//!    thicker), with J's point moved along the normal to match.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
@@ -426,6 +431,9 @@ fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratc
             Some((_, Some(hit))) => hit,
             _ => b.closest_point(&gb, stack),
         };
+        // Open meshes have no inside: their regions keep the line's measure.
+        r.centroid_inside_both = !(a.closed && b.closed)
+            || (a.contains(&Point3::from(g)) && b.contains(&Point3::from(gb)));
         r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
         r.best_j = (0.0, x.apply(&b.lift_to_surface(tj, &pj)), tj);
     }
@@ -451,11 +459,33 @@ fn finish_region(r: &RegionSums) -> LocalContact {
             .try_normalize(0.0)
             .unwrap_or_else(Vector3::z)
     };
+    // A region whose centroid lies outside one of the bodies is not convex (a thin crescent
+    // where a convex surface presses into a nearly conforming concave one), and the line
+    // through the centroid crosses that body's far side. A convex region of volume V whose
+    // cross-section normal to n has area A is no thicker along n than 3V/A (the cone over
+    // its section is the thinnest such body): the penetration of such a region is held to
+    // that, the point on J moved along the normal with it.
+    let penetration = (pj - pi).norm();
+    let bound = 3.0 * r.volume.max(0.0) / area;
+    if !r.centroid_inside_both
+        && area > 0.0
+        && bound.is_finite()
+        && penetration > bound
+        && loop_normal(r).is_some()
+    {
+        return LocalContact {
+            point_i: pi,
+            point_j: pi + normal * bound,
+            normal,
+            penetration: bound,
+            area,
+        };
+    }
     LocalContact {
         point_i: pi,
         point_j: pj,
         normal,
-        penetration: (pj - pi).norm(),
+        penetration,
         area,
     }
 }

@@ -92,6 +92,9 @@ pub(crate) struct RegionSums {
     pub down_area: f64,
     pub sums_a: crate::surface_sums::SurfaceSums,
     pub sums_b: crate::surface_sums::SurfaceSums,
+    /// The volume centroid lies inside both closed meshes (the region may be measured along
+    /// the line through it).
+    pub centroid_inside_both: bool,
 }
 
 /// Everything a query reuses.

@@ -272,3 +272,71 @@ fn the_primitive_geneva_indexes_as_the_ideal_drive_with_each_engine_that_answers
     }
     assert!(compared > 50, "only {compared} engaged frames compared");
 }
+
+/// The drive with its locking disc, the wheel turned past the lock's play in mid-dwell: the
+/// disc overlaps a locking arc in a thin crescent whose volume centroid lies outside it, and
+/// the penetration must stay the crescent's thickness (the deepest the wheel's arc vertices
+/// reach inside the disc), not where the line through that centroid meets the far side.
+#[test]
+fn a_locking_disc_pressed_into_its_arc_penetrates_by_the_crescents_thickness() {
+    use contact_core::{Geometry, Isometry3, Vector3, WorkCounters};
+    let d = GenevaDimensions {
+        locking_disc: true,
+        ..GenevaDimensions::default()
+    };
+    let mesh = |triangles: Vec<contact::geneva::Triangle>| {
+        let corners: Vec<[contact_core::Point3; 3]> = triangles
+            .iter()
+            .map(|t| t.map(contact_core::Point3::from))
+            .collect();
+        let (vertices, faces) = engine_facet::stl::weld(&corners);
+        GeometryInstance::new(Geometry::Mesh(std::sync::Arc::new(
+            contact_core::geometry::TriangleMesh::new(vertices, faces).unwrap(),
+        )))
+    };
+    let engine = engine_facet::FacetEngine::default();
+    let pair = engine
+        .prepare(&[mesh(d.driver_triangles())], &[mesh(d.wheel_triangles())])
+        .unwrap();
+    // Mid-dwell: the crank points away from the wheel.
+    let pose_driver = Isometry3::rotation(Vector3::z() * (PI - d.crank_start_angle));
+    let disc = d.locking_disc_radius();
+    // The facets' chords: the disc's inward, the arcs' toward the disc.
+    let rim = d.rim_radius();
+    let spread =
+        (rim * d.lock_tip_angle.sin()).atan2(CENTRE_DISTANCE - rim * d.lock_tip_angle.cos());
+    let sag = disc * (1.0 - (PI / d.disc_segments as f64).cos())
+        + d.lock_arc_radius() * (1.0 - (spread / d.lock_segments as f64).cos());
+    let mut checked = 0;
+    for turns in [1.5, 2.0, 3.0, 5.0] {
+        for sign in [1.0, -1.0] {
+            let w = sign * turns * d.lock_clearance / CENTRE_DISTANCE;
+            let pose_wheel = Isometry3::from_parts(
+                nalgebra::Translation3::new(CENTRE_DISTANCE, 0.0, 0.0),
+                nalgebra::UnitQuaternion::from_axis_angle(&Vector3::z_axis(), w),
+            );
+            // The crescent's thickness: how far the wheel's outline reaches inside the disc.
+            let thickness = d
+                .wheel_outline()
+                .iter()
+                .map(|p| {
+                    let q = pose_wheel * contact_core::Point3::new(p[0], p[1], 0.0);
+                    disc - q.coords.xy().norm()
+                })
+                .fold(0.0, f64::max);
+            let (mut contacts, mut work) = (Vec::new(), WorkCounters::default());
+            pair.query(&pose_driver, &pose_wheel, &mut contacts, &mut work)
+                .unwrap();
+            assert!(!contacts.is_empty(), "turned {w}: no contact");
+            for c in &contacts {
+                assert!(
+                    c.penetration <= 1.5 * (thickness + sag),
+                    "turned {w} rad: penetration {} for a crescent {thickness} thick",
+                    c.penetration
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 8);
+}
