@@ -209,43 +209,28 @@ impl GenevaDimensions {
         extrude(&self.wheel_outline(), 0.0, self.wheel_thickness)
     }
 
-    /// The wheel's outline in its frame, counter-clockwise.
+    /// The wheel's outline in its frame, counter-clockwise: per slot its four corners, then the
+    /// land to the next slot (the rim arc, or with the locking disc a rim tip, the concave
+    /// locking arc and a rim tip), slot corners excluded from the lands.
     pub fn wheel_outline(&self) -> Vec<[f64; 2]> {
         let (a, rim) = (self.centre_distance, self.rim_radius());
         let half = self.pin_radius + 0.5 * self.clearance;
         let mouth = (rim * rim - half * half).sqrt();
         let opening = (half / rim).asin();
-        if !self.locking_disc {
-            let mut outline = Vec::new();
-            for k in 0..4 {
-                let phi = FRAC_PI_4 + k as f64 * std::f64::consts::FRAC_PI_2;
-                let (u, v) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
-                let at = |a: f64, b: f64| [a * u[0] + b * v[0], a * u[1] + b * v[1]];
-                outline.push(at(mouth, -half));
-                outline.push(at(self.slot_bottom_radius, -half));
-                outline.push(at(self.slot_bottom_radius, half));
-                outline.push(at(mouth, half));
-                // The rim arc to the next slot, its end points excluded (they are slot corners).
-                let (from, to) = (phi + opening, phi + std::f64::consts::FRAC_PI_2 - opening);
-                for j in 1..self.rim_segments {
-                    let angle = from + (to - from) * j as f64 / self.rim_segments as f64;
-                    outline.push([rim * angle.cos(), rim * angle.sin()]);
-                }
-            }
-            return outline;
-        }
         let (tip, arc) = (self.lock_tip_angle, self.lock_arc_radius());
         // The concave arc's half-angle seen from its centre (the driver's axis at rest).
         let spread = (rim * tip.sin()).atan2(a - rim * tip.cos());
         let tip_steps = (self.rim_segments / 4).max(1);
+        // Rim points strictly between `from` and `to` in `steps` steps, and `to` when asked.
+        let rim_arc =
+            |outline: &mut Vec<[f64; 2]>, from: f64, to: f64, steps: usize, last: bool| {
+                let end = if last { steps } else { steps - 1 };
+                for j in 1..=end {
+                    let angle = from + (to - from) * j as f64 / steps as f64;
+                    outline.push([rim * angle.cos(), rim * angle.sin()]);
+                }
+            };
         let mut outline = Vec::new();
-        let rim_piece = |outline: &mut Vec<[f64; 2]>, from: f64, to: f64, last: bool| {
-            let end = if last { tip_steps } else { tip_steps - 1 };
-            for j in 1..=end {
-                let angle = from + (to - from) * j as f64 / tip_steps as f64;
-                outline.push([rim * angle.cos(), rim * angle.sin()]);
-            }
-        };
         for k in 0..4 {
             let phi = FRAC_PI_4 + k as f64 * std::f64::consts::FRAC_PI_2;
             let (u, v) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
@@ -254,10 +239,13 @@ impl GenevaDimensions {
             outline.push(at(self.slot_bottom_radius, -half));
             outline.push(at(self.slot_bottom_radius, half));
             outline.push(at(mouth, half));
-            // The land to the next slot: a rim tip, the concave arc, a rim tip (slot corners
-            // excluded, the arc's ends on the rim included once).
+            let (from, to) = (phi + opening, phi + std::f64::consts::FRAC_PI_2 - opening);
+            if !self.locking_disc {
+                rim_arc(&mut outline, from, to, self.rim_segments, false);
+                continue;
+            }
             let middle = phi + FRAC_PI_4;
-            rim_piece(&mut outline, phi + opening, middle - tip, true);
+            rim_arc(&mut outline, from, middle - tip, tip_steps, true);
             let centre = [a * middle.cos(), a * middle.sin()];
             for j in 1..self.lock_segments {
                 let angle = middle + std::f64::consts::PI + spread
@@ -265,12 +253,7 @@ impl GenevaDimensions {
                 outline.push([centre[0] + arc * angle.cos(), centre[1] + arc * angle.sin()]);
             }
             outline.push([rim * (middle + tip).cos(), rim * (middle + tip).sin()]);
-            rim_piece(
-                &mut outline,
-                middle + tip,
-                phi + std::f64::consts::FRAC_PI_2 - opening,
-                false,
-            );
+            rim_arc(&mut outline, middle + tip, to, tip_steps, false);
         }
         outline
     }

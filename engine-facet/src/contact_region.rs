@@ -431,11 +431,19 @@ fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratc
             Some((_, Some(hit))) => hit,
             _ => b.closest_point(&gb, stack),
         };
-        // Open meshes have no inside: their regions keep the line's measure.
-        r.centroid_inside_both = !(a.closed && b.closed)
-            || (a.contains(&Point3::from(g)) && b.contains(&Point3::from(gb)));
         r.best_i = (0.0, a.lift_to_surface(ti, &pi), ti);
         r.best_j = (0.0, x.apply(&b.lift_to_surface(tj, &pj)), tj);
+        // Only a region measured deeper than the convex bound pays for the inside tests (open
+        // meshes have no inside: their regions keep the line's measure).
+        let area = r.vector_area.norm();
+        let bound = 3.0 * r.volume.max(0.0) / area;
+        r.held_to_bound = area > 0.0
+            && bound.is_finite()
+            && (r.best_j.1 - r.best_i.1).norm() > bound
+            && loop_normal(r).is_some()
+            && a.closed
+            && b.closed
+            && !(a.contains(&Point3::from(g)) && b.contains(&Point3::from(gb)));
     }
 }
 
@@ -465,14 +473,8 @@ fn finish_region(r: &RegionSums) -> LocalContact {
     // cross-section normal to n has area A is no thicker along n than 3V/A (the cone over
     // its section is the thinnest such body): the penetration of such a region is held to
     // that, the point on J moved along the normal with it.
-    let penetration = (pj - pi).norm();
-    let bound = 3.0 * r.volume.max(0.0) / area;
-    if !r.centroid_inside_both
-        && area > 0.0
-        && bound.is_finite()
-        && penetration > bound
-        && loop_normal(r).is_some()
-    {
+    if r.held_to_bound {
+        let bound = 3.0 * r.volume / area;
         return LocalContact {
             point_i: pi,
             point_j: pi + normal * bound,
@@ -485,7 +487,7 @@ fn finish_region(r: &RegionSums) -> LocalContact {
         point_i: pi,
         point_j: pj,
         normal,
-        penetration,
+        penetration: (pj - pi).norm(),
         area,
     }
 }

@@ -5,13 +5,12 @@
 //! `v/vt/vn`, with 1-based or negative (relative) indices. Texture coordinates, normals,
 //! groups, objects, smoothing and materials are not geometry and are skipped; points (`p`),
 //! lines (`l`) and free-form curves and surfaces cannot bound a solid and are errors. The
-//! corners are then welded as STL corners are ([`crate::stl::weld`]), so a file that repeats a
-//! vertex is read as one solid, and the mesh is checked to bound a solid
-//! ([`TriangleMesh::new`]). Errors name the file, and the line where there is one.
+//! corners are then welded as STL corners are ([`crate::stl::solid_from_corners`]), so a file that repeats a
+//! vertex is read as one solid, and the mesh is checked to bound a solid. Errors name the file, and the line where there is one.
 
-use crate::stl::{StlMesh, weld};
+use crate::stl::{StlMesh, solid_from_corners};
 use contact_core::Point3;
-use contact_core::geometry::{MeshError, TriangleMesh};
+use contact_core::geometry::MeshError;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -61,28 +60,10 @@ pub fn read_obj(path: &Path, accept_open: bool) -> Result<StlMesh, ObjError> {
         line,
         message,
     })?;
-    let (vertices, triangles) = weld(&corners);
-    let mesh_error = |source| ObjError::Mesh {
+    solid_from_corners(&corners, accept_open, "OBJ", path).map_err(|source| ObjError::Mesh {
         path: path.to_path_buf(),
         source,
-    };
-    match TriangleMesh::new(vertices.clone(), triangles.clone()) {
-        Ok(mesh) => Ok(StlMesh {
-            mesh,
-            warnings: Vec::new(),
-        }),
-        Err(e @ MeshError::Open { .. }) if accept_open => {
-            let mesh = TriangleMesh::new_open(vertices, triangles).map_err(mesh_error)?;
-            Ok(StlMesh {
-                mesh,
-                warnings: vec![format!(
-                    "OBJ file '{}': accepted although {e}; it cannot contain another body",
-                    path.display()
-                )],
-            })
-        }
-        Err(e) => Err(mesh_error(e)),
-    }
+    })
 }
 
 /// The triangles' corners of an OBJ text, or the line (from 1) and message of the first error.

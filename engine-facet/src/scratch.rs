@@ -92,9 +92,10 @@ pub(crate) struct RegionSums {
     pub down_area: f64,
     pub sums_a: crate::surface_sums::SurfaceSums,
     pub sums_b: crate::surface_sums::SurfaceSums,
-    /// The volume centroid lies inside both closed meshes (the region may be measured along
-    /// the line through it).
-    pub centroid_inside_both: bool,
+    /// The line through the centroid measured the region deeper than a convex region of its
+    /// volume and cross-section can be, and the centroid lies outside a closed body: the
+    /// penetration is held to the bound `3V/|S|`.
+    pub held_to_bound: bool,
 }
 
 /// Everything a query reuses.

@@ -64,27 +64,34 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
                 .map(|v| Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))),
         );
     }
-    let (vertices, triangles) = weld(&corners);
-    let mesh_error = |source| StlError::Mesh {
+    solid_from_corners(&corners, accept_open, "STL", path).map_err(|source| StlError::Mesh {
         path: path.to_path_buf(),
         source,
-    };
+    })
+}
+
+/// Welds triangle corners read from a mesh file and checks they bound a solid; with
+/// `accept_open`, an open mesh is kept with a warning naming the `format` and the file.
+pub fn solid_from_corners(
+    corners: &[[Point3; 3]],
+    accept_open: bool,
+    format: &str,
+    path: &Path,
+) -> Result<StlMesh, MeshError> {
+    let (vertices, triangles) = weld(corners);
     match TriangleMesh::new(vertices.clone(), triangles.clone()) {
         Ok(mesh) => Ok(StlMesh {
             mesh,
             warnings: Vec::new(),
         }),
-        Err(e @ MeshError::Open { .. }) if accept_open => {
-            let mesh = TriangleMesh::new_open(vertices, triangles).map_err(mesh_error)?;
-            Ok(StlMesh {
-                mesh,
-                warnings: vec![format!(
-                    "STL file '{}': accepted although {e}; it cannot contain another body",
-                    path.display()
-                )],
-            })
-        }
-        Err(e) => Err(mesh_error(e)),
+        Err(e @ MeshError::Open { .. }) if accept_open => Ok(StlMesh {
+            mesh: TriangleMesh::new_open(vertices, triangles)?,
+            warnings: vec![format!(
+                "{format} file '{}': accepted although {e}; it cannot contain another body",
+                path.display()
+            )],
+        }),
+        Err(e) => Err(e),
     }
 }
 

@@ -116,6 +116,9 @@ pub fn integrated_motion(
     ic_displacement: f64,
     ic_velocity: f64,
 ) -> Option<TimeFunction> {
+    if level == MotionLevel::Displacement {
+        return None;
+    }
     let integrals = Arc::new(Integrals::new(function));
     match level {
         MotionLevel::Displacement => None,
