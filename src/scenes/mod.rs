@@ -61,22 +61,32 @@ pub struct ScenePose {
     pub pose_world_j: Isometry3,
 }
 
-/// Poses in every scene of the suite.
-pub const POSES: usize = 30;
+/// Poses in every scene of the suite: 9 special, 105 graded.
+pub const POSES: usize = 114;
+
+/// The graded depths run from 1e-4 to 0.3 of the scale: log10(0.3 / 1e-4) decades.
+const DEPTH_DECADES: f64 = 3.477_121_254_719_662_6;
 
 /// Poses at each of the special depths (separated, near, grazing) of [`relative_depths`].
 pub const POSES_PER_SPECIAL_DEPTH: usize = 3;
 
 /// The nominal depth of each pose, as fractions of a scene's scale: separated (−0.05), near
-/// (−1e-3) and grazing (1e-12 of the scale), three poses each, then 21 shallow to deep depths
-/// evenly spaced in log from 1e-4 to 0.1 (a ratio of 10^0.15 ≈ 1.41 between neighbours), one
-/// pose each.
+/// (−1e-3) and grazing (1e-12 of the scale), three poses each, then 105 shallow to deep depths
+/// evenly spaced in log from 1e-4 to 0.3 (a ratio of about 1.08 between neighbours), one pose
+/// each, each pose with its own seeded orientation and so its own facet phase.
 ///
 /// Why every pose has its own depth: a faceted engine misses a contact shallower than its
 /// faceting band and then errs by that contact's whole depth, so the worst error over the
-/// family is the deepest missed depth. With neighbouring depths 1.41× apart, each step of the
-/// tolerance sweep (100, 300, 1000, …: about 3.3×) moves the band past three or four depths,
+/// family is the deepest missed depth. With neighbouring depths 1.08× apart, each step of the
+/// tolerance sweep (100, 300, 1000, …: about 3.3×) moves the band past about fifteen depths,
 /// and the worst error falls at every step instead of standing on a staircase.
+///
+/// Why so many: the normal and point errors are worst cases over the resolved contacts
+/// (deeper than three faceting bands, [`crate::tradeoff::RESOLVED_BANDS`]), and a worst case
+/// over a facet phase is only found by sampling many phases. With one pose per depth 1.41×
+/// apart (21 graded poses), a tolerance resolving few contacts had the luck of few phases,
+/// and the worst normal or point error rose at some steps of the sweep. Depths up to 0.3 give
+/// the coarsest tolerances (band up to 0.09 of the scale) contacts to resolve.
 pub fn relative_depths() -> [f64; POSES] {
     let mut depths = [0.0; POSES];
     let special = [-0.05, -1e-3, 1e-12];
@@ -86,7 +96,7 @@ pub fn relative_depths() -> [f64; POSES] {
             s if s < special.len() => special[s],
             _ => {
                 let step = k - special.len() * POSES_PER_SPECIAL_DEPTH;
-                10f64.powf(-4.0 + 3.0 * step as f64 / (graded - 1) as f64)
+                10f64.powf(-4.0 + DEPTH_DECADES * step as f64 / (graded - 1) as f64)
             }
         };
     }
@@ -229,13 +239,13 @@ pub fn scene(name: &str) -> Option<Scene> {
         ),
         "frustum_plane" => Scene::on_plane(
             name,
-            "tilted frustum on a plane",
+            "frustum tilted 30° onto its rim",
             vec![centred(
                 Geometry::Frustum(Frustum::new(0.8, 0.3, 1.5).expect("valid literal")),
                 1.5,
             )],
             0.3,
-            free,
+            Orientation::Tilted(FRAC_PI_6),
         ),
         "torus_plane" => Scene::on_plane(
             name,

@@ -8,10 +8,15 @@ pub struct PoseErrors {
     /// Largest |δ − δ_ref| / scale over matched contacts; an unmatched contact counts its whole
     /// depth.
     pub depth: f64,
-    /// Largest angle between matched normals, degrees.
+    /// Largest angle between matched normals, degrees, over resolved contacts (reference
+    /// depth above the faceting band).
     pub normal_deg: f64,
-    /// Largest distance between matched contact points (either body's) / scale.
+    /// Largest distance between matched contact points (either body's) / scale, over resolved
+    /// contacts.
     pub point: f64,
+    /// Matched reference contacts deeper than the band: those the normal and point errors are
+    /// taken over.
+    pub resolved: usize,
     /// Reference contacts the engine did not return.
     pub missed: usize,
     /// Contacts the engine returned that the reference does not have.
@@ -27,13 +32,22 @@ impl PoseErrors {
             point: self.point.max(o.point),
             missed: self.missed + o.missed,
             extra: self.extra + o.extra,
+            resolved: self.resolved + o.resolved,
         }
     }
 }
 
 /// Compares `got` to `reference`: contacts pair up greedily by geometry indices and nearest
 /// midpoint. `scale` is the scene's length scale.
-pub fn compare(got: &[Contact], reference: &[Contact], scale: f64) -> PoseErrors {
+///
+/// Depth is compared for every contact. Normal and point are compared only for reference
+/// contacts deeper than `band` (model length): [`resolved_depth`], 0 for engines without
+/// facets. A contact shallower than the band is a sliver of a facet or two
+/// whose normal and point follow the facet phase rather than the geometry: its error does not
+/// fall with the tolerance, and its whole depth already counts in the depth error if missed.
+///
+/// [`resolved_depth`]: super::resolved_depth
+pub fn compare(got: &[Contact], reference: &[Contact], scale: f64, band: f64) -> PoseErrors {
     let mut used = vec![false; got.len()];
     let mut e = PoseErrors::default();
     for r in reference {
@@ -54,6 +68,10 @@ pub fn compare(got: &[Contact], reference: &[Contact], scale: f64) -> PoseErrors
                 used[k] = true;
                 let g = &got[k];
                 e.depth = e.depth.max((g.penetration - r.penetration).abs() / scale);
+                if r.penetration <= band {
+                    continue;
+                }
+                e.resolved += 1;
                 let cos = g.normal_w.dot(&r.normal_w).clamp(-1.0, 1.0);
                 // atan2 of |cross| and dot is accurate for tiny angles, where acos is not.
                 let angle = g.normal_w.cross(&r.normal_w).norm().atan2(cos).to_degrees();
@@ -99,14 +117,26 @@ mod tests {
     fn errors_of_a_matched_pair_and_of_misses() {
         let r = contact(0.1, Vector3::z());
         let g = contact(0.11, Vector3::new(0.0, 1f64.to_radians().tan(), 1.0));
-        let e = compare(&[g], &[r], 2.0);
+        let e = compare(&[g], &[r], 2.0, 0.0);
         assert!((e.depth - 0.005).abs() < 1e-15);
         assert!((e.normal_deg - 1.0).abs() < 1e-12);
         assert!((e.point - 0.005).abs() < 1e-15);
-        assert_eq!((e.missed, e.extra), (0, 0));
-        let e = compare(&[], &[r], 2.0);
+        assert_eq!((e.missed, e.extra, e.resolved), (0, 0, 1));
+        let e = compare(&[], &[r], 2.0, 0.0);
         assert_eq!((e.missed, e.depth), (1, 0.05));
-        let e = compare(&[g, g], &[r], 1.0);
+        let e = compare(&[g, g], &[r], 1.0, 0.0);
         assert_eq!(e.extra, 1);
+    }
+
+    #[test]
+    fn contacts_within_the_band_count_their_depth_but_not_their_normal_or_point() {
+        let r = contact(0.1, Vector3::z());
+        let g = contact(0.11, Vector3::new(0.0, 1f64.to_radians().tan(), 1.0));
+        let e = compare(&[g], &[r], 2.0, 0.1);
+        assert!((e.depth - 0.005).abs() < 1e-15);
+        assert_eq!((e.normal_deg, e.point, e.resolved), (0.0, 0.0, 0));
+        let e = compare(&[g], &[r], 2.0, 0.0999);
+        assert!((e.normal_deg - 1.0).abs() < 1e-12);
+        assert_eq!(e.resolved, 1);
     }
 }

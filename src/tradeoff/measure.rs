@@ -1,9 +1,12 @@
 //! Measuring one engine (at one faceting tolerance) on one scene: errors against the reference,
 //! query time, preparation time and size, work.
 
+use super::band::resolved_depth;
 use super::compare::{PoseErrors, compare};
 use crate::scenes::Scene;
-use contact_core::{Contact, GeometryEngine, PrepareError, QueryError, WorkCounters};
+use contact_core::{
+    Contact, FacetingTolerance, GeometryEngine, PrepareError, QueryError, WorkCounters,
+};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -124,10 +127,18 @@ pub struct TradeRecord {
     pub reference: ReferenceSource,
     /// Largest depth error over the poses, relative to the scene's scale (None: no reference).
     pub depth_error: Option<f64>,
-    /// Largest normal error over the poses, degrees.
+    /// Largest normal error over the resolved contacts (reference depth above
+    /// [`Self::resolved_depth`]), degrees; None without a reference or without a resolved
+    /// contact.
     pub normal_error_deg: Option<f64>,
-    /// Largest contact-point error over the poses, relative to the scene's scale.
+    /// Largest contact-point error over the resolved contacts, relative to the scene's scale.
     pub point_error: Option<f64>,
+    /// The depth, relative to the scene's scale, above which a contact counts as resolved:
+    /// [`RESOLVED_BANDS`](super::RESOLVED_BANDS) faceting bands
+    /// ([`faceting_band`](super::faceting_band)), 0 for engines without facets.
+    pub resolved_depth: f64,
+    /// Matched reference contacts deeper than `resolved_depth`, summed over the poses.
+    pub resolved_contacts: usize,
     /// Reference contacts not returned, summed over the poses.
     pub missed_contacts: usize,
     /// Contacts returned that the reference does not have, summed over the poses.
@@ -203,13 +214,16 @@ pub fn measure(
     };
 
     // Accuracy and work: one untimed pass.
+    let resolved = faceting_tolerance
+        .and_then(|t| FacetingTolerance::new(t).ok())
+        .map_or(0.0, |t| resolved_depth(&scene.i, &scene.j, t));
     let mut errors = PoseErrors::default();
     let mut work = WorkCounters::default();
     let mut out = Vec::new();
     for (pose, expected) in scene.poses.iter().zip(&reference.answers) {
         pair.query(&pose.pose_world_i, &pose.pose_world_j, &mut out, &mut work)
             .map_err(query_error)?;
-        errors = errors.max(compare(&out, expected, scene.scale));
+        errors = errors.max(compare(&out, expected, scene.scale, resolved));
     }
     let n = scene.poses.len().max(1) as f64;
     let per_query = |c: u64| c as f64 / n;
@@ -245,8 +259,10 @@ pub fn measure(
         faceting_tolerance,
         reference: reference.source,
         depth_error: has_reference.then_some(errors.depth),
-        normal_error_deg: has_reference.then_some(errors.normal_deg),
-        point_error: has_reference.then_some(errors.point),
+        normal_error_deg: (has_reference && errors.resolved > 0).then_some(errors.normal_deg),
+        point_error: (has_reference && errors.resolved > 0).then_some(errors.point),
+        resolved_depth: resolved / scene.scale,
+        resolved_contacts: errors.resolved,
         missed_contacts: errors.missed,
         extra_contacts: errors.extra,
         query_ns_median: percentile(&samples, 0.5),

@@ -60,7 +60,7 @@ pub fn table(records: &[TradeRecord]) -> String {
 /// CSV with a header; empty fields where a value does not apply.
 pub fn csv(records: &[TradeRecord]) -> String {
     let mut out = String::from(
-        "scene,engine,faceting_tolerance,reference,depth_error,normal_error_deg,point_error,missed_contacts,extra_contacts,query_ns_median,query_ns_p95,prepare_ms,prepared_bytes,triangles,poses,geometry_pairs_per_query,bounding_volume_tests_per_query,primitive_tests_per_query,iterations_per_query,contacts_per_query\n",
+        "scene,engine,faceting_tolerance,reference,depth_error,normal_error_deg,point_error,resolved_depth,resolved_contacts,missed_contacts,extra_contacts,query_ns_median,query_ns_p95,prepare_ms,prepared_bytes,triangles,poses,geometry_pairs_per_query,bounding_volume_tests_per_query,primitive_tests_per_query,iterations_per_query,contacts_per_query\n",
     );
     let f = |v: Option<f64>| v.map_or_else(String::new, |x| format!("{x:?}"));
     for r in records {
@@ -70,7 +70,7 @@ pub fn csv(records: &[TradeRecord]) -> String {
             .unwrap_or_default();
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{:?},{:?},{:?},{},{},{},{:?},{:?},{:?},{:?},{:?}",
+            "{},{},{},{},{},{},{},{:?},{},{},{},{:?},{:?},{:?},{},{},{},{:?},{:?},{:?},{:?},{:?}",
             r.scene,
             r.engine,
             f(r.faceting_tolerance),
@@ -78,6 +78,8 @@ pub fn csv(records: &[TradeRecord]) -> String {
             f(r.depth_error),
             f(r.normal_error_deg),
             f(r.point_error),
+            r.resolved_depth,
+            r.resolved_contacts,
             r.missed_contacts,
             r.extra_contacts,
             r.query_ns_median,

@@ -221,6 +221,8 @@ mod tests {
             depth_error: Some(err),
             normal_error_deg: Some(0.0),
             point_error: Some(0.0),
+            resolved_depth: 0.0,
+            resolved_contacts: 1,
             missed_contacts: 0,
             extra_contacts: 0,
             query_ns_median: ns,

@@ -82,7 +82,8 @@ fn the_readme_documents_the_required_fields() {
 fn the_validator_rejects_what_the_schema_forbids() {
     let good = serde_json::json!([{
         "scene": "s", "engine": "exact", "faceting_tolerance": null, "reference": "closed_form",
-        "depth_error": 1e-13, "normal_error_deg": 0.0, "point_error": 0.0, "missed_contacts": 0,
+        "depth_error": 1e-13, "normal_error_deg": 0.0, "point_error": 0.0, "resolved_depth": 0.0,
+        "resolved_contacts": 15, "missed_contacts": 0,
         "extra_contacts": 0, "query_ns_median": 40.0, "query_ns_p95": 55.0, "prepare_ms": 0.001,
         "prepared_bytes": 0, "triangles": 0, "poses": 21,
         "work": {"geometry_pairs": 1.0, "bounding_volume_tests": 0.0, "primitive_tests": 1.0, "iterations": 0.0, "contacts": 0.7}
