@@ -157,9 +157,7 @@ impl QueryError {
     /// Checks both poses are finite; the shared first step of every query.
     pub fn check_poses(pose_world_i: &Isometry3, pose_world_j: &Isometry3) -> Result<(), Self> {
         for (side, pose) in [(Side::I, pose_world_i), (Side::J, pose_world_j)] {
-            let finite = pose.translation.vector.iter().all(|c| c.is_finite())
-                && pose.rotation.coords.iter().all(|c| c.is_finite());
-            if !finite {
+            if !is_finite_pose(pose) {
                 return Err(Self::NonFinitePose {
                     side,
                     pose: format_pose(pose),
@@ -168,6 +166,17 @@ impl QueryError {
         }
         Ok(())
     }
+}
+
+/// Whether all seven numbers of a pose are finite, without a branch per number: `x·0` is 0
+/// for a finite `x` and NaN for an infinite or NaN one, so the sum of the seven products is
+/// 0 exactly when all are finite (it runs on every query of every engine).
+fn is_finite_pose(pose: &Isometry3) -> bool {
+    let t = &pose.translation.vector;
+    let q = &pose.rotation.coords;
+    let zero =
+        (t.x * 0.0 + t.y * 0.0 + t.z * 0.0) + (q.x * 0.0 + q.y * 0.0 + q.z * 0.0 + q.w * 0.0);
+    zero == 0.0
 }
 
 /// A pose at round-trip precision: `x y z qw qx qy qz`, the order `contact query` reads.
@@ -243,4 +252,39 @@ pub fn check_lists(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Quaternion, Translation3, UnitQuaternion};
+
+    #[test]
+    fn a_pose_is_refused_when_any_of_its_seven_numbers_is_not_finite() {
+        let good = [1e300, -2.5, 3.0, 0.5, 0.5, 0.5, 0.5];
+        let pose = |v: [f64; 7]| {
+            Isometry3::from_parts(
+                Translation3::new(v[0], v[1], v[2]),
+                UnitQuaternion::new_unchecked(Quaternion::new(v[3], v[4], v[5], v[6])),
+            )
+        };
+        let id = Isometry3::identity();
+        assert!(QueryError::check_poses(&pose(good), &pose(good)).is_ok());
+        for k in 0..7 {
+            for bad in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+                let mut v = good;
+                v[k] = bad;
+                let on_i = QueryError::check_poses(&pose(v), &id);
+                assert!(
+                    matches!(on_i, Err(QueryError::NonFinitePose { side: Side::I, .. })),
+                    "{k} {bad}"
+                );
+                let on_j = QueryError::check_poses(&id, &pose(v));
+                assert!(
+                    matches!(on_j, Err(QueryError::NonFinitePose { side: Side::J, .. })),
+                    "{k} {bad}"
+                );
+            }
+        }
+    }
 }

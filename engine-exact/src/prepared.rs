@@ -80,14 +80,6 @@ fn non_identity(pose: &Isometry3) -> Option<Isometry3> {
     (*pose != Isometry3::identity()).then_some(*pose)
 }
 
-/// `X_WG = X_WP · X_PG`, skipping the product when `X_PG` is the identity.
-fn compose(pose_world_part: &Isometry3, pose_part_geometry: &Option<Isometry3>) -> Isometry3 {
-    match pose_part_geometry {
-        Some(p) => pose_world_part * p,
-        None => *pose_world_part,
-    }
-}
-
 /// SPEC §3 caps a list at 32,767 geometries, so an index always fits.
 fn index_u32(index: usize) -> u32 {
     u32::try_from(index).unwrap_or(u32::MAX)
@@ -112,8 +104,13 @@ impl PreparedPair for PreparedExact {
             } else {
                 (pose_world_i, pose_world_j)
             };
-            let pose_a = compose(pose_first, &e.pose_part_first);
-            let pose_b = compose(pose_second, &e.pose_part_second);
+            // `X_WG = X_WP · X_PG`, or `X_WP` itself when `X_PG` is the identity: no product
+            // and no copy. The copy matters on the closed forms: a kernel reading a pose just
+            // stored as a copy waits on store-to-load forwarding.
+            let composed_a = e.pose_part_first.map(|p| pose_first * p);
+            let composed_b = e.pose_part_second.map(|p| pose_second * p);
+            let pose_a = composed_a.as_ref().unwrap_or(pose_first);
+            let pose_b = composed_b.as_ref().unwrap_or(pose_second);
             let mut emit = |c: PairContact| {
                 let c = if e.swap { c.swapped() } else { c };
                 work_contacts += 1;
@@ -128,7 +125,7 @@ impl PreparedPair for PreparedExact {
                 });
             };
             e.kernel
-                .evaluate(&pose_a, &pose_b, e.length, work, &mut emit)
+                .evaluate(pose_a, pose_b, e.length, work, &mut emit)
                 .map_err(|err| match err {
                     PairError::OutOfPlane { angle_rad, offset } => QueryError::OutOfPlane {
                         i: e.kind_i,

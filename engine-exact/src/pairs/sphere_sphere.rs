@@ -18,17 +18,20 @@ use crate::kernel::PairContact;
 use contact_core::{Isometry3, Vector3};
 use std::f64::consts::PI;
 
-fn centre_line(pose_a: &Isometry3, pose_b: &Isometry3) -> (Vector3, Vector3, f64, Vector3) {
+/// The centres, their distance, the unit vector from `b`'s centre to `a`'s, and the
+/// distance's reciprocal (0 for coincident centres). One division instead of four: on this
+/// closed form the divider's latency is most of the time.
+fn centre_line(pose_a: &Isometry3, pose_b: &Isometry3) -> (Vector3, Vector3, f64, Vector3, f64) {
     let ca = pose_a.translation.vector;
     let cb = pose_b.translation.vector;
     let delta = ca - cb;
     let distance = delta.norm();
-    let u = if distance > 0.0 {
-        delta / distance
+    if distance > 0.0 {
+        let inverse = 1.0 / distance;
+        (ca, cb, distance, delta * inverse, inverse)
     } else {
-        pose_b.rotation * Vector3::z()
-    };
-    (ca, cb, distance, u)
+        (ca, cb, distance, pose_b.rotation * Vector3::z(), 0.0)
+    }
 }
 
 /// Two solid spheres.
@@ -38,7 +41,7 @@ pub(crate) fn contact(
     radius_b: f64,
     pose_b: &Isometry3,
 ) -> Option<PairContact> {
-    let (ca, cb, distance, u) = centre_line(pose_a, pose_b);
+    let (ca, cb, distance, u, inverse) = centre_line(pose_a, pose_b);
     let depth = radius_a + radius_b - distance;
     if depth <= 0.0 {
         return None;
@@ -46,8 +49,8 @@ pub(crate) fn contact(
     let disc_radius_sq = if distance <= (radius_a - radius_b).abs() {
         radius_a.min(radius_b).powi(2)
     } else {
-        let x =
-            (distance * distance + radius_b * radius_b - radius_a * radius_a) / (2.0 * distance);
+        // distance > |r_a − r_b| ≥ 0 here, so `inverse` is 1/distance.
+        let x = (distance * distance + radius_b * radius_b - radius_a * radius_a) * (0.5 * inverse);
         if x < 0.0 {
             radius_b * radius_b
         } else if distance - x < 0.0 {
@@ -72,14 +75,13 @@ pub(crate) fn contact_in_cavity(
     radius_b: f64,
     pose_b: &Isometry3,
 ) -> Option<PairContact> {
-    let (ca, cb, distance, u) = centre_line(pose_a, pose_b);
+    let (ca, cb, distance, u, inverse) = centre_line(pose_a, pose_b);
     let depth = distance + radius_a - radius_b;
     if depth <= 0.0 {
         return None;
     }
     let disc_radius_sq = if distance > 0.0 {
-        let x =
-            (distance * distance + radius_b * radius_b - radius_a * radius_a) / (2.0 * distance);
+        let x = (distance * distance + radius_b * radius_b - radius_a * radius_a) * (0.5 * inverse);
         if x > distance {
             ((radius_b - x) * (radius_b + x)).max(0.0)
         } else {
