@@ -46,10 +46,10 @@
 use crate::facet_mesh::FacetMesh;
 use crate::inside_flood::flood;
 use crate::obb::boxes_overlap;
-use crate::obb_tree::descend_pair;
+use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
 use crate::surface_sums::SurfaceSums;
-use crate::triangle_pair::{TrianglePair, intersect};
+use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect};
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
 /// One contact in A's mesh frame, before it is moved to the world.
@@ -158,7 +158,10 @@ fn find_crossings(
     } = s;
     hits.clear();
     let mut tests = 0;
-    descend_pair(
+    // Every edge of either mesh is shorter than its box diagonal: a bound on the triangle
+    // test's length scale, for the plane pre-test below (doubled: room for round-off).
+    let scale = 2.0 * a.size.max(b.size);
+    descend_leaf_pairs(
         &a.tree,
         &b.tree,
         &x.rot,
@@ -166,20 +169,52 @@ fn find_crossings(
         stack,
         box_cache,
         work,
-        |ta, tb| {
-            tests += 1;
-            let p = a.corners(ta);
-            let [q0, q1, q2] = b.corners(tb);
-            let q = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
-            if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
-                hits.push(Hit {
-                    ta,
-                    tb,
-                    s0,
-                    s1,
-                    plane_a: (a.face_normals[ta as usize], p[0]),
-                    plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
-                });
+        |leaf_a, leaf_b| {
+            // B's triangles of the leaf moved into A's frame once for all of A's.
+            let mut moved = [[Vector3::zeros(); 3]; LEAF_TRIANGLES];
+            for (m, &tb) in moved.iter_mut().zip(leaf_b) {
+                let [q0, q1, q2] = b.corners(tb);
+                *m = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
+            }
+            for &ta in leaf_a {
+                let p = a.corners(ta);
+                // The plane of `p` exactly as the triangle test forms it (same operations, so
+                // the same bits): a B triangle strictly on one side, beyond the test's own
+                // on-plane band `PLANE_EPS · scale · |n|`, is disjoint, and the test would say
+                // so; only the rest pay for it.
+                let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
+                let band = PLANE_EPS * scale;
+                let band_squared = band * band * n.norm_squared();
+                for (k, &tb) in leaf_b.iter().enumerate() {
+                    tests += 1;
+                    let q = if k < LEAF_TRIANGLES {
+                        moved[k]
+                    } else {
+                        let [q0, q1, q2] = b.corners(tb);
+                        [x.apply(&q0), x.apply(&q1), x.apply(&q2)]
+                    };
+                    let d = [
+                        n.dot(&(q[0] - p[0])),
+                        n.dot(&(q[1] - p[0])),
+                        n.dot(&(q[2] - p[0])),
+                    ];
+                    let one_side = (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0)
+                        || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0);
+                    let nearest = d[0].abs().min(d[1].abs()).min(d[2].abs());
+                    if one_side && nearest * nearest > band_squared {
+                        continue;
+                    }
+                    if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
+                        hits.push(Hit {
+                            ta,
+                            tb,
+                            s0,
+                            s1,
+                            plane_a: (a.face_normals[ta as usize], p[0]),
+                            plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
+                        });
+                    }
+                }
             }
         },
     );

@@ -50,10 +50,12 @@ impl FacetMesh {
             triangles,
             corner_normals,
         } = t;
-        let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(triangles.len() * 3);
+        let edge = |from: u32, to: u32| (u64::from(from) << 32) | u64::from(to);
+        let mut edges: HashMap<u64, u32, BuildEdgeHasher> =
+            HashMap::with_capacity_and_hasher(triangles.len() * 3, BuildEdgeHasher);
         for (i, tri) in triangles.iter().enumerate() {
             for k in 0..3 {
-                edges.insert((tri[k], tri[(k + 1) % 3]), i as u32);
+                edges.insert(edge(tri[k], tri[(k + 1) % 3]), i as u32);
             }
         }
         let neighbors = triangles
@@ -61,7 +63,7 @@ impl FacetMesh {
             .map(|tri| {
                 [0, 1, 2].map(|k| {
                     edges
-                        .get(&(tri[(k + 1) % 3], tri[k]))
+                        .get(&edge(tri[(k + 1) % 3], tri[k]))
                         .copied()
                         .unwrap_or(NO_NEIGHBOR)
                 })
@@ -274,6 +276,43 @@ impl FacetMesh {
             &Point3::from(c),
         )
         .coords
+    }
+}
+
+/// Hashes a directed edge `(from << 32) | to` with one multiply-xorshift round: the keys are
+/// small integers, not chosen by an adversary, and SipHash made the edge map a third of
+/// building a mesh. Lookups only: the neighbours do not depend on the hash.
+#[derive(Debug, Clone, Copy, Default)]
+struct BuildEdgeHasher;
+
+impl std::hash::BuildHasher for BuildEdgeHasher {
+    type Hasher = EdgeHasher;
+
+    fn build_hasher(&self) -> EdgeHasher {
+        EdgeHasher(0)
+    }
+}
+
+/// See [`BuildEdgeHasher`].
+#[derive(Debug, Clone, Copy)]
+struct EdgeHasher(u64);
+
+impl std::hash::Hasher for EdgeHasher {
+    fn finish(&self) -> u64 {
+        let mut z = self.0.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        z ^= z >> 29;
+        z = z.wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z ^ (z >> 32)
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = self.0.rotate_left(8) ^ u64::from(b);
+        }
+    }
+
+    fn write_u64(&mut self, n: u64) {
+        self.0 ^= n;
     }
 }
 

@@ -29,15 +29,22 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         }
         s.nodes[id].inside_corners = bits;
     }
+    // The other mesh's root box in each mesh's frame, as an axis-aligned box: the leak guard
+    // (one per side, not per seed).
+    let guards = [
+        aabb(&x.box_in_a(b.tree.root())),
+        aabb(&x.box_in_b(a.tree.root())),
+    ];
     for id in 0..crossing_count as u32 {
         let node = s.nodes[id as usize];
-        let (mesh, other) = if node.side == 0 { (a, b) } else { (b, a) };
-        // The other mesh's root box in this mesh's frame, as an axis-aligned box: the leak guard.
-        let guard = aabb(&if node.side == 0 {
-            x.box_in_a(other.tree.root())
-        } else {
-            x.box_in_b(other.tree.root())
-        });
+        let both_inside = |k: usize| {
+            node.inside_corners & (1 << k) != 0 && node.inside_corners & (1 << ((k + 1) % 3)) != 0
+        };
+        if !(both_inside(0) || both_inside(1) || both_inside(2)) {
+            // No edge to flood across: most crossing triangles, so skip the set-up.
+            continue;
+        }
+        let mesh = if node.side == 0 { a } else { b };
         // The seed's sums, side and apex stay local while it floods (its `inside` sums are
         // written only here, so the order of additions is unchanged).
         let Scratch {
@@ -50,7 +57,7 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         let side = node.side as usize;
         let mut flood = Flood {
             mesh,
-            guard,
+            guard: guards[side],
             apex: apex[side],
             seed: id,
             sums: nodes[id as usize].inside,
@@ -60,9 +67,7 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         };
         flood.queue.clear();
         for k in 0..3 {
-            let both_inside = node.inside_corners & (1 << k) != 0
-                && node.inside_corners & (1 << ((k + 1) % 3)) != 0;
-            if both_inside {
+            if both_inside(k) {
                 flood.visit(mesh.neighbors[node.tri as usize][k]);
             }
         }

@@ -187,26 +187,41 @@ fn partition(items: &mut [u32], left: impl Fn(&u32) -> bool) -> usize {
 }
 
 /// B's node boxes moved into A's frame, computed at most once per node per query (a node of B
-/// meets several nodes of A during a descent).
+/// meets several nodes of A during a descent). One entry per node holds the stamp, centre and
+/// axes side by side, so a lookup touches one place in memory rather than three arrays.
 #[derive(Debug, Default)]
 pub struct BoxCache {
-    stamp: Vec<u32>,
-    axes: Vec<Matrix3>,
-    center: Vec<Vector3>,
+    entries: Vec<CachedBox>,
     generation: u32,
+}
+
+/// One node's box in A's frame, valid for the generation in its stamp.
+#[derive(Debug, Clone, Copy)]
+struct CachedBox {
+    /// `2g − 1`: the centre is moved for generation `g`; `2g`: the axes too.
+    stamp: u32,
+    center: Vector3,
+    axes: Matrix3,
 }
 
 impl BoxCache {
     fn reset(&mut self, n: usize) {
-        if self.stamp.len() < n {
-            self.stamp.resize(n, 0);
-            self.axes.resize(n, Matrix3::zeros());
-            self.center.resize(n, Vector3::zeros());
+        if self.entries.len() < n {
+            self.entries.resize(
+                n,
+                CachedBox {
+                    stamp: 0,
+                    center: Vector3::zeros(),
+                    axes: Matrix3::zeros(),
+                },
+            );
         }
         // Stamps use 2g − 1 and 2g, so generations stay below 2³¹.
         self.generation += 1;
         if self.generation >= 1 << 31 {
-            self.stamp.fill(0);
+            for e in &mut self.entries {
+                e.stamp = 0;
+            }
             self.generation = 1;
         }
     }
@@ -229,62 +244,128 @@ pub fn descend_pair(
     work: &mut WorkCounters,
     mut on_pair: impl FnMut(u32, u32),
 ) {
+    descend_leaf_pairs(a, b, rot_ab, t_ab, stack, cache, work, |la, lb| {
+        for &ta in la {
+            for &tb in lb {
+                on_pair(ta, tb);
+            }
+        }
+    });
+}
+
+/// [`descend_pair`] by leaves: calls `on_leaves` with the triangles of each pair of leaves whose
+/// boxes overlap, in the same order, so a caller can share work between a leaf's pairs (moving
+/// B's triangles into A's frame once, A's plane once).
+#[expect(
+    clippy::too_many_arguments,
+    reason = "scratch buffers are passed in to avoid allocation"
+)]
+pub fn descend_leaf_pairs(
+    a: &ObbTree,
+    b: &ObbTree,
+    rot_ab: &Matrix3,
+    t_ab: &Vector3,
+    stack: &mut Vec<(u32, u32)>,
+    cache: &mut BoxCache,
+    work: &mut WorkCounters,
+    mut on_leaves: impl FnMut(&[u32], &[u32]),
+) {
     stack.clear();
     stack.push((0, 0));
     cache.reset(b.nodes.len());
+    // Stamp 2g − 1: centre moved into A's frame; 2g: axes too.
+    let (centre_done, axes_done) = (cache.generation * 2 - 1, cache.generation * 2);
     let mut tests = 0;
     while let Some((ia, ib)) = stack.pop() {
         let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
         tests += 1;
-        let k = ib as usize;
-        // Stamp 2g − 1: centre moved into A's frame; 2g: axes too.
-        let (centre_done, axes_done) = (cache.generation * 2 - 1, cache.generation * 2);
-        if cache.stamp[k] != centre_done && cache.stamp[k] != axes_done {
-            cache.stamp[k] = centre_done;
-            cache.center[k] = rot_ab * nb.obb.center + t_ab;
+        let e = &mut cache.entries[ib as usize];
+        if e.stamp != centre_done && e.stamp != axes_done {
+            e.stamp = centre_done;
+            e.center = rot_ab * nb.obb.center + t_ab;
         }
         // Bounding spheres first: one distance, and most far pairs end here.
         let reach = na.radius + nb.radius;
-        if (cache.center[k] - na.obb.center).norm_squared() > reach * reach {
+        if (e.center - na.obb.center).norm_squared() > reach * reach {
             continue;
         }
-        if cache.stamp[k] != axes_done {
-            cache.stamp[k] = axes_done;
-            cache.axes[k] = rot_ab * nb.obb.axes;
+        if e.stamp != axes_done {
+            e.stamp = axes_done;
+            e.axes = rot_ab * nb.obb.axes;
         }
         if !boxes_overlap_in_frame(
             &na.obb.axes,
             &na.obb.center,
             &na.obb.half_extents,
-            &cache.axes[k],
-            &cache.center[k],
+            &e.axes,
+            &e.center,
             &nb.obb.half_extents,
         ) {
             continue;
         }
         match (na.count > 0, nb.count > 0) {
-            (true, true) => {
-                for &ta in a.leaf_triangles(na) {
-                    for &tb in b.leaf_triangles(nb) {
-                        on_pair(ta, tb);
-                    }
+            (true, true) => on_leaves(a.leaf_triangles(na), b.leaf_triangles(nb)),
+            (false, true) => {
+                // As below: two internal children would each be split again against the leaf.
+                let (a1, a2) = (ia + 1, na.index);
+                let (n1, n2) = (&a.nodes[a1 as usize], &a.nodes[a2 as usize]);
+                if n1.count == 0 && n2.count == 0 {
+                    stack.extend_from_slice(&[
+                        (n2.index, ib),
+                        (a2 + 1, ib),
+                        (n1.index, ib),
+                        (a1 + 1, ib),
+                    ]);
+                } else {
+                    stack.push((a2, ib));
+                    stack.push((a1, ib));
                 }
             }
-            (false, true) => {
-                stack.push((na.index, ib));
-                stack.push((ia + 1, ib));
-            }
             (true, false) => {
-                stack.push((ia, nb.index));
-                stack.push((ia, ib + 1));
+                let (b1, b2) = (ib + 1, nb.index);
+                let (n1, n2) = (&b.nodes[b1 as usize], &b.nodes[b2 as usize]);
+                if n1.count == 0 && n2.count == 0 {
+                    stack.extend_from_slice(&[
+                        (ia, n2.index),
+                        (ia, b2 + 1),
+                        (ia, n1.index),
+                        (ia, b1 + 1),
+                    ]);
+                } else {
+                    stack.push((ia, b2));
+                    stack.push((ia, b1));
+                }
             }
             (false, false) => {
-                if na.obb.size() >= nb.obb.size() {
-                    stack.push((na.index, ib));
-                    stack.push((ia + 1, ib));
+                let (sa, sb) = (na.obb.size(), nb.obb.size());
+                // Left child `+ 1`, right child `index`; pushed right first so the left pops
+                // first.
+                let (a1, a2, b1, b2) = (ia + 1, na.index, ib + 1, nb.index);
+                // When the node split here has two children that the rule would each pair
+                // with the other node's children next, the four grandchild pairs are pushed at
+                // once, in the order the two steps would pop them: near the leaves most pairs
+                // pass, and skipping the middle test of such a pair saves more than the pairs
+                // it would have pruned cost.
+                let splits_b_next = |c: u32| {
+                    let n = &a.nodes[c as usize];
+                    n.count > 0 || n.obb.size() < sb
+                };
+                let splits_a_next = |c: u32| {
+                    let n = &b.nodes[c as usize];
+                    n.count > 0 || sa >= n.obb.size()
+                };
+                if sa >= sb {
+                    if splits_b_next(a1) && splits_b_next(a2) {
+                        stack.extend_from_slice(&[(a2, b2), (a2, b1), (a1, b2), (a1, b1)]);
+                    } else {
+                        stack.push((a2, ib));
+                        stack.push((a1, ib));
+                    }
+                } else if splits_a_next(b1) && splits_a_next(b2) {
+                    stack.extend_from_slice(&[(a2, b2), (a1, b2), (a2, b1), (a1, b1)]);
                 } else {
-                    stack.push((ia, nb.index));
-                    stack.push((ia, ib + 1));
+                    stack.push((ia, b2));
+                    stack.push((ia, b1));
                 }
             }
         }
