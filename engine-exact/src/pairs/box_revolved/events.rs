@@ -23,6 +23,9 @@
 //! round-off; a root pair closer than round-off (an edge touching the surface) shows no sign
 //! change and is dropped: its slices' overlap is itself round-off.
 
+use super::{FLAT, MAX_CUTS, Profile, Setup};
+use contact_core::Vector3;
+
 /// `p(x) = Σ c[k] x^k`.
 fn eval(c: &[f64], x: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &ck| acc * x + ck)
@@ -110,6 +113,111 @@ pub(crate) fn roots_in(c: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize) {
         }
     }
     (out, n)
+}
+
+impl Setup {
+    /// The quadrature's cuts inside `[lo, hi]` (see [`events`]), sorted, near-duplicates
+    /// dropped; how many.
+    pub(super) fn cuts(&self, lo: f64, hi: f64) -> ([f64; MAX_CUTS], usize) {
+        let mut cuts = [0.0; MAX_CUTS];
+        cuts[0] = lo;
+        cuts[1] = hi;
+        let mut n = 2;
+        let mut push = |t: f64, cuts: &mut [f64; MAX_CUTS]| {
+            if t > lo && t < hi && n < MAX_CUTS {
+                cuts[n] = t;
+                n += 1;
+            }
+        };
+        for c in &self.corners {
+            push(c.z, &mut cuts);
+        }
+        for (n_f, d) in &self.faces {
+            let g = n_f.x.hypot(n_f.y);
+            if g <= FLAT {
+                continue;
+            }
+            let (e0, e1) = (d / g, -n_f.z / g);
+            match self.profile {
+                Profile::Frustum { r0, slope, .. } => {
+                    for sigma in [1.0, -1.0] {
+                        let denominator = e1 - sigma * slope;
+                        if denominator != 0.0 {
+                            push((sigma * r0 - e0) / denominator, &mut cuts);
+                        }
+                    }
+                }
+                Profile::Torus { big, small } => {
+                    for sigma in [1.0, -1.0] {
+                        let e = e0 - sigma * big;
+                        let c = [e * e - small * small, 2.0 * e1 * e, e1 * e1 + 1.0, 0.0, 0.0];
+                        let (roots, count) = roots_in(&c, lo, hi);
+                        for &t in &roots[..count] {
+                            push(t, &mut cuts);
+                        }
+                    }
+                }
+            }
+        }
+        for k in 0..3 {
+            for (v, start) in self.corners.iter().enumerate() {
+                if v & (1 << k) != 0 {
+                    continue;
+                }
+                let d = self.corners[v | (1 << k)] - start;
+                if d.z == 0.0 {
+                    continue;
+                }
+                let c = self.piercing(start, &d);
+                let (roots, count) = roots_in(&c, 0.0, 1.0);
+                for &s in &roots[..count] {
+                    push(start.z + s * d.z, &mut cuts);
+                }
+            }
+        }
+        cuts[..n].sort_by(f64::total_cmp);
+        let mut unique = 1;
+        for k in 1..n {
+            if cuts[k] > cuts[unique - 1] + 1e-14 * (hi - lo) {
+                cuts[unique] = cuts[k];
+                unique += 1;
+            }
+        }
+        // The last cut is `hi` itself (a cut just below it was merged into it).
+        cuts[unique - 1] = hi;
+        (cuts, unique)
+    }
+
+    /// The polynomial in `s` whose roots are where the edge `start + s·d` crosses the solid's
+    /// surface (coefficients of `s^k`).
+    fn piercing(&self, start: &Vector3, d: &Vector3) -> [f64; 5] {
+        let (pxy, dxy) = (start.xy(), d.xy());
+        match self.profile {
+            Profile::Frustum { r0, slope, .. } => {
+                let (q0, q1) = (r0 + slope * start.z, slope * d.z);
+                [
+                    pxy.norm_squared() - q0 * q0,
+                    2.0 * (pxy.dot(&dxy) - q0 * q1),
+                    dxy.norm_squared() - q1 * q1,
+                    0.0,
+                    0.0,
+                ]
+            }
+            Profile::Torus { big, small } => {
+                let (a, b) = (d.norm_squared(), 2.0 * start.dot(d));
+                let c = start.norm_squared() + big * big - small * small;
+                let (a2, b2, c2) = (dxy.norm_squared(), 2.0 * pxy.dot(&dxy), pxy.norm_squared());
+                let four = 4.0 * big * big;
+                [
+                    c * c - four * c2,
+                    2.0 * b * c - four * b2,
+                    b * b + 2.0 * a * c - four * a2,
+                    2.0 * a * b,
+                    a * a,
+                ]
+            }
+        }
+    }
 }
 
 #[cfg(test)]
