@@ -6,8 +6,10 @@
 //! into a reused buffer) and `parry` (`parry3d_f64::query::contact` on pre-built shapes, pose
 //! composition included). Before timing, each group prints both answers' depth against the
 //! closed form, so speed and accuracy are read together. Inputs are fixed configurations.
-//! Parry has no ellipsoid shape, so the general-ellipsoid groups (`ellipsoid_ellipsoid`,
-//! `ellipsoid_box`, `ellipsoid_cylinder`) time the exact engine alone.
+//! Parry has no ellipsoid, frustum, torus or bounded plane, so the general-ellipsoid groups
+//! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_bounded_plane`)
+//! and the box–frustum, box–torus and frustum/torus–bounded-plane groups time the exact
+//! engine alone.
 
 #![expect(
     missing_docs,
@@ -205,6 +207,65 @@ fn cases() -> Vec<Case> {
             pose_i: Isometry3::translation(-1.0, 0.0, 1.3),
             pose_j: Isometry3::identity(),
             depth: Some(0.2),
+        },
+        // The box's top face at z = 0.4 across an upright frustum, its other faces out of
+        // reach: δ = 0.4 along the axis.
+        Case {
+            name: "box_frustum",
+            i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
+            j: cube(2.0),
+            pose_i: Isometry3::identity(),
+            pose_j: Isometry3::translation(0.1, 0.0, -1.6),
+            depth: Some(0.4),
+        },
+        Case {
+            name: "box_frustum_tilted",
+            i: cube(0.5),
+            j: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.2, 0.7), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "box_torus",
+            i: cube(0.4),
+            j: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(1.0, 0.2, 0.5), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        // A slab through the ring: two regions.
+        Case {
+            name: "box_torus_two_regions",
+            i: Geometry::Cuboid(Cuboid::centered(0.3, 2.0, 1.0).unwrap()),
+            j: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-0.1, 0.0, 0.2), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "frustum_bounded_plane",
+            i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "torus_bounded_plane",
+            i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_bounded_plane",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
         },
         Case {
             name: "circle_curve",

@@ -24,6 +24,9 @@
 //! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
 //! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
 //! | cylinder–plane (bounded) | the same slicing against the plane's prism, [`crate::pairs::cylinder_solid`] | plane |
+//! | box–frustum, box–torus | slicing across the solid's axis: disc (annulus) ∩ convex polygon sections in closed form, quadrature cut at closed-form events (corner heights, tangencies, edge piercings; a torus in the angle of `t = ρ sin θ`), one contact per region (a torus' regions by azimuth), `crate::pairs::box_revolved` | none |
+//! | frustum–plane, torus–plane (bounded) | the box–frustum/torus slicing on the plane's prism cut to a box about the solid, `crate::pairs::box_revolved` | plane |
+//! | ellipsoid–plane (bounded, general) | the ellipsoid–box slicing on the plane's prism cut to a box about the ellipsoid, [`crate::pairs::ellipsoid_box`] | plane |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
@@ -38,11 +41,12 @@
 //! shrinks to the touching point; touching alone is no contact).
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against frustums, tori, meshes and bounded planes, the other cylinder, frustum and torus pairs (solid–solid), the
-//! other mesh pairs (mesh–mesh included: the polyhedral intersection is not built), curved
-//! solids other than spheres and cylinders on a *bounded* plane and circles on a bounded line are not built
-//! yet; point–point, plane–plane and line–line are not
-//! contacts; 2-D against 3-D is refused (SPEC §3).
+//! ellipsoids against frustums, tori and meshes; cylinder–frustum, cylinder–torus,
+//! frustum–frustum, frustum–torus and torus–torus; the mesh pairs other than sphere–mesh
+//! and mesh against an unbounded plane (mesh–box, mesh–bounded plane, mesh against a curved
+//! solid, mesh–mesh: the polyhedral intersection is not built); circles on a bounded line are
+//! not built yet; point–point, plane–plane and line–line are not contacts; 2-D against 3-D is
+//! refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
@@ -66,7 +70,8 @@ pub(crate) struct Selected {
 
 /// The reasons given for pairs not built yet, shared so messages stay consistent.
 const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
-const NOT_BUILT_BOUNDED: &str = "a curved solid other than a sphere against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
+const NOT_BUILT_BOUNDED: &str = "a mesh against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
+const NOT_BUILT_LINE: &str = "a circle against a bounded 2-D PLANE is not built in the exact engine yet; use an unbounded line or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
@@ -169,13 +174,9 @@ pub(crate) fn select(
                 _ => Err(no(FLIP_NOT_BUILT)),
             }
         }
-        (G::Ellipsoid(e), G::Plane(p)) => ellipsoid_plane(e, flip_a, p, flip_b).ok_or_else(|| {
-            no(if flip_a {
-                FLIP_NOT_BUILT
-            } else {
-                NOT_BUILT_BOUNDED
-            })
-        }),
+        (G::Ellipsoid(e), G::Plane(p)) => {
+            ellipsoid_plane(e, flip_a, p, flip_b).ok_or_else(|| no(FLIP_NOT_BUILT))
+        }
         (G::Cylinder(cylinder), G::Plane(p)) => {
             if p.is_unbounded() {
                 no_flip(
@@ -213,7 +214,14 @@ pub(crate) fn select(
                     },
                 )
             } else {
-                Err(no(NOT_BUILT_BOUNDED))
+                no_flip(
+                    flip_a,
+                    Kernel::RevolvedBoundedPlane {
+                        solid,
+                        plane: *p,
+                        side: side(flip_b),
+                    },
+                )
             }
         }
         (G::Cuboid(a_box), G::Cuboid(b_box)) => no_flip(
@@ -290,8 +298,32 @@ pub(crate) fn select(
                 },
             )
         }
+        (G::Cuboid(cuboid), G::Frustum(_) | G::Torus(_)) => {
+            let solid = match b {
+                G::Frustum(f) => Solid::Frustum(*f),
+                G::Torus(t) => Solid::Torus(*t),
+                // Only frustums and tori reach here (the arm's patterns).
+                G::Ellipsoid(_)
+                | G::Cylinder(_)
+                | G::Cuboid(_)
+                | G::Mesh(_)
+                | G::Plane(_)
+                | G::Point
+                | G::Line(_)
+                | G::Circle(_)
+                | G::Arc(_)
+                | G::Curve(_) => return Err(no(NOT_BUILT)),
+            };
+            no_flip(
+                flip_a || flip_b,
+                Kernel::BoxRevolved {
+                    cuboid: *cuboid,
+                    solid,
+                },
+            )
+        }
         (G::Cylinder(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
-        | (G::Cuboid(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
+        | (G::Cuboid(_), G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Torus(_), G::Torus(_) | G::Mesh(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
@@ -344,7 +376,7 @@ pub(crate) fn select(
         (G::Circle(c), G::Line(line)) => {
             let [x0, x1] = line.x_range();
             if x0.is_finite() || x1.is_finite() {
-                Err(no(NOT_BUILT_BOUNDED))
+                Err(no(NOT_BUILT_LINE))
             } else {
                 no_flip(
                     flip_a,
@@ -488,19 +520,26 @@ fn general_ellipsoid_solid(
     }
 }
 
+/// An ellipsoid (sphere or general) against a plane (bounded or not); `None` when the
+/// ellipsoid is flipped.
 fn ellipsoid_plane(e: &Ellipsoid, flip_e: bool, p: &Plane, flip_p: bool) -> Option<Selected> {
     if flip_e {
         return None;
     }
     let side = if flip_p { -1.0 } else { 1.0 };
     if !p.is_unbounded() {
-        return e.sphere_radius().map(|radius| {
-            canonical(Kernel::SphereBoundedPlane {
+        return Some(canonical(match e.sphere_radius() {
+            Some(radius) => Kernel::SphereBoundedPlane {
                 radius,
                 plane: *p,
                 side,
-            })
-        });
+            },
+            None => Kernel::EllipsoidBoundedPlane {
+                semi_axes: e.semi_axes(),
+                plane: *p,
+                side,
+            },
+        }));
     }
     Some(canonical(match e.sphere_radius() {
         Some(radius) => Kernel::SpherePlane { radius, side },

@@ -109,6 +109,25 @@ pub(crate) enum Kernel {
     },
     /// Two boxes.
     BoxBox { a: Cuboid, b: Cuboid },
+    /// Box `a` against a frustum or torus `b` (sliced across `b`'s axis): one contact per
+    /// region.
+    BoxRevolved {
+        cuboid: Cuboid,
+        solid: pairs::sphere_solid::Solid,
+    },
+    /// Frustum or torus `a` against a bounded plane `b` (the box pair on the plane's prism).
+    RevolvedBoundedPlane {
+        solid: pairs::sphere_solid::Solid,
+        plane: Plane,
+        side: f64,
+    },
+    /// General ellipsoid `a` against a bounded plane `b` (the ellipsoid–box pair on the
+    /// plane's prism cut to a box about the ellipsoid).
+    EllipsoidBoundedPlane {
+        semi_axes: Vector3,
+        plane: Plane,
+        side: f64,
+    },
     /// 2-D point `a` against line `b`.
     PointLine { line: Line, side: f64 },
     /// 2-D point `a` against solid circle `b` (or a circular hole when `hole`).
@@ -164,12 +183,36 @@ impl Kernel {
         emit: &mut dyn FnMut(PairContact),
     ) -> Result<(), PairError> {
         work.primitive_tests += 1;
+        // The kernels that may find several regions emit each themselves.
         if let Self::MeshPlane { mesh, side } = self {
             pairs::mesh_plane::contacts(mesh, pose_a, pose_b, *side, work, emit);
             return Ok(());
         }
+        if let Self::BoxRevolved { cuboid, solid } = self {
+            pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
+            return Ok(());
+        }
+        if let Self::RevolvedBoundedPlane { solid, plane, side } = self {
+            pairs::box_revolved::bounded_plane_contacts(
+                solid, pose_a, plane, *side, pose_b, work, emit,
+            );
+            return Ok(());
+        }
         let found = match *self {
-            Self::MeshPlane { .. } => None,
+            Self::MeshPlane { .. }
+            | Self::BoxRevolved { .. }
+            | Self::RevolvedBoundedPlane { .. } => None,
+            Self::EllipsoidBoundedPlane {
+                semi_axes,
+                ref plane,
+                side,
+            } => {
+                let centre = contact_core::Point3::from(pose_a.translation.vector);
+                pairs::bounded_plane::local_box(plane, side, pose_b, &centre, semi_axes.max())
+                    .and_then(|(cuboid, pose_box)| {
+                        pairs::ellipsoid_box::contact(&semi_axes, pose_a, &cuboid, &pose_box, work)
+                    })
+            }
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
             }

@@ -13,9 +13,11 @@
 pub mod bounded_plane;
 pub mod box_box;
 pub mod box_plane;
+pub(crate) mod box_revolved;
 pub mod clipped;
 pub mod cylinder_plane;
 pub mod cylinder_solid;
+pub(crate) mod disc_section;
 pub mod ellipsoid_box;
 pub mod ellipsoid_cylinder;
 pub mod ellipsoid_ellipsoid;

@@ -94,6 +94,16 @@ impl Polygon {
         self.count = n;
     }
 
+    /// The vertices, counter-clockwise.
+    pub fn vertices(&self) -> &[Vector2] {
+        &self.vertices[..self.count]
+    }
+
+    /// Each edge's label (edge `k` runs from vertex `k` to `k + 1`).
+    pub fn labels(&self) -> &[u8] {
+        &self.labels[..self.count]
+    }
+
     /// Area (about the first vertex, so a sliver far from the origin keeps its precision).
     pub fn area(&self) -> f64 {
         if self.count < 3 {

@@ -67,6 +67,20 @@ pub(crate) fn contact(
     exit_b: impl Fn(&Point3, &Vector3) -> Point3,
     fallback_normal: impl FnOnce() -> Vector3,
 ) -> Option<PairContact> {
+    contact_of_region(m, exit_a, exit_b, fallback_normal, true)
+}
+
+/// [`contact`] for a region that may not be convex (`convex` false: a torus' region), whose
+/// depth along the normal may exceed the convex chord bound `3V/|S|` (a flat torus' region
+/// has its centroid in the hole and takes its points as the closest ones), so the
+/// [`unresolved_lens`] test, which rests on that bound, is not applied.
+pub(crate) fn contact_of_region(
+    m: &VolumeMoments,
+    exit_a: impl Fn(&Point3, &Vector3) -> Point3,
+    exit_b: impl Fn(&Point3, &Vector3) -> Point3,
+    fallback_normal: impl FnOnce() -> Vector3,
+    convex: bool,
+) -> Option<PairContact> {
     if m.volume.is_nan() || m.volume <= 0.0 || !m.centroid.coords.iter().all(|c| c.is_finite()) {
         return None;
     }
@@ -89,7 +103,7 @@ pub(crate) fn contact(
     if depth.is_nan() || depth <= 0.0 {
         return None;
     }
-    if !enclosed && unresolved_lens(m.volume, s_norm, depth, m.length) {
+    if convex && !enclosed && unresolved_lens(m.volume, s_norm, depth, m.length) {
         return None;
     }
     Some(PairContact {

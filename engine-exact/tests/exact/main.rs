@@ -11,10 +11,13 @@
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
 //! - [`degenerate_sliced`]: the same for the sliced cylinder pairs;
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
+//! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
+//!   invariants, separate regions, degenerate branches;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
 
 mod bounded_plane;
+mod box_revolved;
 mod characterization;
 mod common;
 mod degenerate;

@@ -56,7 +56,12 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 37] = [
+const BUILT: [(&str, &str); 42] = [
+    ("box", "frustum"),
+    ("box", "torus"),
+    ("frustum", "bounded plane"),
+    ("torus", "bounded plane"),
+    ("ellipsoid", "bounded plane"),
     ("sphere", "bounded plane"),
     ("cylinder", "cylinder"),
     ("cylinder", "box"),
@@ -149,8 +154,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 36 distinct pairs, 29 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 29);
+    // 41 distinct pairs, 34 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 34);
 }
 
 #[test]

@@ -17,7 +17,7 @@ fn plane() -> contact_core::GeometryInstance {
 
 /// The lowest point along world z of the solid turned by `q` (solid frame at the origin), by
 /// dense sampling of its rims (a frustum) or its tube (a torus), and the highest.
-fn extent_z(solid: &Revolved, q: &UnitQuaternion) -> (f64, f64) {
+pub(super) fn extent_z(solid: &Revolved, q: &UnitQuaternion) -> (f64, f64) {
     let mut range = (f64::INFINITY, f64::NEG_INFINITY);
     for i in 0..720 {
         let phi = i as f64 * std::f64::consts::TAU / 720.0;
@@ -42,7 +42,7 @@ fn extent_z(solid: &Revolved, q: &UnitQuaternion) -> (f64, f64) {
     range
 }
 
-fn geometry(solid: &Revolved) -> Geometry {
+pub(super) fn geometry(solid: &Revolved) -> Geometry {
     match *solid {
         Revolved::Frustum { r0, r1, len } => Geometry::Frustum(Frustum::new(r0, r1, len).unwrap()),
         Revolved::Torus { big, small } => Geometry::Torus(Torus::new(big, small).unwrap()),
@@ -64,7 +64,7 @@ fn tilted(rng: &mut Rng, solid: Revolved, q: UnitQuaternion, size: f64) -> Optio
     })
 }
 
-fn random_frustum(rng: &mut Rng) -> Revolved {
+pub(super) fn random_frustum(rng: &mut Rng) -> Revolved {
     Revolved::Frustum {
         r0: rng.uniform(0.0, 1.5),
         r1: rng.uniform(0.3, 1.5),
@@ -72,7 +72,7 @@ fn random_frustum(rng: &mut Rng) -> Revolved {
     }
 }
 
-fn random_torus(rng: &mut Rng) -> Revolved {
+pub(super) fn random_torus(rng: &mut Rng) -> Revolved {
     let big = rng.uniform(0.8, 2.0);
     Revolved::Torus {
         big,
@@ -80,7 +80,7 @@ fn random_torus(rng: &mut Rng) -> Revolved {
     }
 }
 
-fn size(solid: &Revolved) -> f64 {
+pub(super) fn size(solid: &Revolved) -> f64 {
     match *solid {
         Revolved::Frustum { r0, r1, len } => r0.max(r1).max(len),
         Revolved::Torus { big, small } => big + small,
