@@ -174,13 +174,13 @@ impl Kernel {
     /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`),
     /// handing each contact to `emit`. `length` is the pair's length scale (for the 2-D
     /// in-plane tolerance).
-    pub fn evaluate(
+    pub fn evaluate<E: FnMut(PairContact)>(
         &self,
         pose_a: &Isometry3,
         pose_b: &Isometry3,
         length: f64,
         work: &mut WorkCounters,
-        emit: &mut dyn FnMut(PairContact),
+        emit: &mut E,
     ) -> Result<(), PairError> {
         work.primitive_tests += 1;
         // The kernels that may find several regions emit each themselves.

@@ -111,13 +111,20 @@ impl PreparedPair for PreparedExact {
             let composed_b = e.pose_part_second.map(|p| pose_second * p);
             let pose_a = composed_a.as_ref().unwrap_or(pose_first);
             let pose_b = composed_b.as_ref().unwrap_or(pose_second);
+            // The contact is built in place, swapped by choosing its fields: a swapped copy
+            // of the kernel's answer first would be read back before its stores retire.
+            let swap = e.swap;
             let mut emit = |c: PairContact| {
-                let c = if e.swap { c.swapped() } else { c };
                 work_contacts += 1;
+                let (point_i_w, point_j_w, normal_w) = if swap {
+                    (c.point_b, c.point_a, -c.normal)
+                } else {
+                    (c.point_a, c.point_b, c.normal)
+                };
                 contacts.push(Contact {
-                    point_i_w: c.point_a,
-                    point_j_w: c.point_b,
-                    normal_w: c.normal,
+                    point_i_w,
+                    point_j_w,
+                    normal_w,
                     penetration: c.depth,
                     area: c.area,
                     geometry_i: e.geometry_i,
