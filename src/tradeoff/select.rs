@@ -74,7 +74,9 @@ pub fn select(records: &[TradeRecord], contact: &str, max_depth_error: f64) -> O
 }
 
 /// The engine and tolerance meeting the target on every contact in `contacts` at the least
-/// total time; `None` when no single setting meets it everywhere.
+/// total time; `None` when no single setting meets it everywhere. As in [`select`], an engine
+/// with tolerances is a candidate only at its smallest tolerance meeting the target
+/// everywhere (a finer tolerance never costs less), so timing noise never picks a finer one.
 pub fn select_model(
     records: &[TradeRecord],
     contacts: &[String],
@@ -90,7 +92,7 @@ pub fn select_model(
             .then(a.1.unwrap_or(0.0).total_cmp(&b.1.unwrap_or(0.0)))
     });
     settings.dedup();
-    settings
+    let mut candidates = settings
         .into_iter()
         .filter_map(|(engine, tolerance)| {
             let rows: Vec<&TradeRecord> = contacts
@@ -113,6 +115,12 @@ pub fn select_model(
                     .fold(0.0, f64::max),
             })
         })
+        .collect::<Vec<_>>();
+    // Sorted by engine, then tolerance: the first complete setting of each engine is its
+    // smallest sufficient tolerance.
+    candidates.dedup_by(|later, first| later.engine == first.engine);
+    candidates
+        .into_iter()
         .min_by(|a, b| a.total_query_ns.total_cmp(&b.total_query_ns))
 }
 
@@ -274,6 +282,18 @@ mod tests {
             ("faceted", Some(300.0))
         );
         assert_eq!(model.total_query_ns, 1500.0);
+        // A finer tolerance measured faster (timing noise) is not taken for the model.
+        let noisy = vec![
+            row("m", "exact", None, 1e-12, 90_000.0),
+            row("m", "faceted", Some(100.0), 4e-3, 900.0),
+            row("m", "faceted", Some(300.0), 2e-3, 600.0),
+        ];
+        let model = select_model(&noisy, &["m".into()], 0.01).unwrap();
+        assert_eq!(model.faceting_tolerance, Some(100.0));
+        assert_eq!(
+            select(&noisy, "m", 0.01).unwrap().faceting_tolerance,
+            Some(100.0)
+        );
     }
 
     #[test]
