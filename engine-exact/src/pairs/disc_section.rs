@@ -30,24 +30,48 @@ pub(crate) struct DiscSection {
     pub lengths: [f64; MAX_LABELS],
 }
 
-fn cross(a: &Vector2, b: &Vector2) -> f64 {
-    a.x * b.y - a.y * b.x
+/// One piece of the signed decomposition of the unit disc and a polygon (see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Piece {
+    /// Edge `edge` starts: how many times it crosses the circle, and whether its start
+    /// vertex lies inside the disc.
+    Edge {
+        /// The edge's index (from vertex `edge` to `edge + 1`).
+        edge: usize,
+        /// Crossings with the circle strictly inside the edge (0 to 2).
+        crossings: usize,
+        /// Whether the edge's first vertex lies strictly inside the disc.
+        starts_inside: bool,
+    },
+    /// A stretch `a → e` of edge `edge` inside the disc: the triangle `(0, a, e)`.
+    Chord {
+        /// The edge's index.
+        edge: usize,
+        /// Start of the stretch.
+        a: Vector2,
+        /// End of the stretch.
+        e: Vector2,
+    },
+    /// A stretch outside the disc: the sector of the circle from angle `start` over `sweep`
+    /// (signed, `|sweep| < π`).
+    Arc {
+        /// Start angle.
+        start: f64,
+        /// Signed angle swept.
+        sweep: f64,
+    },
 }
 
-/// The overlap of the disc `|p| ≤ radius` with the counter-clockwise polygon `vertices`,
-/// edge `k` (from vertex `k` to `k + 1`) labelled `labels[k]`. Empty for `radius ≤ 0` or
-/// fewer than three vertices.
-pub(crate) fn disc_section(radius: f64, vertices: &[Vector2], labels: &[u8]) -> DiscSection {
-    let mut out = DiscSection::default();
-    if radius.is_nan() || radius <= 0.0 || vertices.len() < 3 {
-        return out;
-    }
-    let inv = 1.0 / radius;
+/// The signed decomposition of the unit disc against the polygon `vertices` multiplied by
+/// `scale` (so a disc of radius `1/scale` is seen as the unit disc): every edge's
+/// crossings with the circle (a quadratic, solved without cancellation), then its stretches
+/// inside the disc as chords and outside as arcs, in order. One walk shared by the overlaps
+/// that need different sums of the same pieces.
+pub(crate) fn unit_disc_pieces(vertices: &[Vector2], scale: f64, piece: &mut impl FnMut(Piece)) {
     let n = vertices.len();
-    for k in 0..n {
-        let p = vertices[k] * inv;
-        let q = vertices[(k + 1) % n] * inv;
-        let d = q - p;
+    for (edge, v) in vertices.iter().enumerate() {
+        let p = v * scale;
+        let d = vertices[(edge + 1) % n] * scale - p;
         let dd = d.norm_squared();
         if dd == 0.0 {
             continue;
@@ -73,8 +97,12 @@ pub(crate) fn disc_section(radius: f64, vertices: &[Vector2], labels: &[u8]) -> 
                 }
             }
         }
+        piece(Piece::Edge {
+            edge,
+            crossings: m - 1,
+            starts_inside: c < 0.0,
+        });
         cuts[m] = 1.0;
-        let label = labels.get(k).copied().unwrap_or(u8::MAX) as usize;
         for span in cuts[..=m].windows(2) {
             if span[1] <= span[0] {
                 continue;
@@ -83,29 +111,53 @@ pub(crate) fn disc_section(radius: f64, vertices: &[Vector2], labels: &[u8]) -> 
             let e = p + span[1] * d;
             let mid = p + 0.5 * (span[0] + span[1]) * d;
             if mid.norm_squared() < 1.0 {
-                let twice = cross(&a, &e);
-                out.area += 0.5 * twice;
-                out.moment += (a + e) * (twice / 6.0);
-                if let Some(l) = out.lengths.get_mut(label) {
-                    *l += (e - a).norm();
-                }
+                piece(Piece::Chord { edge, a, e });
             } else {
                 let (a_hat, e_hat) = (a.normalize(), e.normalize());
                 let sweep = cross(&a_hat, &e_hat).atan2(a_hat.dot(&e_hat));
-                if !sweep.is_finite() {
-                    continue;
+                if sweep.is_finite() {
+                    let start = a_hat.y.atan2(a_hat.x);
+                    piece(Piece::Arc { start, sweep });
                 }
-                let start = a_hat.y.atan2(a_hat.x);
-                let end = start + sweep;
-                let (s0, c0) = start.sin_cos();
-                let (s1, c1) = end.sin_cos();
-                out.area += 0.5 * sweep;
-                out.moment += Vector2::new(s1 - s0, c0 - c1) / 3.0;
-                out.normal_integral += Vector2::new(s1 - s0, c0 - c1);
-                out.angle += sweep;
             }
         }
     }
+}
+
+/// `a × b`, the 2-D cross product.
+pub(crate) fn cross(a: &Vector2, b: &Vector2) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The overlap of the disc `|p| ≤ radius` with the counter-clockwise polygon `vertices`,
+/// edge `k` (from vertex `k` to `k + 1`) labelled `labels[k]`. Empty for `radius ≤ 0` or
+/// fewer than three vertices.
+pub(crate) fn disc_section(radius: f64, vertices: &[Vector2], labels: &[u8]) -> DiscSection {
+    let mut out = DiscSection::default();
+    if radius.is_nan() || radius <= 0.0 || vertices.len() < 3 {
+        return out;
+    }
+    unit_disc_pieces(vertices, 1.0 / radius, &mut |piece| match piece {
+        Piece::Edge { .. } => {}
+        Piece::Chord { edge, a, e } => {
+            let twice = cross(&a, &e);
+            out.area += 0.5 * twice;
+            out.moment += (a + e) * (twice / 6.0);
+            let label = labels.get(edge).copied().unwrap_or(u8::MAX) as usize;
+            if let Some(l) = out.lengths.get_mut(label) {
+                *l += (e - a).norm();
+            }
+        }
+        Piece::Arc { start, sweep } => {
+            let end = start + sweep;
+            let (s0, c0) = start.sin_cos();
+            let (s1, c1) = end.sin_cos();
+            out.area += 0.5 * sweep;
+            out.moment += Vector2::new(s1 - s0, c0 - c1) / 3.0;
+            out.normal_integral += Vector2::new(s1 - s0, c0 - c1);
+            out.angle += sweep;
+        }
+    });
     let r2 = radius * radius;
     out.area *= r2;
     out.moment *= r2 * radius;

@@ -27,6 +27,7 @@
 //! Green's theorem: area `½∮(x dy − y dx)`, moments `⅓∮x(x dy − y dx)` and `⅓∮y(x dy − y dx)`;
 //! on arcs of ellipses these are trigonometric polynomials of degree 2, integrated exactly.
 
+use crate::pairs::disc_section::{Piece, cross, unit_disc_pieces};
 use nalgebra::{Complex, Matrix2, Matrix4, Schur, Vector2};
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
@@ -88,10 +89,6 @@ pub(crate) struct DiscOverlap {
     pub shape: usize,
 }
 
-fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
 fn on_circle(theta: f64) -> Vector2<f64> {
     Vector2::new(theta.cos(), theta.sin())
 }
@@ -147,56 +144,20 @@ pub(crate) fn trig_product_integral(c: &[f64; 3], d: &[f64; 3], f0: f64, f1: f64
 /// Edge lengths inside the disc are measured after `map` (the map back to the slice plane).
 pub(crate) fn disc_polygon(vertices: &[Vector2<f64>], map: &Matrix2<f64>) -> DiscOverlap {
     let mut out = DiscOverlap::default();
-    for (k, p) in vertices.iter().enumerate() {
-        let q = vertices[(k + 1) % vertices.len()];
-        let d = q - p;
-        let dd = d.norm_squared();
-        if dd == 0.0 {
-            continue;
+    unit_disc_pieces(vertices, 1.0, &mut |piece| match piece {
+        Piece::Edge {
+            crossings,
+            starts_inside,
+            ..
+        } => out.shape += crossings + if starts_inside { 16 } else { 0 },
+        Piece::Chord { a, e, .. } => {
+            let twice = cross(&a, &e);
+            out.area += 0.5 * twice;
+            out.moment += (a + e) * (twice / 6.0);
+            out.other_length += (map * (e - a)).norm();
         }
-        // |p + λ d|² = 1: dd λ² + 2 b λ + c = 0.
-        let b = p.dot(&d);
-        let c = p.norm_squared() - 1.0;
-        let disc = b * b - dd * c;
-        let mut cuts = [0.0, 1.0, 1.0, 1.0];
-        let mut n = 1;
-        if disc > 0.0 {
-            let q_root = -(b + b.signum() * disc.sqrt());
-            let mut roots = if q_root != 0.0 {
-                [q_root / dd, c / q_root]
-            } else {
-                [0.0, 0.0]
-            };
-            roots.sort_by(f64::total_cmp);
-            for r in roots {
-                if r > 0.0 && r < 1.0 {
-                    cuts[n] = r;
-                    n += 1;
-                }
-            }
-        }
-        out.shape += (n - 1) + if p.norm_squared() < 1.0 { 16 } else { 0 };
-        cuts[n] = 1.0;
-        for span in cuts[..=n].windows(2) {
-            if span[1] <= span[0] {
-                continue;
-            }
-            let a = p + span[0] * d;
-            let e = p + span[1] * d;
-            let mid = p + 0.5 * (span[0] + span[1]) * d;
-            if mid.norm_squared() < 1.0 {
-                let twice = cross(&a, &e);
-                out.area += 0.5 * twice;
-                out.moment += (a + e) * (twice / 6.0);
-                out.other_length += (map * (e - a)).norm();
-            } else {
-                let (a_hat, e_hat) = (a.normalize(), e.normalize());
-                let sweep = cross(&a_hat, &e_hat).atan2(a_hat.dot(&e_hat));
-                let start = a_hat.y.atan2(a_hat.x);
-                out.add_circle_arc(start, start + sweep);
-            }
-        }
-    }
+        Piece::Arc { start, sweep } => out.add_circle_arc(start, start + sweep),
+    });
     out
 }
 
