@@ -79,6 +79,25 @@ const CURVE_KNOTS: &str =
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
 const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
+/// The convex solids the sphere, box–revolved and revolved–plane kernels take, `None` for
+/// every other kind (an exhaustive match: a new kind must say whether it is one).
+fn solid_of(g: &Geometry) -> Option<Solid> {
+    match g {
+        Geometry::Cylinder(c) => Some(Solid::Cylinder(*c)),
+        Geometry::Cuboid(c) => Some(Solid::Box(*c)),
+        Geometry::Frustum(f) => Some(Solid::Frustum(*f)),
+        Geometry::Torus(t) => Some(Solid::Torus(*t)),
+        Geometry::Ellipsoid(_)
+        | Geometry::Mesh(_)
+        | Geometry::Plane(_)
+        | Geometry::Point
+        | Geometry::Line(_)
+        | Geometry::Circle(_)
+        | Geometry::Arc(_)
+        | Geometry::Curve(_) => None,
+    }
+}
+
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
 pub(crate) fn select(
     a: &Geometry,
@@ -200,11 +219,7 @@ pub(crate) fn select(
             }
         }
         (G::Frustum(_) | G::Torus(_), G::Plane(p)) => {
-            let solid = match a {
-                G::Frustum(f) => Solid::Frustum(*f),
-                G::Torus(t) => Solid::Torus(*t),
-                _ => return Err(no(NOT_BUILT)),
-            };
+            let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
             if p.is_unbounded() {
                 no_flip(
                     flip_a,
@@ -240,20 +255,7 @@ pub(crate) fn select(
             },
         ),
         (G::Ellipsoid(e), G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_)) => {
-            let solid = match b {
-                G::Cylinder(c) => Solid::Cylinder(*c),
-                G::Cuboid(c) => Solid::Box(*c),
-                G::Frustum(f) => Solid::Frustum(*f),
-                G::Torus(t) => Solid::Torus(*t),
-                G::Ellipsoid(_)
-                | G::Mesh(_)
-                | G::Plane(_)
-                | G::Point
-                | G::Line(_)
-                | G::Circle(_)
-                | G::Arc(_)
-                | G::Curve(_) => return Err(no(NOT_BUILT)),
-            };
+            let solid = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
             match e.sphere_radius() {
                 Some(radius) if !flip_b => no_flip(flip_a, Kernel::SphereSolid { radius, solid }),
                 Some(_) => Err(no(FLIP_NOT_BUILT)),
@@ -299,21 +301,7 @@ pub(crate) fn select(
             )
         }
         (G::Cuboid(cuboid), G::Frustum(_) | G::Torus(_)) => {
-            let solid = match b {
-                G::Frustum(f) => Solid::Frustum(*f),
-                G::Torus(t) => Solid::Torus(*t),
-                // Only frustums and tori reach here (the arm's patterns).
-                G::Ellipsoid(_)
-                | G::Cylinder(_)
-                | G::Cuboid(_)
-                | G::Mesh(_)
-                | G::Plane(_)
-                | G::Point
-                | G::Line(_)
-                | G::Circle(_)
-                | G::Arc(_)
-                | G::Curve(_) => return Err(no(NOT_BUILT)),
-            };
+            let solid = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
             no_flip(
                 flip_a || flip_b,
                 Kernel::BoxRevolved {

@@ -478,8 +478,8 @@ fn bisect(mut outside: f64, mut inside: f64, inside_at: impl Fn(f64) -> bool) ->
     outside
 }
 
-/// The maximiser of the concave `f` on `[lo, hi]`, by golden-section search to round-off.
-fn golden_maximum(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
+/// The maximiser of the unimodal `f` on `[lo, hi]`, by golden-section search to round-off.
+pub(crate) fn golden_maximum(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
     let mut x1 = hi - ratio * (hi - lo);
     let mut x2 = lo + ratio * (hi - lo);

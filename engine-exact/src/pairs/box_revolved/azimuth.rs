@@ -17,6 +17,7 @@
 //! clear (`g > 0`), so a region is never split.
 
 use super::super::section::Polygon;
+use crate::pairs::sliced::golden_maximum;
 use contact_core::{Vector2, Vector3};
 use std::f64::consts::TAU;
 
@@ -47,7 +48,8 @@ pub(crate) fn region_wedges(
             values[(k + 1) % SAMPLES],
         );
         if values[k] > 0.0 && values[k] <= prev && values[k] <= next && values[k] < small {
-            let (phi, v) = golden_minimum(angles[k] - step, angles[k] + step, &g);
+            let phi = golden_maximum(angles[k] - step, angles[k] + step, |x| -g(x));
+            let v = g(phi);
             if v < 0.0 {
                 refined[k] = v;
                 angles[k] = phi;
@@ -129,28 +131,4 @@ fn gap(faces: &[(Vector3, f64); 6], big: f64, small: f64, phi: f64) -> f64 {
         nearest = nearest.min((p + s * e).norm());
     }
     if inside { -small } else { nearest - small }
-}
-
-/// The minimiser of `f` on `[lo, hi]` and its value, by golden-section search.
-fn golden_minimum(mut lo: f64, mut hi: f64, f: &impl Fn(f64) -> f64) -> (f64, f64) {
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = hi - ratio * (hi - lo);
-    let mut x2 = lo + ratio * (hi - lo);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..60 {
-        if f1 > f2 {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + ratio * (hi - lo);
-            f2 = f(x2);
-        } else {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - ratio * (hi - lo);
-            f1 = f(x1);
-        }
-    }
-    if f1 <= f2 { (x1, f1) } else { (x2, f2) }
 }
