@@ -8,6 +8,7 @@
 //! with the moments of half discs and of disc segments written here.
 
 use super::revolved::{extent_z, geometry, random_frustum, random_torus, size};
+use super::solids::ellipsoid_over_plane;
 use super::{Case, ITERATIVE_BOUND, Row, at, run};
 use crate::common::Expected;
 use crate::common::{Rng, instance};
@@ -339,15 +340,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "semi-axes ∈ [0.3, 2], any orientation, inside the rectangle, cap to beyond the centre",
             "the ellipsoid–box slicing on the plane's prism; oracle: affine cap by slicing",
             |rng| {
-                let s = Vector3::new(
-                    rng.uniform(0.3, 2.0),
-                    rng.uniform(0.3, 2.0),
-                    rng.uniform(0.3, 2.0),
-                );
-                let q = rng.rotation();
-                let n = q.inverse_transform_vector(&Vector3::z());
-                let k = (s.component_mul(&n)).norm();
-                let z0 = k * rng.uniform(-0.9, 0.999);
+                let (s, q, z0) = ellipsoid_over_plane(rng);
                 let (j, pose_j) = ground(rng, Ground::Bounded, s.max());
                 Some(Case {
                     i: instance(Geometry::Ellipsoid(Ellipsoid::new(s.x, s.y, s.z).unwrap())),

@@ -85,15 +85,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "semi-axes ∈ [0.3, 2], any orientation, cap to beyond the centre",
             "closed form (affine cap); oracle by slicing",
             |rng| {
-                let s = Vector3::new(
-                    rng.uniform(0.3, 2.0),
-                    rng.uniform(0.3, 2.0),
-                    rng.uniform(0.3, 2.0),
-                );
-                let q = rng.rotation();
-                let n = q.inverse_transform_vector(&Vector3::z());
-                let k = (s.component_mul(&n)).norm();
-                let z0 = k * rng.uniform(-0.9, 0.999);
+                let (s, q, z0) = ellipsoid_over_plane(rng);
                 Some(Case {
                     i: instance(Geometry::Ellipsoid(Ellipsoid::new(s.x, s.y, s.z).unwrap())),
                     j: plane(),
@@ -528,4 +520,19 @@ fn wheel(r: f64, d: f64) -> Expected {
         normal: Vector3::z(),
         depth: (point_i - point_j).norm(),
     }
+}
+
+/// Semi-axes in [0.3, 2], a random orientation, and the height of the centre above the
+/// plane `z = 0`: from a cap a thousandth of the extent along the normal deep, to the centre
+/// 0.9 of that extent below the plane.
+pub(super) fn ellipsoid_over_plane(rng: &mut Rng) -> (Vector3, UnitQuaternion, f64) {
+    let s = Vector3::new(
+        rng.uniform(0.3, 2.0),
+        rng.uniform(0.3, 2.0),
+        rng.uniform(0.3, 2.0),
+    );
+    let q = rng.rotation();
+    let n = q.inverse_transform_vector(&Vector3::z());
+    let k = (s.component_mul(&n)).norm();
+    (s, q, k * rng.uniform(-0.9, 0.999))
 }
