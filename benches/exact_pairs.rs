@@ -9,7 +9,7 @@
 //! Parry has no ellipsoid, frustum, torus or bounded plane, so the general-ellipsoid groups
 //! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_bounded_plane`)
 //! and the box–frustum, box–torus and frustum/torus–bounded-plane groups time the exact
-//! engine alone.
+//! engine alone; so do the mesh groups, since the adapter's parry shapes have no mesh.
 
 #![expect(
     missing_docs,
@@ -196,6 +196,23 @@ fn cases() -> Vec<Case> {
             name: "mesh_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
             j: ground.clone(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        // A tilted box pressed across both feet's tops: two regions.
+        Case {
+            name: "box_mesh_two_feet",
+            i: Geometry::Cuboid(Cuboid::centered(1.5, 0.3, 0.4).unwrap()),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.1, 1.2), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "mesh_bounded_plane_two_feet",
+            i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            j: Geometry::Plane(Plane::bounded(-1.2, 2.0, -2.0, 2.0).unwrap()),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
             pose_j: Isometry3::identity(),
             depth: None,

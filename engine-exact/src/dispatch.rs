@@ -19,6 +19,8 @@
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
+//! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | none |
+//! | mesh–plane (bounded) | the box–mesh intersection on the plane's prism cut to a box about the mesh, `crate::pairs::mesh_box` | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
@@ -42,9 +44,8 @@
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against frustums, tori and meshes; cylinder–frustum, cylinder–torus,
-//! frustum–frustum, frustum–torus and torus–torus; the mesh pairs other than sphere–mesh
-//! and mesh against an unbounded plane (mesh–box, mesh–bounded plane, mesh against a curved
-//! solid, mesh–mesh: the polyhedral intersection is not built); circles on a bounded line are
+//! frustum–frustum, frustum–torus and torus–torus; a mesh against a cylinder, frustum, torus or
+//! general ellipsoid, and mesh–mesh (the intersection of two meshes is not built); circles on a bounded line are
 //! not built yet; point–point, plane–plane and line–line are not contacts; 2-D against 3-D is
 //! refused (SPEC §3).
 
@@ -70,7 +71,6 @@ pub(crate) struct Selected {
 
 /// The reasons given for pairs not built yet, shared so messages stay consistent.
 const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
-const NOT_BUILT_BOUNDED: &str = "a mesh against a bounded PLANE is not built in the exact engine yet; use an unbounded plane or the faceted engine";
 const NOT_BUILT_LINE: &str = "a circle against a bounded 2-D PLANE is not built in the exact engine yet; use an unbounded line or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
@@ -310,21 +310,33 @@ pub(crate) fn select(
                 },
             )
         }
+        (G::Cuboid(cuboid), G::Mesh(mesh)) => {
+            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            no_flip(
+                flip_a || flip_b,
+                Kernel::BoxMesh {
+                    cuboid: *cuboid,
+                    mesh: std::sync::Arc::new(prepared),
+                },
+            )
+        }
         (G::Cylinder(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
-        | (G::Cuboid(_), G::Mesh(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_) | G::Mesh(_))
         | (G::Torus(_), G::Torus(_) | G::Mesh(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {
-            if !p.is_unbounded() {
-                return Err(no(NOT_BUILT_BOUNDED));
-            }
-            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            let mesh = std::sync::Arc::new(PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?);
+            let side = side(flip_b);
             no_flip(
                 flip_a,
-                Kernel::MeshPlane {
-                    mesh: std::sync::Arc::new(prepared),
-                    side: side(flip_b),
+                if p.is_unbounded() {
+                    Kernel::MeshPlane { mesh, side }
+                } else {
+                    Kernel::MeshBoundedPlane {
+                        mesh,
+                        plane: *p,
+                        side,
+                    }
                 },
             )
         }

@@ -101,6 +101,18 @@ pub(crate) enum Kernel {
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
         side: f64,
     },
+    /// Box `a` against a closed mesh `b`: one contact per region.
+    BoxMesh {
+        cuboid: Cuboid,
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+    },
+    /// Closed mesh `a` against a bounded plane `b` (the box–mesh pair on the plane's prism cut
+    /// to a box about the mesh): one contact per region.
+    MeshBoundedPlane {
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+        plane: Plane,
+        side: f64,
+    },
     /// Box `a` against a (possibly bounded) plane `b`.
     BoxPlane {
         cuboid: Cuboid,
@@ -188,6 +200,14 @@ impl Kernel {
             pairs::mesh_plane::contacts(mesh, pose_a, pose_b, *side, work, emit);
             return Ok(());
         }
+        if let Self::BoxMesh { cuboid, mesh } = self {
+            pairs::mesh_box::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
+            return Ok(());
+        }
+        if let Self::MeshBoundedPlane { mesh, plane, side } = self {
+            pairs::mesh_box::bounded_plane_contacts(mesh, pose_a, plane, *side, pose_b, work, emit);
+            return Ok(());
+        }
         if let Self::BoxRevolved { cuboid, solid } = self {
             pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
             return Ok(());
@@ -200,6 +220,8 @@ impl Kernel {
         }
         let found = match *self {
             Self::MeshPlane { .. }
+            | Self::BoxMesh { .. }
+            | Self::MeshBoundedPlane { .. }
             | Self::BoxRevolved { .. }
             | Self::RevolvedBoundedPlane { .. } => None,
             Self::EllipsoidBoundedPlane {

@@ -36,7 +36,12 @@ pub struct PreparedMesh {
     pub(crate) vertices: Vec<Point3>,
     pub(crate) triangles: Vec<[u32; 3]>,
     /// `neighbours[t][k]`: the triangle across edge `k` (vertices `k`, `k + 1`) of `t`.
-    neighbours: Vec<[u32; 3]>,
+    pub(crate) neighbours: Vec<[u32; 3]>,
+    /// A ball holding every vertex (centre of the bounding box, in the mesh's frame), for the
+    /// pairs that first check whether the mesh can reach the other body at all.
+    pub(crate) centre: Point3,
+    /// Its radius.
+    pub(crate) radius: f64,
 }
 
 impl PreparedMesh {
@@ -58,10 +63,19 @@ impl PreparedMesh {
             }
             neighbours.push(n);
         }
+        let (lo, hi) = mesh.bounding_box();
+        let centre = nalgebra::center(&lo, &hi);
+        let radius = mesh
+            .vertices()
+            .iter()
+            .map(|v| (v - centre).norm())
+            .fold(0.0, f64::max);
         Some(Self {
             vertices: mesh.vertices().to_vec(),
             triangles,
             neighbours,
+            centre,
+            radius,
         })
     }
 }
@@ -218,7 +232,7 @@ pub(crate) fn contacts(
 /// Where the line from `p` along the unit `direction` first meets the mesh's surface (every
 /// triangle, [`line_triangle`] with the barycentric bounds widened by 1e-12, so a line through
 /// a shared edge or corner meets one of its triangles despite round-off), or `None`.
-fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
+pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
     let mut best = f64::INFINITY;
     for tri in &mesh.triangles {
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize].coords);
@@ -234,7 +248,7 @@ fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Po
 /// The point of the whole mesh surface closest to `p` (every triangle: the region's own
 /// surface is not always the nearest). Distances within 1e-12 relative count as tied and the
 /// first triangle wins, so a symmetric pose gives the same point in any frame.
-fn closest_on_mesh(mesh: &PreparedMesh, p: &Point3) -> Point3 {
+pub(crate) fn closest_on_mesh(mesh: &PreparedMesh, p: &Point3) -> Point3 {
     let mut best = (f64::INFINITY, *p);
     for tri in &mesh.triangles {
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);

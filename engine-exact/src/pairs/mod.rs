@@ -23,6 +23,7 @@ pub mod ellipsoid_cylinder;
 pub mod ellipsoid_ellipsoid;
 pub mod ellipsoid_plane;
 pub(crate) mod ellipsoid_sliced;
+pub(crate) mod mesh_box;
 pub mod mesh_plane;
 pub mod revolved_plane;
 pub mod section;

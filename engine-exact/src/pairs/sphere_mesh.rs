@@ -19,7 +19,7 @@ use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::PI;
 
 /// The solid angle of triangle `a b c` seen from `p` (signed by orientation).
-fn solid_angle(p: &Point3, a: &Point3, b: &Point3, c: &Point3) -> f64 {
+pub(crate) fn solid_angle(p: &Point3, a: &Point3, b: &Point3, c: &Point3) -> f64 {
     let (x, y, z) = (a - p, b - p, c - p);
     let (lx, ly, lz) = (x.norm(), y.norm(), z.norm());
     let numerator = x.dot(&y.cross(&z));

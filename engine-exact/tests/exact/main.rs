@@ -13,6 +13,9 @@
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
 //!   invariants, separate regions, degenerate branches;
+//! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
+//!   box, regions, holes in the caps, containment, touching, invariants;
+//! - [`voxel_oracle`]: grid-cell meshes and their closed-form contact with aligned boxes;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
 
@@ -25,6 +28,7 @@ mod degenerate_boundaries;
 mod degenerate_sliced;
 mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
+mod mesh_box;
 mod model_check;
 mod oracles;
 mod properties;
@@ -32,3 +36,4 @@ mod regressions;
 mod revolved_oracles;
 mod sliced_oracles;
 mod spherical_reference;
+mod voxel_oracle;

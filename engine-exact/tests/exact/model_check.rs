@@ -56,7 +56,9 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 42] = [
+const BUILT: [(&str, &str); 44] = [
+    ("box", "mesh"),
+    ("mesh", "bounded plane"),
     ("box", "frustum"),
     ("box", "torus"),
     ("frustum", "bounded plane"),
@@ -154,8 +156,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 41 distinct pairs, 34 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 34);
+    // 43 distinct pairs, 36 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 36);
 }
 
 #[test]

@@ -11,6 +11,7 @@ use contact_core::{GeometryInstance, Isometry3};
 
 mod box_revolved;
 mod ellipsoids;
+pub(crate) mod mesh_box;
 mod planar;
 pub(crate) mod planar_overlap;
 mod revolved;
@@ -103,6 +104,7 @@ fn characterization_table() {
     rows.extend(planar_overlap::rows(&mut rng));
     // Added last, so the rows above keep their seeded configurations.
     rows.extend(box_revolved::rows(&mut rng));
+    rows.extend(mesh_box::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );

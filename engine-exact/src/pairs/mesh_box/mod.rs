@@ -1,0 +1,363 @@
+//! A box against a closed triangle mesh (taken as exact), and a mesh against a bounded
+//! PLANE (the box that stands for it, [`super::bounded_plane`]): exact polyhedral
+//! intersection, one contact per connected region.
+//!
+//! In the box's frame (centred, `|x_k| ≤ h_k`, lengths divided by a power of two near the
+//! box's size):
+//! - **Mesh surface inside.** Every triangle that reaches the box is clipped to it
+//!   ([`clip`]), each piece remembering which triangle edge or box plane it came from.
+//! - **Regions.** Clipped triangles that share a mesh edge inside the box are one region; the
+//!   box's own surface inside the mesh then joins regions that meet only through it: the
+//!   parts of the box edges inside the mesh, and the holes in a face's caps ([`faces`]). A
+//!   mesh resting on the box by two feet is two contacts; a box cut through a thick-walled
+//!   tube is one.
+//! - **Volume and centroid** of each region by the divergence theorem about a point `o` of
+//!   the region (so round-off is relative to the region's size): with `∫(x − o)·n/3` for the
+//!   volume and `∫ ½(x_i − o_i)² n_i` for the first moments. On a face of the box these are
+//!   constant times the face's cap area, so the caps enter only by their areas, which come
+//!   from Green's theorem over the pieces bounding them; the clipped triangles are integrated
+//!   exactly (polynomials over triangles).
+//! - **Normal** (from the mesh into the box, SPEC §4 as [`super::clipped`] reads it): `S/|S|`,
+//!   `S` the area vector of the mesh's surface inside the box. When it vanishes (`|S| ≤ 1e-12`
+//!   of that surface's area, or none): with no mesh surface inside, the box lies in the mesh
+//!   and the normal points from the centroid to the closest point of the mesh; otherwise the
+//!   opposite of the box face nearest the centroid.
+//! - **Points**: where the line through the centroid along the normal leaves the box (along
+//!   `−n`) and first meets the mesh (along `+n`; the closest point of the mesh when the line
+//!   misses it); δ is their distance. **Area**: `|S|`, or a quarter of the region's whole
+//!   surface when `S` vanishes.
+//! - Touching (a mesh face flush with a box face, a vertex on it) has no volume and is no
+//!   contact: points on the box's surface count as outside it.
+//!
+//! Work is `O(vertices + triangles)` per query (the mesh is moved into the box's frame), plus
+//! the clipping of the triangles that reach the box.
+
+pub(crate) mod clip;
+pub(crate) mod faces;
+
+use super::clipped::unit_for;
+use super::mesh_plane::{PreparedMesh, closest_on_mesh, exit_along};
+use super::sphere_mesh::solid_angle;
+use crate::kernel::PairContact;
+use crate::ray_exit::box_exit;
+use clip::{Clipped, Edge, plane};
+use contact_core::geometry::{Cuboid, Plane};
+use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use nalgebra::Translation3;
+
+/// No node / polygon.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// Union–find over the regions' nodes (the clipped polygons, then the box's eight corners).
+#[derive(Debug)]
+pub(crate) struct UnionFind {
+    parent: Vec<u32>,
+}
+
+impl UnionFind {
+    fn new(count: usize) -> Self {
+        Self {
+            parent: (0..count as u32).collect(),
+        }
+    }
+
+    /// The representative of `a`'s set: its smallest node.
+    pub(crate) fn find(&mut self, mut a: u32) -> u32 {
+        while self.parent[a as usize] != a {
+            let up = self.parent[self.parent[a as usize] as usize];
+            self.parent[a as usize] = up;
+            a = up;
+        }
+        a
+    }
+
+    /// Joins the sets of `a` and `b`.
+    pub(crate) fn union(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.parent[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+}
+
+/// Per-region sums, about the region's anchor `o`.
+#[derive(Debug, Clone, Copy)]
+struct Sums {
+    anchor: Option<Point3>,
+    /// `∫(x − o)·n` over the clipped triangles.
+    flux: f64,
+    /// `∫ ½(x_i − o_i)² n_i` over the clipped triangles.
+    moment: Vector3,
+    /// The area vector `S` of the mesh's surface inside the box.
+    area_vector: Vector3,
+    /// The unsigned area of that surface.
+    area: f64,
+    /// The cap area on each box face.
+    caps: [f64; 6],
+}
+
+impl Default for Sums {
+    fn default() -> Self {
+        Self {
+            anchor: None,
+            flux: 0.0,
+            moment: Vector3::zeros(),
+            area_vector: Vector3::zeros(),
+            area: 0.0,
+            caps: [0.0; 6],
+        }
+    }
+}
+
+/// Contacts of `cuboid` at `pose_box` (`a`) with `mesh` at `pose_mesh` (`b`), one per
+/// region, handed to `emit` in the order of each region's first clipped triangle.
+pub(crate) fn contacts(
+    cuboid: &Cuboid,
+    pose_box: &Isometry3,
+    mesh: &PreparedMesh,
+    pose_mesh: &Isometry3,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let unit = unit_for(cuboid.half_extents().norm());
+    let frame = pose_box * Translation3::from(cuboid.center().coords);
+    let relative = frame.inv_mul(pose_mesh);
+    let half = cuboid.half_extents() / unit;
+    // The mesh's ball must reach the box.
+    let reach = (relative * mesh.centre).coords / unit;
+    let radius = mesh.radius / unit;
+    if (0..3).any(|k| reach[k].abs() - radius >= half[k]) {
+        return;
+    }
+    let local: Vec<Point3> = mesh
+        .vertices
+        .iter()
+        .map(|v| Point3::from((relative * v).coords / unit))
+        .collect();
+    let mut polygons = Vec::new();
+    let mut normals = Vec::new();
+    let mut triangle_of = Vec::new();
+    let mut polygon_of = vec![NONE; mesh.triangles.len()];
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        let [a, b, c] = tri.map(|v| local[v as usize]);
+        if (0..3)
+            .any(|k| a[k].min(b[k]).min(c[k]) >= half[k] || a[k].max(b[k]).max(c[k]) <= -half[k])
+        {
+            continue;
+        }
+        work.primitive_tests += 1;
+        let mut poly = Clipped::triangle(a, b, c);
+        if poly.clip_to_box(&half) {
+            polygon_of[t] = polygons.len() as u32;
+            polygons.push(poly);
+            normals.push((b - a).cross(&(c - a)));
+            triangle_of.push(t);
+        }
+    }
+    let inside = |p: &Point3| {
+        let winding: f64 = mesh
+            .triangles
+            .iter()
+            .map(|tri| {
+                let [a, b, c] = tri.map(|v| local[v as usize]);
+                solid_angle(p, &a, &b, &c)
+            })
+            .sum();
+        winding > 2.0 * std::f64::consts::PI
+    };
+    if polygons.is_empty() && !inside(&Point3::origin()) {
+        return;
+    }
+    let count = polygons.len();
+    let mut forest = UnionFind::new(count + 8);
+    let next_polygon = |i: u32, k: u8| -> u32 {
+        let t = triangle_of[i as usize];
+        polygon_of[mesh.neighbours[t][k as usize] as usize]
+    };
+    // Clipped triangles sharing a mesh edge inside the box.
+    for (i, poly) in polygons.iter().enumerate() {
+        for e in 0..poly.len {
+            if let Edge::Triangle(k) = poly.edges[e] {
+                let j = next_polygon(i as u32, k);
+                if j != NONE && poly.points[e] != poly.points[(e + 1) % poly.len] {
+                    forest.union(i as u32, j);
+                }
+            }
+        }
+    }
+    let mut intervals = faces::Intervals::new();
+    faces::box_edges(
+        &polygons,
+        &normals,
+        &half,
+        &mut forest,
+        |c| {
+            let corner = Point3::new(
+                if c & 1 != 0 { half.x } else { -half.x },
+                if c & 2 != 0 { half.y } else { -half.y },
+                if c & 4 != 0 { half.z } else { -half.z },
+            );
+            inside(&corner)
+        },
+        &mut intervals,
+    );
+    let face_cuts: Vec<Vec<(u32, usize)>> = (0..6).map(|f| faces::cuts(&polygons, f)).collect();
+    let mut cut_index = vec![NONE; count];
+    for (f, cuts) in face_cuts.iter().enumerate() {
+        cut_index.fill(NONE);
+        for (s, &(i, _)) in cuts.iter().enumerate() {
+            cut_index[i as usize] = s as u32;
+        }
+        faces::join_holes(
+            &polygons,
+            f,
+            cuts,
+            &cut_index,
+            next_polygon,
+            &half,
+            &intervals,
+            &mut forest,
+        );
+    }
+    // The sums of each region, at its root.
+    let mut sums = vec![Sums::default(); count + 8];
+    for (i, poly) in polygons.iter().enumerate() {
+        let root = forest.find(i as u32) as usize;
+        let s = &mut sums[root];
+        let o = *s.anchor.get_or_insert(poly.points[0]);
+        let a = poly.points[0] - o;
+        for k in 1..poly.len - 1 {
+            let (b, c) = (poly.points[k] - o, poly.points[k + 1] - o);
+            let area_vector = 0.5 * (b - a).cross(&(c - a));
+            s.flux += a.dot(&area_vector);
+            for axis in 0..3 {
+                let (x, y, z) = (a[axis], b[axis], c[axis]);
+                s.moment[axis] +=
+                    area_vector[axis] * (x * x + y * y + z * z + x * y + y * z + z * x) / 12.0;
+            }
+            s.area_vector += area_vector;
+            s.area += area_vector.norm();
+        }
+    }
+    for (f, cuts) in face_cuts.iter().enumerate() {
+        let (axis, sign) = plane(f);
+        faces::cap_pieces(&polygons, f, cuts, &half, &intervals, |node, p, q| {
+            let root = forest.find(node) as usize;
+            let s = &mut sums[root];
+            let o = *s.anchor.get_or_insert(Point3::origin());
+            s.caps[f] += 0.5 * sign * (p - o).cross(&(q - o))[axis];
+        });
+    }
+    for (root, s) in sums.iter().enumerate() {
+        let Some(o) = s.anchor else { continue };
+        if forest.find(root as u32) as usize != root {
+            continue;
+        }
+        if let Some(c) = region_contact(s, &o, &half, mesh, pose_mesh, &frame, unit) {
+            emit(c);
+        }
+    }
+}
+
+/// The contact of one region from its sums (see the module doc), in the world.
+fn region_contact(
+    s: &Sums,
+    o: &Point3,
+    half: &Vector3,
+    mesh: &PreparedMesh,
+    pose_mesh: &Isometry3,
+    frame: &Isometry3,
+    unit: f64,
+) -> Option<PairContact> {
+    let mut flux = s.flux;
+    let mut moment = s.moment;
+    let mut caps_area = 0.0;
+    for (f, &cap) in s.caps.iter().enumerate() {
+        let (axis, sign) = plane(f);
+        // The face's distance from `o`, and its `x_i − o_i`.
+        let offset = half[axis] - sign * o[axis];
+        flux += offset * cap;
+        moment[axis] += 0.5 * sign * offset * offset * cap;
+        caps_area += cap.abs();
+    }
+    let volume = flux / 3.0;
+    if volume.is_nan() || volume <= 0.0 {
+        return None;
+    }
+    let centroid = o + moment / volume;
+    let s_norm = s.area_vector.norm();
+    // A NaN area vector counts as vanishing too.
+    let enclosed = s_norm.is_nan() || s_norm <= 1e-12 * s.area;
+    let to_world = |p: &Point3| frame * Point3::from(p.coords * unit);
+    let centroid_w = to_world(&centroid);
+    let to_mesh = |p: &Point3| pose_mesh.inverse_transform_point(p);
+    let normal = if !enclosed {
+        s.area_vector / s_norm
+    } else if s.area == 0.0 {
+        // The box lies in the mesh: towards the mesh's closest point.
+        let q = pose_mesh * closest_on_mesh(mesh, &to_mesh(&centroid_w));
+        let away = frame.inverse_transform_vector(&(q - centroid_w));
+        if away.norm() > 0.0 {
+            away.normalize()
+        } else {
+            Vector3::z()
+        }
+    } else {
+        // The mesh lies in the box: against the box face nearest the centroid.
+        let (mut gap, mut face) = (f64::INFINITY, Vector3::z());
+        for f in 0..6 {
+            let (axis, sign) = plane(f);
+            let g = half[axis] - sign * centroid[axis];
+            if g < gap - 1e-12 {
+                gap = g;
+                face = Vector3::zeros();
+                face[axis] = sign;
+            }
+        }
+        -face
+    };
+    let area = if enclosed {
+        0.25 * (s.area + caps_area)
+    } else {
+        s_norm
+    };
+    let to_box = box_exit(&Vector3::zeros(), half, &centroid.coords, &-normal).unwrap_or(0.0);
+    let point_a = to_world(&(centroid - to_box * normal));
+    let normal_w = frame.rotation * normal;
+    let from = to_mesh(&centroid_w);
+    let direction = pose_mesh.inverse_transform_vector(&normal_w);
+    let on_mesh =
+        exit_along(mesh, &from, &direction).unwrap_or_else(|| closest_on_mesh(mesh, &from));
+    let point_b = pose_mesh * on_mesh;
+    let depth = (point_b - point_a).norm();
+    (depth > 0.0).then_some(PairContact {
+        point_a,
+        point_b,
+        normal: normal_w,
+        depth,
+        area: area * unit * unit,
+    })
+}
+
+/// Contacts of `mesh` at `pose_mesh` (`a`) with the bounded `plane` (flipped when `side <
+/// 0`) at `pose_plane` (`b`): the mesh against the box standing for the plane about the mesh's
+/// ball.
+pub(crate) fn bounded_plane_contacts(
+    mesh: &PreparedMesh,
+    pose_mesh: &Isometry3,
+    plane: &Plane,
+    side: f64,
+    pose_plane: &Isometry3,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let centre = pose_mesh * mesh.centre;
+    let Some((cuboid, pose_box)) =
+        super::bounded_plane::local_box(plane, side, pose_plane, &centre, mesh.radius)
+    else {
+        return;
+    };
+    contacts(&cuboid, &pose_box, mesh, pose_mesh, work, &mut |c| {
+        emit(c.swapped())
+    });
+}
