@@ -19,10 +19,10 @@
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
-//! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | none |
+//! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | mesh (a cavity: the triangles inside out) |
 //! | mesh–plane (bounded) | the box–mesh intersection on the plane's prism cut to a box about the mesh, `crate::pairs::mesh_box` | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
-//! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
+//! | box–box | exact convex clipping, [`crate::pairs::box_box`]; one box flipped (a box-shaped cavity): the box–mesh intersection with the cavity's walls turned inside out | one box |
 //! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
 //! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
 //! | cylinder–plane (bounded) | the same slicing against the plane's prism, [`crate::pairs::cylinder_solid`] | plane |
@@ -52,6 +52,7 @@
 use crate::ExactEngine;
 use crate::kernel::Kernel;
 use crate::pairs::cylinder_solid::Other;
+use crate::pairs::mesh_box::box_mesh;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
 use crate::planar::boundary::Chain;
@@ -77,7 +78,7 @@ const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
     "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
-const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one box of a box pair, a mesh against a box, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
 /// The convex solids the sphere, box–revolved and revolved–plane kernels take, `None` for
 /// every other kind (an exhaustive match: a new kind must say whether it is one).
@@ -239,13 +240,30 @@ pub(crate) fn select(
                 )
             }
         }
-        (G::Cuboid(a_box), G::Cuboid(b_box)) => no_flip(
-            flip_a || flip_b,
-            Kernel::BoxBox {
+        (G::Cuboid(a_box), G::Cuboid(b_box)) => match (flip_a, flip_b) {
+            (false, false) => Ok(canonical(Kernel::BoxBox {
                 a: *a_box,
                 b: *b_box,
-            },
-        ),
+            })),
+            // A box in a box-shaped cavity: the box against the cavity's walls, a mesh
+            // turned inside out.
+            (false, true) | (true, false) => {
+                let (inner, cavity) = if flip_b {
+                    (a_box, b_box)
+                } else {
+                    (b_box, a_box)
+                };
+                let walls = box_mesh(cavity).ok_or_else(|| no(MESH_OPEN))?.inverted();
+                Ok(Selected {
+                    kernel: Kernel::BoxMesh {
+                        cuboid: *inner,
+                        mesh: std::sync::Arc::new(walls),
+                    },
+                    swap: flip_a,
+                })
+            }
+            (true, true) => Err(no(NOT_A_CONTACT)),
+        },
         (G::Cuboid(cuboid), G::Plane(plane)) => no_flip(
             flip_a,
             Kernel::BoxPlane {
@@ -312,8 +330,14 @@ pub(crate) fn select(
         }
         (G::Cuboid(cuboid), G::Mesh(mesh)) => {
             let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            // A flipped mesh is a cavity: its walls inside out.
+            let prepared = if flip_b {
+                prepared.inverted()
+            } else {
+                prepared
+            };
             no_flip(
-                flip_a || flip_b,
+                flip_a,
                 Kernel::BoxMesh {
                     cuboid: *cuboid,
                     mesh: std::sync::Arc::new(prepared),

@@ -42,6 +42,9 @@ pub struct PreparedMesh {
     pub(crate) centre: Point3,
     /// Its radius.
     pub(crate) radius: f64,
+    /// Whether the triangles were turned inside out ([`Self::inverted`]): the solid is then
+    /// the space outside the mesh (a cavity's walls), unbounded.
+    pub(crate) inverted: bool,
 }
 
 impl PreparedMesh {
@@ -76,7 +79,25 @@ impl PreparedMesh {
             neighbours,
             centre,
             radius,
+            inverted: false,
         })
+    }
+
+    /// The same mesh turned inside out (every triangle reversed): its solid is the space
+    /// outside the mesh, as a flipped (cavity) geometry reads it.
+    pub fn inverted(&self) -> Self {
+        let triangles: Vec<[u32; 3]> = self.triangles.iter().map(|t| [t[0], t[2], t[1]]).collect();
+        // Edge k of [a, c, b] is edge 2 − k of [a, b, c] reversed (k = 0: a→c is c→a, edge 2;
+        // k = 1: c→b, edge 1; k = 2: b→a, edge 0), with the same neighbour across it.
+        let neighbours = self.neighbours.iter().map(|n| [n[2], n[1], n[0]]).collect();
+        Self {
+            vertices: self.vertices.clone(),
+            triangles,
+            neighbours,
+            centre: self.centre,
+            radius: self.radius,
+            inverted: !self.inverted,
+        }
     }
 }
 

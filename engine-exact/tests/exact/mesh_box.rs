@@ -425,3 +425,171 @@ fn one_solid_meshed_two_ways_gives_one_answer_at_any_pose() {
         assert!(seen > 150, "only {seen} contacts");
     }
 }
+
+/// A box of half extents `h` at `at` in the box-shaped cavity of half extents `w` at the
+/// origin: the closed form when every overlap is axis-aligned (the part of the box outside
+/// the cavity is the box less one aligned box, its walls' pieces inside the box rectangles).
+fn in_cavity_expected(h: Vector3, at: Point3, w: Vector3) -> Expected {
+    let (lo, hi) = (at - h, at + h);
+    let inner_lo = Point3::new(lo.x.max(-w.x), lo.y.max(-w.y), lo.z.max(-w.z));
+    let inner_hi = Point3::new(hi.x.min(w.x), hi.y.min(w.y), hi.z.min(w.z));
+    let inner = (inner_hi - inner_lo).map(|d| d.max(0.0));
+    let (v_box, v_in) = ((2.0 * h).product(), inner.product());
+    let centre_in = nalgebra::center(&inner_lo, &inner_hi);
+    let centroid = Point3::from((v_box * at.coords - v_in * centre_in.coords) / (v_box - v_in));
+    // The cavity's walls inside the box, normals into the cavity.
+    let mut s = Vector3::zeros();
+    for k in 0..3 {
+        let (u, v) = ((k + 1) % 3, (k + 2) % 3);
+        let face = inner[u] * inner[v];
+        if lo[k] < w[k] && w[k] < hi[k] {
+            s[k] -= face;
+        }
+        if lo[k] < -w[k] && -w[k] < hi[k] {
+            s[k] += face;
+        }
+    }
+    let n = s.normalize();
+    // Leaving the box along −n, and reaching a wall plane along +n inside its rectangle.
+    let to_box = (0..3)
+        .filter(|&k| n[k] != 0.0)
+        .map(|k| {
+            let bound = if n[k] > 0.0 { lo[k] } else { hi[k] };
+            (centroid[k] - bound) / n[k]
+        })
+        .fold(f64::INFINITY, f64::min);
+    let mut to_wall = f64::INFINITY;
+    for k in 0..3 {
+        for side in [1.0, -1.0] {
+            if n[k] == 0.0 {
+                continue;
+            }
+            let t = (side * w[k] - centroid[k]) / n[k];
+            let p = centroid + t * n;
+            let on = (0..3).all(|m| m == k || p[m].abs() <= w[m]);
+            if t >= 0.0 && on {
+                to_wall = to_wall.min(t);
+            }
+        }
+    }
+    let (point_i, point_j) = (centroid - to_box * n, centroid + to_wall * n);
+    Expected {
+        point_i,
+        point_j,
+        normal: n,
+        depth: (point_j - point_i).norm(),
+    }
+}
+
+fn flipped(g: GeometryInstance) -> GeometryInstance {
+    g.flipped()
+}
+
+#[test]
+fn a_box_in_a_box_cavity_meets_the_walls_it_crosses() {
+    let w = Vector3::new(2.0, 1.5, 1.0);
+    let cavity = || flipped(cuboid(w));
+    let h = Vector3::new(0.5, 0.4, 0.3);
+    let world = Rng::new(79).pose(3.0);
+    // Through one wall, through an edge (two walls), through a corner (three).
+    for at in [
+        Point3::new(1.8, 0.2, -0.1),
+        Point3::new(1.8, 1.3, -0.1),
+        Point3::new(-1.7, 1.3, 0.9),
+    ] {
+        let pose = world * Isometry3::translation(at.x, at.y, at.z);
+        let got = one(&cuboid(h), &cavity(), &pose, &world);
+        let e = in_cavity_expected(h, at, w).moved(&world);
+        let err = errors(&got, &e, 2.0);
+        assert!(
+            err.iter().all(|&x| x <= 1e-12),
+            "{at}: {err:?}\n{got:?}\n{e:?}"
+        );
+        // The same with the cavity as I.
+        let back = one(&cavity(), &cuboid(h), &world, &pose);
+        assert_close(&back.swapped(), &got, 2.0, 4.0, 1e-12, "cavity as I");
+    }
+    // Wholly inside: no contact. Wholly outside: the whole box, pushed back towards the
+    // nearest wall point (the +x wall, 1.0 away from the centre at x = 3).
+    let inside = query(
+        &cuboid(h),
+        &cavity(),
+        &(world * Isometry3::translation(0.3, -0.2, 0.1)),
+        &world,
+    );
+    assert!(inside.is_empty(), "{inside:?}");
+    let out = one(
+        &cuboid(h),
+        &cavity(),
+        &(world * Isometry3::translation(3.0, 0.2, 0.1)),
+        &world,
+    );
+    assert!(
+        (out.normal_w - world.rotation * -Vector3::x()).norm() <= 1e-12,
+        "{out:?}"
+    );
+    assert!((out.penetration - 1.5).abs() <= 1e-12, "{out:?}");
+    let surface = 8.0 * (h.x * h.y + h.y * h.z + h.z * h.x);
+    assert!((out.area - 0.25 * surface).abs() <= 1e-12, "{out:?}");
+}
+
+#[test]
+fn a_flipped_mesh_is_a_cavity_whatever_its_meshing() {
+    let mut rng = Rng::new(80);
+    let w = Vector3::new(1.5, 1.5, 2.0);
+    let centre = Point3::new(1.5, 1.5, 2.0);
+    let walls_fine = flipped(box_mesh(centre, w));
+    let walls_coarse = flipped(instance(Geometry::Cuboid(
+        Cuboid::from_corner(3.0, 3.0, 4.0).unwrap(),
+    )));
+    let tube_fine = flipped(mesh_of(&tube(1.0)));
+    let tube_coarse = flipped(instance(Geometry::Mesh(Arc::new(tube_coarse()))));
+    let mut seen = 0;
+    for _ in 0..300 {
+        let world = rng.pose(3.0);
+        let h = Vector3::new(
+            rng.uniform(0.2, 1.0),
+            rng.uniform(0.2, 1.0),
+            rng.uniform(0.2, 1.0),
+        );
+        let at = Isometry3::from_parts(
+            nalgebra::Translation3::from(centre.coords + rng.unit_vector() * rng.uniform(0.0, 2.5)),
+            rng.rotation(),
+        );
+        for (a, b) in [(&walls_fine, &walls_coarse), (&tube_fine, &tube_coarse)] {
+            let x = by_point(query(&cuboid(h), a, &(world * at), &world));
+            let y = by_point(query(&cuboid(h), b, &(world * at), &world));
+            assert_eq!(x.len(), y.len(), "{x:?}\n{y:?}");
+            for (p, q) in x.iter().zip(&y) {
+                assert_close(p, q, 4.0, 16.0, 1e-12, "two meshings of a cavity");
+                seen += 1;
+            }
+        }
+    }
+    assert!(seen > 200, "only {seen} contacts");
+}
+
+fn box_in_cavity_scene(rng: &mut Rng, s: f64) -> Scene {
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j * rng.pose(1.6);
+    let h = Vector3::new(
+        rng.uniform(0.2, 0.8),
+        rng.uniform(0.2, 0.8),
+        rng.uniform(0.2, 0.8),
+    );
+    Scene {
+        i: cuboid(h * s),
+        j: flipped(cuboid(Vector3::new(1.5, 1.2, 1.0) * s)),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: 3.0 * s,
+    }
+}
+
+#[test]
+fn a_box_in_a_cavity_swaps_moves_and_scales_with_the_scene() {
+    let makers: [(&str, Maker); 1] = [("box–box cavity", box_in_cavity_scene)];
+    check_swap(&makers, 84);
+    check_motion(&makers, 85);
+    check_scale(&makers, 86);
+}

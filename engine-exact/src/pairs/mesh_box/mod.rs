@@ -28,6 +28,11 @@
 //!   surface when `S` vanishes.
 //! - Touching (a mesh face flush with a box face, a vertex on it) has no volume and is no
 //!   contact: points on the box's surface count as outside it.
+//! - **Flipped** (a cavity): the mesh turned inside out ([`PreparedMesh::inverted`]) bounds
+//!   the space outside it, and everything above holds as written: the reversed triangles'
+//!   normals point into the cavity, the winding number's threshold moves, and the mesh's ball
+//!   no longer bounds its solid. A box in a box-shaped cavity is the box against the cavity's
+//!   walls as such a mesh ([`box_mesh`]).
 //!
 //! Work is `O(vertices + triangles)` per query (the mesh is moved into the box's frame), plus
 //! the clipping of the triangles that reach the box.
@@ -123,10 +128,10 @@ pub(crate) fn contacts(
     let frame = pose_box * Translation3::from(cuboid.center().coords);
     let relative = frame.inv_mul(pose_mesh);
     let half = cuboid.half_extents() / unit;
-    // The mesh's ball must reach the box.
+    // The mesh's ball must reach the box (a cavity's solid reaches everywhere).
     let reach = (relative * mesh.centre).coords / unit;
     let radius = mesh.radius / unit;
-    if (0..3).any(|k| reach[k].abs() - radius >= half[k]) {
+    if !mesh.inverted && (0..3).any(|k| reach[k].abs() - radius >= half[k]) {
         return;
     }
     let local: Vec<Point3> = mesh
@@ -163,7 +168,9 @@ pub(crate) fn contacts(
                 solid_angle(p, &a, &b, &c)
             })
             .sum();
-        winding > 2.0 * std::f64::consts::PI
+        // Inside-out, the sum is −4π inside the mesh and 0 outside, where its solid is.
+        let threshold = if mesh.inverted { -2.0 } else { 2.0 };
+        winding > threshold * std::f64::consts::PI
     };
     if polygons.is_empty() && !inside(&Point3::origin()) {
         return;
@@ -337,6 +344,33 @@ fn region_contact(
         depth,
         area: area * unit * unit,
     })
+}
+
+/// The closed mesh of `cuboid`'s surface (12 triangles, outward), prepared (`None` only if
+/// the box were degenerate, which its constructor rules out).
+pub(crate) fn box_mesh(cuboid: &Cuboid) -> Option<PreparedMesh> {
+    let (c, h) = (cuboid.center(), cuboid.half_extents());
+    let vertices = (0..8)
+        .map(|k| {
+            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
+            Point3::new(c.x + s(0) * h.x, c.y + s(1) * h.y, c.z + s(2) * h.z)
+        })
+        .collect();
+    let mut triangles = Vec::with_capacity(12);
+    // Faces as corner quads (bit 0: x, 1: y, 2: z), counter-clockwise seen from outside.
+    for q in [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ] {
+        triangles.push([q[0], q[1], q[2]]);
+        triangles.push([q[0], q[2], q[3]]);
+    }
+    let mesh = contact_core::geometry::TriangleMesh::new(vertices, triangles).ok()?;
+    PreparedMesh::new(&mesh)
 }
 
 /// Contacts of `mesh` at `pose_mesh` (`a`) with the bounded `plane` (flipped when `side <
