@@ -209,6 +209,26 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+        // A tilted cylinder across both feet's tops: two regions.
+        Case {
+            name: "cylinder_mesh_two_feet",
+            i: cylinder(0.3, 3.0),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::from_parts(
+                nalgebra::Translation3::new(-1.5, 0.0, 1.1),
+                UnitQuaternion::from_euler_angles(0.1, FRAC_PI_2 - 0.2, 0.0),
+            ),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "frustum_mesh_two_feet",
+            i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.8), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
         Case {
             name: "mesh_bounded_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),

@@ -106,6 +106,12 @@ pub(crate) enum Kernel {
         cuboid: Cuboid,
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
     },
+    /// Cylinder or frustum `a` against a closed mesh `b` (sliced across `a`'s axis): one
+    /// contact per region.
+    RevolvedMesh {
+        solid: pairs::sphere_solid::Solid,
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+    },
     /// Closed mesh `a` against a bounded plane `b` (the box–mesh pair on the plane's prism cut
     /// to a box about the mesh): one contact per region.
     MeshBoundedPlane {
@@ -204,6 +210,10 @@ impl Kernel {
             pairs::mesh_box::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
             return Ok(());
         }
+        if let Self::RevolvedMesh { solid, mesh } = self {
+            pairs::mesh_revolved::contacts(solid, pose_a, mesh, pose_b, work, emit);
+            return Ok(());
+        }
         if let Self::MeshBoundedPlane { mesh, plane, side } = self {
             pairs::mesh_box::bounded_plane_contacts(mesh, pose_a, plane, *side, pose_b, work, emit);
             return Ok(());
@@ -221,6 +231,7 @@ impl Kernel {
         let found = match *self {
             Self::MeshPlane { .. }
             | Self::BoxMesh { .. }
+            | Self::RevolvedMesh { .. }
             | Self::MeshBoundedPlane { .. }
             | Self::BoxRevolved { .. }
             | Self::RevolvedBoundedPlane { .. } => None,

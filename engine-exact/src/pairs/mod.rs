@@ -25,6 +25,7 @@ pub mod ellipsoid_plane;
 pub(crate) mod ellipsoid_sliced;
 pub(crate) mod mesh_box;
 pub mod mesh_plane;
+pub(crate) mod mesh_revolved;
 pub mod revolved_plane;
 pub mod section;
 pub mod slice_events;

@@ -15,6 +15,8 @@
 //!   invariants, separate regions, degenerate branches;
 //! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
 //!   box, regions, holes in the caps, containment, touching, invariants;
+//! - [`mesh_revolved`]: cylinder–mesh and frustum–mesh: the slicings where the mesh is a box,
+//!   regions, a hole in the section, containment, touching, invariants;
 //! - [`voxel_oracle`]: grid-cell meshes and their closed-form contact with aligned boxes;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
@@ -29,6 +31,7 @@ mod degenerate_sliced;
 mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
 mod mesh_box;
+mod mesh_revolved;
 mod model_check;
 mod oracles;
 mod properties;

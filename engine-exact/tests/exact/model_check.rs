@@ -56,7 +56,9 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 44] = [
+const BUILT: [(&str, &str); 46] = [
+    ("cylinder", "mesh"),
+    ("frustum", "mesh"),
     ("box", "mesh"),
     ("mesh", "bounded plane"),
     ("box", "frustum"),
@@ -156,8 +158,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 43 distinct pairs, 36 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 36);
+    // 45 distinct pairs, 38 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 38);
 }
 
 #[test]

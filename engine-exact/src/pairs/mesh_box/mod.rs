@@ -60,7 +60,8 @@ pub(crate) struct UnionFind {
 }
 
 impl UnionFind {
-    fn new(count: usize) -> Self {
+    /// `count` nodes, each its own set.
+    pub(crate) fn new(count: usize) -> Self {
         Self {
             parent: (0..count as u32).collect(),
         }

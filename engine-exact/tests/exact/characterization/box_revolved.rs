@@ -14,7 +14,7 @@ use crate::common::Expected;
 use crate::common::{Rng, instance};
 use crate::oracles;
 use crate::revolved_oracles::{self as revolved_oracles, Revolved};
-use contact_core::geometry::{Cuboid, Ellipsoid, Frustum, Plane, Torus};
+use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
 use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, UnitQuaternion, Vector3};
 use nalgebra::Translation3;
 use std::f64::consts::PI;
@@ -30,6 +30,8 @@ const SLICED_SAMPLES: usize = 30;
 enum Ground {
     Box,
     Bounded,
+    /// The box as a closed mesh (12 triangles).
+    Mesh,
 }
 
 fn ground(rng: &mut Rng, kind: Ground, size: f64) -> (GeometryInstance, Isometry3) {
@@ -38,6 +40,14 @@ fn ground(rng: &mut Rng, kind: Ground, size: f64) -> (GeometryInstance, Isometry
             let h = 8.0 * size;
             (
                 instance(Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap())),
+                Isometry3::translation(rng.uniform(-1.0, 1.0) * size, 0.0, -h),
+            )
+        }
+        Ground::Mesh => {
+            let h = 8.0 * size;
+            let mesh = crate::common::boxes_mesh(&[(Point3::origin(), Vector3::repeat(h))]);
+            (
+                instance(Geometry::Mesh(std::sync::Arc::new(mesh))),
                 Isometry3::translation(rng.uniform(-1.0, 1.0) * size, 0.0, -h),
             )
         }
@@ -350,6 +360,45 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                     expected: oracles::ellipsoid_plane(&s, &q, z0),
                     length: s.max(),
                 })
+            },
+        )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "frustum–mesh",
+            "standing on its bottom in a box-shaped mesh (12 triangles), the top face cutting it",
+            "slicing across the axis: mesh section chords and arcs; oracle: truncated cone (polynomial moments)",
+            |rng| upright_frustum(rng, Ground::Mesh),
+        )),
+        iterative(run(
+            rng,
+            SLICED_SAMPLES,
+            "frustum–mesh",
+            "axis tilted ≥ 12° from the mesh's top face normal, other faces out of reach",
+            "slicing across the axis: mesh section chords and arcs; oracle: Simpson over slices across the axis",
+            |rng| {
+                let solid = random_frustum(rng);
+                let q = tilt(rng)?;
+                tilted(rng, solid, q, Ground::Mesh)
+            },
+        )),
+        iterative(run(
+            rng,
+            SLICED_SAMPLES,
+            "cylinder–mesh",
+            "axis tilted ≥ 12° from the mesh's top face normal, other faces out of reach",
+            "slicing across the axis: mesh section chords and arcs; oracle: Simpson over slices across the axis",
+            |rng| {
+                let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 2.0));
+                let q = tilt(rng)?;
+                let mut case = tilted(
+                    rng,
+                    Revolved::Frustum { r0: r, r1: r, len },
+                    q,
+                    Ground::Mesh,
+                )?;
+                case.i = instance(Geometry::Cylinder(Cylinder::new(r, len).unwrap()));
+                Some(case)
             },
         )),
     ]

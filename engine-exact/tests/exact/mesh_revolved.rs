@@ -1,0 +1,196 @@
+//! A cylinder or a frustum against a closed mesh: agreement with the cylinder–box and
+//! box–frustum slicings where the mesh is a box (at any pose), separate regions, a hole in
+//! the section, containment and touching, and the invariants of [`crate::properties`].
+
+use crate::characterization::mesh_box::tube;
+use crate::common::{Rng, assert_close, boxes_mesh, instance, one, query};
+use crate::properties::{Maker, Scene, check_motion, check_scale, check_swap, scaled_pose};
+use crate::voxel_oracle::Voxels;
+use contact_core::geometry::{Cuboid, Cylinder, Frustum};
+use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+fn cylinder(r: f64, len: f64) -> GeometryInstance {
+    instance(Geometry::Cylinder(Cylinder::new(r, len).unwrap()))
+}
+
+fn frustum(r0: f64, r1: f64, len: f64) -> GeometryInstance {
+    instance(Geometry::Frustum(Frustum::new(r0, r1, len).unwrap()))
+}
+
+fn mesh(m: contact_core::geometry::TriangleMesh) -> GeometryInstance {
+    instance(Geometry::Mesh(Arc::new(m)))
+}
+
+#[test]
+fn a_box_mesh_gives_the_cylinder_box_and_box_frustum_answers_at_any_pose() {
+    let mut rng = Rng::new(91);
+    let h = Vector3::new(0.7, 0.5, 0.9);
+    let box_mesh = mesh(boxes_mesh(&[(Point3::origin(), h)]));
+    let cuboid = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
+    for (solid, name) in [
+        (cylinder(0.6, 1.4), "cylinder"),
+        (frustum(0.8, 0.3, 1.2), "frustum"),
+        (frustum(0.0, 0.7, 1.0), "cone"),
+    ] {
+        let mut seen = 0;
+        for _ in 0..150 {
+            let pose_j = rng.pose(2.0);
+            let pose_i = pose_j * rng.pose(1.5);
+            let reference = query(&solid, &cuboid, &pose_i, &pose_j);
+            let got = query(&solid, &box_mesh, &pose_i, &pose_j);
+            assert_eq!(
+                got.len(),
+                reference.len(),
+                "{name}: {got:?} / {reference:?}"
+            );
+            for (g, r) in got.iter().zip(&reference) {
+                assert_close(g, r, 2.0, 4.0, 1e-9, name);
+                seen += 1;
+            }
+        }
+        assert!(seen > 40, "{name}: only {seen} contacts");
+    }
+}
+
+#[test]
+fn a_cylinder_across_both_arms_of_a_u_gives_each_arms_contact() {
+    // Two arms (cells x = 0 and x = 2, y = 1) on a base row y = 0; the cylinder lies along x
+    // through both arms above the base, out of their tops (a regular normal in each).
+    let mut cells = Vec::new();
+    for i in 0..3 {
+        cells.push([i, 0, 0]);
+    }
+    cells.push([0, 1, 0]);
+    cells.push([2, 1, 0]);
+    let u = Voxels { cells, size: 1.0 };
+    let world = Rng::new(92).pose(3.0);
+    let along_x = Isometry3::new(
+        Vector3::new(-0.5, 1.6, 0.85),
+        Vector3::new(0.0, 0.5 * PI, 0.0),
+    );
+    let r = 0.3;
+    let solid = cylinder(r, 4.0);
+    let got = query(&solid, &mesh(u.mesh()), &(world * along_x), &world);
+    assert_eq!(got.len(), 2, "{got:?}");
+    // Each arm alone, as a box.
+    for x in [0.5, 2.5] {
+        let arm = instance(Geometry::Cuboid(Cuboid::centered(0.5, 0.5, 0.5).unwrap()));
+        let reference = one(
+            &solid,
+            &arm,
+            &(world * along_x),
+            &(world * Isometry3::translation(x, 1.5, 0.5)),
+        );
+        let g = got
+            .iter()
+            .min_by(|a, b| {
+                let d = |c: &Contact| (c.point_i_w - reference.point_i_w).norm();
+                d(a).total_cmp(&d(b))
+            })
+            .unwrap();
+        assert_close(g, &reference, 1.0, 1.0, 1e-9, "one arm");
+    }
+}
+
+#[test]
+fn a_cylinder_around_the_tubes_hole_is_one_region_with_its_hole() {
+    // The disc (radius 1.2 about (1.6, 1.5)) holds the hole [1, 2]² and lies in the tube's
+    // wall: its circle is inside the mesh throughout, the hole a loop inside the disc. The
+    // cylinder starts at z = 1 inside the tube and leaves its top.
+    let world = Rng::new(93).pose(3.0);
+    let r = 1.2;
+    let pose = world * Isometry3::translation(1.6, 1.5, 1.0);
+    let got = one(&cylinder(r, 5.0), &mesh(tube(1.0).mesh()), &pose, &world);
+    let area = PI * r * r - 1.0;
+    // The centroid (in the hole, at mid-height 2.5): the disc less the hole.
+    let x = (1.6 * PI * r * r - 1.5) / area;
+    // Normal +z (the bottom cap inside the mesh); the cylinder's point below the centroid on
+    // its cap, the mesh's the closest point of the hole's wall x = 2 (the line along z misses
+    // the tube).
+    let expected_i = Point3::new(x, 1.5, 1.0);
+    let expected_j = Point3::new(2.0, 1.5, 2.5);
+    assert!(
+        (got.normal_w - world.rotation * Vector3::z()).norm() <= 1e-9,
+        "{got:?}"
+    );
+    assert!(
+        (got.point_i_w - world * expected_i).norm() <= 1e-9,
+        "{got:?}"
+    );
+    assert!(
+        (got.point_j_w - world * expected_j).norm() <= 1e-9,
+        "{got:?}"
+    );
+    assert!((got.area - area).abs() <= 1e-9 * area, "{got:?}");
+}
+
+#[test]
+fn containment_touching_and_the_mesh_inside_the_solid() {
+    let block = mesh(boxes_mesh(&[(
+        Point3::origin(),
+        Vector3::new(3.0, 3.0, 3.0),
+    )]));
+    // A cylinder inside the block, nearest its +x face: pushed out that way.
+    let pose = Isometry3::translation(2.0, 0.3, -0.5);
+    let got = one(&cylinder(0.5, 1.0), &block, &pose, &Isometry3::identity());
+    assert!((got.normal_w - Vector3::x()).norm() <= 1e-9, "{got:?}");
+    let volume_area = 0.25 * (2.0 * PI * 0.25 + 2.0 * PI * 0.5);
+    assert!((got.area - volume_area).abs() <= 1e-9, "{got:?}");
+    // A cylinder standing on the block's top face, and one beside it touching its side.
+    for pose in [
+        Isometry3::translation(0.4, 0.2, 3.0),
+        Isometry3::translation(3.5, 0.0, -1.0),
+    ] {
+        let found = query(&cylinder(0.5, 1.0), &block, &pose, &Isometry3::identity());
+        assert!(found.is_empty(), "{found:?}");
+    }
+    // A small box mesh inside a big cylinder: the contact of the box against it.
+    let small = Vector3::new(0.2, 0.3, 0.1);
+    let inner = mesh(boxes_mesh(&[(Point3::origin(), small)]));
+    let cuboid = instance(Geometry::Cuboid(
+        Cuboid::centered(small.x, small.y, small.z).unwrap(),
+    ));
+    let at = Isometry3::translation(0.3, -0.2, 0.8);
+    let got = one(&cylinder(1.0, 2.0), &inner, &Isometry3::identity(), &at);
+    let reference = one(&cylinder(1.0, 2.0), &cuboid, &Isometry3::identity(), &at);
+    assert_close(&got, &reference, 2.0, 4.0, 1e-9, "mesh inside the cylinder");
+}
+
+fn cylinder_mesh_scene(rng: &mut Rng, s: f64) -> Scene {
+    let pose_j = rng.pose(3.0);
+    let pose_i = pose_j
+        * Isometry3::from_parts(
+            nalgebra::Translation3::new(
+                rng.uniform(0.0, 3.0),
+                rng.uniform(0.0, 1.0),
+                rng.uniform(0.0, 2.0),
+            ),
+            rng.rotation(),
+        );
+    let solid = if rng.uniform(0.0, 1.0) < 0.5 {
+        cylinder(rng.uniform(0.2, 0.8) * s, rng.uniform(0.5, 2.0) * s)
+    } else {
+        frustum(
+            rng.uniform(0.0, 0.8) * s,
+            rng.uniform(0.2, 0.8) * s,
+            rng.uniform(0.5, 2.0) * s,
+        )
+    };
+    Scene {
+        i: solid,
+        j: mesh(crate::characterization::mesh_box::l_bar(s).mesh()),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: 5.0 * s,
+    }
+}
+
+#[test]
+fn revolved_mesh_pairs_swap_move_and_scale_with_the_scene() {
+    let makers: [(&str, Maker); 1] = [("sliced revolved–mesh", cylinder_mesh_scene)];
+    check_swap(&makers, 94);
+    check_motion(&makers, 95);
+    check_scale(&makers, 96);
+}
