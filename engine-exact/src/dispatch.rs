@@ -31,6 +31,7 @@
 //! | frustum–plane, torus–plane (bounded) | the box–frustum/torus slicing on the plane's prism cut to a box about the solid, `crate::pairs::box_revolved` | plane |
 //! | ellipsoid–plane (bounded, general) | the ellipsoid–box slicing on the plane's prism cut to a box about the ellipsoid, [`crate::pairs::ellipsoid_box`] | plane |
 //! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
+//! | circle–line (bounded) | closed form: the disc cut by the line's half-strip (segment and polygon moments, the overlap pairs' normal), [`crate::planar::circle_bounded_line`] | line |
 //! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
 //! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
 //! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
@@ -46,9 +47,8 @@
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against frustums, tori and meshes; cylinder–frustum, cylinder–torus,
 //! frustum–frustum, frustum–torus and torus–torus; a mesh against a torus or a general
-//! ellipsoid, and mesh–mesh (the intersection of two meshes is not built); circles on a bounded line are
-//! not built yet; point–point, plane–plane and line–line are not contacts; 2-D against 3-D is
-//! refused (SPEC §3).
+//! ellipsoid, and mesh–mesh (the intersection of two meshes is not built); point–point,
+//! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
@@ -73,7 +73,6 @@ pub(crate) struct Selected {
 
 /// The reasons given for pairs not built yet, shared so messages stay consistent.
 const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
-const NOT_BUILT_LINE: &str = "a circle against a bounded 2-D PLANE is not built in the exact engine yet; use an unbounded line or the faceted engine";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
@@ -410,18 +409,21 @@ pub(crate) fn select(
             }
         }
         (G::Circle(c), G::Line(line)) => {
-            let [x0, x1] = line.x_range();
-            if x0.is_finite() || x1.is_finite() {
-                Err(no(NOT_BUILT_LINE))
+            let x_range = line.x_range();
+            let kernel = if x_range.iter().any(|x| x.is_finite()) {
+                Kernel::CircleBoundedLine {
+                    radius: c.radius(),
+                    x_range,
+                    side: side(flip_b),
+                }
             } else {
-                no_flip(
-                    flip_a,
-                    Kernel::CircleLine {
-                        radius: c.radius(),
-                        side: side(flip_b),
-                    },
-                )
-            }
+                Kernel::CircleLine {
+                    radius: c.radius(),
+                    side: side(flip_b),
+                }
+            };
+            // A flipped circle (a hole) against a line's material is an unbounded region.
+            no_flip(flip_a, kernel)
         }
         (G::Point, G::Curve(curve)) => {
             let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;

@@ -173,6 +173,13 @@ pub(crate) enum Kernel {
     },
     /// Solid circle `a` against an unbounded line `b`.
     CircleLine { radius: f64, side: f64 },
+    /// Solid circle `a` against line `b` over `x_range` (an end finite): the disc cut by the
+    /// line's half-strip.
+    CircleBoundedLine {
+        radius: f64,
+        x_range: [f64; 2],
+        side: f64,
+    },
     /// Boundary `a` against boundary `b` (arcs and curves, oriented by their flips): one
     /// contact per overlap region (it allocates per query, see
     /// `planar::overlap`).
@@ -352,6 +359,14 @@ impl Kernel {
             Self::CircleLine { radius, side } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;
                 planar::point_line::circle_line(&frame, radius, side)
+            }
+            Self::CircleBoundedLine {
+                radius,
+                x_range,
+                side,
+            } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                planar::circle_bounded_line::contact(&frame, radius, x_range, side)
             }
             Self::Overlap { ref a, ref b } => {
                 let frame = planar::InPlane::new(pose_a, pose_b, length)?;

@@ -12,6 +12,7 @@
 
 pub mod arc;
 pub(crate) mod boundary;
+pub mod circle_bounded_line;
 pub mod circles;
 pub(crate) mod closest;
 pub(crate) mod crossings;

@@ -4,10 +4,12 @@
 //! when flipped (`side = −1`), so the outward normal is `n = (0, side)`.
 //! - **Point** at `(x, y)`, `d = side·y`: contact iff `d < 0` and `XMIN ≤ x ≤ XMAX`;
 //!   δ = `−d`, the points are the point itself and its foot `(x, 0)`; length 0.
-//! - **Circle** of radius `r` centred at height `d` (unbounded line only): contact iff
-//!   `d < r`; the segment's centroid lies on the normal through the centre, so δ = `r − d`
-//!   with points `c − r·n` and `c − d·n`; length: the chord `2√(r² − d²)` while the centre is
-//!   above the line, the diameter `2r` once below (continuous).
+//! - **Circle** of radius `r` centred at height `d` (unbounded line only; a bounded one is
+//!   [`super::circle_bounded_line`], which reduces to this where its range covers the disc's
+//!   span): contact iff `d < r`; the segment's centroid lies on the normal through the
+//!   centre, so δ = `r − d` with points `c − r·n` and `c − d·n`; length: the chord
+//!   `2√(r² − d²)` while the centre is above the line, the diameter `2r` once below
+//!   (continuous).
 
 use super::InPlane;
 use crate::kernel::PairContact;

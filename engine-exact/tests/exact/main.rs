@@ -11,6 +11,8 @@
 //! - [`degenerate`]: touching, grazing, containment, coincident centres, extreme scales;
 //! - [`degenerate_sliced`]: the same for the sliced cylinder pairs;
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
+//! - [`circle_bounded_line`]: a circle on a bounded line: invariants, the unbounded limit,
+//!   agreement with a closed arc, continuity across an end, degenerate branches;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
 //!   invariants, separate regions, degenerate branches;
 //! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
@@ -24,6 +26,7 @@
 mod bounded_plane;
 mod box_revolved;
 mod characterization;
+mod circle_bounded_line;
 mod common;
 mod degenerate;
 mod degenerate_boundaries;

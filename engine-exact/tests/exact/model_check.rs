@@ -13,7 +13,7 @@ use engine_exact::ExactEngine;
 use std::sync::Arc as Shared;
 
 /// One representative geometry of each kind (spheres for the ellipsoid kind, an unbounded
-/// plane and line), plus the general ellipsoid and a bounded plane.
+/// plane and line), plus the general ellipsoid, a bounded plane and a bounded line.
 fn representatives() -> Vec<Geometry> {
     let tetra = TriangleMesh::new(
         vec![
@@ -52,11 +52,12 @@ fn representatives() -> Vec<Geometry> {
         Geometry::Arc(Arc::new(1.0, 3.0).unwrap()),
         Geometry::Curve(Shared::new(curve)),
         Geometry::Line(Line::unbounded()),
+        Geometry::Line(Line::bounded(-1.0, 1.0).unwrap()),
     ]
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 46] = [
+const BUILT: [(&str, &str); 49] = [
     ("cylinder", "mesh"),
     ("frustum", "mesh"),
     ("box", "mesh"),
@@ -97,18 +98,22 @@ const BUILT: [(&str, &str); 46] = [
     ("point", "line"),
     ("circle", "circle"),
     ("circle", "line"),
-    ("point", "line"),
+    ("point", "bounded line"),
+    ("circle", "bounded line"),
     ("arc", "arc"),
     ("arc", "curve"),
     ("arc", "line"),
     ("curve", "curve"),
     ("curve", "line"),
+    ("arc", "bounded line"),
+    ("curve", "bounded line"),
 ];
 
 fn name(g: &Geometry) -> &'static str {
     match g {
         Geometry::Ellipsoid(e) if e.sphere_radius().is_some() => "sphere",
         Geometry::Plane(p) if !p.is_unbounded() => "bounded plane",
+        Geometry::Line(l) if l.x_range().iter().any(|x| x.is_finite()) => "bounded line",
         other => match other.kind() {
             GeometryKind::Ellipsoid => "ellipsoid",
             GeometryKind::Cuboid => "box",
@@ -158,8 +163,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 45 distinct pairs, 38 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 38);
+    // 49 distinct pairs, 42 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 42);
 }
 
 #[test]

@@ -17,8 +17,8 @@
 //!   `h − s > 0`; δ = `h − s`, points `c − h·n` and
 //!   `q`; length `2√(h² − s²)` while `c` is outside the material, `2h` once inside.
 //! - **line:** the exact half-plane: `s` is `c`'s height, `q` its foot; a point beyond a
-//!   bounded line's ends has no contact (circles need an unbounded line, as in the exact
-//!   engine).
+//!   bounded line's ends has no contact (circles need an unbounded line here; the exact
+//!   engine also builds a circle on a bounded one).
 //! - **ends of open polylines:** when `q` is an open end and `c` lies beyond it along the
 //!   tangent, no contact (no material there), as in the exact engine.
 //!

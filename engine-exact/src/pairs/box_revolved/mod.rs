@@ -53,7 +53,7 @@
 //! Touching is no contact.
 
 mod azimuth;
-mod events;
+pub(crate) mod events;
 
 use super::clipped::unit_for;
 use super::disc_section::{DiscSection, disc_section};

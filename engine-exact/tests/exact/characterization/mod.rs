@@ -9,6 +9,7 @@
 use crate::common::{Expected, Rng, errors, query};
 use contact_core::{GeometryInstance, Isometry3};
 
+pub(crate) mod bounded_line;
 mod box_revolved;
 mod ellipsoids;
 pub(crate) mod mesh_box;
@@ -105,6 +106,7 @@ fn characterization_table() {
     // Added last, so the rows above keep their seeded configurations.
     rows.extend(box_revolved::rows(&mut rng));
     rows.extend(mesh_box::rows(&mut rng));
+    rows.extend(bounded_line::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
