@@ -20,7 +20,7 @@
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | mesh (a cavity: the triangles inside out) |
-//! | cylinder–mesh, frustum–mesh (closed) | slicing across the solid's axis: the mesh's section segments against the disc, chords and arcs summed per part in closed form, quadrature cut at the mesh's vertex heights, the circle's tangencies to the section lines and the edges' piercings of the lateral surface; one contact per region (parts labelled per piece, holes joined by ray), `crate::pairs::mesh_revolved` | none |
+//! | cylinder–mesh, frustum–mesh, torus–mesh (closed) | slicing across the solid's axis: the mesh's section segments against the disc (a torus' annulus), chords and arcs summed per part in closed form, quadrature cut at the mesh's vertex heights, the circle's tangencies to the section lines and the edges' piercings of the lateral surface; one contact per region (parts labelled per piece, holes joined by ray), `crate::pairs::mesh_revolved` | none |
 //! | mesh–plane (bounded) | the box–mesh intersection on the plane's prism cut to a box about the mesh, `crate::pairs::mesh_box` | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`]; one box flipped (a box-shaped cavity): the box–mesh intersection with the cavity's walls turned inside out | one box |
@@ -46,8 +46,8 @@
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
 //! ellipsoids against frustums, tori and meshes; cylinder–frustum, cylinder–torus,
-//! frustum–frustum, frustum–torus and torus–torus; a mesh against a torus or a general
-//! ellipsoid, and mesh–mesh (the intersection of two meshes is not built); point–point,
+//! frustum–frustum, frustum–torus and torus–torus; a mesh against a general ellipsoid, and
+//! mesh–mesh (the intersection of two meshes is not built); point–point,
 //! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
@@ -344,7 +344,7 @@ pub(crate) fn select(
                 },
             )
         }
-        (G::Cylinder(_) | G::Frustum(_), G::Mesh(mesh)) => {
+        (G::Cylinder(_) | G::Frustum(_) | G::Torus(_), G::Mesh(mesh)) => {
             let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
             let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
             no_flip(
@@ -357,7 +357,7 @@ pub(crate) fn select(
         }
         (G::Cylinder(_), G::Frustum(_) | G::Torus(_))
         | (G::Frustum(_), G::Frustum(_) | G::Torus(_))
-        | (G::Torus(_), G::Torus(_) | G::Mesh(_))
+        | (G::Torus(_), G::Torus(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {
             let mesh = std::sync::Arc::new(PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?);

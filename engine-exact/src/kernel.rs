@@ -106,8 +106,8 @@ pub(crate) enum Kernel {
         cuboid: Cuboid,
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
     },
-    /// Cylinder or frustum `a` against a closed mesh `b` (sliced across `a`'s axis): one
-    /// contact per region.
+    /// Cylinder, frustum or torus `a` against a closed mesh `b` (sliced across `a`'s axis):
+    /// one contact per region.
     RevolvedMesh {
         solid: pairs::sphere_solid::Solid,
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,

@@ -57,7 +57,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 49] = [
+const BUILT: [(&str, &str); 50] = [
+    ("torus", "mesh"),
     ("cylinder", "mesh"),
     ("frustum", "mesh"),
     ("box", "mesh"),
@@ -163,8 +164,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 49 distinct pairs, 42 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 42);
+    // 50 distinct pairs, 43 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 43);
 }
 
 #[test]

@@ -88,13 +88,13 @@ fn edge_of(a: u8, b: u8) -> u8 {
     if (a + 1) % 3 == b { a } else { b }
 }
 
-/// Where a segment meets the circle: its angle, whether it leaves the disc there, and its
-/// triangle (the slice's index).
+/// Where a segment meets a circle: its angle, whether it leaves the circle's disc there, and
+/// the chord it ends or starts (the slice's index).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Crossing {
     pub angle: f64,
     pub leaves: bool,
-    pub segment: usize,
+    pub chord: usize,
 }
 
 /// A segment `p → q` against the circle of radius `r`: the chord inside (if any) as

@@ -401,5 +401,25 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 Some(case)
             },
         )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "torus–mesh",
+            "lying flat in a box-shaped mesh (12 triangles), its top face cutting it",
+            "slicing across the axis: mesh section chords and annulus arcs; oracle: Pappus (annular slab)",
+            |rng| flat_torus(rng, Ground::Mesh),
+        )),
+        iterative(run(
+            rng,
+            SLICED_SAMPLES,
+            "torus–mesh",
+            "any tilt ≥ 12° from the mesh's top face normal, other faces out of reach",
+            "slicing across the axis: mesh section chords and annulus arcs; oracle: Simpson over annulus slices",
+            |rng| {
+                let solid = random_torus(rng);
+                let q = tilt(rng)?;
+                tilted(rng, solid, q, Ground::Mesh)
+            },
+        )),
     ]
 }
