@@ -238,6 +238,14 @@ fn cases() -> Vec<Case> {
             depth: None,
         },
         Case {
+            name: "ellipsoid_mesh_two_feet",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.6, 0.5, 0.4).unwrap()),
+            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.2), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
             name: "mesh_bounded_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
             j: Geometry::Plane(Plane::bounded(-1.2, 2.0, -2.0, 2.0).unwrap()),

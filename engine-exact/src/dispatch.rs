@@ -21,6 +21,7 @@
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
 //! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | mesh (a cavity: the triangles inside out) |
 //! | cylinder–mesh, frustum–mesh, torus–mesh (closed) | slicing across the solid's axis: the mesh's section segments against the disc (a torus' annulus), chords and arcs summed per part in closed form, quadrature cut at the mesh's vertex heights, the circle's tangencies to the section lines and the edges' piercings of the lateral surface; one contact per region (parts labelled per piece, holes joined by ray), `crate::pairs::mesh_revolved` | none |
+//! | ellipsoid–mesh (general, closed) | the mesh mapped by the inverse semi-axes against the unit sphere, sliced as the torus of no major radius; moments mapped back (volume by `abc`, centroid by the semi-axes, area vectors by the cofactor), `crate::pairs::mesh_revolved` | none |
 //! | mesh–plane (bounded) | the box–mesh intersection on the plane's prism cut to a box about the mesh, `crate::pairs::mesh_box` | plane |
 //! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`]; one box flipped (a box-shaped cavity): the box–mesh intersection with the cavity's walls turned inside out | one box |
@@ -45,9 +46,8 @@
 //! shrinks to the touching point; touching alone is no contact).
 //!
 //! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against frustums, tori and meshes; cylinder–frustum, cylinder–torus,
-//! frustum–frustum, frustum–torus and torus–torus; a mesh against a general ellipsoid, and
-//! mesh–mesh (the intersection of two meshes is not built); point–point,
+//! ellipsoids against frustums and tori; cylinder–frustum, cylinder–torus,
+//! frustum–frustum, frustum–torus and torus–torus; mesh–mesh (the intersection of two meshes is not built); point–point,
 //! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
@@ -292,7 +292,16 @@ pub(crate) fn select(
                 )
             }
             Some(_) => Err(no(FLIP_NOT_BUILT)),
-            None => Err(no(NOT_BUILT)),
+            None => {
+                let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+                no_flip(
+                    flip_a || flip_b,
+                    Kernel::EllipsoidMesh {
+                        semi_axes: e.semi_axes(),
+                        mesh: std::sync::Arc::new(prepared),
+                    },
+                )
+            }
         },
         (G::Cylinder(cylinder), G::Cylinder(_) | G::Cuboid(_)) => {
             let other = match b {

@@ -112,6 +112,12 @@ pub(crate) enum Kernel {
         solid: pairs::sphere_solid::Solid,
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
     },
+    /// General ellipsoid `a` against a closed mesh `b` (the mesh mapped onto the unit
+    /// sphere's space and sliced): one contact per region.
+    EllipsoidMesh {
+        semi_axes: Vector3,
+        mesh: Arc<pairs::mesh_plane::PreparedMesh>,
+    },
     /// Closed mesh `a` against a bounded plane `b` (the box–mesh pair on the plane's prism cut
     /// to a box about the mesh): one contact per region.
     MeshBoundedPlane {
@@ -221,6 +227,10 @@ impl Kernel {
             pairs::mesh_revolved::contacts(solid, pose_a, mesh, pose_b, work, emit);
             return Ok(());
         }
+        if let Self::EllipsoidMesh { semi_axes, mesh } = self {
+            pairs::mesh_revolved::ellipsoid_contacts(semi_axes, pose_a, mesh, pose_b, work, emit);
+            return Ok(());
+        }
         if let Self::MeshBoundedPlane { mesh, plane, side } = self {
             pairs::mesh_box::bounded_plane_contacts(mesh, pose_a, plane, *side, pose_b, work, emit);
             return Ok(());
@@ -239,6 +249,7 @@ impl Kernel {
             Self::MeshPlane { .. }
             | Self::BoxMesh { .. }
             | Self::RevolvedMesh { .. }
+            | Self::EllipsoidMesh { .. }
             | Self::MeshBoundedPlane { .. }
             | Self::BoxRevolved { .. }
             | Self::RevolvedBoundedPlane { .. } => None,

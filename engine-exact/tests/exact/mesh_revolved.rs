@@ -172,6 +172,15 @@ fn cylinder_mesh_scene(rng: &mut Rng, s: f64) -> Scene {
     let pick = rng.uniform(0.0, 1.0);
     let solid = if pick < 0.33 {
         cylinder(rng.uniform(0.2, 0.8) * s, rng.uniform(0.5, 2.0) * s)
+    } else if pick < 0.5 {
+        instance(Geometry::Ellipsoid(
+            contact_core::geometry::Ellipsoid::new(
+                rng.uniform(0.5, 1.6) * s,
+                rng.uniform(0.5, 1.6) * s,
+                rng.uniform(0.5, 1.6) * s,
+            )
+            .unwrap(),
+        ))
     } else if pick < 0.67 {
         let big = rng.uniform(0.6, 1.2);
         instance(Geometry::Torus(
@@ -266,4 +275,28 @@ fn a_box_mesh_gives_the_box_torus_answers_at_any_pose() {
     }
     assert!(seen[1] > 30 && seen[2] > 10, "{seen:?}");
     assert!(joined_slivers <= 2, "{joined_slivers} poses joined");
+}
+
+#[test]
+fn a_box_mesh_gives_the_ellipsoid_box_answer_at_any_pose() {
+    let mut rng = Rng::new(98);
+    let h = Vector3::new(0.7, 0.5, 0.9);
+    let box_mesh = mesh(boxes_mesh(&[(Point3::origin(), h)]));
+    let cuboid = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
+    let ellipsoid = instance(Geometry::Ellipsoid(
+        contact_core::geometry::Ellipsoid::new(0.9, 0.5, 0.35).unwrap(),
+    ));
+    let mut seen = 0;
+    for _ in 0..120 {
+        let pose_j = rng.pose(2.0);
+        let pose_i = pose_j * rng.pose(1.4);
+        let reference = query(&ellipsoid, &cuboid, &pose_i, &pose_j);
+        let got = query(&ellipsoid, &box_mesh, &pose_i, &pose_j);
+        assert_eq!(got.len(), reference.len(), "{got:?} / {reference:?}");
+        for (g, r) in got.iter().zip(&reference) {
+            assert_close(g, r, 2.0, 4.0, 1e-9, "ellipsoid");
+            seen += 1;
+        }
+    }
+    assert!(seen > 30, "only {seen} contacts");
 }

@@ -57,7 +57,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 50] = [
+const BUILT: [(&str, &str); 51] = [
+    ("ellipsoid", "mesh"),
     ("torus", "mesh"),
     ("cylinder", "mesh"),
     ("frustum", "mesh"),
@@ -164,8 +165,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 50 distinct pairs, 43 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 43);
+    // 51 distinct pairs, 44 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 44);
 }
 
 #[test]

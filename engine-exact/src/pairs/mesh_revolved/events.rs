@@ -118,6 +118,14 @@ fn piercing(profile: &Profile, start: &Vector3, d: &Vector3) -> [f64; 5] {
                 0.0,
             ]
         }
+        // A sphere (no major radius): |start + s d|² = ρ², whose quartic would be a square.
+        Profile::Torus { big: 0.0, small } => [
+            start.norm_squared() - small * small,
+            2.0 * start.dot(d),
+            d.norm_squared(),
+            0.0,
+            0.0,
+        ],
         Profile::Torus { big, small } => {
             let (a, b) = (d.norm_squared(), 2.0 * start.dot(d));
             let c = start.norm_squared() + big * big - small * small;

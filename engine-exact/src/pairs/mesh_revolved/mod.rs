@@ -45,21 +45,21 @@
 //! points from the centroid to the mesh's closest point; otherwise against the solid's outward
 //! normal at its surface point nearest the centroid. Touching is no contact.
 
+mod ellipsoid;
 mod events;
+mod region;
 mod regions;
 pub(crate) mod section;
 
+pub(crate) use ellipsoid::ellipsoid_contacts;
+use region::{Region, area_scale};
+
 use super::clipped::unit_for;
-use super::disc_section::disc_section;
-use super::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
-use super::mesh_plane::{PreparedMesh, closest_on_mesh, exit_along};
-use super::solid_distance::{Solid, signed_distance};
-use super::volume_contact::{self, ENCLOSED, VolumeMoments};
+use super::mesh_plane::PreparedMesh;
+use super::solid_distance::Solid;
 use crate::kernel::PairContact;
-use crate::quadrature::MAX_PIECES;
-use crate::ray_exit::surface_point_along_w;
-use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
-use section::{Crossing, SlicedTriangle, arc_moments, chord_moments, clip_to_disc};
+use contact_core::{Isometry3, Vector2, Vector3, WorkCounters};
+use section::{Crossing, SlicedTriangle, clip_to_disc};
 use std::f64::consts::TAU;
 
 /// Heights (working units) this close are one cut.
@@ -89,7 +89,8 @@ impl Profile {
             Self::Frustum { r0, slope, .. } => ((r0 + slope * t).max(0.0), 0.0),
             Self::Torus { big, small } => {
                 let s = ((small - t) * (small + t)).max(0.0).sqrt();
-                (big + s, if s > 0.0 { big - s } else { 0.0 })
+                // A sphere is the torus of no major radius: no inner circle.
+                (big + s, if s > 0.0 { (big - s).max(0.0) } else { 0.0 })
             }
         }
     }
@@ -125,6 +126,10 @@ pub(crate) struct Setup<'a> {
     /// `active[p]`: the sliced triangles crossing piece `p`.
     active: Vec<Vec<u32>>,
     pub mesh: &'a PreparedMesh,
+    /// For an ellipsoid sliced as the unit sphere: the cofactor `(bc, ac, ab)` of its
+    /// semi-axes, which maps area vectors back (the solid's unsigned area element is
+    /// `|cof ∘ ν| dA` on the sphere).
+    cofactor: Option<Vector3>,
 }
 
 impl Setup<'_> {
@@ -259,9 +264,9 @@ pub(crate) fn contacts(
             small: small / unit,
         },
     };
+    let relative = pose_a.inv_mul(pose_b);
     let (z0, z1) = profile.range();
     let outer = profile.outer();
-    let relative = pose_a.inv_mul(pose_b);
     let reach = (relative * mesh.centre).coords / unit;
     let radius = mesh.radius / unit;
     if reach.z + radius <= z0 || reach.z - radius >= z1 || reach.xy().norm() - radius >= outer {
@@ -272,6 +277,32 @@ pub(crate) fn contacts(
         .iter()
         .map(|v| (relative * v).coords / unit)
         .collect();
+    sliced_regions(
+        profile,
+        &local,
+        mesh,
+        None,
+        work,
+        &mut |region, root, work| {
+            if let Some(c) = region.contact(root, solid, pose_a, pose_b, unit, work) {
+                emit(c);
+            }
+        },
+    );
+}
+
+/// Slices `mesh` (its vertices `local` in the solid's frame, working units) against the
+/// solid of `profile`, labels the regions and hands each to `per_region` with its root.
+fn sliced_regions(
+    profile: Profile,
+    local: &[Vector3],
+    mesh: &PreparedMesh,
+    cofactor: Option<Vector3>,
+    work: &mut WorkCounters,
+    per_region: &mut dyn FnMut(&Region, u32, &mut WorkCounters),
+) {
+    let (z0, z1) = profile.range();
+    let outer = profile.outer();
     // The triangles that can reach the solid's bounding box.
     let mut sliced = Vec::new();
     let mut flat = Vec::new();
@@ -290,11 +321,14 @@ pub(crate) fn contacts(
             }
         }
         match SlicedTriangle::new(t as u32, v) {
-            Some(s) => sliced.push(s),
+            Some(mut s) => {
+                s.scale = area_scale(&v, cofactor);
+                sliced.push(s)
+            }
             None => flat.push((t as u32, v)),
         }
     }
-    events::add_events(&sliced, &local, mesh, &profile, &mut heights);
+    events::add_events(&sliced, local, mesh, &profile, &mut heights);
     // Heights closer than `MERGE` are one cut: vertices on one plane of the mesh reach the
     // solid's frame a few ulps apart, and a piece between them would be labelled at a middle
     // whose combinatorics are those of neither side.
@@ -327,8 +361,9 @@ pub(crate) fn contacts(
         cuts,
         active,
         mesh,
+        cofactor,
     };
-    let (labels, mut forest) = regions::label(&setup, &local);
+    let (labels, mut forest) = regions::label(&setup, local);
     let roots: Vec<u32> = (0..labels.nodes() as u32).map(|n| forest.find(n)).collect();
     // The regions, in the order of their smallest node, and the triangles each touches (for
     // the faces parallel to the slices).
@@ -364,237 +399,6 @@ pub(crate) fn contacts(
         touched: &touched,
     };
     for root in found {
-        if let Some(c) = region.contact(root, solid, pose_a, pose_b, unit, work) {
-            emit(c);
-        }
-    }
-}
-
-/// What a region's integration reads.
-struct Region<'a> {
-    setup: &'a Setup<'a>,
-    roots: &'a [u32],
-    labels: &'a regions::Labels,
-    flat: &'a [(u32, [Vector3; 3])],
-    /// `(triangle, root)` for every chord, sorted.
-    touched: &'a [(u32, u32)],
-}
-
-impl Region<'_> {
-    /// The integrand for region `root` at `x` (the height `t` for a frustum, the angle `θ` of
-    /// `t = ρ sin θ` for a torus): `[area, t·area, ∫x, ∫y, S_solid (3), solid's surface inside
-    /// the mesh, mesh's surface inside the solid]` per unit of `x`.
-    fn integrand(&self, root: u32, x: f64, slice: &mut Slice) -> [f64; COMPONENTS] {
-        let setup = self.setup;
-        let mut out = [0.0; COMPONENTS];
-        // t, dt/dx, and per circle the factor of `r·sweep` in S_z and in the unsigned area.
-        let (t, jacobian, (sz_outer, sz_inner), unsigned) = match setup.profile {
-            Profile::Frustum { slope, .. } => (x, 1.0, (-slope, 0.0), (1.0 + slope * slope).sqrt()),
-            Profile::Torus { small, .. } => {
-                let (sin, cos) = x.sin_cos();
-                let (t, s) = (small * sin, small * cos);
-                if s.is_nan() || s <= 0.0 {
-                    return out;
-                }
-                (t, s, (t, t), small)
-            }
-        };
-        let labels = self.labels;
-        let pieces = labels.outer.len();
-        let p = setup
-            .cuts
-            .partition_point(|&c| c <= t)
-            .saturating_sub(1)
-            .min(pieces.saturating_sub(1));
-        let (ro, ri) = setup.profile.circles(t);
-        if ro <= 0.0 {
-            return out;
-        }
-        setup.slice(p, t, slice);
-        let node = |c: usize| labels.offsets[p] + c;
-        let mut mesh_area = 0.0;
-        let mut add = |m: [f64; 3], sign: f64| {
-            out[0] += sign * m[0];
-            out[2] += sign * m[1];
-            out[3] += sign * m[2];
-        };
-        for (c, &(k, a, e, _)) in slice.chords.iter().enumerate() {
-            if self.roots.get(node(c)) != Some(&root) {
-                continue;
-            }
-            add(chord_moments(&a, &e), 1.0);
-            let slope = setup.sliced[setup.active[p][k] as usize].slope;
-            mesh_area += (e - a).norm() / slope;
-        }
-        // Per circle: radius, orientation (+1 outer, −1 inner), S_z factor, crossings, full.
-        let mut lateral = [0.0; 4];
-        let circles = [
-            (
-                ro,
-                1.0,
-                sz_outer,
-                &slice.outer,
-                labels.outer[p],
-                labels.outer_node(p),
-            ),
-            (
-                ri,
-                -1.0,
-                sz_inner,
-                &slice.inner,
-                labels.inner[p],
-                labels.inner_node(p),
-            ),
-        ];
-        for (r, sign, sz, crossings, full, full_node) in circles {
-            if r <= 0.0 {
-                continue;
-            }
-            let mut swept = |start: f64, sweep: f64| {
-                let (m, normal) = arc_moments(r, start, sweep);
-                add(m, sign);
-                lateral[0] += sign * r * normal.x;
-                lateral[1] += sign * r * normal.y;
-                lateral[2] += sz * r * sweep;
-                lateral[3] += unsigned * r * sweep;
-            };
-            if crossings.is_empty() {
-                if full && self.roots[full_node] == root {
-                    swept(0.0, TAU);
-                }
-            } else {
-                for (i, start, sweep) in arcs(crossings) {
-                    if self.roots.get(node(crossings[i].chord)) == Some(&root) {
-                        swept(start, sweep);
-                    }
-                }
-            }
-        }
-        // Per dx: the sections' terms times dt/dx; the swept S_z and unsigned terms already
-        // are (a torus' `(t/s)·r·sweep` and `(ρ/s)·r·sweep` per dt are `t·r·sweep` and
-        // `ρ·r·sweep` per dθ, smooth where `s` vanishes).
-        out[0] *= jacobian;
-        out[2] *= jacobian;
-        out[3] *= jacobian;
-        out[1] = t * out[0];
-        out[4] = lateral[0] * jacobian;
-        out[5] = lateral[1] * jacobian;
-        out[6] = lateral[2];
-        out[7] = lateral[3];
-        out[8] = mesh_area * jacobian;
-        out
-    }
-
-    /// Region `root`'s contact.
-    fn contact(
-        &self,
-        root: u32,
-        solid: &Solid,
-        pose_a: &Isometry3,
-        pose_b: &Isometry3,
-        unit: f64,
-        work: &mut WorkCounters,
-    ) -> Option<PairContact> {
-        let setup = self.setup;
-        let mut slice = Slice::default();
-        let torus = matches!(setup.profile, Profile::Torus { .. });
-        let small = match setup.profile {
-            Profile::Torus { small, .. } => small,
-            Profile::Frustum { .. } => 1.0,
-        };
-        let mapped: Vec<f64> = if torus {
-            setup
-                .cuts
-                .iter()
-                .map(|c| (c / small).clamp(-1.0, 1.0).asin())
-                .collect()
-        } else {
-            setup.cuts.clone()
-        };
-        let mut f = |x: f64| self.integrand(root, x, &mut slice);
-        let mut r = [0.0; COMPONENTS];
-        let n = mapped.len();
-        let mut start = 0;
-        while start + 1 < n {
-            let end = (start + MAX_PIECES).min(n - 1);
-            let mut cuts = mapped[start..=end].to_vec();
-            let part = ADAPTIVE.integrate_pieces(&mut cuts, &mut f, &floor, work);
-            for k in 0..COMPONENTS {
-                r[k] += part[k];
-            }
-            start = end;
-        }
-        let mut slice = Slice::default();
-        // A frustum's caps: the section's limit from inside at t = 0 and t = L.
-        if let Profile::Frustum { len, .. } = setup.profile {
-            for (t, sign) in [(0.0, -1.0), (len, 1.0)] {
-                let c = self.integrand(root, t, &mut slice);
-                r[6] += sign * c[0];
-                r[7] += c[0];
-            }
-        }
-        // Mesh faces parallel to the slices, by their overlap with the section at their height.
-        let (z0, z1) = setup.profile.range();
-        for (tri, v) in self.flat {
-            let joined = setup.mesh.neighbours[*tri as usize]
-                .iter()
-                .any(|&n| self.touched.binary_search(&(n, root)).is_ok());
-            let h = v[0].z;
-            if !joined || h < z0 || h > z1 {
-                continue;
-            }
-            let mut polygon = [v[0].xy(), v[1].xy(), v[2].xy()];
-            if (polygon[1] - polygon[0]).perp(&(polygon[2] - polygon[0])) < 0.0 {
-                polygon.swap(1, 2);
-            }
-            let (ro, ri) = setup.profile.circles(h);
-            r[8] +=
-                disc_section(ro, &polygon, &[0; 3]).area - disc_section(ri, &polygon, &[0; 3]).area;
-        }
-        let volume = r[0];
-        if volume.is_nan() || volume <= 0.0 {
-            return None;
-        }
-        let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
-        let s_solid = pose_a.rotation * Vector3::new(r[4], r[5], r[6]) * (unit * unit);
-        let (solid_area, mesh_area) = (r[7], r[8]);
-        let moments = VolumeMoments {
-            volume: volume * unit * unit * unit,
-            centroid,
-            area_vector_a: s_solid,
-            surface_area: (solid_area + mesh_area) * unit * unit,
-            length: unit,
-        };
-        let mesh = setup.mesh;
-        let solid_inside = mesh_area <= ENCLOSED * (solid_area + mesh_area);
-        let fallback = || {
-            if solid_inside {
-                let c = pose_b.inverse_transform_point(&centroid);
-                let q = closest_on_mesh(mesh, &c);
-                let away = pose_b.rotation * (q - c);
-                if away.norm() > 0.0 {
-                    away.normalize()
-                } else {
-                    Vector3::z()
-                }
-            } else {
-                let p = pose_a.inverse_transform_point(&centroid).coords;
-                -(pose_a.rotation * signed_distance(solid, &p).2)
-            }
-        };
-        let on_mesh = |g: &Point3, d: &Vector3| {
-            let from = pose_b.inverse_transform_point(g);
-            let direction = pose_b.inverse_transform_vector(d);
-            pose_b
-                * exit_along(mesh, &from, &direction)
-                    .unwrap_or_else(|| closest_on_mesh(mesh, &from))
-        };
-        volume_contact::contact_of_region(
-            &moments,
-            |g, d| surface_point_along_w(solid, pose_a, g, d),
-            on_mesh,
-            fallback,
-            false,
-        )
+        per_region(&region, root, work);
     }
 }

@@ -25,6 +25,9 @@ pub(crate) struct SlicedTriangle {
     pub along: Vector2,
     /// `|n_xy| / |n|`: the triangle's area per unit of height and of segment length.
     pub slope: f64,
+    /// The factor from its area here to its area in the caller's space (1 unless the slicing
+    /// runs in a linearly mapped space, as for an ellipsoid).
+    pub scale: f64,
 }
 
 impl SlicedTriangle {
@@ -47,6 +50,7 @@ impl SlicedTriangle {
             by_height: order,
             along: Vector2::new(-n.y, n.x),
             slope: g / norm,
+            scale: 1.0,
         })
     }
 

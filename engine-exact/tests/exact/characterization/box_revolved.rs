@@ -421,5 +421,24 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 tilted(rng, solid, q, Ground::Mesh)
             },
         )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "ellipsoid–mesh",
+            "semi-axes ∈ [0.3, 2], any orientation, over a box-shaped mesh (12 triangles), cap to beyond the centre",
+            "the mesh mapped onto the unit sphere and sliced; oracle: affine cap by slicing",
+            |rng| {
+                let (s, q, z0) = ellipsoid_over_plane(rng);
+                let (j, pose_j) = ground(rng, Ground::Mesh, s.max());
+                Some(Case {
+                    i: instance(Geometry::Ellipsoid(Ellipsoid::new(s.x, s.y, s.z).unwrap())),
+                    j,
+                    pose_i: Isometry3::from_parts(Translation3::new(0.0, 0.0, z0), q),
+                    pose_j,
+                    expected: oracles::ellipsoid_plane(&s, &q, z0),
+                    length: s.max(),
+                })
+            },
+        )),
     ]
 }
