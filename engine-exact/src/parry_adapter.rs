@@ -12,7 +12,7 @@ use contact_core::{
     PreparedPair, PreparedStats, QueryError, Unsupported, Vector3, WorkCounters,
 };
 use parry3d_f64::query;
-use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape};
+use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape, TriMesh};
 
 /// One geometry as a parry shape, with the offset of the shape's origin in the geometry frame.
 #[derive(Debug)]
@@ -27,6 +27,7 @@ enum PeerKind {
     Cuboid(Cuboid),
     Cylinder(Cylinder),
     HalfSpace(HalfSpace),
+    TriMesh(TriMesh),
 }
 
 /// parry's answer: points on each shape, the normal from the second into the first, depth.
@@ -43,6 +44,16 @@ pub struct PeerContact {
 }
 
 impl PeerShape {
+    /// A closed mesh as a parry `TriMesh`, for the benches' side-by-side timing (the trade
+    /// peer [`ParryEngine`] keeps to [`PeerShape::new`]'s shapes); `None` if parry refuses it.
+    pub fn mesh(mesh: &contact_core::geometry::TriangleMesh) -> Option<Self> {
+        let shape = TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).ok()?;
+        Some(Self {
+            shape: PeerKind::TriMesh(shape),
+            offset: Isometry3::identity(),
+        })
+    }
+
     /// The parry shape of `geometry` (flipped planes supported), or `None` for a kind parry
     /// cannot represent exactly (ellipsoids, every 2-D shape, bounded planes, …).
     pub fn new(geometry: &Geometry, flip: bool) -> Option<Self> {
@@ -82,6 +93,7 @@ impl PeerShape {
             PeerKind::Cuboid(s) => s,
             PeerKind::Cylinder(s) => s,
             PeerKind::HalfSpace(s) => s,
+            PeerKind::TriMesh(s) => s,
         }
     }
 }
