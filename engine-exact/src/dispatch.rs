@@ -19,7 +19,7 @@
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
-//! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`] | plane |
+//! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`]; an unbounded plane in closed form from the corner heights, [`crate::pairs::box_half_space`] | plane |
 //! | box–box | exact convex clipping, [`crate::pairs::box_box`] | none |
 //! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
 //! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
