@@ -27,7 +27,8 @@ enum PeerKind {
     Cuboid(Cuboid),
     Cylinder(Cylinder),
     HalfSpace(HalfSpace),
-    TriMesh(TriMesh),
+    /// Boxed: a mesh is far larger than the primitives.
+    TriMesh(Box<TriMesh>),
 }
 
 /// parry's answer: points on each shape, the normal from the second into the first, depth.
@@ -49,7 +50,7 @@ impl PeerShape {
     pub fn mesh(mesh: &contact_core::geometry::TriangleMesh) -> Option<Self> {
         let shape = TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).ok()?;
         Some(Self {
-            shape: PeerKind::TriMesh(shape),
+            shape: PeerKind::TriMesh(Box::new(shape)),
             offset: Isometry3::identity(),
         })
     }
@@ -93,7 +94,7 @@ impl PeerShape {
             PeerKind::Cuboid(s) => s,
             PeerKind::Cylinder(s) => s,
             PeerKind::HalfSpace(s) => s,
-            PeerKind::TriMesh(s) => s,
+            PeerKind::TriMesh(s) => s.as_ref(),
         }
     }
 }

@@ -12,6 +12,7 @@
 
 pub mod bounded_plane;
 pub mod box_box;
+pub mod box_half_space;
 pub mod box_plane;
 pub(crate) mod box_revolved;
 pub mod clipped;
