@@ -214,45 +214,62 @@ impl Kernel {
         emit: &mut E,
     ) -> Result<(), PairError> {
         work.primitive_tests += 1;
-        // The kernels that may find several regions emit each themselves.
-        if let Self::MeshPlane { mesh, side } = self {
-            pairs::mesh_plane::contacts(mesh, pose_a, pose_b, *side, work, emit);
-            return Ok(());
-        }
-        if let Self::BoxMesh { cuboid, mesh } = self {
-            pairs::mesh_box::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
-            return Ok(());
-        }
-        if let Self::RevolvedMesh { solid, mesh } = self {
-            pairs::mesh_revolved::contacts(solid, pose_a, mesh, pose_b, work, emit);
-            return Ok(());
-        }
-        if let Self::EllipsoidMesh { semi_axes, mesh } = self {
-            pairs::mesh_revolved::ellipsoid_contacts(semi_axes, pose_a, mesh, pose_b, work, emit);
-            return Ok(());
-        }
-        if let Self::MeshBoundedPlane { mesh, plane, side } = self {
-            pairs::mesh_box::bounded_plane_contacts(mesh, pose_a, plane, *side, pose_b, work, emit);
-            return Ok(());
-        }
-        if let Self::BoxRevolved { cuboid, solid } = self {
-            pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
-            return Ok(());
-        }
-        if let Self::RevolvedBoundedPlane { solid, plane, side } = self {
-            pairs::box_revolved::bounded_plane_contacts(
-                solid, pose_a, plane, *side, pose_b, work, emit,
-            );
-            return Ok(());
-        }
         let found = match *self {
-            Self::MeshPlane { .. }
-            | Self::BoxMesh { .. }
-            | Self::RevolvedMesh { .. }
-            | Self::EllipsoidMesh { .. }
-            | Self::MeshBoundedPlane { .. }
-            | Self::BoxRevolved { .. }
-            | Self::RevolvedBoundedPlane { .. } => None,
+            // The kernels that may find several regions emit each themselves.
+            Self::MeshPlane { ref mesh, side } => {
+                pairs::mesh_plane::contacts(mesh, pose_a, pose_b, side, work, emit);
+                None
+            }
+            Self::BoxMesh {
+                ref cuboid,
+                ref mesh,
+            } => {
+                pairs::mesh_box::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
+                None
+            }
+            Self::RevolvedMesh {
+                ref solid,
+                ref mesh,
+            } => {
+                pairs::mesh_revolved::contacts(solid, pose_a, mesh, pose_b, work, emit);
+                None
+            }
+            Self::EllipsoidMesh {
+                ref semi_axes,
+                ref mesh,
+            } => {
+                pairs::mesh_revolved::ellipsoid_contacts(
+                    semi_axes, pose_a, mesh, pose_b, work, emit,
+                );
+                None
+            }
+            Self::MeshBoundedPlane {
+                ref mesh,
+                ref plane,
+                side,
+            } => {
+                pairs::mesh_box::bounded_plane_contacts(
+                    mesh, pose_a, plane, side, pose_b, work, emit,
+                );
+                None
+            }
+            Self::BoxRevolved {
+                ref cuboid,
+                ref solid,
+            } => {
+                pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
+                None
+            }
+            Self::RevolvedBoundedPlane {
+                ref solid,
+                ref plane,
+                side,
+            } => {
+                pairs::box_revolved::bounded_plane_contacts(
+                    solid, pose_a, plane, side, pose_b, work, emit,
+                );
+                None
+            }
             Self::EllipsoidBoundedPlane {
                 semi_axes,
                 ref plane,
