@@ -183,3 +183,14 @@ pub fn boxes_mesh(boxes: &[(Point3, Vector3)]) -> contact_core::geometry::Triang
     }
     contact_core::geometry::TriangleMesh::new(vertices, triangles).unwrap()
 }
+
+/// The contact of `found` whose I point is nearest `point` (regions come in no fixed order).
+pub fn nearest<'a>(found: &'a [Contact], point: &Point3) -> &'a Contact {
+    found
+        .iter()
+        .min_by(|a, b| {
+            let d = |c: &Contact| (c.point_i_w - point).norm();
+            d(a).total_cmp(&d(b))
+        })
+        .expect("at least one contact")
+}

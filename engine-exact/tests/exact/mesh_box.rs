@@ -3,7 +3,9 @@
 //! caps, containment, touching and grazing, and the invariants of [`crate::properties`].
 
 use crate::characterization::mesh_box::{l_bar, tube};
-use crate::common::{Expected, Rng, assert_close, boxes_mesh, errors, instance, one, query};
+use crate::common::{
+    Expected, Rng, assert_close, boxes_mesh, errors, instance, nearest, one, query,
+};
 use crate::properties::{Maker, Scene, check_motion, check_scale, check_swap, scaled_pose};
 use crate::voxel_oracle::{Aabb, Voxels};
 use contact_core::geometry::{Cuboid, Plane, TriangleMesh};
@@ -41,13 +43,7 @@ fn check_against_cells(voxels: &Voxels, b: Aabb, regions: usize, world: &Isometr
     assert_eq!(found.len(), regions, "{what}: {found:?}");
     for e in &expected {
         let e = e.moved(world);
-        let got = found
-            .iter()
-            .min_by(|a, b| {
-                let d = |c: &Contact| (c.point_i_w - e.point_i).norm();
-                d(a).total_cmp(&d(b))
-            })
-            .unwrap();
+        let got = nearest(&found, &e.point_i);
         let err = errors(got, &e, 3.0);
         assert!(
             err.iter().all(|&x| x <= 1e-12),

@@ -3,11 +3,11 @@
 //! the section, containment and touching, and the invariants of [`crate::properties`].
 
 use crate::characterization::mesh_box::tube;
-use crate::common::{Rng, assert_close, boxes_mesh, instance, one, query};
+use crate::common::{Rng, assert_close, boxes_mesh, instance, nearest, one, query};
 use crate::properties::{Maker, Scene, check_motion, check_scale, check_swap, scaled_pose};
 use crate::voxel_oracle::Voxels;
 use contact_core::geometry::{Cuboid, Cylinder, Frustum};
-use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
+use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -83,13 +83,7 @@ fn a_cylinder_across_both_arms_of_a_u_gives_each_arms_contact() {
             &(world * along_x),
             &(world * Isometry3::translation(x, 1.5, 0.5)),
         );
-        let g = got
-            .iter()
-            .min_by(|a, b| {
-                let d = |c: &Contact| (c.point_i_w - reference.point_i_w).norm();
-                d(a).total_cmp(&d(b))
-            })
-            .unwrap();
+        let g = nearest(&got, &reference.point_i_w);
         assert_close(g, &reference, 1.0, 1.0, 1e-9, "one arm");
     }
 }
@@ -262,13 +256,7 @@ fn a_box_mesh_gives_the_box_torus_answers_at_any_pose() {
         }
         assert_eq!(got.len(), reference.len(), "{got:?} / {reference:?}");
         for r in &reference {
-            let g = got
-                .iter()
-                .min_by(|a, b| {
-                    let d = |c: &Contact| (c.point_i_w - r.point_i_w).norm();
-                    d(a).total_cmp(&d(b))
-                })
-                .unwrap();
+            let g = nearest(&got, &r.point_i_w);
             assert_close(g, r, 2.0, 4.0, 1e-9, "torus");
         }
         seen[reference.len().min(2)] += 1;

@@ -115,6 +115,36 @@ pub(crate) fn roots_in(c: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize) {
     (out, n)
 }
 
+/// The polynomial in `s` (coefficients of `s^k`) whose roots are where the edge `start + s·d`
+/// crosses the cone `|p_xy| = r0 + slope·z` (a quadratic).
+pub(crate) fn cone_piercing(r0: f64, slope: f64, start: &Vector3, d: &Vector3) -> [f64; 5] {
+    let (pxy, dxy) = (start.xy(), d.xy());
+    let (q0, q1) = (r0 + slope * start.z, slope * d.z);
+    [
+        pxy.norm_squared() - q0 * q0,
+        2.0 * (pxy.dot(&dxy) - q0 * q1),
+        dxy.norm_squared() - q1 * q1,
+        0.0,
+        0.0,
+    ]
+}
+
+/// The same for the torus `(|p|² + R² − ρ²)² = 4R²|p_xy|²` (a quartic).
+pub(crate) fn torus_piercing(big: f64, small: f64, start: &Vector3, d: &Vector3) -> [f64; 5] {
+    let (pxy, dxy) = (start.xy(), d.xy());
+    let (a, b) = (d.norm_squared(), 2.0 * start.dot(d));
+    let c = start.norm_squared() + big * big - small * small;
+    let (a2, b2, c2) = (dxy.norm_squared(), 2.0 * pxy.dot(&dxy), pxy.norm_squared());
+    let four = 4.0 * big * big;
+    [
+        c * c - four * c2,
+        2.0 * b * c - four * b2,
+        b * b + 2.0 * a * c - four * a2,
+        2.0 * a * b,
+        a * a,
+    ]
+}
+
 impl Setup {
     /// The quadrature's cuts inside `[lo, hi]` (see [`events`]), sorted, near-duplicates
     /// dropped; how many.
@@ -191,31 +221,9 @@ impl Setup {
     /// The polynomial in `s` whose roots are where the edge `start + s·d` crosses the solid's
     /// surface (coefficients of `s^k`).
     fn piercing(&self, start: &Vector3, d: &Vector3) -> [f64; 5] {
-        let (pxy, dxy) = (start.xy(), d.xy());
         match self.profile {
-            Profile::Frustum { r0, slope, .. } => {
-                let (q0, q1) = (r0 + slope * start.z, slope * d.z);
-                [
-                    pxy.norm_squared() - q0 * q0,
-                    2.0 * (pxy.dot(&dxy) - q0 * q1),
-                    dxy.norm_squared() - q1 * q1,
-                    0.0,
-                    0.0,
-                ]
-            }
-            Profile::Torus { big, small } => {
-                let (a, b) = (d.norm_squared(), 2.0 * start.dot(d));
-                let c = start.norm_squared() + big * big - small * small;
-                let (a2, b2, c2) = (dxy.norm_squared(), 2.0 * pxy.dot(&dxy), pxy.norm_squared());
-                let four = 4.0 * big * big;
-                [
-                    c * c - four * c2,
-                    2.0 * b * c - four * b2,
-                    b * b + 2.0 * a * c - four * a2,
-                    2.0 * a * b,
-                    a * a,
-                ]
-            }
+            Profile::Frustum { r0, slope, .. } => cone_piercing(r0, slope, start, d),
+            Profile::Torus { big, small } => torus_piercing(big, small, start, d),
         }
     }
 }

@@ -27,7 +27,7 @@
 //! its box edges.
 
 use super::clip::{Clipped, Edge, plane};
-use super::{NONE, UnionFind};
+use super::{NONE, UnionFind, closed_loops};
 use contact_core::{Point3, Vector3};
 
 /// The parts of the twelve box edges inside the mesh: `(edge, lo, hi, node)`.
@@ -200,39 +200,17 @@ pub(crate) fn join_holes(
         let poly = &polygons[c.0 as usize];
         (poly.points[c.1], poly.points[(c.1 + 1) % poly.len])
     };
-    let mut visited = vec![false; cuts.len()];
-    let mut walk = Vec::new();
-    for start in 0..cuts.len() {
-        if visited[start] {
-            continue;
-        }
-        // Follow the cut forward through the neighbours until it closes or leaves the face.
-        walk.clear();
-        let mut at = start;
-        let closed = loop {
-            visited[at] = true;
-            walk.push(at);
-            let (i, e) = cuts[at];
-            let poly = &polygons[i as usize];
-            let Edge::Triangle(k) = poly.edges[(e + 1) % poly.len] else {
-                break false;
-            };
-            let j = next_polygon(i, k);
-            if j == NONE || cut_index[j as usize] == NONE {
-                break false;
-            }
-            let next = cut_index[j as usize] as usize;
-            if next == start {
-                break true;
-            }
-            if visited[next] {
-                break false;
-            }
-            at = next;
+    // Follow each cut forward through the neighbours until it closes or leaves the face.
+    let next = |at: usize| {
+        let (i, e) = cuts[at];
+        let poly = &polygons[i as usize];
+        let Edge::Triangle(k) = poly.edges[(e + 1) % poly.len] else {
+            return None;
         };
-        if !closed {
-            continue;
-        }
+        let j = next_polygon(i, k);
+        (j != NONE && cut_index[j as usize] != NONE).then(|| cut_index[j as usize] as usize)
+    };
+    closed_loops(cuts.len(), next, |walk| {
         // In the polygons' order a hole's rim runs counter-clockwise about the outward normal.
         let origin = segment(&cuts[walk[0]]).0;
         let area: f64 = walk
@@ -243,7 +221,7 @@ pub(crate) fn join_holes(
             })
             .sum();
         if area <= 0.0 {
-            continue;
+            return;
         }
         let right = walk
             .iter()
@@ -277,11 +255,11 @@ pub(crate) fn join_holes(
                 .find(|&&(e, lo, hi, _)| e == edge && lo <= right[v] && right[v] <= hi)
             {
                 Some(&(_, _, _, node)) => node,
-                None => continue,
+                None => return,
             }
         };
         forest.union(hole_node, hit);
-    }
+    });
 }
 
 /// The directed pieces bounding face `f`'s caps, each with its node: the cuts run backwards

@@ -86,6 +86,37 @@ impl UnionFind {
     }
 }
 
+/// Calls `on_loop` with each closed loop of the `count` items linked by `next` (the item
+/// after `at`, `None` where a chain ends), in the order walked. Each item is walked once; a
+/// chain that ends, or runs into items walked before, is not a loop.
+pub(crate) fn closed_loops(
+    count: usize,
+    next: impl Fn(usize) -> Option<usize>,
+    mut on_loop: impl FnMut(&[usize]),
+) {
+    let mut visited = vec![false; count];
+    let mut walk = Vec::new();
+    for start in 0..count {
+        if visited[start] {
+            continue;
+        }
+        walk.clear();
+        let mut at = start;
+        let closed = loop {
+            visited[at] = true;
+            walk.push(at);
+            match next(at) {
+                Some(n) if n == start => break true,
+                Some(n) if n < count && !visited[n] => at = n,
+                _ => break false,
+            }
+        };
+        if closed {
+            on_loop(&walk);
+        }
+    }
+}
+
 /// Per-region sums, about the region's anchor `o`.
 #[derive(Debug, Clone, Copy)]
 struct Sums {

@@ -14,7 +14,7 @@
 
 use super::Profile;
 use super::section::SlicedTriangle;
-use crate::pairs::box_revolved::events::roots_in;
+use crate::pairs::box_revolved::events::{cone_piercing, roots_in, torus_piercing};
 use crate::pairs::mesh_plane::PreparedMesh;
 use contact_core::Vector3;
 
@@ -106,18 +106,8 @@ pub(super) fn add_events(
 /// The polynomial in `s` (coefficients of `s^k`) whose roots are where the edge
 /// `start + s·d` crosses the solid's lateral surface.
 fn piercing(profile: &Profile, start: &Vector3, d: &Vector3) -> [f64; 5] {
-    let (pxy, dxy) = (start.xy(), d.xy());
     match *profile {
-        Profile::Frustum { r0, slope, .. } => {
-            let (q0, q1) = (r0 + slope * start.z, slope * d.z);
-            [
-                pxy.norm_squared() - q0 * q0,
-                2.0 * (pxy.dot(&dxy) - q0 * q1),
-                dxy.norm_squared() - q1 * q1,
-                0.0,
-                0.0,
-            ]
-        }
+        Profile::Frustum { r0, slope, .. } => cone_piercing(r0, slope, start, d),
         // A sphere (no major radius): |start + s d|² = ρ², whose quartic would be a square.
         Profile::Torus { big: 0.0, small } => [
             start.norm_squared() - small * small,
@@ -126,18 +116,6 @@ fn piercing(profile: &Profile, start: &Vector3, d: &Vector3) -> [f64; 5] {
             0.0,
             0.0,
         ],
-        Profile::Torus { big, small } => {
-            let (a, b) = (d.norm_squared(), 2.0 * start.dot(d));
-            let c = start.norm_squared() + big * big - small * small;
-            let (a2, b2, c2) = (dxy.norm_squared(), 2.0 * pxy.dot(&dxy), pxy.norm_squared());
-            let four = 4.0 * big * big;
-            [
-                c * c - four * c2,
-                2.0 * b * c - four * b2,
-                b * b + 2.0 * a * c - four * a2,
-                2.0 * a * b,
-                a * a,
-            ]
-        }
+        Profile::Torus { big, small } => torus_piercing(big, small, start, d),
     }
 }

@@ -12,7 +12,7 @@
 
 use super::section::Crossing;
 use super::{Setup, Slice};
-use crate::pairs::mesh_box::UnionFind;
+use crate::pairs::mesh_box::{UnionFind, closed_loops};
 use crate::pairs::mesh_plane::PreparedMesh;
 use contact_core::{Vector2, Vector3};
 
@@ -323,32 +323,11 @@ fn join_holes(rays: &Rays, neighbours: &[[u32; 3]], forest: &mut UnionFind) {
             .iter()
             .position(|&c| slice.segments[slice.chords[c].0].0 == tri)
     };
-    let mut visited = vec![false; whole.len()];
-    let mut walk = Vec::new();
-    for start in 0..whole.len() {
-        if visited[start] {
-            continue;
-        }
-        walk.clear();
-        let mut at = start;
-        let closed = loop {
-            visited[at] = true;
-            walk.push(at);
-            let (tri, _, _, _, end_edge) = slice.segments[slice.chords[whole[at]].0];
-            let Some(next) = find(neighbours[tri as usize][end_edge as usize]) else {
-                break false;
-            };
-            if next == start {
-                break true;
-            }
-            if visited[next] {
-                break false;
-            }
-            at = next;
-        };
-        if !closed {
-            continue;
-        }
+    let next = |at: usize| {
+        let (tri, _, _, _, end_edge) = slice.segments[slice.chords[whole[at]].0];
+        find(neighbours[tri as usize][end_edge as usize])
+    };
+    closed_loops(whole.len(), next, |walk| {
         let area: f64 = walk
             .iter()
             .map(|&w| {
@@ -357,7 +336,7 @@ fn join_holes(rays: &Rays, neighbours: &[[u32; 3]], forest: &mut UnionFind) {
             })
             .sum();
         if area >= 0.0 {
-            continue;
+            return;
         }
         let right = walk
             .iter()
@@ -368,5 +347,5 @@ fn join_holes(rays: &Rays, neighbours: &[[u32; 3]], forest: &mut UnionFind) {
         if let Some(node) = rays.first_hit(&right) {
             forest.union(hole, node);
         }
-    }
+    });
 }
