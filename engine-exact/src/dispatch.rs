@@ -78,7 +78,7 @@ const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const CURVE_KNOTS: &str =
     "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
-const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, one box of a box pair, a mesh against a box, one circle of a circle pair, and arcs and curves against arcs, curves and lines";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, a box or a mesh as a cavity around a box, cylinder, frustum, torus or ellipsoid (sphere included), one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
 /// The convex solids the sphere, box–revolved and revolved–plane kernels take, `None` for
 /// every other kind (an exhaustive match: a new kind must say whether it is one).
@@ -97,6 +97,12 @@ fn solid_of(g: &Geometry) -> Option<Solid> {
         | Geometry::Arc(_)
         | Geometry::Curve(_) => None,
     }
+}
+
+/// The walls of a box-shaped cavity (a flipped box): the box's surface as a mesh turned
+/// inside out, for the pairs that take a mesh.
+fn box_cavity(cuboid: &contact_core::geometry::Cuboid) -> Option<std::sync::Arc<PreparedMesh>> {
+    box_mesh(cuboid).map(|m| std::sync::Arc::new(m.inverted()))
 }
 
 /// The kernel for `a` (flipped when `flip_a`) against `b`, in the caller's order.
@@ -272,6 +278,14 @@ pub(crate) fn select(
                 side: side(flip_b),
             },
         ),
+        (G::Ellipsoid(e), G::Cuboid(cavity)) if flip_b && !flip_a => {
+            // An ellipsoid (or sphere) in a box-shaped cavity.
+            let mesh = box_cavity(cavity).ok_or_else(|| no(MESH_OPEN))?;
+            Ok(canonical(Kernel::EllipsoidMesh {
+                semi_axes: e.semi_axes(),
+                mesh,
+            }))
+        }
         (G::Ellipsoid(e), G::Cylinder(_) | G::Cuboid(_) | G::Frustum(_) | G::Torus(_)) => {
             let solid = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
             match e.sphere_radius() {
@@ -291,11 +305,17 @@ pub(crate) fn select(
                     },
                 )
             }
-            Some(_) => Err(no(FLIP_NOT_BUILT)),
-            None => {
+            // A sphere in a meshed cavity: the general ellipsoid slicing, which finds every
+            // wall it meets as its own region.
+            Some(_) | None => {
                 let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+                let prepared = if flip_b {
+                    prepared.inverted()
+                } else {
+                    prepared
+                };
                 no_flip(
-                    flip_a || flip_b,
+                    flip_a,
                     Kernel::EllipsoidMesh {
                         semi_axes: e.semi_axes(),
                         mesh: std::sync::Arc::new(prepared),
@@ -303,6 +323,12 @@ pub(crate) fn select(
                 )
             }
         },
+        (G::Cylinder(_), G::Cuboid(cavity)) if flip_b && !flip_a => {
+            // A cylinder in a box-shaped cavity.
+            let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
+            let mesh = box_cavity(cavity).ok_or_else(|| no(MESH_OPEN))?;
+            Ok(canonical(Kernel::RevolvedMesh { solid, mesh }))
+        }
         (G::Cylinder(cylinder), G::Cylinder(_) | G::Cuboid(_)) => {
             let other = match b {
                 G::Cuboid(c) => Other::Box(*c),
@@ -326,6 +352,15 @@ pub(crate) fn select(
                     other,
                 },
             )
+        }
+        (G::Cuboid(cavity), G::Frustum(_) | G::Torus(_)) if flip_a && !flip_b => {
+            // A frustum or torus in a box-shaped cavity: the kernel's first geometry is J.
+            let solid = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
+            let mesh = box_cavity(cavity).ok_or_else(|| no(MESH_OPEN))?;
+            Ok(Selected {
+                kernel: Kernel::RevolvedMesh { solid, mesh },
+                swap: true,
+            })
         }
         (G::Cuboid(cuboid), G::Frustum(_) | G::Torus(_)) => {
             let solid = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
@@ -356,8 +391,14 @@ pub(crate) fn select(
         (G::Cylinder(_) | G::Frustum(_) | G::Torus(_), G::Mesh(mesh)) => {
             let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
             let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
+            // A flipped mesh is a cavity: its walls inside out.
+            let prepared = if flip_b {
+                prepared.inverted()
+            } else {
+                prepared
+            };
             no_flip(
-                flip_a || flip_b,
+                flip_a,
                 Kernel::RevolvedMesh {
                     solid,
                     mesh: std::sync::Arc::new(prepared),

@@ -288,3 +288,93 @@ fn a_box_mesh_gives_the_ellipsoid_box_answer_at_any_pose() {
     }
     assert!(seen > 30, "only {seen} contacts");
 }
+
+/// The plane whose solid is `x ≥ at` (its +z along −x), as the wall of a cavity seen from a
+/// body poking through it.
+fn wall_x(at: f64) -> (GeometryInstance, Isometry3) {
+    let turn = nalgebra::UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -0.5 * PI);
+    (
+        instance(Geometry::Plane(contact_core::geometry::Plane::unbounded())),
+        Isometry3::from_parts(nalgebra::Translation3::new(at, 0.0, 0.0), turn),
+    )
+}
+
+#[test]
+fn solids_in_a_box_cavity_meet_its_wall_as_the_plane_beyond_it() {
+    // A cavity of half extents 3 (a flipped box, and the same as a flipped box mesh): a body
+    // crossing only the +x wall meets the half-space x ≥ 3, the pair against that plane.
+    let mut rng = Rng::new(99);
+    let w = 3.0;
+    let cavity_box = instance(Geometry::Cuboid(Cuboid::centered(w, w, w).unwrap())).flipped();
+    let cavity_mesh = mesh(boxes_mesh(&[(Point3::origin(), Vector3::repeat(w))])).flipped();
+    let (plane, plane_pose) = wall_x(w);
+    let solids = [
+        (cylinder(0.5, 1.2), "cylinder"),
+        (frustum(0.7, 0.2, 1.0), "frustum"),
+        (
+            instance(Geometry::Torus(
+                contact_core::geometry::Torus::new(0.6, 0.2).unwrap(),
+            )),
+            "torus",
+        ),
+        (
+            instance(Geometry::Ellipsoid(
+                contact_core::geometry::Ellipsoid::new(0.8, 0.5, 0.3).unwrap(),
+            )),
+            "ellipsoid",
+        ),
+        (instance(Geometry::sphere(0.6).unwrap()), "sphere"),
+    ];
+    for (solid, name) in &solids {
+        let mut seen = 0;
+        for _ in 0..40 {
+            let world = rng.pose(2.0);
+            let at = Isometry3::from_parts(
+                nalgebra::Translation3::new(rng.uniform(2.4, 3.0), rng.uniform(-1.0, 1.0), 0.0),
+                rng.rotation(),
+            );
+            let reference = query(solid, &plane, &(world * at), &(world * plane_pose));
+            for cavity in [&cavity_box, &cavity_mesh] {
+                let got = query(solid, cavity, &(world * at), &world);
+                assert_eq!(
+                    got.len(),
+                    reference.len(),
+                    "{name}: {got:?} / {reference:?}"
+                );
+                for (g, r) in got.iter().zip(&reference) {
+                    assert_close(g, r, 2.0, 4.0, 1e-9, name);
+                }
+                // The cavity as I: the swapped contact.
+                let back = query(cavity, solid, &world, &(world * at));
+                assert_eq!(back.len(), got.len(), "{name}");
+                for (b, g) in back.iter().zip(&got) {
+                    assert_close(&b.swapped(), g, 2.0, 4.0, 1e-9, name);
+                }
+            }
+            seen += reference.len();
+        }
+        assert!(seen > 10, "{name}: only {seen} contacts");
+    }
+}
+
+#[test]
+fn a_ball_in_a_slot_meets_both_walls() {
+    // A slot 1 wide (a flipped box 0.5 in half width along x), a ball of radius 0.7 in it:
+    // one contact per wall, each the ball against that wall's plane.
+    let slot = instance(Geometry::Cuboid(Cuboid::centered(0.5, 3.0, 3.0).unwrap())).flipped();
+    let ball = instance(Geometry::sphere(0.7).unwrap());
+    let world = Rng::new(100).pose(2.0);
+    let at = Isometry3::translation(0.1, 0.2, -0.3);
+    let got = query(&ball, &slot, &(world * at), &world);
+    assert_eq!(got.len(), 2, "{got:?}");
+    let (plane, right) = wall_x(0.5);
+    let left = Isometry3::from_parts(
+        nalgebra::Translation3::new(-0.5, 0.0, 0.0),
+        nalgebra::UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 0.5 * PI),
+    );
+    for wall in [right, left] {
+        let reference = one(&ball, &plane, &(world * at), &(world * wall));
+        let g = nearest(&got, &reference.point_i_w);
+        assert_close(g, &reference, 1.0, 1.0, 1e-9, "a wall of the slot");
+    }
+}

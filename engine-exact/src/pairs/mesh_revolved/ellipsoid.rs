@@ -24,7 +24,7 @@ pub(crate) fn ellipsoid_contacts(
 ) {
     let relative = pose_a.inv_mul(pose_b);
     let reach = (relative * mesh.centre).coords;
-    if (0..3).any(|k| reach[k].abs() - mesh.radius >= semi[k]) {
+    if !mesh.inverted && (0..3).any(|k| reach[k].abs() - mesh.radius >= semi[k]) {
         return;
     }
     let local: Vec<Vector3> = mesh

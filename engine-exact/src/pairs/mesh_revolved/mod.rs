@@ -269,7 +269,10 @@ pub(crate) fn contacts(
     let outer = profile.outer();
     let reach = (relative * mesh.centre).coords / unit;
     let radius = mesh.radius / unit;
-    if reach.z + radius <= z0 || reach.z - radius >= z1 || reach.xy().norm() - radius >= outer {
+    // The mesh's ball must reach the solid (a cavity's solid reaches everywhere).
+    if !mesh.inverted
+        && (reach.z + radius <= z0 || reach.z - radius >= z1 || reach.xy().norm() - radius >= outer)
+    {
         return;
     }
     let local: Vec<Vector3> = mesh

@@ -224,10 +224,11 @@ fn join_across_cuts(setup: &Setup, labels: &Labels, forest: &mut UnionFind) {
     }
 }
 
-/// Whether the point `x` of the slice `z = t` lies inside the mesh: the parity of the mesh's
-/// section segments crossing the ray from `x` along `+x` (every triangle crossing `t`).
+/// Whether the point `x` of the slice `z = t` lies inside the mesh's solid: the parity of the
+/// mesh's section segments crossing the ray from `x` along `+x` (every triangle crossing
+/// `t`), the other way about for a mesh turned inside out (a cavity).
 fn inside_section(mesh: &PreparedMesh, local: &[Vector3], t: f64, x: &Vector2) -> bool {
-    let mut inside = false;
+    let mut inside = mesh.inverted;
     for tri in &mesh.triangles {
         let v = tri.map(|i| local[i as usize]);
         let Some(s) = super::section::SlicedTriangle::new(0, v) else {
