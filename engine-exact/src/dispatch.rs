@@ -99,6 +99,20 @@ fn solid_of(g: &Geometry) -> Option<Solid> {
     }
 }
 
+/// A closed mesh prepared for the exact pairs, turned inside out when flipped (a cavity's
+/// walls); `None` unless it is a closed 2-manifold.
+fn prepared_mesh(
+    mesh: &contact_core::geometry::TriangleMesh,
+    flip: bool,
+) -> Option<std::sync::Arc<PreparedMesh>> {
+    let prepared = PreparedMesh::new(mesh)?;
+    Some(std::sync::Arc::new(if flip {
+        prepared.inverted()
+    } else {
+        prepared
+    }))
+}
+
 /// The walls of a box-shaped cavity (a flipped box): the box's surface as a mesh turned
 /// inside out, for the pairs that take a mesh.
 fn box_cavity(cuboid: &contact_core::geometry::Cuboid) -> Option<std::sync::Arc<PreparedMesh>> {
@@ -296,29 +310,18 @@ pub(crate) fn select(
         }
         (G::Ellipsoid(e), G::Mesh(mesh)) => match e.sphere_radius() {
             Some(radius) if !flip_b => {
-                let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
-                no_flip(
-                    flip_a,
-                    Kernel::SphereMesh {
-                        radius,
-                        mesh: std::sync::Arc::new(prepared),
-                    },
-                )
+                let mesh = prepared_mesh(mesh, false).ok_or_else(|| no(MESH_OPEN))?;
+                no_flip(flip_a, Kernel::SphereMesh { radius, mesh })
             }
             // A sphere in a meshed cavity: the general ellipsoid slicing, which finds every
             // wall it meets as its own region.
             Some(_) | None => {
-                let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
-                let prepared = if flip_b {
-                    prepared.inverted()
-                } else {
-                    prepared
-                };
+                let prepared = prepared_mesh(mesh, flip_b).ok_or_else(|| no(MESH_OPEN))?;
                 no_flip(
                     flip_a,
                     Kernel::EllipsoidMesh {
                         semi_axes: e.semi_axes(),
-                        mesh: std::sync::Arc::new(prepared),
+                        mesh: prepared,
                     },
                 )
             }
@@ -373,35 +376,23 @@ pub(crate) fn select(
             )
         }
         (G::Cuboid(cuboid), G::Mesh(mesh)) => {
-            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
-            // A flipped mesh is a cavity: its walls inside out.
-            let prepared = if flip_b {
-                prepared.inverted()
-            } else {
-                prepared
-            };
+            let prepared = prepared_mesh(mesh, flip_b).ok_or_else(|| no(MESH_OPEN))?;
             no_flip(
                 flip_a,
                 Kernel::BoxMesh {
                     cuboid: *cuboid,
-                    mesh: std::sync::Arc::new(prepared),
+                    mesh: prepared,
                 },
             )
         }
         (G::Cylinder(_) | G::Frustum(_) | G::Torus(_), G::Mesh(mesh)) => {
             let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
-            let prepared = PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?;
-            // A flipped mesh is a cavity: its walls inside out.
-            let prepared = if flip_b {
-                prepared.inverted()
-            } else {
-                prepared
-            };
+            let prepared = prepared_mesh(mesh, flip_b).ok_or_else(|| no(MESH_OPEN))?;
             no_flip(
                 flip_a,
                 Kernel::RevolvedMesh {
                     solid,
-                    mesh: std::sync::Arc::new(prepared),
+                    mesh: prepared,
                 },
             )
         }
@@ -410,7 +401,7 @@ pub(crate) fn select(
         | (G::Torus(_), G::Torus(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {
-            let mesh = std::sync::Arc::new(PreparedMesh::new(mesh).ok_or_else(|| no(MESH_OPEN))?);
+            let mesh = prepared_mesh(mesh, false).ok_or_else(|| no(MESH_OPEN))?;
             let side = side(flip_b);
             no_flip(
                 flip_a,

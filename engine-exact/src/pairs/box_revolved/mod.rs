@@ -58,6 +58,7 @@ pub(crate) mod events;
 use super::clipped::unit_for;
 use super::disc_section::{DiscSection, disc_section};
 use super::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
+use super::mesh_revolved::Profile;
 use super::section::Polygon;
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
@@ -73,32 +74,6 @@ const FLAT: f64 = 1e-13;
 const COPLANAR: f64 = 1e-13;
 /// Most cuts (ends, corners, tangencies, piercings) of one pair.
 const MAX_CUTS: usize = 96;
-
-/// The revolved solid in working units.
-#[derive(Debug, Clone, Copy)]
-enum Profile {
-    /// Radius `r0 + slope·t` for `0 ≤ t ≤ len`.
-    Frustum { r0: f64, slope: f64, len: f64 },
-    /// Tube of radius `small` about the circle of radius `big`.
-    Torus { big: f64, small: f64 },
-}
-
-impl Profile {
-    fn range(&self) -> (f64, f64) {
-        match *self {
-            Self::Frustum { len, .. } => (0.0, len),
-            Self::Torus { small, .. } => (-small, small),
-        }
-    }
-
-    /// The largest radius of the section at `t` (a bound for the square to clip).
-    fn outer(&self, t: f64) -> f64 {
-        match *self {
-            Self::Frustum { r0, slope, .. } => (r0 + slope * t).max(0.0),
-            Self::Torus { big, small } => big + ((small - t) * (small + t)).max(0.0).sqrt(),
-        }
-    }
-}
 
 /// Up to two sub-wedges `(from, to)` (unit directions, counter-clockwise, each at most π)
 /// that the section is clipped to; none for the whole turn.
@@ -197,7 +172,7 @@ impl Setup {
     /// unit of `θ`, `t = ρ sin θ` (see [`Setup::torus_slice`]).
     fn slice(&self, t: f64, wedge: &Wedge) -> [f64; COMPONENTS] {
         let mut out = [0.0; COMPONENTS];
-        let outer = self.profile.outer(t);
+        let outer = self.profile.circles(t).0;
         if outer <= 0.0 {
             return out;
         }
@@ -277,7 +252,7 @@ impl Setup {
             if height < b_lo || height > b_hi {
                 continue;
             }
-            let outer = self.profile.outer(height);
+            let outer = self.profile.circles(height).0;
             for h in 0..halves {
                 let half = (wedge.count > 0).then(|| &wedge.halves[h]);
                 let polygon = self.polygon(height, outer, Some(k / 2), half);
@@ -295,7 +270,7 @@ impl Setup {
                 if shared {
                     continue;
                 }
-                let outer = self.profile.outer(cap);
+                let outer = self.profile.circles(cap).0;
                 for h in 0..halves {
                     let half = (wedge.count > 0).then(|| &wedge.halves[h]);
                     let area = self.overlap_area(cap, &self.polygon(cap, outer, None, half));
@@ -366,39 +341,15 @@ pub(crate) fn contacts(
     work: &mut WorkCounters,
     emit: &mut dyn FnMut(PairContact),
 ) {
-    let (profile, size) = match *solid {
-        Solid::Frustum(f) => {
-            let (r0, r1, len) = (f.bottom_radius(), f.top_radius(), f.length());
-            (
-                Profile::Frustum {
-                    r0,
-                    slope: (r1 - r0) / len,
-                    len,
-                },
-                r0.max(r1).max(len),
-            )
-        }
-        Solid::Torus(t) => (
-            Profile::Torus {
-                big: t.major_radius(),
-                small: t.minor_radius(),
-            },
-            t.major_radius() + t.minor_radius(),
-        ),
-        Solid::Box(_) | Solid::Cylinder(_) => return,
+    // A box or cylinder has its own pairs.
+    if matches!(solid, Solid::Box(_) | Solid::Cylinder(_)) {
+        return;
+    }
+    let Some((profile, size)) = Profile::of(solid) else {
+        return;
     };
     let unit = unit_for(size.max(cuboid.half_extents().norm()));
-    let profile = match profile {
-        Profile::Frustum { r0, slope, len } => Profile::Frustum {
-            r0: r0 / unit,
-            slope,
-            len: len / unit,
-        },
-        Profile::Torus { big, small } => Profile::Torus {
-            big: big / unit,
-            small: small / unit,
-        },
-    };
+    let profile = profile.scaled(unit);
     // The box in the solid's frame, working units.
     let pose_ba = pose_b.inv_mul(pose_a);
     let axes = pose_ba.rotation.to_rotation_matrix().into_inner();
@@ -430,11 +381,7 @@ pub(crate) fn contacts(
     }
     // The box's reach from the axis against the solid's outer radius: apart.
     let radial = centre.xy().norm() - half.norm();
-    let outer = match profile {
-        Profile::Frustum { r0, slope, len } => r0.max(r0 + slope * len),
-        Profile::Torus { big, small } => big + small,
-    };
-    if radial >= outer {
+    if radial >= profile.outer() {
         return;
     }
     let (cuts, count) = setup.cuts(lo, hi);

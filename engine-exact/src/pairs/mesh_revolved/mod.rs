@@ -75,6 +75,55 @@ pub(crate) enum Profile {
 }
 
 impl Profile {
+    /// The profile of a cylinder, frustum or torus (in its own lengths) and its size; `None`
+    /// for a box.
+    pub(crate) fn of(solid: &Solid) -> Option<(Self, f64)> {
+        match *solid {
+            Solid::Cylinder(c) => Some((
+                Self::Frustum {
+                    r0: c.radius(),
+                    slope: 0.0,
+                    len: c.length(),
+                },
+                c.radius().max(c.length()),
+            )),
+            Solid::Frustum(f) => {
+                let (r0, r1, len) = (f.bottom_radius(), f.top_radius(), f.length());
+                Some((
+                    Self::Frustum {
+                        r0,
+                        slope: (r1 - r0) / len,
+                        len,
+                    },
+                    r0.max(r1).max(len),
+                ))
+            }
+            Solid::Torus(t) => Some((
+                Self::Torus {
+                    big: t.major_radius(),
+                    small: t.minor_radius(),
+                },
+                t.major_radius() + t.minor_radius(),
+            )),
+            Solid::Box(_) => None,
+        }
+    }
+
+    /// The same profile in lengths divided by `unit` (the slope is a ratio and stays).
+    pub(crate) fn scaled(self, unit: f64) -> Self {
+        match self {
+            Self::Frustum { r0, slope, len } => Self::Frustum {
+                r0: r0 / unit,
+                slope,
+                len: len / unit,
+            },
+            Self::Torus { big, small } => Self::Torus {
+                big: big / unit,
+                small: small / unit,
+            },
+        }
+    }
+
     /// The heights the solid spans.
     pub(crate) fn range(&self) -> (f64, f64) {
         match *self {
@@ -96,7 +145,7 @@ impl Profile {
     }
 
     /// The largest radius.
-    fn outer(&self) -> f64 {
+    pub(crate) fn outer(&self) -> f64 {
         match *self {
             Self::Frustum { r0, slope, len } => r0.max(r0 + slope * len),
             Self::Torus { big, small } => big + small,
@@ -223,47 +272,11 @@ pub(crate) fn contacts(
     work: &mut WorkCounters,
     emit: &mut dyn FnMut(PairContact),
 ) {
-    let (profile, size) = match *solid {
-        Solid::Cylinder(c) => (
-            Profile::Frustum {
-                r0: c.radius(),
-                slope: 0.0,
-                len: c.length(),
-            },
-            c.radius().max(c.length()),
-        ),
-        Solid::Frustum(f) => {
-            let (r0, r1, len) = (f.bottom_radius(), f.top_radius(), f.length());
-            (
-                Profile::Frustum {
-                    r0,
-                    slope: (r1 - r0) / len,
-                    len,
-                },
-                r0.max(r1).max(len),
-            )
-        }
-        Solid::Torus(t) => (
-            Profile::Torus {
-                big: t.major_radius(),
-                small: t.minor_radius(),
-            },
-            t.major_radius() + t.minor_radius(),
-        ),
-        Solid::Box(_) => return,
+    let Some((profile, size)) = Profile::of(solid) else {
+        return;
     };
     let unit = unit_for(size);
-    let profile = match profile {
-        Profile::Frustum { r0, slope, len } => Profile::Frustum {
-            r0: r0 / unit,
-            slope,
-            len: len / unit,
-        },
-        Profile::Torus { big, small } => Profile::Torus {
-            big: big / unit,
-            small: small / unit,
-        },
-    };
+    let profile = profile.scaled(unit);
     let relative = pose_a.inv_mul(pose_b);
     let (z0, z1) = profile.range();
     let outer = profile.outer();
