@@ -2,6 +2,7 @@
 //! properties and the OBB tree — everything a query reads, built once by `prepare`.
 
 use crate::obb_tree::ObbTree;
+use crate::patches::PatchIndex;
 use crate::tessellate::Tessellation;
 use contact_core::geometry::{closest_point_on_triangle, line_triangle};
 use contact_core::{Point3, Vector3};
@@ -30,6 +31,8 @@ pub struct FacetMesh {
     pub corner_normals: Vec<[Vector3; 3]>,
     /// The OBB tree.
     pub tree: ObbTree,
+    /// The tree's subtrees as surface patches, for the inside flood.
+    pub patches: PatchIndex,
     /// Enclosed volume (0 for an open mesh).
     pub volume: f64,
     /// Centroid of the enclosed volume (of the vertices for an open mesh).
@@ -93,7 +96,22 @@ impl FacetMesh {
             let sum: Vector3 = vertices.iter().map(|v| v.coords).sum();
             Point3::from(sum / vertices.len().max(1) as f64)
         };
-        let tree = ObbTree::build(&vertices, &triangles);
+        let mut tree = ObbTree::build(&vertices, &triangles);
+        // Triangles (and their vertices) renumbered in the tree's leaf order, after the mass
+        // properties and the tree are formed in the given order (so neither changes by a bit):
+        // every subtree is then one range of triangles, a patch the inside flood can take whole.
+        let old_of_new = tree.renumber_in_leaf_order();
+        let (mut vertices, mut triangles, mut neighbors) = (vertices, triangles, neighbors);
+        let (mut face_normals, mut corner_normals) = (face_normals, corner_normals);
+        into_leaf_order(
+            &old_of_new,
+            &mut vertices,
+            &mut triangles,
+            &mut neighbors,
+            &mut face_normals,
+            &mut corner_normals,
+        );
+        let patches = PatchIndex::build(&tree, &vertices, &triangles, &neighbors);
         Self {
             vertices,
             triangles,
@@ -101,6 +119,7 @@ impl FacetMesh {
             face_normals,
             corner_normals,
             tree,
+            patches,
             volume: if closed { volume } else { 0.0 },
             centroid,
             area,
@@ -129,6 +148,7 @@ impl FacetMesh {
             + self.face_normals.capacity() * std::mem::size_of::<Vector3>()
             + self.corner_normals.capacity() * 3 * std::mem::size_of::<Vector3>()
             + self.tree.heap_bytes()
+            + self.patches.heap_bytes()
     }
 
     /// Whether `p` (mesh frame) is inside the closed mesh: parity of ray crossings, cast along
@@ -422,4 +442,61 @@ impl FacetMesh {
             + b012 * (3.0 * u * v * v)
             + b111 * (6.0 * w * u * v)
     }
+}
+
+/// Permutes the per-triangle arrays to the new numbering (`old_of_new[k]` is the old index of
+/// new triangle `k`), renumbers the neighbours to match, and renumbers the vertices in order of
+/// first use by the new triangles (unused vertices kept, last, in their old order).
+fn into_leaf_order(
+    old_of_new: &[u32],
+    vertices: &mut Vec<Point3>,
+    triangles: &mut Vec<[u32; 3]>,
+    neighbors: &mut Vec<[u32; 3]>,
+    face_normals: &mut Vec<Vector3>,
+    corner_normals: &mut Vec<[Vector3; 3]>,
+) {
+    let mut new_of_old = vec![0u32; old_of_new.len()];
+    for (new, &old) in old_of_new.iter().enumerate() {
+        new_of_old[old as usize] = new as u32;
+    }
+    let mut vertex_new = vec![u32::MAX; vertices.len()];
+    let mut new_vertices = Vec::with_capacity(vertices.len());
+    let mut new_triangles = Vec::with_capacity(triangles.len());
+    for &old in old_of_new {
+        let tri = triangles[old as usize].map(|v| {
+            if vertex_new[v as usize] == u32::MAX {
+                vertex_new[v as usize] = new_vertices.len() as u32;
+                new_vertices.push(vertices[v as usize]);
+            }
+            vertex_new[v as usize]
+        });
+        new_triangles.push(tri);
+    }
+    for (v, slot) in vertex_new.iter_mut().enumerate() {
+        if *slot == u32::MAX {
+            *slot = new_vertices.len() as u32;
+            new_vertices.push(vertices[v]);
+        }
+    }
+    let renumber = |n: u32| {
+        if n == NO_NEIGHBOR {
+            NO_NEIGHBOR
+        } else {
+            new_of_old[n as usize]
+        }
+    };
+    *neighbors = old_of_new
+        .iter()
+        .map(|&old| neighbors[old as usize].map(renumber))
+        .collect();
+    *face_normals = old_of_new
+        .iter()
+        .map(|&old| face_normals[old as usize])
+        .collect();
+    *corner_normals = old_of_new
+        .iter()
+        .map(|&old| corner_normals[old as usize])
+        .collect();
+    *vertices = new_vertices;
+    *triangles = new_triangles;
 }

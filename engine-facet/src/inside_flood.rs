@@ -1,10 +1,20 @@
 //! Step 2 of [`crate::contact_region`]: each surface is flooded from its crossing triangles into
 //! the triangles that lie wholly inside the other solid, whose cones (about the query's apex)
 //! are summed into the seed's node; floods that meet unite their seeds' regions.
+//!
+//! The flood takes whole patches where it can ([`crate::patches`]): on reaching a triangle it
+//! takes the largest subtree of the mesh's tree around it that is one connected patch, holds no
+//! crossing triangle and no triangle taken already, and lies in the leak guard. Such a patch
+//! lies wholly inside the other solid (it is connected, contains an inside triangle and meets
+//! no triangle of the other surface), so the flood would have covered all of it: its cone sums
+//! are added at once and the flood goes on from its rim. A query then pays per patch and per
+//! rim edge, not per inside triangle (at 100k triangles a deep overlap has some 20k of them in
+//! a few hundred patches).
 
 use crate::contact_region::{RelativePose, corners_in_a, other_plane, union};
 use crate::facet_mesh::FacetMesh;
-use crate::scratch::{RegionNode, Scratch};
+use crate::patches::PatchIndex;
+use crate::scratch::{NodeMarks, RegionNode, Scratch};
 use crate::surface_sums::SurfaceSums;
 use contact_core::Vector3;
 
@@ -29,6 +39,16 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         }
         s.nodes[id].inside_corners = bits;
     }
+    // Subtrees holding a crossing triangle are not patches of one side of the other surface.
+    for side in 0..2 {
+        let mesh = if side == 0 { a } else { b };
+        s.blocked[side].reset(mesh.tree.nodes().len());
+    }
+    for node in &s.nodes[..crossing_count] {
+        let mesh = if node.side == 0 { a } else { b };
+        let leaf = mesh.patches.leaf_of[node.tri as usize];
+        block_up(&mesh.patches, &mut s.blocked[node.side as usize], leaf);
+    }
     // The other mesh's root box in each mesh's frame, as an axis-aligned box: the leak guard
     // (one per side, not per seed).
     let guards = [
@@ -49,6 +69,7 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         // written only here, so the order of additions is unchanged).
         let Scratch {
             slots,
+            blocked,
             nodes,
             queue,
             apex,
@@ -62,6 +83,7 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
             seed: id,
             sums: nodes[id as usize].inside,
             slots: &mut slots[side],
+            blocked: &mut blocked[side],
             nodes,
             queue,
         };
@@ -71,11 +93,18 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
                 flood.visit(mesh.neighbors[node.tri as usize][k]);
             }
         }
-        while let Some(t) = flood.queue.pop() {
-            let [n0, n1, n2] = mesh.neighbors[t as usize];
-            flood.visit(n0);
-            flood.visit(n1);
-            flood.visit(n2);
+        while let Some(item) = flood.queue.pop() {
+            if item & PATCH_BIT == 0 {
+                let [n0, n1, n2] = mesh.neighbors[item as usize];
+                flood.visit(n0);
+                flood.visit(n1);
+                flood.visit(n2);
+            } else {
+                // A patch taken whole: go on across its rim.
+                let patch = item & !PATCH_BIT;
+                mesh.patches
+                    .for_each_rim(patch, &mesh.neighbors, |m| flood.visit(m));
+            }
         }
         let sums = flood.sums;
         s.nodes[id as usize].inside = sums;
@@ -85,10 +114,38 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
 /// Flood mark: an inside triangle's slot holds its seed node with this bit set.
 const INSIDE_BIT: u32 = 1 << 31;
 
+/// Queue entry: a patch (tree node) whose rim is still to be crossed, rather than a triangle.
+const PATCH_BIT: u32 = 1 << 31;
+
+/// Blocks `node` and its ancestors as patches (up to the first one blocked already): they hold
+/// a crossing triangle or a triangle taken already.
+fn block_up(patches: &PatchIndex, blocked: &mut NodeMarks, mut node: u32) {
+    loop {
+        if blocked.is_set(node) {
+            return;
+        }
+        blocked.set(node);
+        match patches.parent_of(node) {
+            Some(p) => node = p,
+            None => return,
+        }
+    }
+}
+
 /// The axis-aligned box `(min, max)` around an oriented box.
 fn aabb(o: &crate::obb::Obb) -> (Vector3, Vector3) {
     let reach = o.axes.abs() * o.half_extents;
     (o.center - reach, o.center + reach)
+}
+
+/// Whether the box `inner` lies in the box `outer`.
+fn aabb_within(inner: &(Vector3, Vector3), outer: &(Vector3, Vector3)) -> bool {
+    inner.0.x >= outer.0.x
+        && inner.0.y >= outer.0.y
+        && inner.0.z >= outer.0.z
+        && inner.1.x <= outer.1.x
+        && inner.1.y <= outer.1.y
+        && inner.1.z <= outer.1.z
 }
 
 /// One seed's flood over its mesh: the state [`visit`](Flood::visit) reads and writes.
@@ -100,13 +157,17 @@ struct Flood<'s> {
     seed: u32,
     sums: SurfaceSums,
     slots: &'s mut crate::scratch::SlotMap,
+    /// Tree nodes that are not patches this query (see [`block_up`]).
+    blocked: &'s mut NodeMarks,
     nodes: &'s mut Vec<RegionNode>,
+    /// Triangles, and patches (with [`PATCH_BIT`]), whose neighbours are still to be visited.
     queue: &'s mut Vec<u32>,
 }
 
 impl Flood<'_> {
     /// Marks `tri` inside, adds its cone and queues it, unless it is marked already (then its
-    /// owner joins the seed's region) or it leaves the guard box.
+    /// owner joins the seed's region) or it leaves the guard box; takes the largest free patch
+    /// around it whole when there is one.
     #[inline(always)]
     fn visit(&mut self, tri: u32) {
         if tri == crate::facet_mesh::NO_NEIGHBOR {
@@ -131,8 +192,56 @@ impl Flood<'_> {
         {
             return;
         }
-        self.slots.insert(tri, self.seed | INSIDE_BIT);
-        self.sums.add_triangle(&p, &q, &r, &self.apex);
-        self.queue.push(tri);
+        let patches = &self.mesh.patches;
+        let leaf = patches.leaf_of[tri as usize];
+        match self.free_patch(leaf) {
+            Some(patch) => {
+                let (first, end) = patches.range[patch as usize];
+                for t in first..end {
+                    self.slots.insert(t, self.seed | INSIDE_BIT);
+                }
+                let mesh = self.mesh;
+                self.sums
+                    .merge(&patches.cones(patch, &self.apex, |t| mesh.corners(t)));
+                block_up(patches, self.blocked, patch);
+                self.queue.push(patch | PATCH_BIT);
+            }
+            None => {
+                self.slots.insert(tri, self.seed | INSIDE_BIT);
+                self.sums.add_triangle(&p, &q, &r, &self.apex);
+                block_up(patches, self.blocked, leaf);
+                self.queue.push(tri);
+            }
+        }
+    }
+
+    /// The highest node on the path up from `leaf` that is a free patch: not blocked (then
+    /// neither is any node below it), one connected patch, its box in the guard. The path is
+    /// read from the small per-node arrays only; the boxes (a cache miss each) are read from
+    /// the top candidate down until one lies in the guard, mostly the first.
+    fn free_patch(&self, leaf: u32) -> Option<u32> {
+        let patches = &self.mesh.patches;
+        let nodes = self.mesh.tree.nodes();
+        let mut path = [0u32; 64];
+        let mut len = 0;
+        let mut node = leaf;
+        loop {
+            if self.blocked.is_set(node) {
+                break;
+            }
+            if patches.connected[node as usize] && len < path.len() {
+                path[len] = node;
+                len += 1;
+            }
+            match patches.parent_of(node) {
+                Some(p) => node = p,
+                None => break,
+            }
+        }
+        path[..len]
+            .iter()
+            .rev()
+            .copied()
+            .find(|&n| aabb_within(&aabb(&nodes[n as usize].obb), &self.guard))
     }
 }

@@ -86,6 +86,7 @@ pub mod obb;
 pub mod obb_tree;
 pub mod obj;
 pub mod parry_adapter;
+pub mod patches;
 pub mod planar;
 mod plane_contact;
 mod prepared;

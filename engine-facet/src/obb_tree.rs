@@ -143,9 +143,32 @@ impl ObbTree {
         &self.order[node.index as usize..(node.index + node.count) as usize]
     }
 
+    /// Renumbers the triangles in leaf order: returns the old index of each new one (the old
+    /// [`order`](Self::order)) and leaves `order` the identity, so every subtree's triangles
+    /// are one contiguous range and a leaf's neighbours in the tree are near it in memory.
+    /// The caller must reorder its per-triangle data by the returned permutation.
+    pub fn renumber_in_leaf_order(&mut self) -> Vec<u32> {
+        let identity = (0..self.order.len() as u32).collect();
+        std::mem::replace(&mut self.order, identity)
+    }
+
     /// Heap bytes held.
     pub fn heap_bytes(&self) -> usize {
         self.nodes.capacity() * std::mem::size_of::<Node>() + self.order.capacity() * 4
+    }
+
+    /// Calls `leaf` with each triangle in the subtree of node `node`, in leaf order.
+    pub fn visit_subtree(&self, node: u32, mut leaf: impl FnMut(u32)) {
+        let mut stack = vec![node as usize];
+        while let Some(i) = stack.pop() {
+            let n = &self.nodes[i];
+            if n.count > 0 {
+                self.leaf_triangles(n).iter().for_each(|&t| leaf(t));
+            } else {
+                stack.push(n.index as usize);
+                stack.push(i + 1);
+            }
+        }
     }
 
     /// Visits every node whose box passes `keep` (given the box; a failing node's subtree is

@@ -38,6 +38,37 @@ impl SlotMap {
     }
 }
 
+/// A set of tree nodes cleared in O(1) by bumping a generation stamp.
+#[derive(Debug, Default)]
+pub(crate) struct NodeMarks {
+    stamps: Vec<u32>,
+    generation: u32,
+}
+
+impl NodeMarks {
+    /// Empties the set and makes room for `n` nodes.
+    pub(crate) fn reset(&mut self, n: usize) {
+        if self.stamps.len() < n {
+            self.stamps.resize(n, 0);
+        }
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.stamps.fill(0);
+            self.generation = 1;
+        }
+    }
+
+    #[inline]
+    pub(crate) fn is_set(&self, node: u32) -> bool {
+        self.stamps[node as usize] == self.generation
+    }
+
+    #[inline]
+    pub(crate) fn set(&mut self, node: u32) {
+        self.stamps[node as usize] = self.generation;
+    }
+}
+
 /// One crossing of a triangle of A with one of B: the segment, in A's frame.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Hit {
@@ -104,6 +135,8 @@ pub(crate) struct Scratch {
     pub stack: Vec<(u32, u32)>,
     pub hits: Vec<Hit>,
     pub slots: [SlotMap; 2],
+    /// Per side, the tree nodes that are no free patch for the inside flood.
+    pub blocked: [NodeMarks; 2],
     pub nodes: Vec<RegionNode>,
     pub node_hits: Vec<u32>,
     pub queue: Vec<u32>,

@@ -5,6 +5,7 @@ mod convergence;
 mod engine;
 mod grazing_corner;
 mod obj_files;
+mod patches;
 mod pinned;
 mod planar;
 mod planar_overlap;
