@@ -154,23 +154,38 @@ pub enum QueryError {
 }
 
 impl QueryError {
-    /// Checks both poses are finite; the shared first step of every query.
+    /// Checks both poses are finite; the shared first step of every query. Inlined into each
+    /// engine's query (it is a few multiplications on the closed forms' tens of nanoseconds);
+    /// the error, which formats the pose, is built out of line.
+    #[inline]
     pub fn check_poses(pose_world_i: &Isometry3, pose_world_j: &Isometry3) -> Result<(), Self> {
-        for (side, pose) in [(Side::I, pose_world_i), (Side::J, pose_world_j)] {
-            if !is_finite_pose(pose) {
-                return Err(Self::NonFinitePose {
-                    side,
-                    pose: format_pose(pose),
-                });
-            }
+        if is_finite_pose(pose_world_i) && is_finite_pose(pose_world_j) {
+            Ok(())
+        } else {
+            Err(Self::non_finite_pose(pose_world_i, pose_world_j))
         }
-        Ok(())
+    }
+
+    /// The error for the first of the two poses that is not finite.
+    #[cold]
+    #[inline(never)]
+    fn non_finite_pose(pose_world_i: &Isometry3, pose_world_j: &Isometry3) -> Self {
+        let (side, pose) = if is_finite_pose(pose_world_i) {
+            (Side::J, pose_world_j)
+        } else {
+            (Side::I, pose_world_i)
+        };
+        Self::NonFinitePose {
+            side,
+            pose: format_pose(pose),
+        }
     }
 }
 
 /// Whether all seven numbers of a pose are finite, without a branch per number: `x·0` is 0
 /// for a finite `x` and NaN for an infinite or NaN one, so the sum of the seven products is
 /// 0 exactly when all are finite (it runs on every query of every engine).
+#[inline]
 fn is_finite_pose(pose: &Isometry3) -> bool {
     let t = &pose.translation.vector;
     let q = &pose.rotation.coords;
