@@ -193,6 +193,19 @@ fn cases() -> Vec<Case> {
             depth: Some(0.1),
         },
         Case {
+            // A wheel at rest: on its side, tilted 1e-4 rad, 1e-3 of its radius deep (the
+            // shallow cut the end-piece series takes).
+            name: "cylinder_plane_resting",
+            i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
+            j: ground.clone(),
+            pose_i: Isometry3::new(
+                nalgebra::Vector3::new(-1.0, 0.0, 0.5 - 5e-4),
+                nalgebra::Vector3::new(1e-4, std::f64::consts::FRAC_PI_2, 0.0),
+            ),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
             name: "mesh_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
             j: ground.clone(),

@@ -98,6 +98,53 @@ fn contact_by(
     } else {
         nalgebra::Vector2::x()
     };
+    let (volume, moment_u, moment_z, section) = slice_moments(a, b, h, r, len, rule, work);
+    if volume <= 0.0 {
+        return None;
+    }
+    let u_bar = moment_u / volume;
+    let centroid = Vector3::new(e.x * u_bar, e.y * u_bar, moment_z / volume);
+    let to_plane = (h - n.dot(&centroid)).max(0.0);
+    let on_cylinder = surface_point_along(&Solid::Cylinder(*cylinder), &centroid, &-n);
+    let on_plane = centroid + to_plane * n;
+    let area = if b.abs() < 1e-9 {
+        let u = h / a;
+        if u.abs() < r {
+            2.0 * ((r - u) * (r + u)).sqrt() * len / a
+        } else {
+            0.0
+        }
+    } else {
+        section / b.abs()
+    };
+    let area = if area > 0.0 {
+        area
+    } else {
+        0.5 * PI * r * (r + len)
+    };
+    let center = pose_c.translation.vector;
+    let world = |p: Vector3| Point3::from(center + rotation * p);
+    Some(PairContact {
+        point_a: world(on_cylinder),
+        point_b: world(on_plane),
+        normal: normal_w,
+        depth: (on_plane - on_cylinder).norm(),
+        area,
+    })
+}
+
+/// The solid's volume, its first moments along `e` (radial, towards the plane's normal) and
+/// along the axis, and the chords' integral where the plane crosses between the caps, for
+/// the plane `a·u + b·z ≤ h` in the cylinder's frame (see the module doc).
+fn slice_moments(
+    a: f64,
+    b: f64,
+    h: f64,
+    r: f64,
+    len: f64,
+    rule: Rule,
+    work: &mut WorkCounters,
+) -> (f64, f64, f64, f64) {
     // Kinks of ℓ(u), as angles φ = asin(u/R) with sin φ and cos φ, sorted, with the ends
     // ±π/2. The sine is u/R exactly and the cosine √((R − u)(R + u))/R, free of the
     // cancellation of √(1 − sin²) near the ends.
@@ -105,22 +152,26 @@ fn contact_by(
         phi: s * FRAC_PI_2,
         sin: s,
         cos: 0.0,
+        u: s * r,
+        z: f64::NAN,
     };
     let mut cuts = [end(-1.0), end(1.0), end(1.0), end(1.0)];
     let mut count = 1;
     if a > 0.0 {
         let kinks = if b != 0.0 {
-            [h / a, (h - b * len) / a]
+            [(h / a, 0.0), ((h - b * len) / a, len)]
         } else {
-            [h / a, h / a]
+            [(h / a, 0.0), (h / a, 0.0)]
         };
-        for u in kinks {
-            let u = u.clamp(-r, r);
-            let sin = u / r;
+        for (u, z) in kinks {
+            let clamped = u.clamp(-r, r);
+            let sin = clamped / r;
             cuts[count] = Cut {
                 phi: sin.asin(),
                 sin,
-                cos: ((r - u) * (r + u)).sqrt() / r,
+                cos: ((r - clamped) * (r + clamped)).sqrt() / r,
+                u: clamped,
+                z: if clamped == u { z } else { f64::NAN },
             };
             count += 1;
         }
@@ -175,8 +226,15 @@ fn contact_by(
                 + (abs_l[0] + abs_l[1] + abs_z[1]) * bound[1]
                 + (abs_l[1] + abs_z[2]) * bound[2]);
         let trusted = rule == Rule::ClosedForm && error <= 1e-13 * (v.abs() + mu.abs() + mz.abs());
+        let near_end = || {
+            (rule == Rule::ClosedForm)
+                .then(|| end_piece(r, &c0, &c1, (lo_c, lo_s), (hi_c, hi_s)))
+                .flatten()
+        };
         let (v, mu, mz, chords) = if trusted {
             (v, mu, mz, closed[0])
+        } else if let Some(sums) = near_end() {
+            sums
         } else {
             // Node by node, each interval's length formed where it is evaluated (a nearly
             // parallel axis makes `L₀ + L₁u` a difference of huge terms).
@@ -202,46 +260,19 @@ fn contact_by(
             section += chords;
         }
     }
-    if volume <= 0.0 {
-        return None;
-    }
-    let u_bar = moment_u / volume;
-    let centroid = Vector3::new(e.x * u_bar, e.y * u_bar, moment_z / volume);
-    let to_plane = (h - n.dot(&centroid)).max(0.0);
-    let on_cylinder = surface_point_along(&Solid::Cylinder(*cylinder), &centroid, &-n);
-    let on_plane = centroid + to_plane * n;
-    let area = if b.abs() < 1e-9 {
-        let u = h / a;
-        if u.abs() < r {
-            2.0 * ((r - u) * (r + u)).sqrt() * len / a
-        } else {
-            0.0
-        }
-    } else {
-        section / b.abs()
-    };
-    let area = if area > 0.0 {
-        area
-    } else {
-        0.5 * PI * r * (r + len)
-    };
-    let center = pose_c.translation.vector;
-    let world = |p: Vector3| Point3::from(center + rotation * p);
-    Some(PairContact {
-        point_a: world(on_cylinder),
-        point_b: world(on_plane),
-        normal: normal_w,
-        depth: (on_plane - on_cylinder).norm(),
-        area,
-    })
+    (volume, moment_u, moment_z, section)
 }
 
-/// A cut of the chords' range: the angle `φ` of `u = R sin φ` with its sine and cosine.
+/// A cut of the chords' range: the angle `φ` of `u = R sin φ` with its sine and cosine, `u`
+/// itself, and at a kink the height the plane's line `(h − a u)/b` takes there exactly (0 or
+/// the length; NaN at the ends ±R).
 #[derive(Debug, Clone, Copy)]
 struct Cut {
     phi: f64,
     sin: f64,
     cos: f64,
+    u: f64,
+    z: f64,
 }
 
 /// The solid's z interval on the axial line at radial coordinate `u` (`z ≤ (h − a u)/b` for
@@ -308,6 +339,79 @@ fn chord_moments(r: f64, c0: &Cut, c1: &Cut) -> ([f64; 3], [f64; 3]) {
     (moments, bound)
 }
 
+/// A small piece at an end of the chords' range (`u` within `R/2` of `±R`, the cut of a
+/// shallow contact), free of both cancellations of the closed form: its integrals about its
+/// inner end `u_k` (a kink, where the plane's line takes its height exactly), with `ℓ` and
+/// `½(hi² − lo²)` expanded about `u_k` and the moments `N_p = ∫ 2√(R² − u²)·|u − u_k|ᵖ du` by
+/// the series of [`end_moments`]. `(volume, u-moment, z-moment, ∫ chords)`, or `None` for
+/// any other piece.
+fn end_piece(
+    r: f64,
+    c0: &Cut,
+    c1: &Cut,
+    lo: (f64, f64),
+    hi: (f64, f64),
+) -> Option<(f64, f64, f64, f64)> {
+    // The inner end, the piece's width from the rim, and the side of the piece (−1: below).
+    let (inner, eta, side) = if c0.sin == -1.0 && c1.sin > -1.0 {
+        (c1, r + c1.u, -1.0)
+    } else if c1.sin == 1.0 && c0.sin < 1.0 {
+        (c0, r - c0.u, 1.0)
+    } else {
+        return None;
+    };
+    if eta > 0.5 * r || inner.z.is_nan() {
+        return None;
+    }
+    // Each branch's value at the kink: a sloped one is the plane's line, exactly `z` there.
+    let at = |(constant, slope): (f64, f64)| if slope != 0.0 { inner.z } else { constant };
+    let (lo_k, hi_k) = (at(lo), at(hi));
+    let (l0, l1) = (hi_k - lo_k, hi.1 - lo.1);
+    let (z0, z1, z2) = (
+        0.5 * (hi_k * hi_k - lo_k * lo_k),
+        hi_k * hi.1 - lo_k * lo.1,
+        0.5 * (hi.1 * hi.1 - lo.1 * lo.1),
+    );
+    let n = end_moments(r, eta);
+    // u − u_k = side·|u − u_k| over the piece.
+    let volume = l0 * n[0] + side * l1 * n[1];
+    let about_kink = side * (l0 * n[1] + side * l1 * n[2]);
+    let height = z0 * n[0] + side * z1 * n[1] + z2 * n[2];
+    Some((volume, inner.u * volume + about_kink, height, n[0]))
+}
+
+/// `N_p = ∫₀^η 2√(x(2R − x))·(η − x)ᵖ dx` for `p = 0, 1, 2` (the chords within `η` of the
+/// rim, `x` the distance from it), by the binomial series of `√(2R − x)`:
+/// `2√(2R)·η^{3/2+p}·Σ_j c_j (η/2R)^j B(3/2 + j, p + 1)`, `c_j = (−1)ʲ binom(½, j)`. Every
+/// term has the sign of the first after it, and the ratio of terms is below `η/2R ≤ ¼`, so
+/// the sum keeps its digits; 40 terms reach round-off.
+fn end_moments(r: f64, eta: f64) -> [f64; 3] {
+    let t = eta / (2.0 * r);
+    let (mut sums, mut c, mut power) = ([0.0f64; 3], 1.0f64, 1.0f64);
+    for j in 0..40 {
+        let x = 1.5 + j as f64;
+        let term = c * power;
+        // B(x, 1) = 1/x, B(x, 2) = 1/(x(x+1)), B(x, 3) = 2/(x(x+1)(x+2)).
+        let b1 = 1.0 / x;
+        let b2 = b1 / (x + 1.0);
+        let b3 = 2.0 * b2 / (x + 2.0);
+        sums[0] += term * b1;
+        sums[1] += term * b2;
+        sums[2] += term * b3;
+        if term.abs() * b1 < 1e-18 * sums[0].abs() {
+            break;
+        }
+        c *= (j as f64 - 0.5) / (j as f64 + 1.0);
+        power *= t;
+    }
+    let lead = 2.0 * (2.0 * r).sqrt() * eta * eta.sqrt();
+    [
+        lead * sums[0],
+        lead * eta * sums[1],
+        lead * eta * eta * sums[2],
+    ]
+}
+
 /// `b` (the axis component of the plane normal in the cylinder's frame), or 0 when the tilt it
 /// makes over the cylinder's length is within the round-off of the positions that went into
 /// the plane height: the axis is then parallel to the plane as far as the input can tell.
@@ -334,8 +438,11 @@ mod tests {
     use contact_core::UnitQuaternion;
 
     /// The closed-form pieces against the 12-node rule on every piece (exact to round-off on
-    /// these trigonometric polynomials), over random tilts and depths from grazing (1e-9 of
-    /// the radius) to full immersion, and axes within 1e-6 of parallel to the plane.
+    /// these trigonometric polynomials where the cut is well conditioned), over random tilts
+    /// and depths from 1e-5 of the radius to full immersion. Shallower cuts, and axes within
+    /// 1e-6 of parallel, are run too (finite, same contact or none) but not compared: there the
+    /// node rule's own cut angle asin(u/R) and its lengths (h − a u)/b carry relative errors
+    /// ε·R/η and ε·a/b, which the end-piece series avoids (see the next two tests).
     #[test]
     fn closed_form_pieces_agree_with_the_node_rule() {
         let mut seed = 0x2545_F491_4F6C_DD1D_u64;
@@ -346,8 +453,9 @@ mod tests {
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
         let cylinder = Cylinder::new(0.7, 2.3).unwrap();
-        let (mut closed_used, mut compared) = (0, 0);
+        let (mut closed_used, mut compared, mut series_poses) = (0, 0, 0);
         for k in 0..20000 {
+            let near_parallel = k % 4 == 1;
             let tilt = match k % 4 {
                 0 => rnd() * std::f64::consts::PI,
                 1 => 0.5 * std::f64::consts::PI + (rnd() - 0.5) * 1e-6,
@@ -372,14 +480,22 @@ mod tests {
                 Rule::ClosedForm,
             );
             closed_used += usize::from(work.iterations == 0);
-            let nodes = contact_by(&cylinder, &pose_c, &pose_plane, 1.0, &mut work, Rule::Nodes);
+            let mut node_work = WorkCounters::default();
+            let nodes = contact_by(
+                &cylinder,
+                &pose_c,
+                &pose_plane,
+                1.0,
+                &mut node_work,
+                Rule::Nodes,
+            );
             match (closed, nodes) {
-                (Some(c), Some(n)) => {
+                (Some(c), Some(n)) if depth >= 1e-5 && !near_parallel => {
                     compared += 1;
                     let scale = 2.3;
                     let depth_err = (c.depth - n.depth).abs();
                     assert!(
-                        depth_err <= 1e-12 * n.depth.max(1e-300) + 1e-14 * scale,
+                        depth_err <= 1e-12 * n.depth + 1e-14 * scale,
                         "{k}: {c:?} {n:?}"
                     );
                     assert!(
@@ -390,20 +506,74 @@ mod tests {
                         (c.point_b - n.point_b).norm() <= 1e-12 * scale,
                         "{k}: {c:?} {n:?}"
                     );
+                    // The node rule's cut angle carries ε·R/η relative (η ≈ the depth).
+                    let node_error = 8.0 * f64::EPSILON * 0.7 / depth;
                     assert!(
-                        (c.area - n.area).abs() <= 1e-12 * n.area,
+                        (c.area - n.area).abs() <= (1e-12 + node_error) * n.area,
                         "{k}: {c:?} {n:?}"
                     );
+                }
+                (Some(c), Some(n)) => {
+                    series_poses += 1;
+                    assert!(c.depth.is_finite() && c.area.is_finite(), "{k}: {c:?}");
+                    assert!((c.depth - n.depth).abs() <= 1e-9 * 2.3, "{k}: {c:?} {n:?}");
                 }
                 (None, None) => {}
                 (c, n) => panic!("{k}: {c:?} vs {n:?}"),
             }
         }
-        // Both rules were compared: poses taken wholly in closed form (deep contacts, axes near
-        // upright) and poses with a piece node by node (grazing, axes near parallel).
+        // Both rules were compared: poses taken wholly in closed form (deep contacts, shallow
+        // ones by the end-piece series) and poses with a piece node by node.
         assert!(
-            compared > 15000 && closed_used > 2000 && compared - closed_used > 2000,
-            "{compared} {closed_used}"
+            compared > 5000 && closed_used > 5000 && series_poses > 5000,
+            "{compared} {closed_used} {series_poses}"
         );
+    }
+
+    /// The end-piece series against Gauss–Legendre after `x = η t²`, which leaves a smooth
+    /// integrand `4η^{3/2} t² √(2R − η t²) (η(1 − t²))ᵖ` on `[0, 1]` (8 pieces of 12 nodes).
+    #[test]
+    fn the_end_moments_series_matches_quadrature_in_the_root_of_the_rim_distance() {
+        let r = 0.7;
+        for e in 0..=24 {
+            let eta = 0.5 * r * 10f64.powf(-0.5 * e as f64);
+            let mut reference = [0.0; 3];
+            for piece in 0..8 {
+                let (t0, t1) = (piece as f64 / 8.0, (piece + 1) as f64 / 8.0);
+                quadrature::for_each_node(t0, t1, |t, w| {
+                    let x = eta * t * t;
+                    let f = 4.0 * eta * eta.sqrt() * t * t * (2.0 * r - x).sqrt();
+                    let d = eta * (1.0 - t) * (1.0 + t);
+                    reference[0] += w * f;
+                    reference[1] += w * f * d;
+                    reference[2] += w * f * d * d;
+                });
+            }
+            let series = end_moments(r, eta);
+            for p in 0..3 {
+                let rel = (series[p] - reference[p]).abs() / reference[p];
+                assert!(rel <= 1e-14, "η = {eta:e}, p = {p}: {rel:e}");
+            }
+        }
+    }
+
+    /// A wheel within 1.1e-7 rad of parallel to the plane, cut 3e-9 deep along 0.027 of its
+    /// length: the moments against a 50-digit quadrature of the same integrals (mpmath, the
+    /// plane's `a, b, h` as the doubles below). The series answers to 2e-14; the node rule,
+    /// whose lengths `(h − a u)/b` carry ε·a/b, was off by 4e-10 in volume and 3e-9 in the
+    /// axial centroid.
+    #[test]
+    fn a_grazing_nearly_parallel_cut_keeps_its_digits() {
+        let (a, b, h) = (
+            9.999_999_999_999_933e-1,
+            1.140_422_833_945_109_5e-7,
+            -6.999_999_969_701_55e-1,
+        );
+        let mut work = WorkCounters::default();
+        let (v, mu, mz, _) = slice_moments(a, b, h, 0.7, 2.3, Rule::ClosedForm, &mut work);
+        let close = |got: f64, want: f64| ((got - want) / want).abs() <= 2e-14;
+        assert!(close(v, 2.796_057_989_195_627_4e-15), "{v:e}");
+        assert!(close(mu / v, -6.999_999_987_014_97e-1), "{:e}", mu / v);
+        assert!(close(mz / v, 7.590_769_162_087_196e-3), "{:e}", mz / v);
     }
 }
