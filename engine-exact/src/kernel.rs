@@ -3,7 +3,7 @@
 
 use crate::planar::curve_eval::PlanarCurve;
 use crate::{pairs, planar};
-use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
+use contact_core::geometry::{Cuboid, Cylinder, Frustum, Line, Plane};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::sync::Arc;
 
@@ -83,6 +83,11 @@ pub(crate) enum Kernel {
     EllipsoidCylinder {
         semi_axes: Vector3,
         cylinder: Cylinder,
+    },
+    /// General ellipsoid `a` against frustum (or cone) `b` (sliced across `b`'s axis).
+    EllipsoidFrustum {
+        semi_axes: Vector3,
+        frustum: Frustum,
     },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
@@ -323,6 +328,10 @@ impl Kernel {
                 semi_axes,
                 ref cylinder,
             } => pairs::ellipsoid_cylinder::contact(&semi_axes, pose_a, cylinder, pose_b, work),
+            Self::EllipsoidFrustum {
+                semi_axes,
+                ref frustum,
+            } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
             Self::CylinderPlane { ref cylinder, side } => {
                 pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
             }

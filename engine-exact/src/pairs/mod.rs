@@ -22,6 +22,7 @@ pub(crate) mod disc_section;
 pub mod ellipsoid_box;
 pub mod ellipsoid_cylinder;
 pub mod ellipsoid_ellipsoid;
+pub(crate) mod ellipsoid_frustum;
 pub mod ellipsoid_plane;
 pub(crate) mod ellipsoid_sliced;
 pub(crate) mod mesh_box;
