@@ -3,7 +3,7 @@
 
 use crate::planar::curve_eval::PlanarCurve;
 use crate::{pairs, planar};
-use contact_core::geometry::{Cuboid, Cylinder, Frustum, Line, Plane};
+use contact_core::geometry::{Cuboid, Cylinder, Frustum, Line, Plane, Torus};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::sync::Arc;
 
@@ -89,6 +89,9 @@ pub(crate) enum Kernel {
         semi_axes: Vector3,
         frustum: Frustum,
     },
+    /// General ellipsoid `a` against ring torus `b` (sliced across `b`'s axis): one contact
+    /// per region.
+    EllipsoidTorus { semi_axes: Vector3, torus: Torus },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
     /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing.
@@ -246,6 +249,13 @@ impl Kernel {
                 pairs::mesh_revolved::ellipsoid_contacts(
                     semi_axes, pose_a, mesh, pose_b, work, emit,
                 );
+                None
+            }
+            Self::EllipsoidTorus {
+                ref semi_axes,
+                ref torus,
+            } => {
+                pairs::ellipsoid_torus::contacts(semi_axes, pose_a, torus, pose_b, work, emit);
                 None
             }
             Self::MeshBoundedPlane {

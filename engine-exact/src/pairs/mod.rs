@@ -25,6 +25,7 @@ pub mod ellipsoid_ellipsoid;
 pub(crate) mod ellipsoid_frustum;
 pub mod ellipsoid_plane;
 pub(crate) mod ellipsoid_sliced;
+pub(crate) mod ellipsoid_torus;
 pub(crate) mod mesh_box;
 pub mod mesh_plane;
 pub(crate) mod mesh_revolved;

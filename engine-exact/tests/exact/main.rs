@@ -13,8 +13,11 @@
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
 //! - [`circle_bounded_line`]: a circle on a bounded line: invariants, the unbounded limit,
 //!   agreement with a closed arc, continuity across an end, degenerate branches;
-//! - [`ellipsoid_revolved`]: general ellipsoid–frustum: the coaxial oracle, a frustum of
-//!   equal radii against the cylinder pair, degenerate branches;
+//! - [`ellipsoid_revolved`]: general ellipsoid–frustum: the coaxial and apex-divergence
+//!   oracles, a frustum of equal radii against the cylinder pair, invariants, degenerate
+//!   branches;
+//! - [`ellipsoid_torus`]: general ellipsoid–torus: the coaxial and divergence oracles, two
+//!   regions, invariants, degenerate branches;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
 //!   invariants, separate regions, degenerate branches;
 //! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
@@ -36,6 +39,7 @@ mod degenerate_sliced;
 mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
 mod ellipsoid_revolved;
+mod ellipsoid_torus;
 mod mesh_box;
 mod mesh_revolved;
 mod model_check;

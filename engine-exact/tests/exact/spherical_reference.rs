@@ -375,50 +375,22 @@ fn surface_terms(e: &Ellipsoid, m: &SphereMoments) -> (f64, Vector3, Vector3) {
     (xn, xxn, s)
 }
 
-/// The moments of `I ∩ J` for an ellipsoid `I` and a solid `J` whose surface inside `I` is
-/// part of a cone with its apex at `apex` (a frustum's side; no cap inside `I`): on such a
-/// surface `(x − apex)·n = 0`, so with the apex as origin only `I`'s patch (where `margin_j`,
-/// positive inside `J`, is positive) carries `⅓∮x·n dA` and `¼∮x (x·n) dA`. On `n` rays;
-/// `None` when the patch is empty.
-pub fn moments_in_cone(
-    i: &Ellipsoid,
+/// The surface integrals `(∫x·n dA, ∫x (x·n) dA, ∫n dA)` over the part of `e`'s surface
+/// where `margin_j` is positive (all of its pieces: rays crossing several times are
+/// [`general_moments`]'), on `n` rays; `None` when that part is empty.
+pub fn patch_terms(
+    e: &Ellipsoid,
     margin_j: &dyn Fn(&Vector3) -> f64,
-    apex: &Vector3,
     n: usize,
-) -> Option<Moments> {
-    let shifted = Ellipsoid {
-        c: i.c - apex,
-        l: i.l,
-    };
-    let margin = |u: &Vector3| margin_j(&(i.c + i.l * u));
+) -> Option<(f64, Vector3, Vector3)> {
+    let margin = |u: &Vector3| margin_j(&(e.c + e.l * u));
     let a = deepest(&margin);
     if margin(&a) <= 0.0 {
         return None;
     }
     let m = region_moments(&a, &|u| margin(u) > 0.0, n)
         .unwrap_or_else(|| general_moments(&a, &margin, n / 2));
-    let (xn, xxn, s) = surface_terms(&shifted, &m);
-    let volume = xn / 3.0;
-    Some(Moments {
-        volume,
-        centroid: Point3::from(xxn / 4.0 / volume + apex),
-        area_vector_i: s,
-    })
-}
-
-/// [`moments_in_cone`] on 512 rays, with its error measured against 256 rays.
-pub fn converged_in_cone(
-    i: &Ellipsoid,
-    margin_j: &dyn Fn(&Vector3) -> f64,
-    apex: &Vector3,
-) -> Option<(Moments, f64)> {
-    let coarse = moments_in_cone(i, margin_j, apex, 256)?;
-    let fine = moments_in_cone(i, margin_j, apex, 512)?;
-    let error = (fine.volume - coarse.volume)
-        .abs()
-        .max((fine.centroid - coarse.centroid).norm())
-        .max((fine.area_vector_i - coarse.area_vector_i).norm());
-    Some((fine, error))
+    Some(surface_terms(e, &m))
 }
 
 /// The moments of `I ∩ J` on `n` rays per surface, and `|S_I + S_J|` (zero exactly);

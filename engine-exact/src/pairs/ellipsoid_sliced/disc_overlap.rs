@@ -59,7 +59,8 @@ impl Default for Arcs {
 }
 
 impl Arcs {
-    fn push(&mut self, start: f64, end: f64) {
+    /// Adds the arc from `start` to `end`.
+    pub(crate) fn push(&mut self, start: f64, end: f64) {
         debug_assert!(self.len < MAX_ARCS, "too many arcs");
         if self.len < MAX_ARCS {
             self.spans[self.len] = (start, end);

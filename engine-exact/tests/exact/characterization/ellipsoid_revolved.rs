@@ -6,7 +6,7 @@
 //! - side only, general poses: the divergence theorem about the cone's apex, where the cone's
 //!   surface carries no flux of `x` (`x·n = 0`), so the ellipsoid's own patch inside the cone
 //!   gives volume, centroid and area vector — in geodesic polar coordinates on its unit
-//!   sphere ([`crate::spherical_reference::converged_in_cone`], converged to 1e-12);
+//!   sphere ([`crate::ellipsoid_revolved::converged_in_cone`], converged to 1e-12);
 //! - coaxial ellipsoids of revolution (spheres and cones included): 1-D integrals of
 //!   concentric discs, exact by Gauss–Legendre between the radii's crossings
 //!   ([`crate::ellipsoid_revolved::coaxial_frustum`]);
@@ -16,8 +16,8 @@
 use super::{Case, ITERATIVE_BOUND, Row, run};
 use crate::common::{Expected, Rng, instance, one};
 use crate::ellipsoid_oracles::{contact_from, ellipsoid_cap, ellipsoid_exit};
-use crate::ellipsoid_revolved::{coaxial_frustum, frustum_exit};
-use crate::spherical_reference::{self, converged_in_cone};
+use crate::ellipsoid_revolved::{coaxial_frustum, converged_in_cone, frustum_exit};
+use crate::spherical_reference;
 use contact_core::geometry::{Ellipsoid, Frustum};
 use contact_core::{Geometry, GeometryInstance, Isometry3, UnitQuaternion, Vector3};
 use nalgebra::{Matrix3, Translation3};
