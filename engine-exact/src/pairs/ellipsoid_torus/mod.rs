@@ -30,7 +30,10 @@
 //! axis, on which the wedge's rays contribute nothing), one contact each. A region's lowest and
 //! highest slice are the least and greatest `z` over its azimuths of the meridian sections'
 //! overlap (the 2-D pencil extent, to round-off). When the sampling sees a single region
-//! (or the ring all around, an ellipsoid through the hole) the whole turn is one region.
+//! (or the ring all around, an ellipsoid through the hole) the whole turn is one region. The
+//! box–torus pair's limit applies: a second region narrower than the 128 azimuth samples that
+//! the golden-section refinement of the sampled minima also misses would share its
+//! neighbour's wedge (one contact for the two); a region is never split.
 //!
 //! ## The contact
 //! By [`super::volume_contact::contact_of_region`]. A region of a torus need not be convex, but
