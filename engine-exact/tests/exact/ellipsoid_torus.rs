@@ -570,3 +570,46 @@ fn a_rigid_motion_of_both_bodies_moves_the_contact() {
 fn scaling_the_scene_scales_depth_and_points() {
     check_scale(&MAKERS, 53);
 }
+
+/// Random poses of needles, plates and balls against thin and fat tori and against frustums
+/// and cones, at 1e-6 and 1e6: every answer well formed (no NaN, no panic), each region's
+/// depth within the two bodies' reach.
+#[test]
+fn random_extreme_shapes_give_well_formed_contacts() {
+    use contact_core::geometry::Frustum;
+    let mut rng = Rng::new(0x57_2E55);
+    let mut seen = 0;
+    for k in 0..300 {
+        let scale = [1.0, 1e-6, 1e6][k % 3];
+        let shape = [
+            Vector3::new(1e-3, 1e-3, 1.0),
+            Vector3::new(1.0, 0.8, 1e-3),
+            Vector3::new(0.3, 0.3, 0.3 * (1.0 + 1e-9)),
+            Vector3::new(1.5, 0.4, 0.2),
+        ][k % 4]
+            * scale;
+        let e = ellipsoid(shape.x, shape.y, shape.z);
+        let (j, reach) = if k % 2 == 0 {
+            let small = [0.05, 0.5, 0.95][k % 3];
+            (torus(scale, small * scale), (1.0 + small) * scale)
+        } else {
+            let (r0, r1) = [(1.0, 0.0), (0.0, 0.7), (0.8, 0.8), (1.2, 0.3)][k % 4];
+            (
+                instance(Geometry::Frustum(
+                    Frustum::new(r0 * scale, r1 * scale, scale).unwrap(),
+                )),
+                1.5 * scale,
+            )
+        };
+        let pose = Isometry3::from_parts(
+            Translation3::from(rng.unit_vector() * rng.uniform(0.0, reach + shape.max())),
+            rng.rotation(),
+        );
+        for c in query(&e, &j, &pose, &Isometry3::identity()) {
+            well_formed(&c);
+            assert!(c.penetration <= 2.0 * (reach + shape.max()), "{c:?}");
+            seen += 1;
+        }
+    }
+    assert!(seen > 50, "{seen}");
+}

@@ -11,10 +11,13 @@
 //!   concentric discs, exact by Gauss–Legendre between the radii's crossings
 //!   ([`crate::ellipsoid_revolved::coaxial_frustum`]);
 //! - a sphere given as an ellipsoid against the closed-form sphere–frustum pair where that
-//!   pair is SPEC §4's answer (one cap).
+//!   pair is SPEC §4's answer (one cap);
+//! - a cross-check, not an oracle: a frustum of equal radii against the ellipsoid–cylinder
+//!   pair in general poses (rims included), whose extent comes from the pencil of the two
+//!   quadrics instead of the frustum's convex gap.
 
 use super::{Case, ITERATIVE_BOUND, Row, run};
-use crate::common::{Expected, Rng, instance, one};
+use crate::common::{Expected, Rng, instance, one, query};
 use crate::ellipsoid_oracles::{contact_from, ellipsoid_cap, ellipsoid_exit};
 use crate::ellipsoid_revolved::{coaxial_frustum, converged_in_cone, frustum_exit};
 use crate::spherical_reference;
@@ -148,6 +151,45 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                         depth: closed.penetration,
                     },
                     length: r0,
+                })
+            },
+        )),
+        iterative(run(
+            rng,
+            CLOSED_SAMPLES,
+            "ellipsoid–frustum ↔ ellipsoid–cylinder",
+            "a frustum of equal radii r ∈ [0.3, 1], L ∈ [0.4, 2] against the cylinder pair (the pencil's extent), semi-axes ∈ [0.3, 1.2], random poses (rims included)",
+            "sliced quadrature",
+            |rng| {
+                let semi = axes(rng, 0.3, 1.2);
+                let (radius, len) = (rng.uniform(0.3, 1.0), rng.uniform(0.4, 2.0));
+                let c = Vector3::new(0.0, 0.0, 0.5 * len)
+                    + rng.unit_vector() * rng.uniform(0.0, 1.0) * (semi.max() + radius + 0.5 * len);
+                let pose_i = Isometry3::from_parts(Translation3::from(c), rng.rotation());
+                let cylinder = instance(Geometry::Cylinder(
+                    contact_core::geometry::Cylinder::new(radius, len).unwrap(),
+                ));
+                let found = query(
+                    &ellipsoid(&semi),
+                    &cylinder,
+                    &pose_i,
+                    &Isometry3::identity(),
+                );
+                let [reference] = found[..] else {
+                    return None;
+                };
+                Some(Case {
+                    i: ellipsoid(&semi),
+                    j: frustum(radius, radius, len),
+                    pose_i,
+                    pose_j: Isometry3::identity(),
+                    expected: Expected {
+                        point_i: reference.point_i_w,
+                        point_j: reference.point_j_w,
+                        normal: reference.normal_w,
+                        depth: reference.penetration,
+                    },
+                    length: semi.max().max(radius).max(len),
                 })
             },
         )),
