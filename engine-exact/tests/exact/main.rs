@@ -16,8 +16,8 @@
 //! - [`ellipsoid_revolved`]: general ellipsoid–frustum: the coaxial and apex-divergence
 //!   oracles, a frustum of equal radii against the cylinder pair, invariants, degenerate
 //!   branches;
-//! - [`ellipsoid_torus`]: general ellipsoid–torus: the coaxial and divergence oracles, two
-//!   regions, invariants, degenerate branches;
+//! - [`ellipsoid_torus`]: general ellipsoid–torus: two regions, invariants, degenerate
+//!   branches; [`torus_oracles`]: its coaxial and divergence oracles;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
 //!   invariants, separate regions, degenerate branches;
 //! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
@@ -49,4 +49,5 @@ mod regressions;
 mod revolved_oracles;
 mod sliced_oracles;
 mod spherical_reference;
+mod torus_oracles;
 mod voxel_oracle;
