@@ -277,3 +277,35 @@ fn random_extreme_shapes_give_well_formed_contacts() {
     }
     assert!(seen > 50, "{seen}");
 }
+
+/// A small ellipsoid meets the torus within a sliver of azimuth narrower than the region
+/// search's samples (seen: a ball of radius 0.1 sunk 0.028 into the outer equator, between
+/// samples, gave no contact when the gap was flat where the meridians miss the ellipsoid):
+/// found at any azimuth, on the outer and inner equator and on the top.
+#[test]
+fn a_small_ellipsoid_between_azimuth_samples_is_found() {
+    let (big, small) = (2.0, 0.5);
+    let t = torus(big, small);
+    let mut rng = Rng::new(0x5A_11);
+    for k in 0..90 {
+        let r = rng.uniform(0.01, 0.12);
+        let phi = rng.uniform(0.0, std::f64::consts::TAU);
+        let radial = Vector3::new(phi.cos(), phi.sin(), 0.0);
+        let (foot, outward) = match k % 3 {
+            0 => (radial * (big + small), radial),
+            1 => (radial * (big - small), -radial),
+            _ => (radial * big + Vector3::z() * small, Vector3::z()),
+        };
+        // The ellipsoid's support point along −n sunk below the foot: a point of both.
+        let rotation = rng.rotation();
+        let l = rotation.to_rotation_matrix().matrix()
+            * Matrix3::from_diagonal(&Vector3::new(r, 0.8 * r, 0.6 * r));
+        let support = l * (l.transpose() * outward) / (l.transpose() * outward).norm();
+        let c = foot + support - outward * (0.6 * r * rng.uniform(0.05, 0.9));
+        let e = ellipsoid(r, 0.8 * r, 0.6 * r);
+        let pose = Isometry3::from_parts(Translation3::from(c), rotation);
+        let found = query(&e, &t, &pose, &Isometry3::identity());
+        assert_eq!(found.len(), 1, "r {r} at φ {phi}, case {}", k % 3);
+        well_formed(&found[0]);
+    }
+}

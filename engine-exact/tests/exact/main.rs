@@ -16,6 +16,8 @@
 //! - [`ellipsoid_revolved`]: general ellipsoid–frustum: the coaxial and apex-divergence
 //!   oracles, a frustum of equal radii against the cylinder pair, invariants, degenerate
 //!   branches;
+//! - [`frustum_oracles`]: ellipsoid–frustum in general poses by the divergence theorem about
+//!   the apex;
 //! - [`ellipsoid_torus`]: general ellipsoid–torus: two regions, invariants, degenerate
 //!   branches; [`torus_oracles`]: its coaxial and divergence oracles;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
@@ -40,6 +42,7 @@ mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
 mod ellipsoid_revolved;
 mod ellipsoid_torus;
+mod frustum_oracles;
 mod mesh_box;
 mod mesh_revolved;
 mod model_check;

@@ -39,11 +39,13 @@ pub(crate) fn region_wedges(
 }
 
 /// [`region_wedges`] for any solid whose meridian sections are convex: `g(φ)` is the distance
-/// from the tube's centre to the solid's section in `H_φ`, less the tube's radius `small`
-/// (negative where `H_φ` meets both, at most `small` where it misses).
+/// from the tube's centre to the solid's section in `H_φ`, less the tube's radius (negative
+/// where `H_φ` meets both). The sampled positive local minima below `refine_below` are
+/// refined (a box's `g` is the tube's radius wherever it misses: only the lower ones can hide
+/// a dip).
 pub(crate) fn region_wedges_of(
     g: impl Fn(f64) -> f64,
-    small: f64,
+    refine_below: f64,
 ) -> ([(f64, f64); SAMPLES / 2], usize) {
     let mut values = [0.0; SAMPLES];
     let mut angles = [0.0; SAMPLES];
@@ -59,7 +61,7 @@ pub(crate) fn region_wedges_of(
             values[(k + SAMPLES - 1) % SAMPLES],
             values[(k + 1) % SAMPLES],
         );
-        if values[k] > 0.0 && values[k] <= prev && values[k] <= next && values[k] < small {
+        if values[k] > 0.0 && values[k] <= prev && values[k] <= next && values[k] < refine_below {
             let phi = golden_maximum(angles[k] - step, angles[k] + step, |x| -g(x));
             let v = g(phi);
             if v < 0.0 {

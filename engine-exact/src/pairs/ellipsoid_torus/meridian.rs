@@ -32,12 +32,28 @@ pub(crate) struct Meridians {
     pub big: f64,
     /// Minor radius `ρ`.
     pub small: f64,
+    /// Above every distance from the tube's centre to a meridian section: `R + |c| + ` the
+    /// ellipsoid's largest semi-axis.
+    pub outside: f64,
 }
 
 impl Meridians {
     /// The ellipsoid's section by the meridian plane at `phi`: `(y₀, A/(1 − κ))`, or `None`
     /// when the plane misses it.
     fn section(&self, phi: f64) -> Option<(Vector2<f64>, Matrix2<f64>)> {
+        let (y0, a, kappa) = self.plane(phi)?;
+        let room = 1.0 - kappa;
+        (room > 0.0 && room.is_finite()).then(|| (y0, a / room))
+    }
+
+    /// `κ`: the meridian plane's squared distance from the centre in the ellipsoid's metric
+    /// (`+∞` if degenerate).
+    fn kappa(&self, phi: f64) -> f64 {
+        self.plane(phi).map_or(f64::INFINITY, |p| p.2)
+    }
+
+    /// `(y₀, A, κ)` of the meridian plane at `phi`.
+    fn plane(&self, phi: f64) -> Option<(Vector2<f64>, Matrix2<f64>, f64)> {
         let (sin, cos) = phi.sin_cos();
         let e_r = Vector3::new(cos, sin, 0.0);
         let (qr, qz) = (self.q * e_r, self.q.column(2).into_owned());
@@ -46,16 +62,18 @@ impl Meridians {
         let b = Vector2::new(e_r.dot(&qc), qc.z);
         let y0 = a.cholesky()?.solve(&b);
         let kappa = self.c.dot(&qc) - b.dot(&y0);
-        let room = 1.0 - kappa;
-        (room > 0.0 && room.is_finite()).then(|| (y0, a / room))
+        Some((y0, a, kappa))
     }
 
     /// `g(φ)`: the distance from the tube's centre `(R, 0)` to the ellipsoid's meridian
-    /// section, less `ρ` (negative where they overlap; `ρ` where the plane misses the
-    /// ellipsoid).
+    /// section, less `ρ` (negative where they overlap). Where the plane misses the ellipsoid,
+    /// `D + κ` with `D` above every distance (`R + |c| + ` the ellipsoid's reach) and `κ > 1`
+    /// the plane's distance from the centre in the ellipsoid's metric: it falls toward the
+    /// azimuths where the plane meets the ellipsoid, so a narrow dip of `g` (a small
+    /// ellipsoid) lies in a basin that sampling sees.
     pub(crate) fn gap(&self, phi: f64) -> f64 {
         let Some((y0, a)) = self.section(phi) else {
-            return self.small;
+            return self.outside + self.kappa(phi);
         };
         // The ellipse as y₀ + M u with M Mᵀ = A⁻¹.
         let shape = a
@@ -219,6 +237,7 @@ mod tests {
             c: Vector3::new(3.0, 0.0, 0.0),
             big: 3.0,
             small: 1.0,
+            outside: 7.0,
         };
         assert!((m.gap(0.0) + 1.0).abs() < 1e-15);
         let (lo, hi) = m.z_span(0.0).unwrap();

@@ -175,14 +175,21 @@ pub(crate) fn contacts(
         big,
         small,
     };
+    let reach = l
+        .column(0)
+        .norm()
+        .max(l.column(1).norm())
+        .max(l.column(2).norm());
     let meridians = Meridians {
         q: ellipsoid.inverse().transpose() * ellipsoid.inverse(),
         c,
         big,
         small,
+        outside: big + c.norm() + reach,
     };
     let gap = |phi: f64| meridians.gap(phi);
-    let (cuts_at, count) = region_wedges_of(gap, small);
+    // Every sampled local minimum is refined: the gap has no upper bound here.
+    let (cuts_at, count) = region_wedges_of(gap, f64::INFINITY);
     let mut wedges = [Wedge {
         start: 0.0,
         end: TAU,
@@ -259,23 +266,46 @@ fn region(
 }
 
 /// The azimuth in `wedge` where the ellipsoid's meridian section comes nearest the tube's
-/// centre (sampled, refined by golden section), if its section overlaps the tube there.
+/// centre, if its section overlaps the tube there: every sampled local minimum of the gap
+/// refined by golden section (the gap decreases toward the ellipsoid's azimuths even where
+/// the meridians miss it, see [`Meridians::gap`], so a narrow dip between samples lies
+/// within a step of a sampled minimum).
 fn deepest_azimuth(meridians: &Meridians, wedge: &Wedge) -> Option<f64> {
-    let samples = 48;
-    let step = (wedge.end - wedge.start) / samples as f64;
-    let (mut best, mut value) = (wedge.start, f64::INFINITY);
-    for k in 0..samples {
-        let phi = wedge.start + step * (k as f64 + 0.5);
-        let g = meridians.gap(phi);
+    const SAMPLES: usize = 96;
+    let step = (wedge.end - wedge.start) / SAMPLES as f64;
+    let at = |k: usize| wedge.start + step * (k as f64 + 0.5);
+    let mut values = [0.0; SAMPLES];
+    for (k, v) in values.iter_mut().enumerate() {
+        *v = meridians.gap(at(k));
+    }
+    let whole = wedge.end - wedge.start >= TAU;
+    let (mut best, mut value) = (at(0), f64::INFINITY);
+    for k in 0..SAMPLES {
+        let neighbour = |j: Option<usize>| j.map_or(f64::INFINITY, |j| values[j]);
+        let (prev, next) = if whole {
+            (
+                values[(k + SAMPLES - 1) % SAMPLES],
+                values[(k + 1) % SAMPLES],
+            )
+        } else {
+            (
+                neighbour(k.checked_sub(1)),
+                neighbour((k + 1 < SAMPLES).then_some(k + 1)),
+            )
+        };
+        if values[k] > prev || values[k] > next {
+            continue;
+        }
+        let phi = super::sliced::golden_maximum(at(k) - step, at(k) + step, |x| -meridians.gap(x));
+        let g = meridians.gap(phi).min(values[k]);
         if g < value {
-            (best, value) = (phi, g);
+            value = g;
+            best = if meridians.gap(phi) <= values[k] {
+                phi
+            } else {
+                at(k)
+            };
         }
     }
-    let phi = super::sliced::golden_maximum(best - step, best + step, |x| -meridians.gap(x));
-    let phi = if meridians.gap(phi) < value {
-        phi
-    } else {
-        best
-    };
-    (meridians.gap(phi) < 0.0).then_some(phi)
+    (value < 0.0).then_some(best)
 }

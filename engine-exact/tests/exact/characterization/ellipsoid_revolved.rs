@@ -10,6 +10,9 @@
 //! - coaxial ellipsoids of revolution (spheres and cones included): 1-D integrals of
 //!   concentric discs, exact by Gauss–Legendre between the radii's crossings
 //!   ([`crate::ellipsoid_revolved::coaxial_frustum`]);
+//! - rims, general poses: the same divergence about the apex with the caps' parts inside the
+//!   ellipsoid, its patch cut where the binding constraint changes
+//!   ([`crate::frustum_oracles::frustum_moments`], converged to 1e-11);
 //! - a sphere given as an ellipsoid against the closed-form sphere–frustum pair where that
 //!   pair is SPEC §4's answer (one cap);
 //! - a cross-check, not an oracle: a frustum of equal radii against the ellipsoid–cylinder
@@ -156,6 +159,14 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
         )),
         iterative(run(
             rng,
+            SPHERICAL_SAMPLES,
+            "ellipsoid–frustum",
+            "across a rim (top or bottom), random poses, semi-axes ∈ [0.25, 0.6], r₀ = 1.2, r₁ = 0.5, L = 1.5",
+            "sliced quadrature",
+            across_a_rim,
+        )),
+        iterative(run(
+            rng,
             CLOSED_SAMPLES,
             "ellipsoid–frustum ↔ ellipsoid–cylinder",
             "a frustum of equal radii r ∈ [0.3, 1], L ∈ [0.4, 2] against the cylinder pair (the pencil's extent), semi-axes ∈ [0.3, 1.2], random poses (rims included)",
@@ -194,6 +205,40 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             },
         )),
     ]
+}
+
+/// An ellipsoid about a point of a rim, against the divergence theorem about the apex with the
+/// caps' parts ([`crate::frustum_oracles::frustum_moments`], converged to 1e-11).
+fn across_a_rim(rng: &mut Rng) -> Option<Case> {
+    let (r0, r1, len) = (1.2, 0.5, 1.5);
+    let semi = axes(rng, 0.25, 0.6);
+    let rotation = rng.rotation();
+    let l = rotation.to_rotation_matrix().matrix() * Matrix3::from_diagonal(&semi);
+    let (z, radius) = if rng.uniform(0.0, 1.0) < 0.5 {
+        (0.0, r0)
+    } else {
+        (len, r1)
+    };
+    let angle = rng.uniform(0.0, std::f64::consts::TAU);
+    let rim = Vector3::new(radius * angle.cos(), radius * angle.sin(), z);
+    let c = rim + rng.unit_vector() * rng.uniform(0.0, 0.8) * semi.min();
+    let (moments, error) = crate::frustum_oracles::frustum_moments(&c, &l, r0, r1, len)?;
+    if error > 1e-11 || moments.area_vector_i.norm() < 1e-3 {
+        return None;
+    }
+    let expected = contact_from(
+        &moments,
+        |g, d| ellipsoid_exit(&c, &l, g, d),
+        |g, d| frustum_exit(r0, r1, len, g, d),
+    );
+    Some(Case {
+        i: ellipsoid(&semi),
+        j: frustum(r0, r1, len),
+        pose_i: Isometry3::from_parts(Translation3::from(c), rotation),
+        pose_j: Isometry3::identity(),
+        expected,
+        length: r0.max(len),
+    })
 }
 
 /// An ellipsoid across the slanted side of a long frustum, clear of both caps, against the
