@@ -7,7 +7,8 @@
 //! composition included). Before timing, each group prints both answers' depth against the
 //! closed form, so speed and accuracy are read together. Inputs are fixed configurations.
 //! Parry has no ellipsoid, frustum, torus or bounded plane, so the general-ellipsoid groups
-//! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_bounded_plane`)
+//! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_frustum`,
+//! `ellipsoid_torus`, `ellipsoid_torus_two_regions`, `ellipsoid_bounded_plane`)
 //! and the box–frustum, box–torus and frustum/torus–bounded-plane groups time the exact
 //! engine alone. A mesh is a parry `TriMesh`; parry is timed only on the pairs it answers.
 
@@ -122,6 +123,33 @@ fn cases() -> Vec<Case> {
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Cylinder(Cylinder::new(0.8, 1.5).unwrap()),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.4, 1.6), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_frustum",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Frustum(Frustum::new(1.0, 0.5, 1.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.8, 0.3, 1.4), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_torus",
+            i: Geometry::Ellipsoid(Ellipsoid::new(0.5, 0.3, 0.25).unwrap()),
+            j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.3, 0.4, 0.45), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_torus_two_regions",
+            i: Geometry::Ellipsoid(Ellipsoid::new(2.3, 0.3, 0.25).unwrap()),
+            j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
+            pose_i: Isometry3::from_parts(
+                nalgebra::Translation3::new(0.0, 0.0, 0.1),
+                UnitQuaternion::from_euler_angles(0.0, 0.1, 0.3),
+            ),
             pose_j: Isometry3::identity(),
             depth: None,
         },

@@ -16,6 +16,8 @@
 //! | ellipsoid–ellipsoid (general; sphere–ellipsoid included) | slicing along the line of centres: ellipse–ellipse section overlaps in closed form (crossings: a quartic's roots, Newton-polished), adaptive quadrature between the intersection's lowest and highest slice (pencil duality, which also proves them apart), to 1e-13 of the volume, [`crate::pairs::ellipsoid_ellipsoid`] | none |
 //! | ellipsoid–box (general) | slicing along the box's `z`: disc–rectangle section overlaps in closed form, quadrature cut at closed-form events (side tangencies, edge piercings), [`crate::pairs::ellipsoid_box`] | none |
 //! | ellipsoid–cylinder (general) | slicing along the axis: ellipse–disc section overlaps in closed form, quadrature between the pencil's extent clipped to the caps, [`crate::pairs::ellipsoid_cylinder`] | none |
+//! | ellipsoid–frustum (general; cones included) | slicing across the frustum's axis: ellipse–disc section overlaps in closed form (the disc's radius linear in the height), quadrature between the intersection's lowest and highest slice (the zeros of the convex gap between the section and the disc, bisected), `crate::pairs::ellipsoid_frustum` | none |
+//! | ellipsoid–torus (general) | slicing across the torus' axis: the ellipse's overlaps with the annulus' two circles in closed form, quadrature in the tube's angle between each region's lowest and highest slice (the meridian sections' pencil extent); one contact per region (regions by azimuth, each integrated inside its wedge by Green's integrals about the axis), `crate::pairs::ellipsoid_torus` | none |
 //! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
 //! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
 //! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
@@ -40,13 +42,12 @@
 //!
 //! The general ellipsoid pairs' degenerate branches (each tested): one solid inside the
 //! other (the area vector vanishes: the normal is the line of centres, or the nearest face's
-//! or side's outward normal of the containing box or cylinder, or against the ellipsoid's
+//! or side's outward normal of the containing box, cylinder or frustum, or against the ellipsoid's
 //! level surface through the centroid when it contains the other; the area a quarter of the
 //! surface), identical coincident ellipsoids (`b`'s `+z`), grazing (the pencil's extent
 //! shrinks to the touching point; touching alone is no contact).
 //!
-//! Everything else answers [`Unsupported`] with the reason: general (non-spherical)
-//! ellipsoids against frustums and tori; cylinder–frustum, cylinder–torus,
+//! Everything else answers [`Unsupported`] with the reason: cylinder–frustum, cylinder–torus,
 //! frustum–frustum, frustum–torus and torus–torus; mesh–mesh (the intersection of two meshes is not built); point–point,
 //! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
@@ -577,7 +578,8 @@ fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<
     PlanarCurve::new(curve).map(std::sync::Arc::new)
 }
 
-/// A general ellipsoid against a box or a cylinder (sliced), or the reason it is refused.
+/// A general ellipsoid against a box, a cylinder, a frustum or a torus (sliced), or the
+/// reason it is refused.
 fn general_ellipsoid_solid(
     e: &Ellipsoid,
     solid: &Solid,
@@ -590,7 +592,8 @@ fn general_ellipsoid_solid(
             semi_axes,
             cylinder,
         },
-        Solid::Frustum(_) | Solid::Torus(_) => return Err(NOT_BUILT),
+        Solid::Frustum(frustum) => Kernel::EllipsoidFrustum { semi_axes, frustum },
+        Solid::Torus(torus) => Kernel::EllipsoidTorus { semi_axes, torus },
     };
     if flipped {
         Err(FLIP_NOT_BUILT)

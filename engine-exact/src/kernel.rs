@@ -3,7 +3,7 @@
 
 use crate::planar::curve_eval::PlanarCurve;
 use crate::{pairs, planar};
-use contact_core::geometry::{Cuboid, Cylinder, Line, Plane};
+use contact_core::geometry::{Cuboid, Cylinder, Frustum, Line, Plane, Torus};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::sync::Arc;
 
@@ -84,6 +84,14 @@ pub(crate) enum Kernel {
         semi_axes: Vector3,
         cylinder: Cylinder,
     },
+    /// General ellipsoid `a` against frustum (or cone) `b` (sliced across `b`'s axis).
+    EllipsoidFrustum {
+        semi_axes: Vector3,
+        frustum: Frustum,
+    },
+    /// General ellipsoid `a` against ring torus `b` (sliced across `b`'s axis): one contact
+    /// per region.
+    EllipsoidTorus { semi_axes: Vector3, torus: Torus },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
     /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing.
@@ -243,6 +251,13 @@ impl Kernel {
                 );
                 None
             }
+            Self::EllipsoidTorus {
+                ref semi_axes,
+                ref torus,
+            } => {
+                pairs::ellipsoid_torus::contacts(semi_axes, pose_a, torus, pose_b, work, emit);
+                None
+            }
             Self::MeshBoundedPlane {
                 ref mesh,
                 ref plane,
@@ -323,6 +338,10 @@ impl Kernel {
                 semi_axes,
                 ref cylinder,
             } => pairs::ellipsoid_cylinder::contact(&semi_axes, pose_a, cylinder, pose_b, work),
+            Self::EllipsoidFrustum {
+                semi_axes,
+                ref frustum,
+            } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
             Self::CylinderPlane { ref cylinder, side } => {
                 pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
             }

@@ -13,6 +13,13 @@
 //! - [`degenerate_boundaries`]: the same for arcs, curves and lines against each other;
 //! - [`circle_bounded_line`]: a circle on a bounded line: invariants, the unbounded limit,
 //!   agreement with a closed arc, continuity across an end, degenerate branches;
+//! - [`ellipsoid_revolved`]: general ellipsoid–frustum: the coaxial and apex-divergence
+//!   oracles, a frustum of equal radii against the cylinder pair, invariants, degenerate
+//!   branches;
+//! - [`frustum_oracles`]: ellipsoid–frustum in general poses by the divergence theorem about
+//!   the apex;
+//! - [`ellipsoid_torus`]: general ellipsoid–torus: two regions, invariants, degenerate
+//!   branches; [`torus_oracles`]: its coaxial and divergence oracles;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
 //!   invariants, separate regions, degenerate branches;
 //! - [`mesh_box`]: box–mesh and mesh–bounded plane: the clipping pairs where the mesh is a
@@ -33,6 +40,9 @@ mod degenerate_boundaries;
 mod degenerate_sliced;
 mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
+mod ellipsoid_revolved;
+mod ellipsoid_torus;
+mod frustum_oracles;
 mod mesh_box;
 mod mesh_revolved;
 mod model_check;
@@ -42,4 +52,5 @@ mod regressions;
 mod revolved_oracles;
 mod sliced_oracles;
 mod spherical_reference;
+mod torus_oracles;
 mod voxel_oracle;

@@ -57,7 +57,7 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 51] = [
+const BUILT: [(&str, &str); 53] = [
     ("ellipsoid", "mesh"),
     ("torus", "mesh"),
     ("cylinder", "mesh"),
@@ -93,6 +93,8 @@ const BUILT: [(&str, &str); 51] = [
     ("sphere", "ellipsoid"),
     ("ellipsoid", "box"),
     ("ellipsoid", "cylinder"),
+    ("ellipsoid", "frustum"),
+    ("ellipsoid", "torus"),
     ("box", "box"),
     ("box", "plane"),
     ("box", "bounded plane"),
@@ -165,8 +167,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 51 distinct pairs, 44 of them between different representatives (both orders count).
-    assert_eq!(accepted, 7 + 2 * 44);
+    // 53 distinct pairs, 46 of them between different representatives (both orders count).
+    assert_eq!(accepted, 7 + 2 * 46);
 }
 
 #[test]

@@ -495,6 +495,8 @@ fn tolerance(name: &str) -> f64 {
     if name.starts_with("ellipsoid–ellipsoid")
         || name == "ellipsoid–box"
         || name == "ellipsoid–cylinder"
+        || name == "ellipsoid–frustum"
+        || name == "ellipsoid–torus"
         || name.starts_with("sliced ")
     {
         1e-9

@@ -29,7 +29,7 @@ use std::f64::consts::{PI, TAU};
 
 /// The moments `(m₀, m₁, m₂)` of a region of the unit sphere.
 #[derive(Debug, Clone, Copy)]
-struct SphereMoments {
+pub struct SphereMoments {
     m0: f64,
     m1: Vector3,
     m2: Matrix3<f64>,
@@ -59,7 +59,7 @@ const RADIAL_SAMPLES: usize = 192;
 
 /// `R(φ)` along the great circle from `a` towards `d`: where `inside` (true at `a`) turns
 /// false; `π` if it never does. `None` if it turns more than once (not star-shaped).
-fn boundary(a: &Vector3, d: &Vector3, inside: &dyn Fn(&Vector3) -> bool) -> Option<f64> {
+pub fn boundary(a: &Vector3, d: &Vector3, inside: &dyn Fn(&Vector3) -> bool) -> Option<f64> {
     let point = |rho: f64| a * rho.cos() + d * rho.sin();
     let at = |k: usize| PI * k as f64 / RADIAL_SAMPLES as f64;
     let mut crossing = None;
@@ -123,7 +123,7 @@ fn region_moments(
 }
 
 /// `∫₀^R (1, u, u uᵀ) sin ρ dρ` along the great circle from `a` towards `d`, times `w`.
-fn radial(a: &Vector3, d: &Vector3, r: f64, w: f64) -> SphereMoments {
+pub fn radial(a: &Vector3, d: &Vector3, r: f64, w: f64) -> SphereMoments {
     let (s, c) = r.sin_cos();
     let ad = a * d.transpose();
     SphereMoments {
@@ -137,7 +137,7 @@ fn radial(a: &Vector3, d: &Vector3, r: f64, w: f64) -> SphereMoments {
 }
 
 impl SphereMoments {
-    fn zero() -> Self {
+    pub fn zero() -> Self {
         Self {
             m0: 0.0,
             m1: Vector3::zeros(),
@@ -145,7 +145,7 @@ impl SphereMoments {
         }
     }
 
-    fn add(&mut self, other: &Self, w: f64) {
+    pub fn add(&mut self, other: &Self, w: f64) {
         self.m0 += w * other.m0;
         self.m1 += other.m1 * w;
         self.m2 += other.m2 * w;
@@ -316,7 +316,7 @@ fn general_moments(a: &Vector3, margin: &dyn Fn(&Vector3) -> f64, n: usize) -> S
 
 /// The point of the unit sphere where `margin` is largest, from a spiral of samples refined
 /// by shrinking local searches.
-fn deepest(margin: &dyn Fn(&Vector3) -> f64) -> Vector3 {
+pub fn deepest(margin: &dyn Fn(&Vector3) -> f64) -> Vector3 {
     let count = 4000;
     let golden = PI * (3.0 - 5f64.sqrt());
     let mut best = (Vector3::z(), f64::NEG_INFINITY);
@@ -365,7 +365,7 @@ fn patch(e: &Ellipsoid, other: &Ellipsoid, n: usize) -> Option<SphereMoments> {
 }
 
 /// The surface integrals `(∫x·n dA, ∫x (x·n) dA, ∫n dA)` of `e`'s patch `m`.
-fn surface_terms(e: &Ellipsoid, m: &SphereMoments) -> (f64, Vector3, Vector3) {
+pub fn surface_terms(e: &Ellipsoid, m: &SphereMoments) -> (f64, Vector3, Vector3) {
     let cof = e.cofactor();
     let det = e.l.determinant();
     let s = cof * m.m1;
@@ -373,6 +373,24 @@ fn surface_terms(e: &Ellipsoid, m: &SphereMoments) -> (f64, Vector3, Vector3) {
     let xn = c.dot(&s) + det * m.m0;
     let xxn = c * c.dot(&s) + (c * m.m0 + e.l * m.m1) * det + e.l * m.m2 * cof.transpose() * c;
     (xn, xxn, s)
+}
+
+/// The surface integrals `(∫x·n dA, ∫x (x·n) dA, ∫n dA)` over the part of `e`'s surface
+/// where `margin_j` is positive (all of its pieces: rays crossing several times are
+/// [`general_moments`]'), on `n` rays; `None` when that part is empty.
+pub fn patch_terms(
+    e: &Ellipsoid,
+    margin_j: &dyn Fn(&Vector3) -> f64,
+    n: usize,
+) -> Option<(f64, Vector3, Vector3)> {
+    let margin = |u: &Vector3| margin_j(&(e.c + e.l * u));
+    let a = deepest(&margin);
+    if margin(&a) <= 0.0 {
+        return None;
+    }
+    let m = region_moments(&a, &|u| margin(u) > 0.0, n)
+        .unwrap_or_else(|| general_moments(&a, &margin, n / 2));
+    Some(surface_terms(e, &m))
 }
 
 /// The moments of `I ∩ J` on `n` rays per surface, and `|S_I + S_J|` (zero exactly);

@@ -15,6 +15,9 @@
 //! A region between two samples that the refinement misses too would share its neighbour's
 //! wedge (one contact for two regions); the cut half-planes themselves are always checked
 //! clear (`g > 0`), so a region is never split.
+//!
+//! Nothing here needs the box but its convex meridian sections: [`region_wedges_of`] takes
+//! any `g` (an ellipsoid's, for the ellipsoid–torus pair).
 
 use super::super::section::Polygon;
 use crate::pairs::sliced::golden_maximum;
@@ -22,7 +25,7 @@ use contact_core::{Vector2, Vector3};
 use std::f64::consts::TAU;
 
 /// Azimuth samples.
-const SAMPLES: usize = 128;
+pub(crate) const SAMPLES: usize = 128;
 
 /// The wedges `[start, end]` (radians, `end > start`, spans summing to 2π) each holding one
 /// region; the count. Zero wedges when the sampling saw one region or none (the whole
@@ -32,7 +35,18 @@ pub(crate) fn region_wedges(
     big: f64,
     small: f64,
 ) -> ([(f64, f64); SAMPLES / 2], usize) {
-    let g = |phi: f64| gap(faces, big, small, phi);
+    region_wedges_of(|phi| gap(faces, big, small, phi), small)
+}
+
+/// [`region_wedges`] for any solid whose meridian sections are convex: `g(φ)` is the distance
+/// from the tube's centre to the solid's section in `H_φ`, less the tube's radius (negative
+/// where `H_φ` meets both). The sampled positive local minima below `refine_below` are
+/// refined (a box's `g` is the tube's radius wherever it misses: only the lower ones can hide
+/// a dip).
+pub(crate) fn region_wedges_of(
+    g: impl Fn(f64) -> f64,
+    refine_below: f64,
+) -> ([(f64, f64); SAMPLES / 2], usize) {
     let mut values = [0.0; SAMPLES];
     let mut angles = [0.0; SAMPLES];
     for k in 0..SAMPLES {
@@ -47,7 +61,7 @@ pub(crate) fn region_wedges(
             values[(k + SAMPLES - 1) % SAMPLES],
             values[(k + 1) % SAMPLES],
         );
-        if values[k] > 0.0 && values[k] <= prev && values[k] <= next && values[k] < small {
+        if values[k] > 0.0 && values[k] <= prev && values[k] <= next && values[k] < refine_below {
             let phi = golden_maximum(angles[k] - step, angles[k] + step, |x| -g(x));
             let v = g(phi);
             if v < 0.0 {

@@ -52,7 +52,7 @@
 //! outward normal of the box's face nearest the centroid; area a quarter of the surface.
 //! Touching is no contact.
 
-mod azimuth;
+pub(crate) mod azimuth;
 pub(crate) mod events;
 
 use super::clipped::unit_for;

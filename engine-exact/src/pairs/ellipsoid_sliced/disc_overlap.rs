@@ -31,6 +31,13 @@ use crate::pairs::disc_section::{Piece, cross, unit_disc_pieces};
 use nalgebra::{Complex, Matrix2, Matrix4, Schur, Vector2};
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
+/// [`DiscOverlap::shape`] of an ellipse overlap without crossings where the unit circle lies
+/// inside the ellipse.
+const CIRCLE_INSIDE: usize = 1;
+/// [`DiscOverlap::shape`] of an ellipse overlap without crossings where the ellipse lies inside
+/// the unit circle.
+const ELLIPSE_INSIDE: usize = 3;
+
 /// Most arcs of one kind an overlap keeps.
 pub(crate) const MAX_ARCS: usize = 16;
 
@@ -52,7 +59,8 @@ impl Default for Arcs {
 }
 
 impl Arcs {
-    fn push(&mut self, start: f64, end: f64) {
+    /// Adds the arc from `start` to `end`.
+    pub(crate) fn push(&mut self, start: f64, end: f64) {
         debug_assert!(self.len < MAX_ARCS, "too many arcs");
         if self.len < MAX_ARCS {
             self.spans[self.len] = (start, end);
@@ -85,7 +93,8 @@ pub(crate) struct DiscOverlap {
     /// Ellipse: its arcs inside the disc, in `φ`.
     pub other_arcs: Arcs,
     /// The overlap's shape class: crossings of the two boundaries, plus 16 per polygon
-    /// vertex inside the disc. Where it changes with the slice, the moments have a kink.
+    /// vertex inside the disc; an ellipse without crossings is 1 inside it, 3 holding it, 0
+    /// apart. Where it changes with the slice, the moments have a kink.
     pub shape: usize,
 }
 
@@ -317,10 +326,14 @@ pub(crate) fn disc_ellipse(center: &Vector2<f64>, matrix: &Matrix2<f64>) -> Disc
     let (roots, n) = f.roots();
     out.shape = n;
     if n == 0 {
+        // Without crossings the class says which curve holds the other (odd, apart from
+        // the even crossing counts): two concentric circles swap it with no tangency between.
         if f.value(0.0) < 0.0 {
             out.add_circle_arc(0.0, TAU);
+            out.shape = CIRCLE_INSIDE;
         } else if (center + matrix.column(0)).norm_squared() < 1.0 {
             out.add_ellipse_arc(center, matrix, 0.0, TAU);
+            out.shape = ELLIPSE_INSIDE;
         }
         return out;
     }

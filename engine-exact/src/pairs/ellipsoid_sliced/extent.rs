@@ -10,20 +10,24 @@
 //! convex set), so a golden-section search finds it. An empty `E_λ` (`r < 0`) proves the
 //! solids apart.
 
-use contact_core::Vector3;
-use nalgebra::Matrix3;
+//!
+//! The same holds in any dimension `D` (the last coordinate playing `z`): the ellipsoid–torus
+//! pair takes it in a meridian plane, an ellipse against the tube's disc.
 
-/// A solid `(x − c)ᵀQ(x − c) ≤ 1` with `Q` symmetric positive semi-definite.
+use nalgebra::{SMatrix, SVector};
+
+/// A solid `(x − c)ᵀQ(x − c) ≤ 1` in `D` dimensions with `Q` symmetric positive
+/// semi-definite.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Quadric {
+pub(crate) struct Quadric<const D: usize = 3> {
     /// Centre `c`.
-    pub center: Vector3,
+    pub center: SVector<f64, D>,
     /// `Q`.
-    pub q: Matrix3<f64>,
+    pub q: SMatrix<f64, D, D>,
 }
 
-impl Quadric {
-    fn value(&self, x: &Vector3) -> f64 {
+impl<const D: usize> Quadric<D> {
+    fn value(&self, x: &SVector<f64, D>) -> f64 {
         let d = x - self.center;
         d.dot(&(self.q * d))
     }
@@ -37,7 +41,7 @@ enum Pencil {
     Empty,
 }
 
-fn pencil(a: &Quadric, b: &Quadric, lambda: f64) -> Pencil {
+fn pencil<const D: usize>(a: &Quadric<D>, b: &Quadric<D>, lambda: f64) -> Pencil {
     let q = a.q * lambda + b.q * (1.0 - lambda);
     let Some(chol) = q.cholesky() else {
         return Pencil::Span(f64::NEG_INFINITY, f64::INFINITY);
@@ -51,14 +55,20 @@ fn pencil(a: &Quadric, b: &Quadric, lambda: f64) -> Pencil {
     if r < 0.0 {
         return Pencil::Empty;
     }
-    let y = chol.solve(&Vector3::z());
-    let half = (r * y.z).max(0.0).sqrt();
-    Pencil::Span(x0.z - half, x0.z + half)
+    let mut e_z = SVector::<f64, D>::zeros();
+    e_z[D - 1] = 1.0;
+    let y = chol.solve(&e_z);
+    let half = (r * y[D - 1]).max(0.0).sqrt();
+    Pencil::Span(x0[D - 1] - half, x0[D - 1] + half)
 }
 
 /// Golden-section search over `λ ∈ [0, 1]` for the largest of `pick(span)`; `None` when an
 /// empty pencil ellipsoid shows the solids apart.
-fn search(a: &Quadric, b: &Quadric, pick: impl Fn(f64, f64) -> f64) -> Option<f64> {
+fn search<const D: usize>(
+    a: &Quadric<D>,
+    b: &Quadric<D>,
+    pick: impl Fn(f64, f64) -> f64,
+) -> Option<f64> {
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
     let eval = |lambda: f64| match pencil(a, b, lambda) {
         Pencil::Span(lo, hi) => Some(pick(lo, hi)),
@@ -87,9 +97,19 @@ fn search(a: &Quadric, b: &Quadric, pick: impl Fn(f64, f64) -> f64) -> Option<f6
     Some(f1.max(f2).max(ends[0]).max(ends[1]))
 }
 
-/// `(min z, max z)` over the intersection of `a` and `b`, or `None` when they do not meet
-/// (or only touch).
-pub(crate) fn z_extent(a: &Quadric, b: &Quadric) -> Option<(f64, f64)> {
+/// The highest `z` (the last coordinate) over the intersection of `a` and `b` when `upper`,
+/// else the lowest; `None` when an empty pencil ellipsoid shows them apart.
+pub(crate) fn z_bound<const D: usize>(a: &Quadric<D>, b: &Quadric<D>, upper: bool) -> Option<f64> {
+    if upper {
+        search(a, b, |_, hi| -hi).map(|v| -v)
+    } else {
+        search(a, b, |lo, _| lo)
+    }
+}
+
+/// `(min z, max z)` over the intersection of `a` and `b` (`z` the last coordinate), or `None`
+/// when they do not meet (or only touch).
+pub(crate) fn z_extent<const D: usize>(a: &Quadric<D>, b: &Quadric<D>) -> Option<(f64, f64)> {
     let lowest = search(a, b, |lo, _| lo)?;
     let highest = -search(a, b, |_, hi| -hi)?;
     (lowest < highest).then_some((lowest, highest))
@@ -98,6 +118,8 @@ pub(crate) fn z_extent(a: &Quadric, b: &Quadric) -> Option<(f64, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use contact_core::Vector3;
+    use nalgebra::Matrix3;
 
     #[test]
     fn two_spheres_span_their_lens() {

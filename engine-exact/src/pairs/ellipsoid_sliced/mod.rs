@@ -1,5 +1,5 @@
 //! The shared machinery of the general ellipsoid pairs (ellipsoid–ellipsoid, –box,
-//! –cylinder): the intersection's moments by slicing into parallel planar sections, each
+//! –cylinder, –frustum, –torus): the intersection's moments by slicing into parallel planar sections, each
 //! overlap in closed form ([`disc_overlap`]), integrated across the slices by
 //! [`crate::quadrature::Adaptive`].
 //!
@@ -22,6 +22,7 @@
 //!   of itself, not to round-off).
 
 pub(crate) mod disc_overlap;
+pub(crate) mod distance;
 pub(crate) mod extent;
 
 use crate::quadrature::{self, Adaptive};
@@ -105,6 +106,12 @@ impl SlicedEllipsoid {
     /// The centre.
     pub(crate) fn center(&self) -> &Vector3 {
         &self.center
+    }
+
+    /// The centre of the section `z = t` (a point at the range's ends; extrapolated
+    /// linearly beyond them).
+    pub(crate) fn center_at(&self, t: f64) -> Vector2<f64> {
+        Vector2::new(self.center.x, self.center.y) + (t - self.center.z) * self.center_rate
     }
 
     /// `L⁻¹`.

@@ -11,6 +11,8 @@ use contact_core::{GeometryInstance, Isometry3};
 
 pub(crate) mod bounded_line;
 mod box_revolved;
+mod ellipsoid_revolved;
+mod ellipsoid_torus;
 mod ellipsoids;
 pub(crate) mod mesh_box;
 mod planar;
@@ -107,6 +109,8 @@ fn characterization_table() {
     rows.extend(box_revolved::rows(&mut rng));
     rows.extend(mesh_box::rows(&mut rng));
     rows.extend(bounded_line::rows(&mut rng));
+    rows.extend(ellipsoid_revolved::rows(&mut rng));
+    rows.extend(ellipsoid_torus::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
