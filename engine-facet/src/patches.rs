@@ -1,5 +1,5 @@
-//! Whole subtrees of a mesh's OBB tree as surface patches, so the inside flood
-//! ([`crate::inside_flood`]) can take a patch lying wholly inside the other solid in one step
+//! Whole subtrees of a mesh's OBB tree as surface patches, so the inside flood of
+//! [`crate::contact_region`] can take a patch lying wholly inside the other solid in one step
 //! instead of triangle by triangle.
 //!
 //! The triangles are numbered in the tree's leaf order ([`crate::facet_mesh::FacetMesh::build`]),
