@@ -49,7 +49,7 @@ use crate::obb::boxes_overlap;
 use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
 use crate::surface_sums::SurfaceSums;
-use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect};
+use crate::triangle_pair::{Feature, PLANE_EPS, TrianglePair, intersect_with_ends};
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
 /// One contact in A's mesh frame, before it is moved to the world.
@@ -204,7 +204,7 @@ fn find_crossings(
                     if one_side && nearest * nearest > band_squared {
                         continue;
                     }
-                    if let TrianglePair::Segment(s0, s1) = intersect(&p, &q) {
+                    if let (TrianglePair::Segment(s0, s1), ends) = intersect_with_ends(&p, &q) {
                         hits.push(Hit {
                             ta,
                             tb,
@@ -212,6 +212,7 @@ fn find_crossings(
                             s1,
                             plane_a: (a.face_normals[ta as usize], p[0]),
                             plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
+                            ends,
                         });
                     }
                 }
@@ -275,6 +276,37 @@ fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
         s.nodes[na as usize].hit_count += 1;
         s.nodes[nb as usize].hit_count += 1;
         union(&mut s.nodes, na, nb);
+    }
+    // The intersection curve goes on across the edge (or corner) each segment ends on, into
+    // the neighbouring triangle there: crossing triangles met that way are one region even
+    // where no single triangle of the other mesh joins them (a corner grazing a face right on
+    // the diagonal between its two triangles).
+    for h in 0..s.hits.len() {
+        let hit = s.hits[h];
+        for end in hit.ends {
+            let (side, tri, mesh) = if end.first {
+                (0, hit.ta, a)
+            } else {
+                (1, hit.tb, b)
+            };
+            let across = match end.feature {
+                Feature::Edge(k) => [k, k],
+                // A corner: the edges on both sides of it.
+                Feature::Corner(k) => [k, (k + 2) % 3],
+            };
+            let Some(own) = s.slots[side].get(tri) else {
+                continue;
+            };
+            for k in across {
+                let next = mesh.neighbors[tri as usize][k as usize];
+                if next == crate::facet_mesh::NO_NEIGHBOR {
+                    continue;
+                }
+                if let Some(other) = s.slots[side].get(next) {
+                    union(&mut s.nodes, own, other);
+                }
+            }
+        }
     }
     let mut start = 0;
     for n in s.nodes.iter_mut() {

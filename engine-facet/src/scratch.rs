@@ -80,6 +80,8 @@ pub(crate) struct Hit {
     pub plane_a: (Vector3, Vector3),
     /// Unit normal and a point of B's triangle, in A's frame.
     pub plane_b: (Vector3, Vector3),
+    /// Where the segment's ends lie (`first`: on A's triangle).
+    pub ends: [crate::triangle_pair::SegmentEnd; 2],
 }
 
 /// A triangle taking part in a contact: crossing the other surface, or inside the other solid.

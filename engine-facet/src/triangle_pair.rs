@@ -26,6 +26,26 @@ pub enum TrianglePair {
     Coplanar,
 }
 
+/// Where an end of a crossing segment lies on the triangle it came from: on the edge from
+/// corner `k` to corner `k + 1`, or at corner `k` (a corner on the other triangle's plane).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Feature {
+    /// The edge from corner `k` to corner `k + 1`.
+    Edge(u8),
+    /// Corner `k`.
+    Corner(u8),
+}
+
+/// An end of a crossing segment: the triangle it lies on the boundary of (`first`: the first
+/// triangle given to [`intersect_with_ends`]) and where.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SegmentEnd {
+    /// On the first triangle's boundary (else the second's).
+    pub first: bool,
+    /// The edge or corner.
+    pub feature: Feature,
+}
+
 /// Signed distances of `p`'s vertices to the plane of `q` (normal `n`, through `q0`), with values
 /// within `eps` snapped to zero.
 #[inline]
@@ -44,6 +64,18 @@ fn same_side(d: &[f64; 3]) -> bool {
 
 /// Intersects triangles `p` and `q` (vertices in one frame).
 pub fn intersect(p: &[Vector3; 3], q: &[Vector3; 3]) -> TrianglePair {
+    intersect_with_ends(p, q).0
+}
+
+/// [`intersect`], with the boundary feature each end of a crossing segment lies on (the
+/// intersection curve goes on across it into the neighbouring triangle); the ends are
+/// meaningless for other outcomes.
+pub fn intersect_with_ends(p: &[Vector3; 3], q: &[Vector3; 3]) -> (TrianglePair, [SegmentEnd; 2]) {
+    let none = [SegmentEnd {
+        first: true,
+        feature: Feature::Corner(0),
+    }; 2];
+    let outcome = |pair| (pair, none);
     let np = (p[1] - p[0]).cross(&(p[2] - p[0]));
     let nq = (q[1] - q[0]).cross(&(q[2] - q[0]));
     let scale = 0.0f64
@@ -56,48 +88,66 @@ pub fn intersect(p: &[Vector3; 3], q: &[Vector3; 3]) -> TrianglePair {
         .sqrt();
     let dp = distances(p, &nq, &q[0], PLANE_EPS * scale * nq.norm());
     if same_side(&dp) {
-        return TrianglePair::Disjoint;
+        return outcome(TrianglePair::Disjoint);
     }
     let dq = distances(q, &np, &p[0], PLANE_EPS * scale * np.norm());
     if same_side(&dq) {
-        return TrianglePair::Disjoint;
+        return outcome(TrianglePair::Disjoint);
     }
     if dp == [0.0; 3] || dq == [0.0; 3] {
-        return if coplanar_overlap(p, q, &np) {
+        return outcome(if coplanar_overlap(p, q, &np) {
             TrianglePair::Coplanar
         } else {
             TrianglePair::Disjoint
-        };
+        });
     }
     let dir = np.cross(&nq);
-    let (Some((a0, a1)), Some((b0, b1))) = (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
+    let (Some(((a0, fa0), (a1, fa1))), Some(((b0, fb0), (b1, fb1)))) =
+        (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
     else {
-        return TrianglePair::Disjoint;
+        return outcome(TrianglePair::Disjoint);
     };
     // Both cuts lie on the line of the two planes: overlap their intervals along `dir`.
     let (sa0, sa1, sb0, sb1) = (a0.dot(&dir), a1.dot(&dir), b0.dot(&dir), b1.dot(&dir));
     if sa1 < sb0 || sb1 < sa0 {
-        return TrianglePair::Disjoint;
+        return outcome(TrianglePair::Disjoint);
     }
-    let start = if sa0 >= sb0 { a0 } else { b0 };
-    let end = if sa1 <= sb1 { a1 } else { b1 };
-    TrianglePair::Segment(start, end)
+    let end_of = |first, feature| SegmentEnd { first, feature };
+    let (start, start_end) = if sa0 >= sb0 {
+        (a0, end_of(true, fa0))
+    } else {
+        (b0, end_of(false, fb0))
+    };
+    let (end, end_end) = if sa1 <= sb1 {
+        (a1, end_of(true, fa1))
+    } else {
+        (b1, end_of(false, fb1))
+    };
+    (TrianglePair::Segment(start, end), [start_end, end_end])
 }
 
 /// The segment where a triangle meets a plane, given its vertices' signed distances (not all
-/// zero, not all of one strict sign), ordered along `dir`.
+/// zero, not all of one strict sign), ordered along `dir`, each end with the corner or edge it
+/// lies on.
 #[inline]
-fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(Vector3, Vector3)> {
-    let mut pts = [Vector3::zeros(); 4];
+fn plane_cut(
+    t: &[Vector3; 3],
+    d: &[f64; 3],
+    dir: &Vector3,
+) -> Option<((Vector3, Feature), (Vector3, Feature))> {
+    let mut pts = [(Vector3::zeros(), Feature::Corner(0)); 4];
     let mut n = 0;
     for i in 0..3 {
         let j = (i + 1) % 3;
         if d[i] == 0.0 {
-            pts[n] = t[i];
+            pts[n] = (t[i], Feature::Corner(i as u8));
             n += 1;
         }
         if (d[i] > 0.0 && d[j] < 0.0) || (d[i] < 0.0 && d[j] > 0.0) {
-            pts[n] = t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j]));
+            pts[n] = (
+                t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j])),
+                Feature::Edge(i as u8),
+            );
             n += 1;
         }
     }
@@ -105,9 +155,9 @@ fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(Vector3, 
         return None;
     }
     let (mut lo, mut hi) = (pts[0], pts[0]);
-    let (mut slo, mut shi) = (lo.dot(dir), lo.dot(dir));
+    let (mut slo, mut shi) = (lo.0.dot(dir), lo.0.dot(dir));
     for p in &pts[1..n] {
-        let s = p.dot(dir);
+        let s = p.0.dot(dir);
         if s < slo {
             slo = s;
             lo = *p;

@@ -183,3 +183,42 @@ fn the_tree_descent_finds_exactly_the_brute_force_intersecting_pairs() {
     }
     assert!(total > 50, "{total}");
 }
+
+/// Distance from `x` to the segment `a b`.
+fn to_segment(x: &Vector3, a: &Vector3, b: &Vector3) -> f64 {
+    let t = ((x - a).dot(&(b - a)) / (b - a).norm_squared()).clamp(0.0, 1.0);
+    (a + (b - a) * t - x).norm()
+}
+
+#[test]
+fn each_segment_end_lies_on_the_edge_or_corner_it_names() {
+    use engine_facet::triangle_pair::{Feature, intersect_with_ends};
+    let mut rng = Rng(0xE0D5);
+    let mut crossings = 0;
+    let mut on_each = [0; 2];
+    for _ in 0..20000 {
+        let (p, q) = (
+            random_triangle(&mut rng, 1.0),
+            random_triangle(&mut rng, 1.0),
+        );
+        let (pair, ends) = intersect_with_ends(&p, &q);
+        let TrianglePair::Segment(s0, s1) = pair else {
+            continue;
+        };
+        crossings += 1;
+        for (point, end) in [(s0, ends[0]), (s1, ends[1])] {
+            let t = if end.first { &p } else { &q };
+            on_each[usize::from(!end.first)] += 1;
+            let off = match end.feature {
+                Feature::Edge(k) => to_segment(&point, &t[k as usize], &t[(k as usize + 1) % 3]),
+                Feature::Corner(k) => (point - t[k as usize]).norm(),
+            };
+            assert!(off <= 1e-12, "{end:?} is {off:e} off: {p:?} {q:?}");
+        }
+    }
+    // Ends on both triangles occur, or the test could not fail.
+    assert!(
+        crossings > 1000 && on_each[0] > 500 && on_each[1] > 500,
+        "{crossings} {on_each:?}"
+    );
+}
