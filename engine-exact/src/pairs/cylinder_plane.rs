@@ -17,9 +17,11 @@
 //! each piece's closed form is kept only where its round-off bound (8ε times the terms'
 //! magnitudes) is below 1e-13 of the piece's integrals; otherwise the piece is summed node by
 //! node by 12-node Gauss–Legendre in `φ` ([`crate::quadrature`]), exact to round-off on these
-//! polynomials, each interval's length formed at its node. In practice deep contacts (a depth
-//! above a tenth of the radius at a general tilt, above 1e-4 of it near upright) are wholly
-//! closed form, and shallower ones take the node rule on their cut piece. This stays exact when
+//! polynomials, each interval's length formed at its node. Small pieces within `R/2` of the
+//! rim (the cuts of shallow contacts) are first tried by their moments about their inner kink
+//! (`end_piece`, `rim_moments`): series in the distance from the rim, free of both
+//! cancellations. In practice deep contacts are wholly closed form, a shallow one's rim pieces
+//! take the series, and the node rule is left to pieces that are neither. This stays exact when
 //! the axis is parallel to the plane (a wheel on the ground, `b = 0`) or perpendicular to it
 //! (`a = 0`).
 //!
@@ -352,11 +354,12 @@ fn end_piece(
     lo: (f64, f64),
     hi: (f64, f64),
 ) -> Option<(f64, f64, f64, f64)> {
-    // The inner end, the piece's width from the rim, and the side of the piece (−1: below).
-    let (inner, eta, side) = if c0.sin == -1.0 && c1.sin > -1.0 {
-        (c1, r + c1.u, -1.0)
-    } else if c1.sin == 1.0 && c0.sin < 1.0 {
-        (c0, r - c0.u, 1.0)
+    // The inner end (farther from the rim), the distances of both ends from the rim, and the
+    // side of the piece (−1: next to u = −R).
+    let (inner, eta, eta_rim, side) = if c1.u <= 0.0 {
+        (c1, r + c1.u, r + c0.u, -1.0)
+    } else if c0.u >= 0.0 {
+        (c0, r - c0.u, r - c1.u, 1.0)
     } else {
         return None;
     };
@@ -372,12 +375,47 @@ fn end_piece(
         hi_k * hi.1 - lo_k * lo.1,
         0.5 * (hi.1 * hi.1 - lo.1 * lo.1),
     );
-    let n = end_moments(r, eta);
+    let n = rim_moments(r, eta, eta_rim)?;
     // u − u_k = side·|u − u_k| over the piece.
     let volume = l0 * n[0] + side * l1 * n[1];
     let about_kink = side * (l0 * n[1] + side * l1 * n[2]);
     let height = z0 * n[0] + side * z1 * n[1] + z2 * n[2];
     Some((volume, inner.u * volume + about_kink, height, n[0]))
+}
+
+/// `∫ 2√(x(2R − x))·(η − x)ᵖ dx` over `x` from `η_rim` (the piece's end nearer the rim) to
+/// `η`, `p = 0, 1, 2`: [`end_moments`] when the piece reaches the rim; the difference of the
+/// whole range's moments and those below `η_rim` (re-centred on `η` by the binomial theorem,
+/// all terms positive) when it is wide (`η − η_rim ≥ η/4`, so the difference keeps all but two
+/// bits); else the 12-node rule in `d = η − x`, whose weight is then smooth (its root lies
+/// seven half-widths away or more). `None` for a piece of no width.
+fn rim_moments(r: f64, eta: f64, eta_rim: f64) -> Option<[f64; 3]> {
+    let width = eta - eta_rim;
+    if width <= 0.0 {
+        return None;
+    }
+    if eta_rim <= 0.0 {
+        return Some(end_moments(r, eta));
+    }
+    if width >= 0.25 * eta {
+        let (whole, below) = (end_moments(r, eta), end_moments(r, eta_rim));
+        return Some([
+            whole[0] - below[0],
+            whole[1] - (below[1] + width * below[0]),
+            whole[2] - (below[2] + 2.0 * width * below[1] + width * width * below[0]),
+        ]);
+    }
+    // In the distance `d = η − x` from the inner end itself, so that `d` keeps its digits on
+    // a piece far narrower than its distance from the rim.
+    let mut m = [0.0; 3];
+    quadrature::for_each_node(0.0, width, |d, w| {
+        let x = eta - d;
+        let weight = w * 2.0 * (x * (2.0 * r - x)).sqrt();
+        m[0] += weight;
+        m[1] += weight * d;
+        m[2] += weight * d * d;
+    });
+    Some(m)
 }
 
 /// `N_p = ∫₀^η 2√(x(2R − x))·(η − x)ᵖ dx` for `p = 0, 1, 2` (the chords within `η` of the
@@ -553,6 +591,52 @@ mod tests {
             for p in 0..3 {
                 let rel = (series[p] - reference[p]).abs() / reference[p];
                 assert!(rel <= 1e-14, "η = {eta:e}, p = {p}: {rel:e}");
+            }
+        }
+    }
+
+    /// The moments of a piece off the rim, by both of its branches (the difference of series
+    /// for wide pieces, the rule in `d` for narrow ones), against Gauss–Legendre in
+    /// `s = 1 − t`, `x = η t²`, over `s ∈ [0, 1 − t₀]` (8 pieces of 12 nodes; smooth there,
+    /// and `d = η s (2 − s)` keeps its digits). `η` a power of two and `t₀` of few bits, so
+    /// `η_rim = η t₀²` is exact and both integrate the same range.
+    #[test]
+    fn rim_moments_off_the_rim_match_quadrature_in_the_root_of_the_rim_distance() {
+        let r = 0.7;
+        for k in 2..=40 {
+            let eta = 2f64.powi(-k);
+            for t_start in [
+                0.0,
+                0.5,
+                0.75,
+                0.875,
+                0.9375,
+                1.0 - 2f64.powi(-10),
+                1.0 - 2f64.powi(-20),
+            ] {
+                let eta_rim = eta * t_start * t_start;
+                let span = 1.0 - t_start;
+                let mut reference = [0.0; 3];
+                for piece in 0..8 {
+                    let (s0, s1) = (span * piece as f64 / 8.0, span * (piece + 1) as f64 / 8.0);
+                    quadrature::for_each_node(s0, s1, |s, w| {
+                        let t = 1.0 - s;
+                        let x = eta * t * t;
+                        let f = 4.0 * eta * eta.sqrt() * t * t * (2.0 * r - x).sqrt();
+                        let d = eta * s * (2.0 - s);
+                        reference[0] += w * f;
+                        reference[1] += w * f * d;
+                        reference[2] += w * f * d * d;
+                    });
+                }
+                let got = rim_moments(r, eta, eta_rim).unwrap();
+                for p in 0..3 {
+                    let rel = (got[p] - reference[p]).abs() / reference[p];
+                    assert!(
+                        rel <= 1e-13,
+                        "η = {eta:e}, t₀ = {t_start}, p = {p}: {rel:e}"
+                    );
+                }
             }
         }
     }
