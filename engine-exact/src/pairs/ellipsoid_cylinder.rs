@@ -16,18 +16,14 @@
 //! ellipsoid's level-surface normal at the centroid.
 
 use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_overlap::disc_ellipse;
+use super::ellipsoid_sliced::disc_solid::{self, DiscSlices};
 use super::ellipsoid_sliced::extent::{Quadric, z_extent};
-use super::ellipsoid_sliced::{
-    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
-    inward_of_ellipsoid, shape_events, to_world,
-};
-use super::solid_distance::{Solid, signed_distance};
+use super::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
+use super::solid_distance::Solid;
 use crate::kernel::PairContact;
-use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Vector3, WorkCounters};
-use nalgebra::{Matrix2, Matrix3};
+use nalgebra::Matrix3;
 
 /// Contact of the ellipsoid with `semi_axes` at `pose_a` with `cylinder` at `pose_b`.
 pub(crate) fn contact(
@@ -66,51 +62,20 @@ pub(crate) fn contact(
     if lo >= hi {
         return None;
     }
-    let overlap = |t: f64| {
-        let sa = a.section(t)?;
-        let inverse = sa.matrix.try_inverse()?;
-        let disc: Matrix2<f64> = inverse * radius;
-        Some((sa, disc_ellipse(&(inverse * -sa.center), &disc)))
+    let slices = DiscSlices {
+        radius: |_| radius,
+        stretch: 1.0,
+        length,
+        extent: (lo, hi),
     };
-    let mut f = |t: f64| -> [f64; COMPONENTS] {
-        match overlap(t) {
-            Some((sa, o)) => {
-                let side: f64 = o.other_arcs.spans().iter().map(|(f0, f1)| f1 - f0).sum();
-                integrand(t, &sa, &o, radius * side)
-            }
-            None => [0.0; COMPONENTS],
-        }
-    };
-    let mut cuts = [0.0; 24];
-    cuts[..2].copy_from_slice(&[lo, hi]);
-    let mut n = 2;
-    shape_events(
-        lo,
-        hi,
-        |t| overlap(t).map_or(0, |(_, o)| o.shape),
-        &mut cuts,
-        &mut n,
-    );
-    let mut integrals = integrate(&mut cuts[..n], &mut f, work);
-    for z in [0.0, length] {
-        if let Some((sa, o)) = overlap(z) {
-            integrals.surface_b += sa.matrix.determinant() * o.area;
-        }
-    }
-    let inside_cylinder = integrals.surface_b == 0.0;
-    let moments = to_world(&integrals, pose_b, unit);
-    let g = moments.centroid;
-    super::volume_contact::contact(
-        &moments,
-        |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
-        |g, d| surface_point_along_w(&Solid::Cylinder(*cylinder), pose_b, g, d),
-        || {
-            if inside_cylinder {
-                let p = pose_b.inverse_transform_point(&g).coords;
-                pose_b.rotation * signed_distance(&Solid::Cylinder(*cylinder), &p).2
-            } else {
-                inward_of_ellipsoid(semi_axes, pose_a, &g, pose_b)
-            }
-        },
+    disc_solid::contact(
+        &a,
+        semi_axes,
+        pose_a,
+        &slices,
+        &Solid::Cylinder(*cylinder),
+        pose_b,
+        unit,
+        work,
     )
 }

@@ -34,19 +34,14 @@
 //! of the intersection's surface. Touching (the minimum of `f` not below zero) is no contact.
 
 use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_overlap::disc_ellipse;
+use super::ellipsoid_sliced::disc_solid::{self, DiscSlices};
 use super::ellipsoid_sliced::distance::ellipse_distance;
-use super::ellipsoid_sliced::{
-    COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
-    inward_of_ellipsoid, shape_events, to_world,
-};
+use super::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
 use super::sliced::golden_maximum;
-use super::solid_distance::{Solid, signed_distance};
+use super::solid_distance::Solid;
 use crate::kernel::PairContact;
-use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Frustum;
 use contact_core::{Isometry3, Vector2, Vector3, WorkCounters};
-use nalgebra::Matrix2;
 
 /// Bisection steps for each end of the extent (a `t` range of about 1 halved to round-off).
 const BISECTIONS: usize = 64;
@@ -142,53 +137,20 @@ pub(crate) fn contact(
     }
     let a = SlicedEllipsoid::new(c, &l)?;
     let (lo, hi) = disc_extent(&a, radius, 0.0, length)?;
-    let overlap = |t: f64| {
-        let sa = a.section(t)?;
-        let inverse = sa.matrix.try_inverse()?;
-        let disc: Matrix2<f64> = inverse * radius(t).max(0.0);
-        Some((sa, disc_ellipse(&(inverse * -sa.center), &disc)))
+    let slices = DiscSlices {
+        radius,
+        stretch: (1.0 + slope * slope).sqrt(),
+        length,
+        extent: (lo, hi),
     };
-    let stretch = (1.0 + slope * slope).sqrt();
-    let mut f = |t: f64| -> [f64; COMPONENTS] {
-        match overlap(t) {
-            Some((sa, o)) => {
-                let side: f64 = o.other_arcs.spans().iter().map(|(f0, f1)| f1 - f0).sum();
-                integrand(t, &sa, &o, stretch * radius(t) * side)
-            }
-            None => [0.0; COMPONENTS],
-        }
-    };
-    let mut cuts = [0.0; 24];
-    cuts[..2].copy_from_slice(&[lo, hi]);
-    let mut n = 2;
-    shape_events(
-        lo,
-        hi,
-        |t| overlap(t).map_or(0, |(_, o)| o.shape),
-        &mut cuts,
-        &mut n,
-    );
-    let mut integrals = integrate(&mut cuts[..n], &mut f, work);
-    for z in [0.0, length] {
-        if let Some((sa, o)) = overlap(z) {
-            integrals.surface_b += sa.matrix.determinant() * o.area;
-        }
-    }
-    let inside_frustum = integrals.surface_b == 0.0;
-    let moments = to_world(&integrals, pose_b, unit);
-    let g = moments.centroid;
-    let solid = Solid::Frustum(*frustum);
-    super::volume_contact::contact(
-        &moments,
-        |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
-        |g, d| surface_point_along_w(&solid, pose_b, g, d),
-        || {
-            if inside_frustum {
-                let p = pose_b.inverse_transform_point(&g).coords;
-                pose_b.rotation * signed_distance(&solid, &p).2
-            } else {
-                inward_of_ellipsoid(semi_axes, pose_a, &g, pose_b)
-            }
-        },
+    disc_solid::contact(
+        &a,
+        semi_axes,
+        pose_a,
+        &slices,
+        &Solid::Frustum(*frustum),
+        pose_b,
+        unit,
+        work,
     )
 }

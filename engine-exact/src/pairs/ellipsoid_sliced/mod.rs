@@ -22,6 +22,7 @@
 //!   of itself, not to round-off).
 
 pub(crate) mod disc_overlap;
+pub(crate) mod disc_solid;
 pub(crate) mod distance;
 pub(crate) mod extent;
 
