@@ -49,7 +49,7 @@ use crate::obb::boxes_overlap;
 use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
 use crate::surface_sums::SurfaceSums;
-use crate::triangle_pair::{Feature, PLANE_EPS, TrianglePair, intersect_with_ends};
+use crate::triangle_pair::{Feature, PLANE_EPS, TrianglePair, intersect_on_planes};
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
 /// One contact in A's mesh frame, before it is moved to the world.
@@ -158,9 +158,10 @@ fn find_crossings(
     } = s;
     hits.clear();
     let mut tests = 0;
-    // Every edge of either mesh is shorter than its box diagonal: a bound on the triangle
-    // test's length scale, for the plane pre-test below (doubled: room for round-off).
-    let scale = 2.0 * a.size.max(b.size);
+    // One on-plane band for every pair of the query (see `intersect_on_planes`): every edge of
+    // either mesh is shorter than its box diagonal, doubled for room.
+    let band = PLANE_EPS * 2.0 * a.size.max(b.size);
+    let band_squared = band * band;
     descend_leaf_pairs(
         &a.tree,
         &b.tree,
@@ -170,28 +171,25 @@ fn find_crossings(
         box_cache,
         work,
         |leaf_a, leaf_b| {
-            // B's triangles of the leaf moved into A's frame once for all of A's.
-            let mut moved = [[Vector3::zeros(); 3]; LEAF_TRIANGLES];
+            // B's triangles of the leaf moved into A's frame once for all of A's, with their
+            // planes.
+            let mut moved = [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES];
             for (m, &tb) in moved.iter_mut().zip(leaf_b) {
-                let [q0, q1, q2] = b.corners(tb);
-                *m = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
+                *m = moved_triangle(b, tb, x);
             }
             for &ta in leaf_a {
                 let p = a.corners(ta);
-                // The plane of `p` exactly as the triangle test forms it (same operations, so
-                // the same bits): a B triangle strictly on one side, beyond the test's own
-                // on-plane band `PLANE_EPS · scale · |n|`, is disjoint, and the test would say
-                // so; only the rest pay for it.
                 let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
-                let band = PLANE_EPS * scale;
-                let band_squared = band * band * n.norm_squared();
+                // A B triangle strictly on one side of `p`'s plane, beyond the band, is
+                // disjoint: the test's own first step, taken here so the rest is paid only by
+                // the pairs that need it.
+                let band_n_squared = band_squared * n.norm_squared();
                 for (k, &tb) in leaf_b.iter().enumerate() {
                     tests += 1;
-                    let q = if k < LEAF_TRIANGLES {
+                    let (q, nq) = if k < LEAF_TRIANGLES {
                         moved[k]
                     } else {
-                        let [q0, q1, q2] = b.corners(tb);
-                        [x.apply(&q0), x.apply(&q1), x.apply(&q2)]
+                        moved_triangle(b, tb, x)
                     };
                     let d = [
                         n.dot(&(q[0] - p[0])),
@@ -201,10 +199,12 @@ fn find_crossings(
                     let one_side = (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0)
                         || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0);
                     let nearest = d[0].abs().min(d[1].abs()).min(d[2].abs());
-                    if one_side && nearest * nearest > band_squared {
+                    if one_side && nearest * nearest > band_n_squared {
                         continue;
                     }
-                    if let (TrianglePair::Segment(s0, s1), ends) = intersect_with_ends(&p, &q) {
+                    if let (TrianglePair::Segment(s0, s1), ends) =
+                        intersect_on_planes(&p, &q, &n, &nq, d, band)
+                    {
                         hits.push(Hit {
                             ta,
                             tb,
@@ -220,6 +220,14 @@ fn find_crossings(
         },
     );
     work.primitive_tests += tests;
+}
+
+/// B's triangle `tb` moved into A's frame, with its plane's normal `(q₁ − q₀) × (q₂ − q₀)`.
+#[inline]
+fn moved_triangle(b: &FacetMesh, tb: u32, x: &RelativePose) -> ([Vector3; 3], Vector3) {
+    let [q0, q1, q2] = b.corners(tb);
+    let q = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
+    (q, (q[1] - q[0]).cross(&(q[2] - q[0])))
 }
 
 pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u32 {

@@ -2,9 +2,12 @@
 //! triangle-triangle intersection test", with the interval step done on points).
 //!
 //! Each triangle's vertices are classified against the other's plane by signed distance. A
-//! distance within `PLANE_EPS · |edge|max` of zero counts as *on* the plane, so vertices on a
-//! plane, shared edges and touching vertices all take the on-plane branch consistently (the
-//! same tolerance for both triangles, relative to the pair's size). Degenerate outcomes:
+//! distance within a band of zero counts as *on* the plane, so vertices on a plane, shared
+//! edges and touching vertices all take the on-plane branch consistently (the same band for
+//! both triangles): `PLANE_EPS · |edge|max` of the pair in [`intersect`], and one band for a
+//! whole query, relative to the meshes' size, when the contact search calls
+//! [`intersect_on_planes`] (a vertex near a plane is then classified alike in every pair it
+//! takes part in). Degenerate outcomes:
 //! - both triangles in one plane: [`TrianglePair::Coplanar`] when their 2-D projections overlap
 //!   (an area contact; it bounds no volume, so contact regions ignore it);
 //! - a single touching point: a zero-length segment.
@@ -46,15 +49,21 @@ pub struct SegmentEnd {
     pub feature: Feature,
 }
 
-/// Signed distances of `p`'s vertices to the plane of `q` (normal `n`, through `q0`), with values
-/// within `eps` snapped to zero.
+/// Signed distances of `p`'s vertices to the plane of `q` (normal `n`, through `q0`).
 #[inline]
-fn distances(p: &[Vector3; 3], n: &Vector3, q0: &Vector3, eps: f64) -> [f64; 3] {
-    let snap = |v: &Vector3| {
-        let d = n.dot(&(v - q0));
-        if d.abs() <= eps { 0.0 } else { d }
-    };
-    [snap(&p[0]), snap(&p[1]), snap(&p[2])]
+fn distances(p: &[Vector3; 3], n: &Vector3, q0: &Vector3) -> [f64; 3] {
+    [
+        n.dot(&(p[0] - q0)),
+        n.dot(&(p[1] - q0)),
+        n.dot(&(p[2] - q0)),
+    ]
+}
+
+/// `d` with the values within the band snapped to zero: `|d| ≤ band·|n|`, compared squared
+/// (`band_n² = band²·|n|²`) so no root is taken.
+#[inline]
+fn snapped(d: [f64; 3], band_n_squared: f64) -> [f64; 3] {
+    d.map(|v| if v * v <= band_n_squared { 0.0 } else { v })
 }
 
 #[inline]
@@ -69,13 +78,9 @@ pub fn intersect(p: &[Vector3; 3], q: &[Vector3; 3]) -> TrianglePair {
 
 /// [`intersect`], with the boundary feature each end of a crossing segment lies on (the
 /// intersection curve goes on across it into the neighbouring triangle); the ends are
-/// meaningless for other outcomes.
+/// meaningless for other outcomes. The on-plane band is `PLANE_EPS` times the pair's longest
+/// edge.
 pub fn intersect_with_ends(p: &[Vector3; 3], q: &[Vector3; 3]) -> (TrianglePair, [SegmentEnd; 2]) {
-    let none = [SegmentEnd {
-        first: true,
-        feature: Feature::Corner(0),
-    }; 2];
-    let outcome = |pair| (pair, none);
     let np = (p[1] - p[0]).cross(&(p[2] - p[0]));
     let nq = (q[1] - q[0]).cross(&(q[2] - q[0]));
     let scale = 0.0f64
@@ -86,22 +91,47 @@ pub fn intersect_with_ends(p: &[Vector3; 3], q: &[Vector3; 3]) -> (TrianglePair,
         .max((q[2] - q[1]).norm_squared())
         .max((q[0] - q[2]).norm_squared())
         .sqrt();
-    let dp = distances(p, &nq, &q[0], PLANE_EPS * scale * nq.norm());
-    if same_side(&dp) {
-        return outcome(TrianglePair::Disjoint);
-    }
-    let dq = distances(q, &np, &p[0], PLANE_EPS * scale * np.norm());
+    let dq = distances(q, &np, &p[0]);
+    intersect_on_planes(p, q, &np, &nq, dq, PLANE_EPS * scale)
+}
+
+/// The test itself, on planes the caller has formed: `np = (p₁ − p₀) × (p₂ − p₀)`, `nq` the
+/// same for `q`, `dq` the distances `np·(q_k − p₀)` (not yet snapped), and `band` the
+/// on-plane band as a length (a distance `d` to a plane of normal `n` counts as zero when
+/// `|d| ≤ band·|n|`). A caller testing many pairs forms each plane once and can share one band
+/// across them all, so a vertex near a plane is classified alike in every pair it takes part
+/// in.
+#[inline]
+pub fn intersect_on_planes(
+    p: &[Vector3; 3],
+    q: &[Vector3; 3],
+    np: &Vector3,
+    nq: &Vector3,
+    dq: [f64; 3],
+    band: f64,
+) -> (TrianglePair, [SegmentEnd; 2]) {
+    let none = [SegmentEnd {
+        first: true,
+        feature: Feature::Corner(0),
+    }; 2];
+    let outcome = |pair| (pair, none);
+    let band_squared = band * band;
+    let dq = snapped(dq, band_squared * np.norm_squared());
     if same_side(&dq) {
         return outcome(TrianglePair::Disjoint);
     }
+    let dp = snapped(distances(p, nq, &q[0]), band_squared * nq.norm_squared());
+    if same_side(&dp) {
+        return outcome(TrianglePair::Disjoint);
+    }
     if dp == [0.0; 3] || dq == [0.0; 3] {
-        return outcome(if coplanar_overlap(p, q, &np) {
+        return outcome(if coplanar_overlap(p, q, np) {
             TrianglePair::Coplanar
         } else {
             TrianglePair::Disjoint
         });
     }
-    let dir = np.cross(&nq);
+    let dir = np.cross(nq);
     let (Some(((a0, fa0), (a1, fa1))), Some(((b0, fb0), (b1, fb1)))) =
         (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
     else {
