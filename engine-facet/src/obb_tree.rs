@@ -12,8 +12,10 @@
 use crate::obb::{Obb, boxes_overlap_in_frame};
 use contact_core::{Matrix3, Point3, Vector3, WorkCounters};
 
-/// Triangles per leaf at most.
-pub const LEAF_TRIANGLES: usize = 2;
+/// Triangles per leaf at most. Four rather than two: a third fewer box tests in a descent
+/// (23k to 16k at 100k triangles) and half the nodes, for more triangle pairs, which the contact
+/// search screens a leaf at a time without branches (at 100k: per-pose minimum 3.19 to 3.00 ms).
+pub const LEAF_TRIANGLES: usize = 4;
 
 /// Nodes with more triangles than this get their own principal axes (an eigen solve of the
 /// vertex covariance); smaller ones inherit their parent's axes.
