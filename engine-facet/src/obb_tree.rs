@@ -305,7 +305,7 @@ pub fn descend_leaf_pairs(
         let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
         tests += 1;
         let e = &mut cache.entries[ib as usize];
-        if e.stamp != centre_done && e.stamp != axes_done {
+        if (e.stamp != centre_done) & (e.stamp != axes_done) {
             e.stamp = centre_done;
             e.center = rot_ab * nb.obb.center + t_ab;
         }

@@ -68,7 +68,8 @@ fn snapped(d: [f64; 3], band_n_squared: f64) -> [f64; 3] {
 
 #[inline]
 fn same_side(d: &[f64; 3]) -> bool {
-    (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) || (d[0] < 0.0 && d[1] < 0.0 && d[2] < 0.0)
+    // Non-short-circuit: one branch on the outcome rather than one per comparison.
+    ((d[0] > 0.0) & (d[1] > 0.0) & (d[2] > 0.0)) | ((d[0] < 0.0) & (d[1] < 0.0) & (d[2] < 0.0))
 }
 
 /// Intersects triangles `p` and `q` (vertices in one frame).
@@ -139,7 +140,7 @@ pub fn intersect_on_planes(
     };
     // Both cuts lie on the line of the two planes: overlap their intervals along `dir`.
     let (sa0, sa1, sb0, sb1) = (a0.dot(&dir), a1.dot(&dir), b0.dot(&dir), b1.dot(&dir));
-    if sa1 < sb0 || sb1 < sa0 {
+    if (sa1 < sb0) | (sb1 < sa0) {
         return outcome(TrianglePair::Disjoint);
     }
     let end_of = |first, feature| SegmentEnd { first, feature };
@@ -165,6 +166,29 @@ fn plane_cut(
     d: &[f64; 3],
     dir: &Vector3,
 ) -> Option<((Vector3, Feature), (Vector3, Feature))> {
+    let cut = |i: usize| {
+        let j = (i + 1) % 3;
+        (
+            t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j])),
+            Feature::Edge(i as u8),
+        )
+    };
+    if d[0] != 0.0 && d[1] != 0.0 && d[2] != 0.0 {
+        // No corner on the plane (nearly always): one corner lies alone on its side and its
+        // two edges cross, found from the signs rather than by a branch per edge. The same
+        // points in the same order as the general loop below.
+        let (s0, s1, s2) = (d[0] > 0.0, d[1] > 0.0, d[2] > 0.0);
+        if (s0 == s1) & (s1 == s2) {
+            return None;
+        }
+        let lone = 2 * usize::from(s0 == s1) + usize::from(s0 != s1 && s0 == s2);
+        let before = (lone + 2) % 3;
+        let (first, second) = (cut(before.min(lone)), cut(before.max(lone)));
+        let (s_first, s_second) = (first.0.dot(dir), second.0.dot(dir));
+        let lo = if s_second < s_first { second } else { first };
+        let hi = if s_second > s_first { second } else { first };
+        return Some((lo, hi));
+    }
     let mut pts = [(Vector3::zeros(), Feature::Corner(0)); 4];
     let mut n = 0;
     for i in 0..3 {
@@ -174,10 +198,7 @@ fn plane_cut(
             n += 1;
         }
         if (d[i] > 0.0 && d[j] < 0.0) || (d[i] < 0.0 && d[j] > 0.0) {
-            pts[n] = (
-                t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j])),
-                Feature::Edge(i as u8),
-            );
+            pts[n] = cut(i);
             n += 1;
         }
     }
