@@ -45,6 +45,9 @@ pub struct PreparedMesh {
     /// Whether the triangles were turned inside out ([`Self::inverted`]): the solid is then
     /// the space outside the mesh (a cavity's walls), unbounded.
     pub(crate) inverted: bool,
+    /// Per triangle, a ball around it (its centroid and the farthest corner's distance), so a
+    /// line that passes it by is not intersected with it ([`exit_along`]).
+    pub(crate) balls: Vec<(Point3, f64)>,
 }
 
 impl PreparedMesh {
@@ -73,13 +76,24 @@ impl PreparedMesh {
             .iter()
             .map(|v| (v - centre).norm())
             .fold(0.0, f64::max);
+        let vertices = mesh.vertices().to_vec();
+        let balls = triangles
+            .iter()
+            .map(|tri| {
+                let [a, b, c] = tri.map(|v| vertices[v as usize]);
+                let g = Point3::from((a.coords + b.coords + c.coords) / 3.0);
+                let r = (a - g).norm().max((b - g).norm()).max((c - g).norm());
+                (g, r)
+            })
+            .collect();
         Some(Self {
-            vertices: mesh.vertices().to_vec(),
+            vertices,
             triangles,
             neighbours,
             centre,
             radius,
             inverted: false,
+            balls,
         })
     }
 
@@ -97,6 +111,7 @@ impl PreparedMesh {
             centre: self.centre,
             radius: self.radius,
             inverted: !self.inverted,
+            balls: self.balls.clone(),
         }
     }
 }
@@ -252,10 +267,23 @@ pub(crate) fn contacts(
 
 /// Where the line from `p` along the unit `direction` first meets the mesh's surface (every
 /// triangle, [`line_triangle`] with the barycentric bounds widened by 1e-12, so a line through
-/// a shared edge or corner meets one of its triangles despite round-off), or `None`.
+/// a shared edge or corner meets one of its triangles despite round-off), or `None`. A
+/// triangle whose ball (grown by 1e-9, more than the widening moves a hit) the line passes by,
+/// lies behind `p` or beyond the nearest hit so far is not intersected: it could give no
+/// nearer hit, so the answer is the same.
 pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
     let mut best = f64::INFINITY;
-    for tri in &mesh.triangles {
+    for (tri, (centre, radius)) in mesh.triangles.iter().zip(&mesh.balls) {
+        let e = centre - p;
+        let along = e.dot(direction);
+        let reach = radius * (1.0 + 1e-9);
+        let square = e.norm_squared();
+        // The square of the distance from the centre to the line, against the ball's, with
+        // room for the round-off of `|e|² − along²`.
+        let passes_by = square - along * along > reach * reach + 1e-15 * square;
+        if passes_by | (along + reach < 0.0) | (along - reach > best) {
+            continue;
+        }
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize].coords);
         if let Some(t) = line_triangle(&p.coords, direction, &a, &b, &c, 1e-12) {
             if t >= 0.0 && t < best {
@@ -267,11 +295,16 @@ pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -
 }
 
 /// The point of the whole mesh surface closest to `p` (every triangle: the region's own
-/// surface is not always the nearest). Distances within 1e-12 relative count as tied and the
-/// first triangle wins, so a symmetric pose gives the same point in any frame.
+/// surface is not always the nearest; those whose ball lies beyond the best so far are
+/// skipped, as they cannot win). Distances within 1e-12 relative count as tied and the first
+/// triangle wins, so a symmetric pose gives the same point in any frame.
 pub(crate) fn closest_on_mesh(mesh: &PreparedMesh, p: &Point3) -> Point3 {
     let mut best = (f64::INFINITY, *p);
-    for tri in &mesh.triangles {
+    for (tri, (centre, radius)) in mesh.triangles.iter().zip(&mesh.balls) {
+        // No point of a triangle whose ball lies farther than the best so far can win.
+        if (centre - p).norm() - radius * (1.0 + 1e-9) > best.0 {
+            continue;
+        }
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize]);
         let q = closest_point_on_triangle(p, &a, &b, &c);
         let d = (q - p).norm();
