@@ -33,8 +33,11 @@ pub fn closest_point_on_triangle(p: &Point3, a: &Point3, b: &Point3, c: &Point3)
     if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
         return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
     }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
+    // The face: `p` projected on the plane. The barycentric weights `va, vb, vc` above are
+    // differences of products of dot products, which lose digits when `p` lies far off the
+    // face or near an edge (1e-12 of the triangle's size was seen); the projection keeps them.
+    let n = ab.cross(&ac);
+    p - n * (ap.dot(&n) / n.norm_squared())
 }
 
 /// The parameter `s` at which the line `p + s·dir` meets triangle `a b c` (Möller–Trumbore),

@@ -359,6 +359,56 @@ fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
     assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
 }
 
+/// The sphere–mesh pair reads inside or outside from the nearest face when the nearest point
+/// lies inside it and from the winding number on an edge or a corner: centres inside and
+/// outside a box-shaped mesh, near its faces, edges and corners (each coordinate snapped to
+/// the box's extent by chance, so the nearest point is often on an edge or a corner), agree
+/// with the exact box.
+#[test]
+fn a_sphere_about_a_box_shaped_mesh_agrees_with_the_box_inside_and_out() {
+    let id = Isometry3::identity();
+    let h = Vector3::new(0.6, 1.0, 1.4);
+    let mesh = instance(Geometry::Mesh(std::sync::Arc::new(boxes_mesh(&[(
+        contact_core::Point3::origin(),
+        h,
+    )]))));
+    let exact_box = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
+    let mut rng = crate::common::Rng::new(77);
+    let (mut inside, mut on_edges, mut contacts) = (0, 0, 0);
+    for _ in 0..4000 {
+        let mut c = Vector3::zeros();
+        let mut snapped = 0;
+        for k in 0..3 {
+            c[k] = if rng.uniform(0.0, 1.0) < 0.4 {
+                snapped += 1;
+                h[k] * if rng.uniform(0.0, 1.0) < 0.5 {
+                    -1.0
+                } else {
+                    1.0
+                } * rng.uniform(0.9, 1.1)
+            } else {
+                rng.uniform(-1.3, 1.3) * h[k]
+            };
+        }
+        let r = rng.uniform(0.05, 0.8);
+        let pose = at(c.x, c.y, c.z);
+        let got = query(&sphere(r), &mesh, &pose, &id);
+        let want = query(&sphere(r), &exact_box, &pose, &id);
+        assert_eq!(got.len(), want.len(), "{c:?} {r}");
+        if let (Some(a), Some(b)) = (got.first(), want.first()) {
+            crate::common::assert_close(a, b, 1.4, 2.0, 1e-13, "sphere about a box mesh");
+            contacts += 1;
+        }
+        inside += usize::from((0..3).all(|k| c[k].abs() < h[k]));
+        on_edges += usize::from(snapped >= 2);
+    }
+    // Every branch is taken often: inside, near edges or corners, and in contact.
+    assert!(
+        inside > 300 && on_edges > 300 && contacts > 1000,
+        "{inside} {on_edges} {contacts}"
+    );
+}
+
 #[test]
 fn frustum_and_torus_on_a_plane_at_their_edges() {
     use contact_core::geometry::{Frustum, Torus};
