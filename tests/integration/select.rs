@@ -154,11 +154,12 @@ fn select_picks_the_exact_engine_for_a_sphere_on_a_plane() {
 
 #[test]
 fn select_picks_the_faceted_engine_at_its_smallest_sufficient_tolerance_when_faster() {
-    // A ball on a 9,800-triangle STL sphere: the exact engine visits every triangle on every
-    // query; the faceted engine descends two trees to the few near the contact. The ball's own
-    // faceting sets the error.
+    // A ball on a 39,600-triangle STL sphere: the exact engine passes over every triangle on
+    // every query (skipping the closest-point test of those its ball rules out); the faceted
+    // engine descends two trees to the few near the contact. The ball's own faceting sets the
+    // error.
     let dir = scratch("mesh");
-    write_sphere_stl(&dir.join("big.stl"), 5.0, 100);
+    write_sphere_stl(&dir.join("big.stl"), 5.0, 200);
     let model = load(
         &dir,
         &ball_over("GRAPHICS/2, EXTERNAL, RM = 10, FILE = big.stl", 6.5),
