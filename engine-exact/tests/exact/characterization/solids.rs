@@ -186,7 +186,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             SAMPLES,
             "sphere–mesh",
             "a box as a 12-triangle mesh; centre outside a face, an edge or a corner",
-            "closed form (signed distance, winding number); oracle: clamping",
+            "closed form (signed distance; side from the nearest face, edge or winding number); oracle: clamping",
             |rng| {
                 let h = Vector3::new(
                     rng.uniform(0.3, 1.5),
