@@ -13,9 +13,16 @@
 //! are cut at [`quadric`]'s closed-form events (rays tangent to `b`'s section, rays through
 //! its corners, `a`'s circle crossing `b`'s surface), where the ends have square-root ends or
 //! kinks, so the sine-mapped adaptive rule ([`crate::quadrature::Adaptive`], 1e-13 relative)
-//! converges on smooth pieces. The outer integral over `t` runs between `a`'s ends, `b`'s
-//! extent along `z` (its rims' extreme heights), the heights where `b`'s rims pierce `a`'s
-//! lateral surface (a quartic each) and the intersection's own lowest and highest slice.
+//! converges on smooth pieces. The outer integral over `t` (the same rule, 1e-11 relative:
+//! looser than the slices, whose acceptance noise it must not chase) runs between `a`'s ends,
+//! `b`'s extent along `z` (its rims' extreme heights), the heights where `b`'s rims pierce
+//! `a`'s lateral surface (a quartic each), where `a`'s radius equals `b`'s at the axis (a
+//! coaxial `b`'s surface meeting `a`'s circle), the heights where the count of `a`'s circle's
+//! crossings with `b`'s surface changes (the circle becoming tangent to it: the critical
+//! heights of the intersection curve, found by 64 samples and bisection as in the ellipsoid
+//! pairs' `shape_events`), and the intersection's own lowest and highest slice. Cuts closer
+//! than 1e-9 of the extent are merged: such a piece holds nothing, and its slices (within
+//! round-off of a tangency) cost the inner rule its whole depth.
 //!
 //! Rays along `u` never lose precision with the axes' angle: `b`'s section, a huge far
 //! ellipse or a long strip when its axis is nearly perpendicular to `a`'s, is never formed —
@@ -27,20 +34,22 @@
 //! inside `b` when `R(t)` lies in `b`'s interval along the ray, and sweeps
 //! `(u − k e_z) R dφ dt` there; `a`'s caps add `∓e_z` times their overlap with `b` (the polar
 //! section at `t = 0, L`, with `b`'s slab closed by 1e-12 so that a cap flush with `b`'s cap
-//! counts). Unsigned areas: `a`'s lateral `√(1 + k²) R` per unit of `φ` and `t`, its caps'
-//! overlaps, and `b`'s surface inside `a`, `ρ/|n·u|` at each end of `b`'s interval inside
-//! `a`'s disc (the ray bundle's cross-section `ρ dφ dt` seen by the surface at its slant),
-//! plus `b`'s caps parallel to the slices (their section at their height) when they lie
-//! strictly between `a`'s caps.
+//! counts). The unsigned area of `a`'s surface inside `b`: its lateral `√(1 + k²) R` per unit
+//! of `φ` and `t` and its caps' overlaps. That of `b`'s surface inside `a` is not integrated
+//! (per ray it is `ρ/|n·u|`, singular where rays graze `b`): it serves only to judge a
+//! vanishing `S_a` and to size a containment's area, so it is taken as `|S_a|` (the projected
+//! area, a lower bound) when some of `a`'s surface is inside `b`, and as `b`'s whole surface
+//! (closed form) when none is (`b` inside `a`); when `a` is inside `b`, `a`'s surface inside
+//! is its whole surface in closed form, so either order gives the same area.
 //!
 //! ## Degenerate branches
 //! - **Coaxial** (or parallel) axes: `b`'s sections are discs; no tangent rays from an axis
 //!   inside, and a circle on `b`'s surface has no crossings (its coefficients vanish): `a`'s
-//!   circle counts as inside `b` within 1e-12 of its radius. `b`'s caps are parallel to the
-//!   slices and added as flat terms; a cap flush with `a`'s with the same outward normal is
-//!   `a`'s.
+//!   circle counts as inside `b` within 1e-12 of its radius, and the height where the two
+//!   radii meet is a cut. A cap flush with `a`'s counts as `a`'s.
 //! - **Perpendicular** axes: rays along `b`'s axis make the quadratic's leading coefficient
-//!   vanish (the lateral roots go to infinity, the caps bound the interval).
+//!   vanish (the lateral roots go to infinity, the caps bound the interval); just above `b`'s
+//!   lowest line its section is a strip of round-off width, whose slices the merged cuts skip.
 //! - **Grazing**: the intersection's extent in `t` is found by bisection on "the slice is not
 //!   empty" (exact between the `φ` cuts) from a slice inside: a cut piece's midpoint, one of
 //!   33 samples, or for a sliver the maximiser of the concave margin
@@ -48,29 +57,10 @@
 //!   by nested golden sections; a positive margin nowhere is no contact. Touching is no
 //!   contact.
 //! - **One inside the other** and **identical solids**: `|S_a|` vanishes against the
-//!   intersection's surface; with no surface of `b` inside `a`, `a` is inside `b` and the
-//!   normal is `b`'s outward normal at its face nearest the centroid; otherwise the opposite
-//!   of `a`'s nearest face normal; area a quarter of the surface (identical solids: `a`'s
-//!   bottom, whose normal is `−z`, so the normal is `a`'s `+z`).
-
-//!
-//! ## Status: not dispatched
-//! The pairs stay refused (`Unsupported`) at the model check: on general poses the kernel
-//! agrees with the cylinder–cylinder pair (a frustum of equal radii) to about 4e-9 of the
-//! pair's size in the normal and points, short of the 1e-9 contract, because the outer rule
-//! halves towards heights it has no cut for (`a`'s circle tangent to `b`'s lateral surface:
-//! the critical heights of the two lateral surfaces' intersection curve); it takes 30–500 ms
-//! per query; and a slice just above `b`'s lowest line, when `b`'s axis lies in the slice
-//! planes (a thin strip seen along its length), makes the inner rule halve to its limit on
-//! many pieces. The module's tests record the agreement measured so far.
-
-#![cfg_attr(
-    not(test),
-    expect(
-        dead_code,
-        reason = "the frustum–frustum kernel is not dispatched yet (see the module docs)"
-    )
-)]
+//!   intersection's surface; with some of `a`'s surface inside `b` (`a` inside `b`, or
+//!   identical solids), the normal is `b`'s outward normal at its face nearest the centroid;
+//!   with none (`b` inside `a`), the opposite of `a`'s nearest face normal; area a quarter of
+//!   the surface.
 
 pub(crate) mod quadric;
 pub(crate) mod slice;
@@ -78,7 +68,7 @@ pub(crate) mod slice;
 mod tests;
 
 use super::clipped::unit_for;
-use super::ellipsoid_sliced::COMPONENTS;
+use super::ellipsoid_sliced::{COMPONENTS, shape_events};
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
@@ -108,6 +98,9 @@ fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
     let u = (surface * 1e-9).max(1e-15);
     [v, v, v, v, s, s, s, u, u]
 }
+
+/// Cuts in `t` closer than this fraction of the intersection's extent are merged.
+const MERGE: f64 = 1e-9;
 
 /// Slices sampled for the intersection when no cut piece's midpoint meets it.
 const SAMPLES: usize = 33;
@@ -197,6 +190,16 @@ impl Pair {
                 *n += 1;
             }
         };
+        // Where a's radius equals b's radius at the axis point's height along b: for a
+        // coaxial b, where a's circle passes onto b's surface (no crossings mark it: the
+        // circle lies on the surface there, and its inside-b indicator jumps).
+        let rate = self.a.slope - q.slope * q.axis.z;
+        if rate != 0.0 {
+            push(
+                (q.r0 - q.slope * q.axis.dot(&q.origin) - self.a.r0) / rate,
+                cuts,
+            );
+        }
         for (h, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
             let centre = q.origin + q.axis * h;
             push(centre.z - r * spread, cuts);
@@ -208,6 +211,38 @@ impl Pair {
                 }
             }
         }
+    }
+
+    /// How many times `a`'s circle at `t` crosses `b`'s surface (its lateral surface between
+    /// the caps, and its cap discs): the slices' shape, which changes where the circle becomes
+    /// tangent to the surface (the critical heights of the two surfaces' intersection curve),
+    /// the events the closed forms do not give.
+    fn crossing_count(&self, t: f64) -> usize {
+        let r = self.radius_a(t);
+        if r <= 0.0 {
+            return 0;
+        }
+        let q = &self.b;
+        let p = Vector3::new(0.0, 0.0, t);
+        let at = |psi: f64| p + r * Vector3::new(psi.cos(), psi.sin(), 0.0);
+        let (psi, k) = circle_crossings(q, &p, &Vector3::x(), &Vector3::y(), r);
+        let mut count = psi[..k]
+            .iter()
+            .filter(|&&x| {
+                let z = q.height(&at(x));
+                (0.0..=q.len).contains(&z)
+            })
+            .count();
+        for (h, rim) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
+            let centre = q.origin + q.axis * h;
+            let (psi, k) =
+                quadric::sinusoid_roots(r * q.axis.x, r * q.axis.y, -q.axis.dot(&(p - centre)));
+            count += psi[..k]
+                .iter()
+                .filter(|&&x| q.across(&at(x)).norm() <= rim)
+                .count();
+        }
+        count
     }
 
     /// The largest margin `min(−h_a, −h_b)` over the slab `lo ≤ z ≤ hi` and its height, by
@@ -323,6 +358,7 @@ pub(crate) fn contact(
     cuts[1] = hi;
     let mut n = 2;
     pair.t_cuts(lo, hi, &mut cuts, &mut n);
+    shape_events(lo, hi, |t| pair.crossing_count(t), &mut cuts, &mut n);
     cuts[..n].sort_by(f64::total_cmp);
     let (t_min, t_max) = pair.extent(lo, hi, &cuts[..n])?;
     if t_min >= t_max {
@@ -331,14 +367,19 @@ pub(crate) fn contact(
     // The cuts inside the extent, with its ends.
     let mut inner = [0.0; MAX_PIECES + 1];
     inner[0] = t_min;
-    inner[1] = t_max;
-    let mut m = 2;
+    let mut m = 1;
+    // Cuts closer than 1e-9 of the extent are one: a piece that thin holds 1e-9 of the
+    // slices' range, and its slices (within round-off of a tangency, b's section a strip
+    // 1e-8 wide seen along its length) cost the inner rule its whole depth for nothing.
+    let merge = MERGE * (t_max - t_min);
     for &c in &cuts[..n] {
-        if c > t_min && c < t_max {
+        if c > t_min + merge && c < t_max - merge && c > inner[m - 1] + merge {
             inner[m] = c;
             m += 1;
         }
     }
+    inner[m] = t_max;
+    m += 1;
     // The slices' own counts, apart from the outer rule's (both borrow a counter).
     let mut slices = WorkCounters::default();
     let mut r = OUTER.integrate_pieces(
@@ -364,9 +405,14 @@ pub(crate) fn contact(
     // b's surface inside a: all of it when none of a's is inside b (b inside a), else its
     // projected area |S_a| stands for it (see the module docs).
     let s_a = Vector3::new(r[4], r[5], r[6]);
-    let whole_b = surface_of(&pair.b);
+    let (whole_a, whole_b) = (surface_of(&pair.a), surface_of(&pair.b));
     let a_inside_b = r[7] > ENCLOSED * whole_b;
     r[8] = if a_inside_b { s_a.norm() } else { whole_b };
+    // a inside b (S_a vanishing against more than half of a's surface inside b): that
+    // surface is all of a's, taken in closed form, so either order gives the same area.
+    if a_inside_b && s_a.norm() <= ENCLOSED * (r[7] + r[8]) && r[7] >= 0.5 * whole_a {
+        r[7] = whole_a;
+    }
     let moments = VolumeMoments {
         volume: volume * unit * unit * unit,
         centroid,

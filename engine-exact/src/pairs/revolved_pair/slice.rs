@@ -288,7 +288,7 @@ impl Pair {
         let (mut cuts, n) = self.cuts(t, r);
         let rays = self.rays(t, r, closed);
         let floor = |e: &[f64; POLAR]| {
-            let v = (e[0].abs() * 1e-14).max(1e-16 * r * r);
+            let v = (e[0].abs() * 1e-14).max(1e-15 * r * r);
             let m = v * r;
             let angle = 1e-14;
             [v, m, m, angle, angle, angle]
