@@ -50,7 +50,6 @@ mod oracles;
 mod properties;
 mod regressions;
 mod revolved_oracles;
-mod revolved_pairs;
 mod sliced_oracles;
 mod spherical_reference;
 mod torus_oracles;

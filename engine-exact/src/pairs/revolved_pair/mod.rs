@@ -62,6 +62,25 @@
 //!   with none (`b` inside `a`), the opposite of `a`'s nearest face normal; area a quarter of
 //!   the surface.
 
+//! ## Status: not dispatched
+//! The pairs stay refused (`Unsupported`) at the model check. On random general poses the
+//! kernel agrees with the cylinder–cylinder pair (frusta of equal radii) to 3.6e-12 of the
+//! pair's size in the normal and 2.7e-12 in the points, and coaxial stacks match their
+//! closed form to 1e-15; but one pose in 40 of the characterization's sampling (a thin `a`
+//! crossing a wider `b`, kept as an ignored test with its reproducer) is off by 1.3e-7 in
+//! the normal when the thin solid is `a`, while with the roles exchanged it agrees with the
+//! cylinder pair to 1e-16. Neither deeper rules (inner or outer), nor denser crossing-count
+//! sampling, nor extra `φ` cuts move it: a systematic term is missing for that configuration,
+//! not resolution. Until it is found the pairs are not offered. Queries take 5–50 ms.
+
+#![cfg_attr(
+    not(test),
+    expect(
+        dead_code,
+        reason = "the frustum–frustum kernel is not dispatched yet (see the module docs)"
+    )
+)]
+
 pub(crate) mod quadric;
 pub(crate) mod slice;
 #[cfg(test)]
@@ -389,9 +408,9 @@ pub(crate) fn contact(
         work,
     );
     *work += slices;
-    // a's caps inside b, and b's caps parallel to the slices inside a.
+    // a's caps inside b (zero when b does not reach them).
     for (cap, sign) in [(0.0, -1.0), (pair.a.len, 1.0)] {
-        if cap >= t_min && cap <= t_max {
+        if cap >= lo && cap <= hi {
             let area = pair.slice(cap, true, work)[0];
             r[6] += sign * area;
             r[7] += area;

@@ -135,3 +135,46 @@ fn perpendicular_axes_agree_with_the_cylinder_pair() {
     // length) once took the inner rule to its depth limit: 2.5 s for this query.
     assert!(work.iterations < 2_000_000, "{}", work.iterations);
 }
+
+/// The known discrepancy that keeps the pairs out of dispatch (see the module docs): a thin
+/// `a` crossing a wider `b`, from the characterization's sampling. With `b` as the kernel's
+/// `a` the answer agrees with the cylinder pair to 1e-16; with the thin solid as `a` the
+/// normal is off by 1.3e-7.
+#[test]
+#[ignore = "known 1.3e-7 discrepancy: the reason the frustum pairs are not dispatched"]
+fn a_thin_solid_as_a_matches_the_cylinder_pair() {
+    use contact_core::UnitQuaternion;
+    use nalgebra::{Quaternion, Translation3};
+    let pose_b = Isometry3::from_parts(
+        Translation3::new(0.21731973562505558, -0.0288858176045812, 0.6651560916645145),
+        UnitQuaternion::new_unchecked(Quaternion::new(
+            -0.4182624517337157,
+            -0.8007866950734228,
+            -0.4108431323379679,
+            0.12249535123347828,
+        )),
+    );
+    let (ra, la, rb, lb) = (
+        0.30588827541857855,
+        1.4315091023465563,
+        0.5676209597707866,
+        1.5833363318386082,
+    );
+    let pose_a = Isometry3::identity();
+    let (ca, cb) = (
+        Cylinder::new(ra, la).unwrap(),
+        Cylinder::new(rb, lb).unwrap(),
+    );
+    let mut work = WorkCounters::default();
+    let want =
+        cylinder_solid::contact(&ca, &pose_a, &Other::Cylinder(cb), &pose_b, &mut work).unwrap();
+    let fa = Solid::Frustum(Frustum::new(ra, ra, la).unwrap());
+    let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
+    let swapped = contact(&fb, &pose_b, &fa, &pose_a, &mut work).unwrap();
+    assert!(
+        (swapped.normal + want.normal).norm() < 1e-12,
+        "{swapped:?} {want:?}"
+    );
+    let got = contact(&fa, &pose_a, &fb, &pose_b, &mut work).unwrap();
+    assert!((got.normal - want.normal).norm() < 1e-9, "{got:?} {want:?}");
+}
