@@ -50,6 +50,7 @@ mod oracles;
 mod properties;
 mod regressions;
 mod revolved_oracles;
+mod revolved_pairs;
 mod sliced_oracles;
 mod spherical_reference;
 mod torus_oracles;

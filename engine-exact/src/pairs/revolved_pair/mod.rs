@@ -19,8 +19,9 @@
 //! `a`'s lateral surface (a quartic each), where `a`'s radius equals `b`'s at the axis (a
 //! coaxial `b`'s surface meeting `a`'s circle), the heights where the count of `a`'s circle's
 //! crossings with `b`'s surface changes (the circle becoming tangent to it: the critical
-//! heights of the intersection curve, found by 64 samples and bisection as in the ellipsoid
-//! pairs' `shape_events`), and the intersection's own lowest and highest slice. Cuts closer
+//! heights of the intersection curve, found in each piece between the closed-form cuts by 64
+//! samples and 40 more geometrically towards each end, and bisection, as in the ellipsoid
+//! pairs' `shape_events`: a tangency often follows a rim's piercing within 1e-5), and the intersection's own lowest and highest slice. Cuts closer
 //! than 1e-9 of the extent are merged: such a piece holds nothing, and its slices (within
 //! round-off of a tangency) cost the inner rule its whole depth.
 //!
@@ -36,11 +37,12 @@
 //! section at `t = 0, L`, with `b`'s slab closed by 1e-12 so that a cap flush with `b`'s cap
 //! counts). The unsigned area of `a`'s surface inside `b`: its lateral `√(1 + k²) R` per unit
 //! of `φ` and `t` and its caps' overlaps. That of `b`'s surface inside `a` is not integrated
-//! (per ray it is `ρ/|n·u|`, singular where rays graze `b`): it serves only to judge a
-//! vanishing `S_a` and to size a containment's area, so it is taken as `|S_a|` (the projected
-//! area, a lower bound) when some of `a`'s surface is inside `b`, and as `b`'s whole surface
-//! (closed form) when none is (`b` inside `a`); when `a` is inside `b`, `a`'s surface inside
-//! is its whole surface in closed form, so either order gives the same area.
+//! alongside (per ray it is `ρ/|n·u|`, singular where rays graze `b`): it serves only to judge
+//! a vanishing `S_a` and to size a containment's area, so it is `b`'s whole surface (closed
+//! form) when none of `a`'s is inside `b` (`b` inside `a`), `|S_a|` (the projected area, a
+//! lower bound) while that is not vanishing, and otherwise the same slicing across `b`'s
+//! axis (`a`'s surface inside `b` with the roles exchanged). A surface within 1e-6 of its
+//! whole is taken as the whole in closed form, so either order gives the same area.
 //!
 //! ## Degenerate branches
 //! - **Coaxial** (or parallel) axes: `b`'s sections are discs; no tangent rays from an axis
@@ -56,30 +58,12 @@
 //!   `min(−h_a, −h_b)` (`h` the distance-like convex functions of [`quadric::Quadric::inside`])
 //!   by nested golden sections; a positive margin nowhere is no contact. Touching is no
 //!   contact.
-//! - **One inside the other** and **identical solids**: `|S_a|` vanishes against the
-//!   intersection's surface; with some of `a`'s surface inside `b` (`a` inside `b`, or
-//!   identical solids), the normal is `b`'s outward normal at its face nearest the centroid;
-//!   with none (`b` inside `a`), the opposite of `a`'s nearest face normal; area a quarter of
-//!   the surface.
-
-//! ## Status: not dispatched
-//! The pairs stay refused (`Unsupported`) at the model check. On random general poses the
-//! kernel agrees with the cylinder–cylinder pair (frusta of equal radii) to 3.6e-12 of the
-//! pair's size in the normal and 2.7e-12 in the points, and coaxial stacks match their
-//! closed form to 1e-15; but one pose in 40 of the characterization's sampling (a thin `a`
-//! crossing a wider `b`, kept as an ignored test with its reproducer) is off by 1.3e-7 in
-//! the normal when the thin solid is `a`, while with the roles exchanged it agrees with the
-//! cylinder pair to 1e-16. Neither deeper rules (inner or outer), nor denser crossing-count
-//! sampling, nor extra `φ` cuts move it: a systematic term is missing for that configuration,
-//! not resolution. Until it is found the pairs are not offered. Queries take 5–50 ms.
-
-#![cfg_attr(
-    not(test),
-    expect(
-        dead_code,
-        reason = "the frustum–frustum kernel is not dispatched yet (see the module docs)"
-    )
-)]
+//! - **One inside the other**, **symmetric crossings** (a rod through both caps of a disc)
+//!   and **identical solids**: `|S_a|` vanishes against the intersection's surface; as in the
+//!   cylinder pairs, with no surface of `b` inside `a` (`a` inside `b`) the normal is `b`'s
+//!   outward normal at its face nearest the centroid, otherwise (`b` inside `a`, a crossing,
+//!   identical solids) the opposite of `a`'s nearest face normal; area a quarter of the
+//!   intersection's surface.
 
 pub(crate) mod quadric;
 pub(crate) mod slice;
@@ -120,6 +104,10 @@ fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
 
 /// Cuts in `t` closer than this fraction of the intersection's extent are merged.
 const MERGE: f64 = 1e-9;
+
+/// A surface inside the other solid within this fraction of its whole is all of it (the
+/// unsigned areas converge to 1e-9).
+const WHOLE: f64 = 1e-6;
 
 /// Slices sampled for the intersection when no cut piece's midpoint meets it.
 const SAMPLES: usize = 33;
@@ -332,15 +320,16 @@ impl Pair {
     }
 }
 
-/// The contact of the cylinder or frustum `solid_a` at `pose_a` with the cylinder or frustum
-/// `solid_b` at `pose_b` (normal from `b` into `a`), or `None` without overlap.
-pub(crate) fn contact(
+/// The integrals `[V, ∫t, ∫x, ∫y, S_a (3), a's surface inside b, 0]` of `solid_a` at `pose_a`
+/// against `solid_b` at `pose_b` in working units (`a`'s frame over the returned unit), or
+/// `None` when they are apart or only touch.
+fn sums(
     solid_a: &Solid,
     pose_a: &Isometry3,
     solid_b: &Solid,
     pose_b: &Isometry3,
     work: &mut WorkCounters,
-) -> Option<PairContact> {
+) -> Option<(Pair, [f64; COMPONENTS], f64)> {
     let (dims_a, dims_b) = (dimensions(solid_a)?, dimensions(solid_b)?);
     let size = |(r0, r1, len): (f64, f64, f64)| r0.max(r1).max(len);
     let unit = unit_for(size(dims_a).max(size(dims_b)));
@@ -377,7 +366,15 @@ pub(crate) fn contact(
     cuts[1] = hi;
     let mut n = 2;
     pair.t_cuts(lo, hi, &mut cuts, &mut n);
-    shape_events(lo, hi, |t| pair.crossing_count(t), &mut cuts, &mut n);
+    cuts[..n].sort_by(f64::total_cmp);
+    // The crossing count between each pair of closed-form cuts, sampled geometrically
+    // towards both (a tangency often follows a rim's piercing within 1e-5 of the range).
+    let mut closed = [0.0; MAX_PIECES + 1];
+    let known = n;
+    closed[..known].copy_from_slice(&cuts[..known]);
+    for w in closed[..known].windows(2) {
+        shape_events(w[0], w[1], |t| pair.crossing_count(t), &mut cuts, &mut n);
+    }
     cuts[..n].sort_by(f64::total_cmp);
     let (t_min, t_max) = pair.extent(lo, hi, &cuts[..n])?;
     if t_min >= t_max {
@@ -416,22 +413,42 @@ pub(crate) fn contact(
             r[7] += area;
         }
     }
+    Some((pair, r, unit))
+}
+
+/// The contact of the cylinder or frustum `solid_a` at `pose_a` with the cylinder or frustum
+/// `solid_b` at `pose_b` (normal from `b` into `a`), or `None` without overlap.
+pub(crate) fn contact(
+    solid_a: &Solid,
+    pose_a: &Isometry3,
+    solid_b: &Solid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let (pair, mut r, unit) = sums(solid_a, pose_a, solid_b, pose_b, work)?;
     let volume = r[0];
     if volume.is_nan() || volume <= 0.0 {
         return None;
     }
     let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
-    // b's surface inside a: all of it when none of a's is inside b (b inside a), else its
-    // projected area |S_a| stands for it (see the module docs).
+    // b's surface inside a (see the module docs): all of it when none of a's is inside b,
+    // else |S_a| stands for it unless S_a vanishes, when it is integrated across b's axis.
     let s_a = Vector3::new(r[4], r[5], r[6]);
     let (whole_a, whole_b) = (surface_of(&pair.a), surface_of(&pair.b));
-    let a_inside_b = r[7] > ENCLOSED * whole_b;
-    r[8] = if a_inside_b { s_a.norm() } else { whole_b };
-    // a inside b (S_a vanishing against more than half of a's surface inside b): that
-    // surface is all of a's, taken in closed form, so either order gives the same area.
-    if a_inside_b && s_a.norm() <= ENCLOSED * (r[7] + r[8]) && r[7] >= 0.5 * whole_a {
-        r[7] = whole_a;
+    let none_of_a = r[7] <= ENCLOSED * whole_b;
+    r[8] = if none_of_a { whole_b } else { s_a.norm() };
+    if !none_of_a && s_a.norm() <= ENCLOSED * (r[7] + r[8]) {
+        r[8] = sums(solid_b, pose_b, solid_a, pose_a, work).map_or(0.0, |(_, s, _)| s[7]);
+        // A whole surface inside the other solid, in closed form: either order then gives
+        // the same area.
+        if r[7] >= (1.0 - WHOLE) * whole_a {
+            r[7] = whole_a;
+        }
+        if r[8] >= (1.0 - WHOLE) * whole_b {
+            r[8] = whole_b;
+        }
     }
+    let a_inside_b = r[8] <= ENCLOSED * (r[7] + r[8]);
     let moments = VolumeMoments {
         volume: volume * unit * unit * unit,
         centroid,
