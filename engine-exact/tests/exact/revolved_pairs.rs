@@ -192,3 +192,49 @@ fn perpendicular_and_near_parallel_axes_at_extreme_scales_stay_finite() {
         }
     }
 }
+
+#[test]
+fn a_grazing_coaxial_stack_has_the_depth_it_is_sunk_by() {
+    // The intersection a disc-like sliver δ thick: found by the extent search, depth δ.
+    let a = instance(frustum(1.0, 0.6, 2.0));
+    let b = instance(frustum(0.9, 0.3, 1.0));
+    for delta in [1e-4, 1e-7] {
+        let c = one(
+            &a,
+            &b,
+            &Isometry3::identity(),
+            &Isometry3::translation(0.0, 0.0, 2.0 - delta),
+        );
+        assert!((c.penetration - delta).abs() <= 1e-12, "{delta}: {c:?}");
+        assert!((c.normal_w + Vector3::z()).norm() <= 1e-9, "{delta}: {c:?}");
+    }
+}
+
+#[test]
+fn a_rod_through_a_disc_follows_the_cylinder_pairs_fallback() {
+    // The rod crosses both caps of the disc: the rod's surface inside is a band whose area
+    // vector vanishes, so the normal and area are the containment fallback's, which depends
+    // on which solid the kernel slices along (the cylinder of a cylinder–frustum pair; I of a
+    // frustum pair, as I of the cylinder pair): the same as the cylinder pair's either way.
+    let pose_rod = Isometry3::new(Vector3::new(0.1, -0.05, -1.5), Vector3::new(0.2, -0.1, 0.0));
+    let pose_disc = Isometry3::translation(0.0, 0.0, -0.2);
+    let (rod, disc) = (
+        instance(cylinder(0.3, 3.0)),
+        instance(frustum(1.0, 1.0, 0.4)),
+    );
+    let disc_cylinder = instance(cylinder(1.0, 0.4));
+    let rod_frustum = instance(frustum(0.3, 0.3, 3.0));
+    for (got, want) in [
+        (
+            one(&rod, &disc, &pose_rod, &pose_disc),
+            one(&rod, &disc_cylinder, &pose_rod, &pose_disc),
+        ),
+        (
+            one(&disc, &rod_frustum, &pose_disc, &pose_rod),
+            one(&disc_cylinder, &rod, &pose_disc, &pose_rod),
+        ),
+    ] {
+        let e = errors(&got, &want, 3.0);
+        assert!(e.iter().all(|&x| x <= 1e-9), "{e:?}\n{got:?}\n{want:?}");
+    }
+}
