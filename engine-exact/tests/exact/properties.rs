@@ -491,47 +491,6 @@ fn ellipsoid_cylinder(rng: &mut Rng, s: f64) -> Scene {
 }
 
 /// The sliced pairs converge to 1e-9 of their size (quadrature), the others to round-off.
-/// A frustum (or cone) against a frustum or a cylinder, general poses, a quarter coaxial.
-fn revolved_pair(rng: &mut Rng, s: f64) -> Scene {
-    let (r0a, r1a, la) = (
-        rng.uniform(0.0, 1.2),
-        rng.uniform(0.3, 1.2),
-        rng.uniform(0.4, 2.0),
-    );
-    let (r0b, r1b, lb) = (
-        rng.uniform(0.3, 1.2),
-        rng.uniform(0.0, 1.2),
-        rng.uniform(0.4, 2.0),
-    );
-    let pose_j = rng.pose(3.0);
-    let coaxial = rng.uniform(0.0, 1.0) < 0.25;
-    let turn = if coaxial {
-        nalgebra::UnitQuaternion::identity()
-    } else {
-        rng.rotation()
-    };
-    let offset = if coaxial {
-        Vector3::z() * rng.uniform(-0.8 * la, 0.8 * lb)
-    } else {
-        rng.unit_vector() * rng.uniform(0.0, 0.5 * (r0a + r1b + la + lb))
-    };
-    let pose_i = pose_j * Isometry3::from_parts(Translation3::from(offset), turn);
-    let j = if rng.uniform(0.0, 1.0) < 0.3 {
-        Geometry::Cylinder(Cylinder::new(r0b.max(r1b) * s, lb * s).unwrap())
-    } else {
-        Geometry::Frustum(Frustum::new(r0b * s, r1b * s, lb * s).unwrap())
-    };
-    Scene {
-        i: instance(Geometry::Frustum(
-            Frustum::new(r0a * s, r1a * s, la * s).unwrap(),
-        )),
-        j: instance(j),
-        pose_i: scaled_pose(&pose_i, s),
-        pose_j: scaled_pose(&pose_j, s),
-        length: r0a.max(r1a).max(la).max(r0b).max(r1b).max(lb) * s,
-    }
-}
-
 fn tolerance(name: &str) -> f64 {
     if name.starts_with("ellipsoid–ellipsoid")
         || name == "ellipsoid–box"
@@ -556,7 +515,7 @@ fn round_off_sliver(name: &str, c: &Contact, area_scale: f64) -> bool {
 }
 
 const MAKERS: [(&str, Maker); 21] = [
-    ("frustum–frustum/cylinder", revolved_pair),
+    ("frustum–frustum/cylinder", crate::revolved_pairs::scene),
     ("cylinder–cylinder", cylinder_pair),
     ("cylinder–box", cylinder_box),
     ("cylinder–bounded plane", cylinder_bounded_plane),

@@ -2,9 +2,10 @@
 //! pairs must match the cylinder–cylinder pair (a different method: slicing perpendicular to
 //! both axes, polygon sections) on general poses; coaxial pairs against their
 //! one-dimensional closed forms; degenerate branches. Swap, motion and scale are in
-//! [`crate::properties`].
+//! [`crate::properties`], with [`scene`] as its maker.
 
 use crate::common::{Rng, instance, one, query};
+use crate::properties::{Scene, scaled_pose};
 use contact_core::geometry::{Cylinder, Frustum};
 use contact_core::{Contact, Geometry, Isometry3, UnitQuaternion, Vector3};
 use nalgebra::Translation3;
@@ -236,5 +237,46 @@ fn a_rod_through_a_disc_follows_the_cylinder_pairs_fallback() {
     ] {
         let e = errors(&got, &want, 3.0);
         assert!(e.iter().all(|&x| x <= 1e-9), "{e:?}\n{got:?}\n{want:?}");
+    }
+}
+
+/// A frustum (or cone) against a frustum or a cylinder, general poses, a quarter coaxial.
+pub(crate) fn scene(rng: &mut Rng, s: f64) -> Scene {
+    let (r0a, r1a, la) = (
+        rng.uniform(0.0, 1.2),
+        rng.uniform(0.3, 1.2),
+        rng.uniform(0.4, 2.0),
+    );
+    let (r0b, r1b, lb) = (
+        rng.uniform(0.3, 1.2),
+        rng.uniform(0.0, 1.2),
+        rng.uniform(0.4, 2.0),
+    );
+    let pose_j = rng.pose(3.0);
+    let coaxial = rng.uniform(0.0, 1.0) < 0.25;
+    let turn = if coaxial {
+        nalgebra::UnitQuaternion::identity()
+    } else {
+        rng.rotation()
+    };
+    let offset = if coaxial {
+        Vector3::z() * rng.uniform(-0.8 * la, 0.8 * lb)
+    } else {
+        rng.unit_vector() * rng.uniform(0.0, 0.5 * (r0a + r1b + la + lb))
+    };
+    let pose_i = pose_j * Isometry3::from_parts(Translation3::from(offset), turn);
+    let j = if rng.uniform(0.0, 1.0) < 0.3 {
+        Geometry::Cylinder(Cylinder::new(r0b.max(r1b) * s, lb * s).unwrap())
+    } else {
+        Geometry::Frustum(Frustum::new(r0b * s, r1b * s, lb * s).unwrap())
+    };
+    Scene {
+        i: instance(Geometry::Frustum(
+            Frustum::new(r0a * s, r1a * s, la * s).unwrap(),
+        )),
+        j: instance(j),
+        pose_i: scaled_pose(&pose_i, s),
+        pose_j: scaled_pose(&pose_j, s),
+        length: r0a.max(r1a).max(la).max(r0b).max(r1b).max(lb) * s,
     }
 }
