@@ -9,8 +9,9 @@
 //! Parry has no ellipsoid, frustum, torus or bounded plane, so the general-ellipsoid groups
 //! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_frustum`,
 //! `ellipsoid_torus`, `ellipsoid_torus_two_regions`, `ellipsoid_bounded_plane`)
-//! and the box–frustum, box–torus and frustum/torus–bounded-plane groups time the exact
-//! engine alone. A mesh is a parry `TriMesh`; parry is timed only on the pairs it answers.
+//! and the box–frustum, box–torus, frustum/torus–bounded-plane, frustum–frustum and
+//! cylinder–frustum groups time the exact engine alone (the adapter maps no parry `Cone`: a
+//! cone in it would change what the peer engine accepts). A mesh is a parry `TriMesh`; parry is timed only on the pairs it answers.
 
 #![expect(
     missing_docs,
@@ -123,6 +124,27 @@ fn cases() -> Vec<Case> {
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Cylinder(Cylinder::new(0.8, 1.5).unwrap()),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.4, 1.6), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        // Two frusta crossed at a tilt (the exact engine alone: parry has no frustum).
+        Case {
+            name: "frustum_frustum",
+            i: Geometry::Frustum(Frustum::new(1.0, 0.5, 1.5).unwrap()),
+            j: Geometry::Frustum(Frustum::new(0.8, 0.6, 1.2).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.6, 0.2, 0.9), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        // A cylinder across a cone's flank (the frustum of no top radius).
+        Case {
+            name: "cylinder_frustum",
+            i: cylinder(0.3, 2.0),
+            j: Geometry::Frustum(Frustum::new(0.9, 0.0, 1.5).unwrap()),
+            pose_i: Isometry3::from_parts(
+                nalgebra::Translation3::new(-1.0, 0.5, 0.5),
+                UnitQuaternion::from_euler_angles(0.2, 1.3, 0.1),
+            ),
             pose_j: Isometry3::identity(),
             depth: None,
         },

@@ -30,6 +30,7 @@
 //! | cylinder–cylinder (parallel, crossed, skew) | slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`]; parallel axes slice along `a`'s x, near-parallel ones are the general case; containment and identical cylinders take the nearest-face normal | none |
 //! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
 //! | cylinder–plane (bounded) | the same slicing against the plane's prism, [`crate::pairs::cylinder_solid`] | plane |
+//! | cylinder–frustum, frustum–frustum (cones included) | slicing across `a`'s axis, each slice in polar coordinates about it: the ray along each azimuth meets `b` in closed form (a quadratic and two planes), the `φ` integral cut at the rays tangent to `b`'s section, through its corners and at `a`'s circle crossing `b`'s surface, the `t` integral at `b`'s rims' extremes and piercings and at the crossings' count changes, converged to 1e-11 (2e-11 against the cylinder pair on equal radii, 1e-15 on coaxial stacks); containment and identical solids take the nearest-face normal, `crate::pairs::revolved_pair` | none |
 //! | box–frustum, box–torus | slicing across the solid's axis: disc (annulus) ∩ convex polygon sections in closed form, quadrature cut at closed-form events (corner heights, tangencies, edge piercings; a torus in the angle of `t = ρ sin θ`), one contact per region (a torus' regions by azimuth), `crate::pairs::box_revolved` | none |
 //! | frustum–plane, torus–plane (bounded) | the box–frustum/torus slicing on the plane's prism cut to a box about the solid, `crate::pairs::box_revolved` | plane |
 //! | ellipsoid–plane (bounded, general) | the ellipsoid–box slicing on the plane's prism cut to a box about the ellipsoid, [`crate::pairs::ellipsoid_box`] | plane |
@@ -47,8 +48,8 @@
 //! surface), identical coincident ellipsoids (`b`'s `+z`), grazing (the pencil's extent
 //! shrinks to the touching point; touching alone is no contact).
 //!
-//! Everything else answers [`Unsupported`] with the reason: cylinder–frustum, cylinder–torus,
-//! frustum–frustum, frustum–torus and torus–torus; mesh–mesh (the intersection of two meshes is not built); point–point,
+//! Everything else answers [`Unsupported`] with the reason: cylinder–torus, frustum–torus and
+//! torus–torus; mesh–mesh (the intersection of two meshes is not built); point–point,
 //! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 use crate::ExactEngine;
@@ -397,8 +398,18 @@ pub(crate) fn select(
                 },
             )
         }
-        (G::Cylinder(_), G::Frustum(_) | G::Torus(_))
-        | (G::Frustum(_), G::Frustum(_) | G::Torus(_))
+        (G::Cylinder(_) | G::Frustum(_), G::Frustum(_)) => {
+            let solid_a = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
+            let solid_b = solid_of(b).ok_or_else(|| no(NOT_BUILT))?;
+            no_flip(
+                flip_a || flip_b,
+                Kernel::RevolvedPair {
+                    a: solid_a,
+                    b: solid_b,
+                },
+            )
+        }
+        (G::Cylinder(_) | G::Frustum(_), G::Torus(_))
         | (G::Torus(_), G::Torus(_))
         | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {

@@ -99,6 +99,12 @@ pub(crate) enum Kernel {
         cylinder: Cylinder,
         other: pairs::cylinder_solid::Other,
     },
+    /// Cylinder or frustum `a` against a frustum `b`, sliced across `a`'s axis and
+    /// integrated in polar coordinates about it.
+    RevolvedPair {
+        a: pairs::sphere_solid::Solid,
+        b: pairs::sphere_solid::Solid,
+    },
     /// Frustum or torus `a` against an unbounded plane `b`.
     RevolvedPlane {
         solid: pairs::sphere_solid::Solid,
@@ -349,6 +355,9 @@ impl Kernel {
                 ref cylinder,
                 ref other,
             } => pairs::cylinder_solid::contact(cylinder, pose_a, other, pose_b, work),
+            Self::RevolvedPair { ref a, ref b } => {
+                pairs::revolved_pair::contact(a, pose_a, b, pose_b, work)
+            }
             Self::RevolvedPlane { ref solid, side } => {
                 pairs::revolved_plane::contact(solid, pose_a, pose_b, side, work)
             }

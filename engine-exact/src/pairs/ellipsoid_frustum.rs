@@ -16,7 +16,7 @@
 //! (golden section) is non-negative when the solids are apart or only touch, and otherwise the
 //! ends are the zeros of `f` on either side of it, bisected to round-off (or the range's ends
 //! where `f` is already negative there). Where the sections become tangent inside the range
-//! the overlap has a kink: [`shape_events`] finds it by the change of the crossings' count.
+//! the overlap has a kink: [`super::ellipsoid_sliced::shape_events`] finds it by the change of the crossings' count.
 //!
 //! ## The integrals
 //! Volume, centroid and the area vector of the ellipsoid's surface inside the frustum as in

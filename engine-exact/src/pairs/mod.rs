@@ -29,6 +29,7 @@ pub(crate) mod ellipsoid_torus;
 pub(crate) mod mesh_box;
 pub mod mesh_plane;
 pub(crate) mod mesh_revolved;
+pub(crate) mod revolved_pair;
 pub mod revolved_plane;
 pub mod section;
 pub mod slice_events;

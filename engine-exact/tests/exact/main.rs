@@ -26,6 +26,9 @@
 //!   box, regions, holes in the caps, containment, touching, invariants;
 //! - [`mesh_revolved`]: cylinder–mesh and frustum–mesh: the slicings where the mesh is a box,
 //!   regions, a hole in the section, containment, touching, invariants;
+//! - [`revolved_pairs`]: frustum–frustum and cylinder–frustum: frusta of equal radii against
+//!   the cylinder pair, coaxial stacks' closed form, touching, containment, identical solids,
+//!   perpendicular and near-parallel axes at 1e-6 and 1e6;
 //! - [`voxel_oracle`]: grid-cell meshes and their closed-form contact with aligned boxes;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
@@ -50,6 +53,7 @@ mod oracles;
 mod properties;
 mod regressions;
 mod revolved_oracles;
+mod revolved_pairs;
 mod sliced_oracles;
 mod spherical_reference;
 mod torus_oracles;

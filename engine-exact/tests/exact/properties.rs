@@ -497,6 +497,7 @@ fn tolerance(name: &str) -> f64 {
         || name == "ellipsoid–cylinder"
         || name == "ellipsoid–frustum"
         || name == "ellipsoid–torus"
+        || name == "frustum–frustum/cylinder"
         || name.starts_with("sliced ")
     {
         1e-9
@@ -513,7 +514,8 @@ fn round_off_sliver(name: &str, c: &Contact, area_scale: f64) -> bool {
     tolerance(name) > 1e-12 && c.area < 1e-10 * area_scale
 }
 
-const MAKERS: [(&str, Maker); 20] = [
+const MAKERS: [(&str, Maker); 21] = [
+    ("frustum–frustum/cylinder", crate::revolved_pairs::scene),
     ("cylinder–cylinder", cylinder_pair),
     ("cylinder–box", cylinder_box),
     ("cylinder–bounded plane", cylinder_bounded_plane),

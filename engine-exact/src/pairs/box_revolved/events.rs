@@ -146,7 +146,7 @@ pub(crate) fn torus_piercing(big: f64, small: f64, start: &Vector3, d: &Vector3)
 }
 
 impl Setup {
-    /// The quadrature's cuts inside `[lo, hi]` (see [`events`]), sorted, near-duplicates
+    /// The quadrature's cuts inside `[lo, hi]` (see this module's docs), sorted, near-duplicates
     /// dropped; how many.
     pub(super) fn cuts(&self, lo: f64, hi: f64) -> ([f64; MAX_CUTS], usize) {
         let mut cuts = [0.0; MAX_CUTS];

@@ -18,6 +18,7 @@ pub(crate) mod mesh_box;
 mod planar;
 pub(crate) mod planar_overlap;
 mod revolved;
+mod revolved_pair;
 mod sliced;
 mod solids;
 
@@ -111,6 +112,7 @@ fn characterization_table() {
     rows.extend(bounded_line::rows(&mut rng));
     rows.extend(ellipsoid_revolved::rows(&mut rng));
     rows.extend(ellipsoid_torus::rows(&mut rng));
+    rows.extend(revolved_pair::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );

@@ -1,0 +1,474 @@
+//! Frustum–frustum and cylinder–frustum (a cylinder is the frustum of equal radii; cones
+//! included): the intersection's moments by slicing across `a`'s axis and integrating each
+//! slice in polar coordinates about that axis, the contact from them by
+//! [`super::volume_contact`].
+//!
+//! ## The method
+//! In `a`'s frame (axis `z`, bottom at `z = 0`, lengths divided by a power of two near the
+//! pair's size) the plane `z = t` cuts `a` in the disc `ρ ≤ R(t) = r₀ + k t`. In polar
+//! coordinates `(ρ, φ)` about the axis point, the ray along `u(φ)` meets `b` in one interval in
+//! closed form ([`mod@slice`]: a quadratic for `b`'s lateral surface, two planes for its caps),
+//! so the section's area `∫½(β² − α²) dφ` and first moments `∫⅓(β³ − α³) u dφ` (`[α, β]` the
+//! interval clipped to `[0, R]`) are one-dimensional integrals over `φ` of closed forms. They
+//! are cut at [`quadric`]'s closed-form events (rays tangent to `b`'s section, rays through
+//! its corners, `a`'s circle crossing `b`'s surface), where the ends have square-root ends or
+//! kinks, so the sine-mapped adaptive rule ([`crate::quadrature::Adaptive`], 1e-13 relative)
+//! converges on smooth pieces. The outer integral over `t` (the same rule, 1e-11 relative:
+//! looser than the slices, whose acceptance noise it must not chase) runs between `a`'s ends,
+//! `b`'s extent along `z` (its rims' extreme heights), the heights where `b`'s rims pierce
+//! `a`'s lateral surface (a quartic each), where `a`'s radius equals `b`'s at the axis (a
+//! coaxial `b`'s surface meeting `a`'s circle), the heights where the count of `a`'s circle's
+//! crossings with `b`'s surface changes (the circle becoming tangent to it: the critical
+//! heights of the intersection curve, found in each piece between the closed-form cuts by 64
+//! samples and 40 more geometrically towards each end, and bisection, as in the ellipsoid
+//! pairs' `shape_events`: a tangency often follows a rim's piercing within 1e-5), and the intersection's own lowest and highest slice. Cuts closer
+//! than 1e-9 of the extent are merged: such a piece holds nothing, and its slices (within
+//! round-off of a tangency) cost the inner rule its whole depth.
+//!
+//! Rays along `u` never lose precision with the axes' angle: `b`'s section, a huge far
+//! ellipse or a long strip when its axis is nearly perpendicular to `a`'s, is never formed —
+//! only its distance along each ray, by the stable root formula (`c/q` for the small root).
+//!
+//! ## The normal and the areas
+//! The area vector of `a`'s surface inside `b` (outward of `a`), which
+//! [`super::volume_contact`] turns into the normal: `a`'s lateral surface at `(t, φ)` is
+//! inside `b` when `R(t)` lies in `b`'s interval along the ray, and sweeps
+//! `(u − k e_z) R dφ dt` there; `a`'s caps add `∓e_z` times their overlap with `b` (the polar
+//! section at `t = 0, L`, with `b`'s slab closed by 1e-12 so that a cap flush with `b`'s cap
+//! counts). The unsigned area of `a`'s surface inside `b`: its lateral `√(1 + k²) R` per unit
+//! of `φ` and `t` and its caps' overlaps. That of `b`'s surface inside `a` is not integrated
+//! alongside (per ray it is `ρ/|n·u|`, singular where rays graze `b`): it serves only to judge
+//! a vanishing `S_a` and to size a containment's area, so it is `b`'s whole surface (closed
+//! form) when none of `a`'s is inside `b` (`b` inside `a`), `|S_a|` (the projected area, a
+//! lower bound) while that is not vanishing, and otherwise the same slicing across `b`'s
+//! axis (`a`'s surface inside `b` with the roles exchanged). A surface within 1e-6 of its
+//! whole is taken as the whole in closed form, so either order gives the same area.
+//!
+//! ## Degenerate branches
+//! - **Coaxial** (or parallel) axes: `b`'s sections are discs; no tangent rays from an axis
+//!   inside, and a circle on `b`'s surface has no crossings (its coefficients vanish): `a`'s
+//!   circle counts as inside `b` within 1e-12 of its radius, and the height where the two
+//!   radii meet is a cut. A cap flush with `a`'s counts as `a`'s.
+//! - **Perpendicular** axes: rays along `b`'s axis make the quadratic's leading coefficient
+//!   vanish (the lateral roots go to infinity, the caps bound the interval); just above `b`'s
+//!   lowest line its section is a strip of round-off width, whose slices the merged cuts skip.
+//! - **Grazing**: the intersection's extent in `t` is found by bisection on "the slice is not
+//!   empty" (exact between the `φ` cuts) from a slice inside: a cut piece's midpoint, one of
+//!   33 samples, or for a sliver the maximiser of the concave margin
+//!   `min(−h_a, −h_b)` (`h` the distance-like convex functions of [`quadric::Quadric::inside`])
+//!   by nested golden sections; a positive margin nowhere is no contact. Touching is no
+//!   contact.
+//! - **One inside the other**, **symmetric crossings** (a rod through both caps of a disc)
+//!   and **identical solids**: `|S_a|` vanishes against the intersection's surface; as in the
+//!   cylinder pairs, with no surface of `b` inside `a` (`a` inside `b`) the normal is `b`'s
+//!   outward normal at its face nearest the centroid, otherwise (`b` inside `a`, a crossing,
+//!   identical solids) the opposite of `a`'s nearest face normal; area a quarter of the
+//!   intersection's surface.
+
+pub(crate) mod quadric;
+pub(crate) mod slice;
+#[cfg(test)]
+mod tests;
+
+use super::clipped::unit_for;
+use super::ellipsoid_sliced::{COMPONENTS, shape_events};
+use super::solid_distance::{Solid, signed_distance};
+use super::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::kernel::PairContact;
+use crate::quadrature::Adaptive;
+use crate::quadrature::MAX_PIECES;
+use crate::ray_exit::surface_point_along_w;
+use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use quadric::{Quadric, circle_crossings};
+use slice::{Pair, rim_axes};
+
+/// The outer rule over `t`: looser than the slices' own 1e-13, whose round-off and
+/// acceptance noise (a slice's subdivision changes with `t`) it must not chase; at most 16
+/// halvings per piece.
+const OUTER: Adaptive = Adaptive {
+    tolerance: 1e-11,
+    max_depth: 14,
+};
+
+/// The absolute error each outer piece may keep: 1e-12 of the whole volume (for the volume
+/// and moments) and of the whole surface (for the area vector), 1e-9 of the surface for the
+/// unsigned areas (only compared against the area vector, and their slices are resolved to
+/// 1e-10: a floor below that would chase the slices' own error).
+fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
+    let v = (e[0].abs() * 1e-12).max(1e-15);
+    let surface = e[7].abs() + e[8].abs();
+    let s = (surface * 1e-12).max(1e-15);
+    let u = (surface * 1e-9).max(1e-15);
+    [v, v, v, v, s, s, s, u, u]
+}
+
+/// Cuts in `t` closer than this fraction of the intersection's extent are merged.
+const MERGE: f64 = 1e-9;
+
+/// A surface inside the other solid within this fraction of its whole is all of it (the
+/// unsigned areas converge to 1e-9).
+const WHOLE: f64 = 1e-6;
+
+/// Slices sampled for the intersection when no cut piece's midpoint meets it.
+const SAMPLES: usize = 33;
+
+/// Golden-section steps per level of the sliver search (each shrinks by 0.618).
+const GOLDEN_STEPS: usize = 48;
+
+/// `(bottom radius, top radius, length)` of a cylinder or frustum; `None` otherwise.
+pub(crate) fn dimensions(solid: &Solid) -> Option<(f64, f64, f64)> {
+    match solid {
+        Solid::Cylinder(c) => Some((c.radius(), c.radius(), c.length())),
+        Solid::Frustum(f) => Some((f.bottom_radius(), f.top_radius(), f.length())),
+        Solid::Box(_) | Solid::Torus(_) => None,
+    }
+}
+
+/// The quadric of a solid with `dims`, bottom centre `origin` and unit `axis`, lengths over
+/// `unit`.
+fn quadric_of(
+    (r0, r1, len): (f64, f64, f64),
+    origin: Vector3,
+    axis: Vector3,
+    unit: f64,
+) -> Quadric {
+    Quadric {
+        origin,
+        axis,
+        r0: r0 / unit,
+        slope: (r1 - r0) / len,
+        len: len / unit,
+    }
+}
+
+/// The whole surface of a frustum: its caps and its lateral surface `π(r₀ + r₁)·slant`.
+fn surface_of(q: &Quadric) -> f64 {
+    let r1 = q.r0 + q.slope * q.len;
+    std::f64::consts::PI * (q.r0 * q.r0 + r1 * r1 + (q.r0 + r1) * q.len * q.slope.hypot(1.0))
+}
+
+/// The maximum of `f` on `[lo, hi]` by golden sections (unimodal `f`): `(x, f(x))`.
+fn golden(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = (lo, hi);
+    let mut x1 = hi - ratio * (hi - lo);
+    let mut x2 = lo + ratio * (hi - lo);
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    for _ in 0..GOLDEN_STEPS {
+        if f1 < f2 {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + ratio * (hi - lo);
+            f2 = f(x2);
+        } else {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - ratio * (hi - lo);
+            f1 = f(x1);
+        }
+    }
+    if f1 >= f2 { (x1, f1) } else { (x2, f2) }
+}
+
+impl Pair {
+    /// `b`'s extent along `z`: its rims' extreme heights.
+    fn b_range(&self) -> (f64, f64) {
+        let q = &self.b;
+        let spread = q.axis.x.hypot(q.axis.y);
+        let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+        for (h, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
+            let z = q.origin.z + q.axis.z * h;
+            range = (range.0.min(z - r * spread), range.1.max(z + r * spread));
+        }
+        range
+    }
+
+    /// The cuts in `t` inside `(lo, hi)` besides the ends: `b`'s rims' extreme heights and
+    /// their piercings of `a`'s lateral surface.
+    fn t_cuts(&self, lo: f64, hi: f64, cuts: &mut [f64; MAX_PIECES + 1], n: &mut usize) {
+        let q = &self.b;
+        let spread = q.axis.x.hypot(q.axis.y);
+        let (e1, e2) = rim_axes(&q.axis);
+        let mut push = |x: f64, cuts: &mut [f64; MAX_PIECES + 1]| {
+            if x > lo && x < hi && *n < cuts.len() {
+                cuts[*n] = x;
+                *n += 1;
+            }
+        };
+        // Where a's radius equals b's radius at the axis point's height along b: for a
+        // coaxial b, where a's circle passes onto b's surface (no crossings mark it: the
+        // circle lies on the surface there, and its inside-b indicator jumps).
+        let rate = self.a.slope - q.slope * q.axis.z;
+        if rate != 0.0 {
+            push(
+                (q.r0 - q.slope * q.axis.dot(&q.origin) - self.a.r0) / rate,
+                cuts,
+            );
+        }
+        for (h, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
+            let centre = q.origin + q.axis * h;
+            push(centre.z - r * spread, cuts);
+            push(centre.z + r * spread, cuts);
+            if r > 0.0 {
+                let (psi, k) = circle_crossings(&self.a, &centre, &e1, &e2, r);
+                for &x in &psi[..k] {
+                    push((centre + r * (x.cos() * e1 + x.sin() * e2)).z, cuts);
+                }
+            }
+        }
+    }
+
+    /// How many times `a`'s circle at `t` crosses `b`'s surface (its lateral surface between
+    /// the caps, and its cap discs): the slices' shape, which changes where the circle becomes
+    /// tangent to the surface (the critical heights of the two surfaces' intersection curve),
+    /// the events the closed forms do not give.
+    fn crossing_count(&self, t: f64) -> usize {
+        let r = self.radius_a(t);
+        if r <= 0.0 {
+            return 0;
+        }
+        let q = &self.b;
+        let p = Vector3::new(0.0, 0.0, t);
+        let at = |psi: f64| p + r * Vector3::new(psi.cos(), psi.sin(), 0.0);
+        let (psi, k) = circle_crossings(q, &p, &Vector3::x(), &Vector3::y(), r);
+        let mut count = psi[..k]
+            .iter()
+            .filter(|&&x| {
+                let z = q.height(&at(x));
+                (0.0..=q.len).contains(&z)
+            })
+            .count();
+        for (h, rim) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
+            let centre = q.origin + q.axis * h;
+            let (psi, k) =
+                quadric::sinusoid_roots(r * q.axis.x, r * q.axis.y, -q.axis.dot(&(p - centre)));
+            count += psi[..k]
+                .iter()
+                .filter(|&&x| q.across(&at(x)).norm() <= rim)
+                .count();
+        }
+        count
+    }
+
+    /// The largest margin `min(−h_a, −h_b)` over the slab `lo ≤ z ≤ hi` and its height, by
+    /// nested golden sections (the margin is concave, so each partial maximum is too).
+    fn deepest(&self, lo: f64, hi: f64) -> (f64, f64) {
+        let reach = self.a.r0.max(self.a.r0 + self.a.slope * self.a.len);
+        let margin = |x: f64, y: f64, z: f64| {
+            let p = Vector3::new(x, y, z);
+            -(self.a.inside(&p).max(self.b.inside(&p)))
+        };
+        golden(lo, hi, |z| {
+            golden(-reach, reach, |x| {
+                golden(-reach, reach, |y| margin(x, y, z)).1
+            })
+            .1
+        })
+    }
+
+    /// The intersection's lowest and highest slice inside `[lo, hi]`, or `None` when it has
+    /// none (touching, apart).
+    fn extent(&self, lo: f64, hi: f64, cuts: &[f64]) -> Option<(f64, f64)> {
+        let inside = cuts
+            .windows(2)
+            .map(|w| 0.5 * (w[0] + w[1]))
+            .chain((0..SAMPLES).map(|k| lo + (hi - lo) * (k as f64 + 0.5) / SAMPLES as f64))
+            .find(|&t| self.not_empty(t))
+            .or_else(|| {
+                let (t, depth) = self.deepest(lo, hi);
+                (depth > 0.0 && self.not_empty(t)).then_some(t)
+            })?;
+        let bisect = |mut inside: f64, mut outside: f64| {
+            if self.not_empty(outside) {
+                return outside;
+            }
+            for _ in 0..200 {
+                let mid = 0.5 * (inside + outside);
+                if mid == inside || mid == outside {
+                    break;
+                }
+                if self.not_empty(mid) {
+                    inside = mid;
+                } else {
+                    outside = mid;
+                }
+            }
+            inside
+        };
+        Some((bisect(inside, lo), bisect(inside, hi)))
+    }
+
+    /// The integrand in `t`: `[area, t·area, ∫x, ∫y, S_a (3), a's surface inside b, b's inside
+    /// a]` per unit of `t`.
+    fn integrand(&self, t: f64, work: &mut WorkCounters) -> [f64; COMPONENTS] {
+        let r = self.radius_a(t);
+        let s = self.slice(t, false, work);
+        let k = self.a.slope;
+        [
+            s[0],
+            t * s[0],
+            s[1],
+            s[2],
+            r * s[4],
+            r * s[5],
+            -k * r * s[3],
+            k.hypot(1.0) * r * s[3],
+            0.0,
+        ]
+    }
+}
+
+/// The integrals `[V, ∫t, ∫x, ∫y, S_a (3), a's surface inside b, 0]` of `solid_a` at `pose_a`
+/// against `solid_b` at `pose_b` in working units (`a`'s frame over the returned unit), or
+/// `None` when they are apart or only touch.
+fn sums(
+    solid_a: &Solid,
+    pose_a: &Isometry3,
+    solid_b: &Solid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+) -> Option<(Pair, [f64; COMPONENTS], f64)> {
+    let (dims_a, dims_b) = (dimensions(solid_a)?, dimensions(solid_b)?);
+    let size = |(r0, r1, len): (f64, f64, f64)| r0.max(r1).max(len);
+    let unit = unit_for(size(dims_a).max(size(dims_b)));
+    let pose_ab = pose_a.inv_mul(pose_b);
+    let pair = Pair {
+        a: quadric_of(dims_a, Vector3::zeros(), Vector3::z(), unit),
+        b: quadric_of(
+            dims_b,
+            pose_ab.translation.vector / unit,
+            pose_ab.rotation * Vector3::z(),
+            unit,
+        ),
+    };
+    // Bounding spheres about the axes' midpoints: apart.
+    work.bounding_volume_tests += 1;
+    let ball = |q: &Quadric| {
+        let r1 = q.r0 + q.slope * q.len;
+        (
+            q.origin + q.axis * (0.5 * q.len),
+            q.r0.max(r1).hypot(0.5 * q.len),
+        )
+    };
+    let ((ca, ra), (cb, rb)) = (ball(&pair.a), ball(&pair.b));
+    if (ca - cb).norm() >= ra + rb {
+        return None;
+    }
+    let (b_lo, b_hi) = pair.b_range();
+    let (lo, hi) = (b_lo.max(0.0), b_hi.min(pair.a.len));
+    if lo.is_nan() || hi.is_nan() || lo >= hi {
+        return None;
+    }
+    let mut cuts = [0.0; MAX_PIECES + 1];
+    cuts[0] = lo;
+    cuts[1] = hi;
+    let mut n = 2;
+    pair.t_cuts(lo, hi, &mut cuts, &mut n);
+    cuts[..n].sort_by(f64::total_cmp);
+    // The crossing count between each pair of closed-form cuts, sampled geometrically
+    // towards both (a tangency often follows a rim's piercing within 1e-5 of the range).
+    let mut closed = [0.0; MAX_PIECES + 1];
+    let known = n;
+    closed[..known].copy_from_slice(&cuts[..known]);
+    for w in closed[..known].windows(2) {
+        shape_events(w[0], w[1], |t| pair.crossing_count(t), &mut cuts, &mut n);
+    }
+    cuts[..n].sort_by(f64::total_cmp);
+    let (t_min, t_max) = pair.extent(lo, hi, &cuts[..n])?;
+    if t_min >= t_max {
+        return None;
+    }
+    // The cuts inside the extent, with its ends.
+    let mut inner = [0.0; MAX_PIECES + 1];
+    inner[0] = t_min;
+    let mut m = 1;
+    // Cuts closer than 1e-9 of the extent are one: a piece that thin holds 1e-9 of the
+    // slices' range, and its slices (within round-off of a tangency, b's section a strip
+    // 1e-8 wide seen along its length) cost the inner rule its whole depth for nothing.
+    let merge = MERGE * (t_max - t_min);
+    for &c in &cuts[..n] {
+        if c > t_min + merge && c < t_max - merge && c > inner[m - 1] + merge {
+            inner[m] = c;
+            m += 1;
+        }
+    }
+    inner[m] = t_max;
+    m += 1;
+    // The slices' own counts, apart from the outer rule's (both borrow a counter).
+    let mut slices = WorkCounters::default();
+    let mut r = OUTER.integrate_pieces(
+        &mut inner[..m],
+        &mut |t| pair.integrand(t, &mut slices),
+        &outer_floor,
+        work,
+    );
+    *work += slices;
+    // a's caps inside b (zero when b does not reach them).
+    for (cap, sign) in [(0.0, -1.0), (pair.a.len, 1.0)] {
+        if cap >= lo && cap <= hi {
+            let area = pair.slice(cap, true, work)[0];
+            r[6] += sign * area;
+            r[7] += area;
+        }
+    }
+    Some((pair, r, unit))
+}
+
+/// The contact of the cylinder or frustum `solid_a` at `pose_a` with the cylinder or frustum
+/// `solid_b` at `pose_b` (normal from `b` into `a`), or `None` without overlap.
+pub(crate) fn contact(
+    solid_a: &Solid,
+    pose_a: &Isometry3,
+    solid_b: &Solid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let (pair, mut r, unit) = sums(solid_a, pose_a, solid_b, pose_b, work)?;
+    let volume = r[0];
+    if volume.is_nan() || volume <= 0.0 {
+        return None;
+    }
+    let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
+    // b's surface inside a (see the module docs): all of it when none of a's is inside b,
+    // else |S_a| stands for it unless S_a vanishes, when it is integrated across b's axis.
+    let s_a = Vector3::new(r[4], r[5], r[6]);
+    let (whole_a, whole_b) = (surface_of(&pair.a), surface_of(&pair.b));
+    let none_of_a = r[7] <= ENCLOSED * whole_b;
+    r[8] = if none_of_a { whole_b } else { s_a.norm() };
+    if !none_of_a && s_a.norm() <= ENCLOSED * (r[7] + r[8]) {
+        r[8] = sums(solid_b, pose_b, solid_a, pose_a, work).map_or(0.0, |(_, s, _)| s[7]);
+        // A whole surface inside the other solid, in closed form: either order then gives
+        // the same area.
+        if r[7] >= (1.0 - WHOLE) * whole_a {
+            r[7] = whole_a;
+        }
+        if r[8] >= (1.0 - WHOLE) * whole_b {
+            r[8] = whole_b;
+        }
+    }
+    let a_inside_b = r[8] <= ENCLOSED * (r[7] + r[8]);
+    let moments = VolumeMoments {
+        volume: volume * unit * unit * unit,
+        centroid,
+        area_vector_a: pose_a.rotation * s_a * (unit * unit),
+        surface_area: (r[7] + r[8]) * unit * unit,
+        length: unit,
+    };
+    let fallback = || {
+        if a_inside_b {
+            let p = pose_b.inverse_transform_point(&centroid).coords;
+            pose_b.rotation * signed_distance(solid_b, &p).2
+        } else {
+            let p = pose_a.inverse_transform_point(&centroid).coords;
+            -(pose_a.rotation * signed_distance(solid_a, &p).2)
+        }
+    };
+    volume_contact::contact(
+        &moments,
+        |g, d| surface_point_along_w(solid_a, pose_a, g, d),
+        |g, d| surface_point_along_w(solid_b, pose_b, g, d),
+        fallback,
+    )
+}
