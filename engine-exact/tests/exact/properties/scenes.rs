@@ -1,41 +1,14 @@
-//! Invariants every built pair must keep: exchanging I and J gives the swapped contact; a
-//! rigid motion of both bodies moves the contact with them; scaling the scene by 1e-6 and
-//! 1e6 scales depth and points by the same factor.
+//! The random scene of each pair family the invariants are checked on.
 
-use crate::common::{Rng, assert_close, boxes_mesh, instance, query};
+use super::{Scene, scaled_pose};
+use crate::common::{Rng, boxes_mesh, instance};
 use contact_core::geometry::{
     Arc, Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
 };
-use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
+use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::Translation3;
 
-/// A random scene of one pair family at `scale`; the same RNG state gives the same scene
-/// at every scale.
-pub(crate) struct Scene {
-    pub(crate) i: GeometryInstance,
-    pub(crate) j: GeometryInstance,
-    pub(crate) pose_i: Isometry3,
-    pub(crate) pose_j: Isometry3,
-    pub(crate) length: f64,
-}
-
-impl Scene {
-    fn area_scale(&self) -> f64 {
-        if self.i.geometry.is_planar() {
-            self.length
-        } else {
-            self.length * self.length
-        }
-    }
-}
-
-pub(crate) type Maker = fn(&mut Rng, f64) -> Scene;
-
-pub(crate) fn scaled_pose(p: &Isometry3, s: f64) -> Isometry3 {
-    Isometry3::from_parts(Translation3::from(p.translation.vector * s), p.rotation)
-}
-
-fn sphere_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn sphere_plane(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.5, 2.0);
     let d = rng.uniform(-0.5, 0.99) * r;
     let plane_pose = rng.pose(3.0);
@@ -49,7 +22,7 @@ fn sphere_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn sphere_sphere(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn sphere_sphere(rng: &mut Rng, s: f64) -> Scene {
     let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
     let d = rng.uniform(0.1, 0.99) * (ra + rb);
     let pose_j = rng.pose(3.0);
@@ -63,7 +36,7 @@ fn sphere_sphere(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn ellipsoid_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn ellipsoid_plane(rng: &mut Rng, s: f64) -> Scene {
     let axes = Vector3::new(
         rng.uniform(0.3, 2.0),
         rng.uniform(0.3, 2.0),
@@ -86,7 +59,7 @@ fn ellipsoid_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
     let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.2, 3.0));
     let plane_pose = rng.pose(3.0);
     // Half the scenes lie exactly on the side (axis parallel to the plane).
@@ -106,7 +79,7 @@ fn cylinder_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn revolved_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn revolved_plane(rng: &mut Rng, s: f64) -> Scene {
     let plane_pose = rng.pose(3.0);
     // A frustum or cone, or a torus; a third lie on a special axis (along the normal, or in
     // the plane's directions).
@@ -146,7 +119,7 @@ fn revolved_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.3, 1.0);
     let (solid, length) = match rng.next_u64() % 5 {
         4 => (
@@ -181,7 +154,7 @@ fn sphere_solid(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
     let feet = [
         (Point3::new(-s, 0.0, 0.0), Vector3::new(0.5, 0.4, 0.8) * s),
         (
@@ -204,7 +177,7 @@ fn mesh_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn circle_curve_or_arc(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn circle_curve_or_arc(rng: &mut Rng, s: f64) -> Scene {
     let j = if rng.uniform(0.0, 1.0) < 0.5 {
         let points: Vec<contact_core::Point2> = (0..7)
             .map(|k| {
@@ -243,7 +216,7 @@ pub(crate) fn random_box(rng: &mut Rng, s: f64) -> (Cuboid, f64) {
     (b, h.norm() * s)
 }
 
-fn box_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn box_plane(rng: &mut Rng, s: f64) -> Scene {
     let (b, length) = random_box(rng, s);
     let plane_pose = rng.pose(3.0);
     let q = rng.rotation();
@@ -264,7 +237,7 @@ fn box_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn box_box(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn box_box(rng: &mut Rng, s: f64) -> Scene {
     let (a, la) = random_box(rng, s);
     let (b, lb) = random_box(rng, s);
     let pose_j = rng.pose(3.0);
@@ -278,7 +251,7 @@ fn box_box(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn cylinder_pair(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn cylinder_pair(rng: &mut Rng, s: f64) -> Scene {
     let (ra, la) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
     let (rb, lb) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
     let pose_j = rng.pose(3.0);
@@ -300,7 +273,7 @@ fn cylinder_pair(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn cylinder_box(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn cylinder_box(rng: &mut Rng, s: f64) -> Scene {
     let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
     let (b, lb) = random_box(rng, s);
     let pose_j = rng.pose(3.0);
@@ -314,7 +287,7 @@ fn cylinder_box(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn cylinder_bounded_plane(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn cylinder_bounded_plane(rng: &mut Rng, s: f64) -> Scene {
     let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 3.0));
     let plane_pose = rng.pose(3.0);
     let pose_i = plane_pose
@@ -332,7 +305,7 @@ fn cylinder_bounded_plane(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn circle_circle(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn circle_circle(rng: &mut Rng, s: f64) -> Scene {
     let (ra, rb) = (rng.uniform(0.3, 2.0), rng.uniform(0.3, 2.0));
     let d = rng.uniform(0.1, 0.99) * (ra + rb);
     let angle = rng.uniform(0.0, std::f64::consts::TAU);
@@ -347,7 +320,7 @@ fn circle_circle(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn circle_line(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn circle_line(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.3, 2.0);
     let pose_j = rng.pose(3.0);
     let pose_i =
@@ -361,7 +334,7 @@ fn circle_line(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn point_circle(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn point_circle(rng: &mut Rng, s: f64) -> Scene {
     let r = rng.uniform(0.3, 2.0);
     let pose_j = rng.pose(3.0);
     let d = rng.uniform(0.05, 0.99) * r;
@@ -377,7 +350,7 @@ fn point_circle(rng: &mut Rng, s: f64) -> Scene {
 
 /// Boundary against boundary: a cubic blob or a full arc (I) crossing another blob, an arc
 /// whose gap faces away, a rectangle's top edge or a (possibly flipped) line (J).
-fn boundary_pair(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn boundary_pair(rng: &mut Rng, s: f64) -> Scene {
     use crate::characterization::planar_overlap::{cubic_blob, planar_pose, rectangle};
     use std::f64::consts::{PI, TAU};
     let i = if rng.uniform(0.0, 1.0) < 0.5 {
@@ -446,7 +419,7 @@ pub(crate) fn ellipsoid_near(rng: &mut Rng, pose_j: &Isometry3, reach: f64) -> I
     pose_j * Isometry3::from_parts(Translation3::from(offset), rng.rotation())
 }
 
-fn ellipsoid_ellipsoid(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn ellipsoid_ellipsoid(rng: &mut Rng, s: f64) -> Scene {
     let (a, b) = (random_axes(rng), random_axes(rng));
     let pose_j = rng.pose(3.0);
     let pose_i = ellipsoid_near(rng, &pose_j, 0.9 * (a.max() + b.max()));
@@ -459,7 +432,7 @@ fn ellipsoid_ellipsoid(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn ellipsoid_box(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn ellipsoid_box(rng: &mut Rng, s: f64) -> Scene {
     let a = random_axes(rng);
     let (b, length) = random_box(rng, s);
     let pose_j = rng.pose(3.0);
@@ -475,7 +448,7 @@ fn ellipsoid_box(rng: &mut Rng, s: f64) -> Scene {
     }
 }
 
-fn ellipsoid_cylinder(rng: &mut Rng, s: f64) -> Scene {
+pub(super) fn ellipsoid_cylinder(rng: &mut Rng, s: f64) -> Scene {
     let a = random_axes(rng);
     let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 2.0));
     let pose_j = rng.pose(3.0);
@@ -487,172 +460,5 @@ fn ellipsoid_cylinder(rng: &mut Rng, s: f64) -> Scene {
         pose_i: scaled_pose(&pose_i, s),
         pose_j: scaled_pose(&pose_j, s),
         length: (a.max() + r + len) * s,
-    }
-}
-
-/// The sliced pairs converge to 1e-9 of their size (quadrature), the others to round-off.
-fn tolerance(name: &str) -> f64 {
-    if name.starts_with("ellipsoid–ellipsoid")
-        || name == "ellipsoid–box"
-        || name == "ellipsoid–cylinder"
-        || name == "ellipsoid–frustum"
-        || name == "ellipsoid–torus"
-        || name == "frustum–frustum/cylinder"
-        || name.starts_with("sliced ")
-    {
-        1e-9
-    } else {
-        1e-12
-    }
-}
-
-/// A sliced pair's contact whose area is below 1e-10 of the size squared is a round-off
-/// sliver: its area vector is round-off, so its normal (and the points along it) is not
-/// determined and may differ between frames. A known limit of the sliced pairs; such
-/// contacts are only checked for being well formed (by `query`).
-fn round_off_sliver(name: &str, c: &Contact, area_scale: f64) -> bool {
-    tolerance(name) > 1e-12 && c.area < 1e-10 * area_scale
-}
-
-const MAKERS: [(&str, Maker); 21] = [
-    ("frustum–frustum/cylinder", crate::revolved_pairs::scene),
-    ("cylinder–cylinder", cylinder_pair),
-    ("cylinder–box", cylinder_box),
-    ("cylinder–bounded plane", cylinder_bounded_plane),
-    ("frustum/torus–plane", revolved_plane),
-    ("arc/curve–arc/curve/line", boundary_pair),
-    ("circle–curve/arc", circle_curve_or_arc),
-    ("mesh–plane", mesh_plane),
-    ("sphere–box/cylinder/frustum/torus/mesh", sphere_solid),
-    ("cylinder–plane", cylinder_plane),
-    ("sphere–plane", sphere_plane),
-    ("sphere–sphere", sphere_sphere),
-    ("ellipsoid–plane", ellipsoid_plane),
-    ("box–plane", box_plane),
-    ("box–box", box_box),
-    ("circle–circle", circle_circle),
-    ("circle–line", circle_line),
-    ("point–circle", point_circle),
-    (
-        "ellipsoid–ellipsoid (sphere–ellipsoid included)",
-        ellipsoid_ellipsoid,
-    ),
-    ("ellipsoid–box", ellipsoid_box),
-    ("ellipsoid–cylinder", ellipsoid_cylinder),
-];
-
-const SAMPLES: usize = 60;
-
-fn sorted(mut v: Vec<Contact>) -> Vec<Contact> {
-    v.sort_by_key(|c| c.geometry_i);
-    v
-}
-
-#[test]
-fn exchanging_i_and_j_gives_the_swapped_contact() {
-    check_swap(&MAKERS, 11);
-}
-
-/// Exchanging I and J gives the swapped contact, for each maker (seeded by `seed`).
-pub(crate) fn check_swap(makers: &[(&str, Maker)], seed: u64) {
-    let mut rng = Rng::new(seed);
-    for &(name, make) in makers {
-        let mut seen = 0;
-        for _ in 0..SAMPLES {
-            let sc = make(&mut rng, 1.0);
-            let forward = query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j);
-            let backward = query(&sc.j, &sc.i, &sc.pose_j, &sc.pose_i);
-            assert_eq!(forward.len(), backward.len(), "{name}");
-            for (f, b) in forward.iter().zip(&backward) {
-                assert_close(
-                    &b.swapped(),
-                    f,
-                    sc.length,
-                    sc.area_scale(),
-                    tolerance(name),
-                    name,
-                );
-                seen += 1;
-            }
-        }
-        assert!(
-            seen > SAMPLES / 4,
-            "{name}: only {seen} contacts in {SAMPLES} scenes"
-        );
-    }
-}
-
-#[test]
-fn a_rigid_motion_of_both_bodies_moves_the_contact() {
-    check_motion(&MAKERS, 12);
-}
-
-/// A rigid motion of both bodies moves the contact with them, for each maker.
-pub(crate) fn check_motion(makers: &[(&str, Maker)], seed: u64) {
-    let mut rng = Rng::new(seed);
-    for &(name, make) in makers {
-        for _ in 0..SAMPLES {
-            let sc = make(&mut rng, 1.0);
-            let motion = rng.pose(5.0 * sc.length);
-            let before = sorted(query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j));
-            let after = sorted(query(
-                &sc.i,
-                &sc.j,
-                &(motion * sc.pose_i),
-                &(motion * sc.pose_j),
-            ));
-            assert_eq!(before.len(), after.len(), "{name}");
-            for (b, a) in before.iter().zip(&after) {
-                let moved = Contact {
-                    point_i_w: motion * b.point_i_w,
-                    point_j_w: motion * b.point_j_w,
-                    normal_w: motion.rotation * b.normal_w,
-                    ..*b
-                };
-                if !round_off_sliver(name, b, sc.area_scale()) {
-                    assert_close(a, &moved, sc.length, sc.area_scale(), tolerance(name), name);
-                }
-            }
-        }
-    }
-}
-
-#[test]
-fn scaling_the_scene_scales_depth_and_points() {
-    check_scale(&MAKERS, 13);
-}
-
-/// Scaling the scene by 1e-6 and 1e6 scales depth, points and area, for each maker.
-pub(crate) fn check_scale(makers: &[(&str, Maker)], seed: u64) {
-    let mut rng = Rng::new(seed);
-    for &(name, make) in makers {
-        for _ in 0..SAMPLES {
-            let state = rng.clone();
-            let unit = make(&mut rng, 1.0);
-            let reference = query(&unit.i, &unit.j, &unit.pose_i, &unit.pose_j);
-            for s in [1e-6, 1e6] {
-                let sc = make(&mut state.clone(), s);
-                let got = query(&sc.i, &sc.j, &sc.pose_i, &sc.pose_j);
-                assert_eq!(
-                    got.len(),
-                    reference.len(),
-                    "{name} at scale {s:e}: {reference:?} vs {got:?}"
-                );
-                for (g, r) in got.iter().zip(&reference) {
-                    // A 2-D contact's "area" is a length.
-                    let area_power = if sc.i.geometry.is_planar() { 1 } else { 2 };
-                    let expected = Contact {
-                        point_i_w: Point3::from(r.point_i_w.coords * s),
-                        point_j_w: Point3::from(r.point_j_w.coords * s),
-                        penetration: r.penetration * s,
-                        area: r.area * s.powi(area_power),
-                        ..*r
-                    };
-                    if !round_off_sliver(name, g, sc.area_scale()) {
-                        assert_close(g, &expected, sc.length, sc.area_scale(), 1e-9, name);
-                    }
-                }
-            }
-        }
     }
 }
