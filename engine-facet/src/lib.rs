@@ -78,6 +78,7 @@
 )]
 
 pub mod contact_region;
+mod crossings;
 mod engine;
 pub mod facet_mesh;
 mod inside_flood;

@@ -1,0 +1,104 @@
+//! Step 1 of [`crate::contact_region`]: the crossing segments of two meshes. The trees are
+//! descended together ([`crate::obb_tree::descend_leaf_pairs`]); each pair of overlapping leaves
+//! screens A's triangles' planes against B's leaf triangles at once, and the pairs left take the
+//! exact triangle test ([`crate::triangle_pair::intersect_on_planes`]) with one on-plane band
+//! for the whole query.
+
+use crate::contact_region::RelativePose;
+use crate::facet_mesh::FacetMesh;
+use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
+use crate::scratch::{Hit, Scratch};
+use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect_on_planes};
+use contact_core::{Vector3, WorkCounters};
+
+/// Every crossing of a triangle of `a` with one of `b` (at `x` in A's frame), into `s.hits`.
+pub(crate) fn find_crossings(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    x: &RelativePose,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+) {
+    let Scratch {
+        stack,
+        hits,
+        box_cache,
+        ..
+    } = s;
+    hits.clear();
+    let mut tests = 0;
+    // One on-plane band for every pair of the query (see `intersect_on_planes`): every edge of
+    // either mesh is shorter than its box diagonal, doubled for room.
+    let band = PLANE_EPS * 2.0 * a.size.max(b.size);
+    let band_squared = band * band;
+    descend_leaf_pairs(
+        &a.tree,
+        &b.tree,
+        &x.rot,
+        &x.t,
+        stack,
+        box_cache,
+        work,
+        |leaf_a, leaf_b| {
+            // B's triangles of the leaf moved into A's frame once for all of A's, with their
+            // planes.
+            let mut moved = [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES];
+            for (m, &tb) in moved.iter_mut().zip(leaf_b) {
+                *m = moved_triangle(b, tb, x);
+            }
+            for &ta in leaf_a {
+                let p = a.corners(ta);
+                let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
+                // A B triangle strictly on one side of `p`'s plane, beyond the band, is
+                // disjoint: the test's own first step, taken here for the whole leaf at once
+                // and without branches (the outcome is a coin toss near the intersection
+                // curve), so the rest is paid only by the pairs that need it.
+                let band_n_squared = band_squared * n.norm_squared();
+                let mut distances = [[0.0; 3]; LEAF_TRIANGLES];
+                let mut keep = 0u32;
+                for (k, (d, (q, _))) in distances.iter_mut().zip(&moved).enumerate() {
+                    *d = [
+                        n.dot(&(q[0] - p[0])),
+                        n.dot(&(q[1] - p[0])),
+                        n.dot(&(q[2] - p[0])),
+                    ];
+                    let above = (d[0] > 0.0) & (d[1] > 0.0) & (d[2] > 0.0);
+                    let below = (d[0] < 0.0) & (d[1] < 0.0) & (d[2] < 0.0);
+                    let nearest = d[0].abs().min(d[1].abs()).min(d[2].abs());
+                    let apart = (above | below) & (nearest * nearest > band_n_squared);
+                    keep |= u32::from(!apart) << k;
+                }
+                keep &= (1 << leaf_b.len()) - 1;
+                tests += leaf_b.len() as u64;
+                while keep != 0 {
+                    let k = keep.trailing_zeros() as usize;
+                    keep &= keep - 1;
+                    let (q, nq) = moved[k];
+                    let tb = leaf_b[k];
+                    if let (TrianglePair::Segment(s0, s1), ends) =
+                        intersect_on_planes(&p, &q, &n, &nq, distances[k], band)
+                    {
+                        hits.push(Hit {
+                            ta,
+                            tb,
+                            s0,
+                            s1,
+                            plane_a: (a.face_normals[ta as usize], p[0]),
+                            plane_b: (x.rot * b.face_normals[tb as usize], q[0]),
+                            ends,
+                        });
+                    }
+                }
+            }
+        },
+    );
+    work.primitive_tests += tests;
+}
+
+/// B's triangle `tb` moved into A's frame, with its plane's normal `(q₁ − q₀) × (q₂ − q₀)`.
+#[inline]
+fn moved_triangle(b: &FacetMesh, tb: u32, x: &RelativePose) -> ([Vector3; 3], Vector3) {
+    let [q0, q1, q2] = b.corners(tb);
+    let q = [x.apply(&q0), x.apply(&q1), x.apply(&q2)];
+    (q, (q[1] - q[0]).cross(&(q[2] - q[0])))
+}
