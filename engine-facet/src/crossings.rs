@@ -27,9 +27,11 @@ pub(crate) fn find_crossings(
     } = s;
     hits.clear();
     let mut tests = 0;
-    // One on-plane band for every pair of the query (see `intersect_on_planes`): every edge of
-    // either mesh is shorter than its box diagonal, doubled for room.
-    let band = PLANE_EPS * 2.0 * a.size.max(b.size);
+    // One on-plane band for every pair of the query (see `intersect_on_planes`): PLANE_EPS
+    // times the longest edge of either mesh, so never narrower than any pair's own band in
+    // `intersect` and, unlike one relative to the meshes' size, no wider than the triangles
+    // call for when a small body meets a large one.
+    let band = PLANE_EPS * a.longest_edge.max(b.longest_edge);
     let band_squared = band * band;
     descend_leaf_pairs(
         &a.tree,

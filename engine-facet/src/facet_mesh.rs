@@ -41,6 +41,8 @@ pub struct FacetMesh {
     pub area: f64,
     /// Bounding-box diagonal: the mesh's length scale.
     pub size: f64,
+    /// The longest triangle edge: the scale of the triangle test's on-plane band.
+    pub longest_edge: f64,
     /// True when closed and outward oriented (inside tests are meaningful).
     pub closed: bool,
 }
@@ -112,6 +114,18 @@ impl FacetMesh {
             &mut corner_normals,
         );
         let patches = PatchIndex::build(&tree, &vertices, &triangles, &neighbors);
+        let longest_edge = triangles
+            .iter()
+            .flat_map(|t| {
+                let [a, b, c] = t.map(|v| vertices[v as usize]);
+                [
+                    (b - a).norm_squared(),
+                    (c - b).norm_squared(),
+                    (a - c).norm_squared(),
+                ]
+            })
+            .fold(0.0, f64::max)
+            .sqrt();
         Self {
             vertices,
             triangles,
@@ -124,6 +138,7 @@ impl FacetMesh {
             centroid,
             area,
             size: (hi - lo).norm(),
+            longest_edge,
             closed,
         }
     }

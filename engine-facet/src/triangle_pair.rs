@@ -5,7 +5,7 @@
 //! distance within a band of zero counts as *on* the plane, so vertices on a plane, shared
 //! edges and touching vertices all take the on-plane branch consistently (the same band for
 //! both triangles): `PLANE_EPS · |edge|max` of the pair in [`intersect`], and one band for a
-//! whole query, relative to the meshes' size, when the contact search calls
+//! whole query, relative to the longest edge of either mesh, when the contact search calls
 //! [`intersect_on_planes`] (a vertex near a plane is then classified alike in every pair it
 //! takes part in). Degenerate outcomes:
 //! - both triangles in one plane: [`TrianglePair::Coplanar`] when their 2-D projections overlap
