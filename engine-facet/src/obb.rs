@@ -100,7 +100,8 @@ pub fn boxes_overlap(a: &Vector3, b: &Vector3, r: &Matrix3, t: &Vector3) -> bool
 const ABS_EPS: f64 = 1e-12;
 
 /// The last 12 axes of [`boxes_overlap`] (B's faces, then the edge–edge axes), given `|r| + ε`
-/// as `ar`: true when none of them separates the boxes.
+/// as `ar`: true when none of them separates the boxes. Each group is judged with one branch
+/// rather than one per axis (near the intersection curve an axis' outcome is a coin toss).
 #[inline]
 fn overlap_on_b_and_edge_axes(
     a: &Vector3,
@@ -110,12 +111,14 @@ fn overlap_on_b_and_edge_axes(
     t: &Vector3,
 ) -> bool {
     // B's face axes.
+    let mut apart = false;
     for j in 0..3 {
         let ra = a.x * ar[0][j] + a.y * ar[1][j] + a.z * ar[2][j];
         let tj = t.x * r[(0, j)] + t.y * r[(1, j)] + t.z * r[(2, j)];
-        if tj.abs() > ra + b[j] {
-            return false;
-        }
+        apart |= tj.abs() > ra + b[j];
+    }
+    if apart {
+        return false;
     }
     // Edge–edge axes A_i × B_j.
     for i in 0..3 {
@@ -125,12 +128,10 @@ fn overlap_on_b_and_edge_axes(
             let ra = a[i1] * ar[i2][j] + a[i2] * ar[i1][j];
             let rb = b[j1] * ar[i][j2] + b[j2] * ar[i][j1];
             let tl = (t[i2] * r[(i1, j)] - t[i1] * r[(i2, j)]).abs();
-            if tl > ra + rb {
-                return false;
-            }
+            apart |= tl > ra + rb;
         }
     }
-    true
+    !apart
 }
 
 /// The same test as [`boxes_overlap`] from the boxes' frames directly: box A's axes (columns)
@@ -148,16 +149,16 @@ pub fn boxes_overlap_in_frame(
     b_half: &Vector3,
 ) -> bool {
     let d = b_center - a_center;
-    let mut r = [[0.0; 3]; 3];
+    let mut r = Matrix3::zeros();
     let mut ar = [[0.0; 3]; 3];
-    let mut t = [0.0; 3];
+    let mut t = Vector3::zeros();
     let mut apart = false;
     for i in 0..3 {
         let ai = a_axes.column(i);
         t[i] = ai.dot(&d);
         for j in 0..3 {
-            r[i][j] = ai.dot(&b_axes.column(j));
-            ar[i][j] = r[i][j].abs() + ABS_EPS;
+            r[(i, j)] = ai.dot(&b_axes.column(j));
+            ar[i][j] = r[(i, j)].abs() + ABS_EPS;
         }
         let rb = b_half[0] * ar[i][0] + b_half[1] * ar[i][1] + b_half[2] * ar[i][2];
         apart |= t[i].abs() > a_half[i] + rb;
@@ -165,25 +166,7 @@ pub fn boxes_overlap_in_frame(
     if apart {
         return false;
     }
-    for j in 0..3 {
-        let ra = a_half[0] * ar[0][j] + a_half[1] * ar[1][j] + a_half[2] * ar[2][j];
-        let tj = t[0] * r[0][j] + t[1] * r[1][j] + t[2] * r[2][j];
-        apart |= tj.abs() > ra + b_half[j];
-    }
-    if apart {
-        return false;
-    }
-    for i in 0..3 {
-        let (i1, i2) = ((i + 1) % 3, (i + 2) % 3);
-        for j in 0..3 {
-            let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
-            let ra = a_half[i1] * ar[i2][j] + a_half[i2] * ar[i1][j];
-            let rb = b_half[j1] * ar[i][j2] + b_half[j2] * ar[i][j1];
-            let tl = (t[i2] * r[i1][j] - t[i1] * r[i2][j]).abs();
-            apart |= tl > ra + rb;
-        }
-    }
-    !apart
+    overlap_on_b_and_edge_axes(a_half, b_half, &r, &ar, &t)
 }
 
 #[cfg(test)]

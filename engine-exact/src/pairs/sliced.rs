@@ -479,12 +479,23 @@ fn bisect(mut outside: f64, mut inside: f64, inside_at: impl Fn(f64) -> bool) ->
 }
 
 /// The maximiser of the unimodal `f` on `[lo, hi]`, by golden-section search to round-off.
-pub(crate) fn golden_maximum(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
+pub(crate) fn golden_maximum(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {
+    golden_search(lo, hi, 90, f).0
+}
+
+/// The maximum of the unimodal `f` on `[lo, hi]` by golden sections, at most `steps` of them
+/// (fewer once the bracket is at round-off): `(x, f(x))`.
+pub(crate) fn golden_search(
+    mut lo: f64,
+    mut hi: f64,
+    steps: usize,
+    f: impl Fn(f64) -> f64,
+) -> (f64, f64) {
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
     let mut x1 = hi - ratio * (hi - lo);
     let mut x2 = lo + ratio * (hi - lo);
     let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..90 {
+    for _ in 0..steps {
         if f1 < f2 {
             lo = x1;
             x1 = x2;
@@ -502,5 +513,5 @@ pub(crate) fn golden_maximum(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -
             break;
         }
     }
-    if f1 >= f2 { x1 } else { x2 }
+    if f1 >= f2 { (x1, f1) } else { (x2, f2) }
 }

@@ -72,6 +72,7 @@ mod tests;
 
 use super::clipped::unit_for;
 use super::ellipsoid_sliced::{COMPONENTS, shape_events};
+use super::sliced::golden_search;
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
@@ -145,31 +146,6 @@ fn quadric_of(
 fn surface_of(q: &Quadric) -> f64 {
     let r1 = q.r0 + q.slope * q.len;
     std::f64::consts::PI * (q.r0 * q.r0 + r1 * r1 + (q.r0 + r1) * q.len * q.slope.hypot(1.0))
-}
-
-/// The maximum of `f` on `[lo, hi]` by golden sections (unimodal `f`): `(x, f(x))`.
-fn golden(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut lo, mut hi) = (lo, hi);
-    let mut x1 = hi - ratio * (hi - lo);
-    let mut x2 = lo + ratio * (hi - lo);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..GOLDEN_STEPS {
-        if f1 < f2 {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + ratio * (hi - lo);
-            f2 = f(x2);
-        } else {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - ratio * (hi - lo);
-            f1 = f(x1);
-        }
-    }
-    if f1 >= f2 { (x1, f1) } else { (x2, f2) }
 }
 
 impl Pair {
@@ -260,9 +236,9 @@ impl Pair {
             let p = Vector3::new(x, y, z);
             -(self.a.inside(&p).max(self.b.inside(&p)))
         };
-        golden(lo, hi, |z| {
-            golden(-reach, reach, |x| {
-                golden(-reach, reach, |y| margin(x, y, z)).1
+        golden_search(lo, hi, GOLDEN_STEPS, |z| {
+            golden_search(-reach, reach, GOLDEN_STEPS, |x| {
+                golden_search(-reach, reach, GOLDEN_STEPS, |y| margin(x, y, z)).1
             })
             .1
         })
