@@ -57,6 +57,36 @@ impl Polygon {
 
     /// Keeps the part with `g·p ≤ d`; the new edge (if any) gets `label`.
     pub fn clip(&mut self, g: &Vector2, d: f64, label: u8) {
+        // A vertex within round-off of the line counts as on it, so a line through an edge
+        // (two solids sharing a face) keeps the edge and its label whatever the round-off.
+        // The slack's norms are taken only for a vertex that might be within it: `|x| + |y|`
+        // bounds `|p|`, so a vertex beyond the cheap bound is beyond the slack too.
+        let g_norm = g.norm();
+        let on = |p: &Vector2| {
+            let v = g.dot(p) - d;
+            let bound = 4.0 * f64::EPSILON * (d.abs() + g_norm * (p.x.abs() + p.y.abs()));
+            if v.abs() > bound * (1.0 + 1e-12) {
+                return v;
+            }
+            let slack = 4.0 * f64::EPSILON * (d.abs() + g_norm * p.norm());
+            if v.abs() <= slack { 0.0 } else { v }
+        };
+        // Most lines cut nothing: each vertex's side once, and the polygon kept whole (same
+        // vertices and labels) or emptied without rebuilding it.
+        let mut sides = [0.0; MAX_VERTICES];
+        let (mut any_out, mut all_out) = (false, true);
+        for (side, p) in sides.iter_mut().zip(&self.vertices[..self.count]) {
+            *side = on(p);
+            any_out |= *side > 0.0;
+            all_out &= *side > 0.0;
+        }
+        if !any_out {
+            return;
+        }
+        if all_out {
+            self.count = 0;
+            return;
+        }
         let mut out = [Vector2::zeros(); MAX_VERTICES];
         let mut out_labels = [0u8; MAX_VERTICES];
         let mut n = 0;
@@ -67,17 +97,11 @@ impl Polygon {
                 *n += 1;
             }
         };
-        // A vertex within round-off of the line counts as on it, so a line through an edge
-        // (two solids sharing a face) keeps the edge and its label whatever the round-off.
-        let on = |p: &Vector2| {
-            let v = g.dot(p) - d;
-            let slack = 4.0 * f64::EPSILON * (d.abs() + g.norm() * p.norm());
-            if v.abs() <= slack { 0.0 } else { v }
-        };
         for k in 0..self.count {
-            let (p, q) = (self.vertices[k], self.vertices[(k + 1) % self.count]);
+            let next = if k + 1 == self.count { 0 } else { k + 1 };
+            let (p, q) = (self.vertices[k], self.vertices[next]);
             let edge = self.labels[k];
-            let (dp, dq) = (on(&p), on(&q));
+            let (dp, dq) = (sides[k], sides[next]);
             if dp <= 0.0 {
                 push(p, edge, &mut n);
                 if dq > 0.0 {

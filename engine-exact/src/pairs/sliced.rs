@@ -462,8 +462,15 @@ impl SlicedPair {
 }
 
 /// The boundary between `outside` (where `inside_at` is false) and `inside` (where it is
-/// true), by bisection to round-off; the last `t` found outside.
+/// true), by bisection to round-off; the last `t` found outside. The boundary is often
+/// `outside` itself (the intersection ends where one solid does, a range end the caller
+/// starts from): one look 1e-12 of the bracket inside it settles that without the search,
+/// the sliver it leaves holding no volume to speak of (the sections vanish at the end).
 fn bisect(mut outside: f64, mut inside: f64, inside_at: impl Fn(f64) -> bool) -> f64 {
+    let near = outside + (inside - outside) * 1e-12;
+    if near != outside && inside_at(near) {
+        return outside;
+    }
     for _ in 0..80 {
         let mid = 0.5 * (outside + inside);
         if mid == outside || mid == inside {
