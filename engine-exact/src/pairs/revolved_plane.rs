@@ -21,7 +21,7 @@
 //!   (`(R A − h)² = r²(A² + b²)`, `A = a cos φ`, a quadratic in `A`), where it has a
 //!   square-root-type end. Those angles split `[0, π]`; each piece is mapped by
 //!   `φ = m + w·sin t`, which turns a square-root end into a smooth one, and integrated by
-//!   12-node Gauss–Legendre, halved adaptively until the halves agree with the whole to
+//!   the 21-node Gauss–Kronrod rule, halved adaptively until its error estimate is within
 //!   1e-13 relative, or 1e-14 of the whole volume.
 //!
 //! Axis along the normal (`a = 0`: no cut depends on φ) and axis in the plane (`b = 0`) are
@@ -56,7 +56,7 @@ use crate::ray_exit::surface_point_along;
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
 use std::f64::consts::PI;
 
-/// The adaptive rule: halves agree with the whole to 1e-13 relative; at most 8 halvings per
+/// The adaptive rule: error estimates within 1e-13 relative; at most 8 halvings per
 /// piece (a piece then spans 1/256 of its first width). Deeper halving changed no answer of
 /// the trade suite's poses by more than 1e-12 of the size; it only spent time (up to 40 ms a
 /// query) where a grazing cut (depth ~1e-13 of the size) leaves the integrand at round-off

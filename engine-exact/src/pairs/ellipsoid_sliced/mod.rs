@@ -31,8 +31,8 @@ use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use disc_overlap::DiscOverlap;
 use nalgebra::{Matrix2, Matrix3, Vector2};
 
-/// The quadrature across the slices: 12-node pieces halved until their halves agree to
-/// 1e-13 (Gauss–Legendre then sits at round-off on the smooth stretches; the kinks where
+/// The quadrature across the slices: Gauss–Kronrod pieces halved until their error estimate
+/// is within 1e-13 (the rule then sits at round-off on the smooth stretches; the kinks where
 /// the sections' crossings appear or vanish are cuts, see [`shape_events`]), at most 20
 /// times.
 pub(crate) const ADAPTIVE: Adaptive = Adaptive {
