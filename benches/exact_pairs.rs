@@ -1,17 +1,18 @@
 //! Per-pair query cost of the exact engine, side by side with parry's `contact` query on the
-//! same pair where parry has the shapes (spheres, boxes, cylinders, unbounded planes).
+//! same pair where parry has the shapes (spheres, boxes, cylinders, cones, unbounded planes).
 //!
 //! `cargo bench --bench exact_pairs` (release). Each group `contact/<pair>` has the ids
 //! `exact` (a prepared pair's full `query`: pose composition, dispatch, the kernel, the push
 //! into a reused buffer) and `parry` (`parry3d_f64::query::contact` on pre-built shapes, pose
 //! composition included). Before timing, each group prints both answers' depth against the
 //! closed form, so speed and accuracy are read together. Inputs are fixed configurations.
-//! Parry has no ellipsoid, frustum, torus or bounded plane, so the general-ellipsoid groups
-//! (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`, `ellipsoid_frustum`,
-//! `ellipsoid_torus`, `ellipsoid_torus_two_regions`, `ellipsoid_bounded_plane`)
-//! and the box–frustum, box–torus, frustum/torus–bounded-plane, frustum–frustum and
-//! cylinder–frustum groups time the exact engine alone (the adapter maps no parry `Cone`: a
-//! cone in it would change what the peer engine accepts). A mesh is a parry `TriMesh`; parry is timed only on the pairs it answers.
+//! Parry has no ellipsoid, frustum (other than a cone), torus or bounded plane, so the
+//! general-ellipsoid groups (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`,
+//! `ellipsoid_frustum`, `ellipsoid_torus`, `ellipsoid_torus_two_regions`,
+//! `ellipsoid_bounded_plane`) and the box–frustum, box–torus, frustum/torus–bounded-plane and
+//! frustum–frustum groups time the exact engine alone; `cylinder_frustum` (a cylinder across
+//! a cone) has parry's `Cone` beside it. A mesh is a parry `TriMesh`; parry is timed only on
+//! the pairs it answers.
 
 #![expect(
     missing_docs,

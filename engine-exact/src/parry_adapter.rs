@@ -2,17 +2,18 @@
 //! pairs, for the side-by-side benches and accuracy comparisons. The engine's own answers
 //! never go through here.
 //!
-//! parry has no ellipsoid, so only spheres, boxes, cylinders and unbounded planes are mapped;
-//! a box is a parry `Cuboid` centred on its own centre, a cylinder a parry `Cylinder` (axis y,
-//! centred) moved onto ours (the pose is shifted accordingly), and a plane a `HalfSpace` with
-//! normal +z (−z when flipped).
+//! parry has no ellipsoid and no frustum, so only spheres, boxes, cylinders, cones (a frustum
+//! with one radius zero) and unbounded planes are mapped; a box is a parry `Cuboid` centred on
+//! its own centre, a cylinder a parry `Cylinder` (axis y, centred) and a cone a parry `Cone`
+//! (axis y, centred, apex at +y) moved onto ours (the pose is shifted accordingly), and a
+//! plane a `HalfSpace` with normal +z (−z when flipped).
 
 use contact_core::{
     Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3, PrepareError,
     PreparedPair, PreparedStats, QueryError, Unsupported, Vector3, WorkCounters,
 };
 use parry3d_f64::query;
-use parry3d_f64::shape::{Ball, Cuboid, Cylinder, HalfSpace, Shape, TriMesh};
+use parry3d_f64::shape::{Ball, Cone, Cuboid, Cylinder, HalfSpace, Shape, TriMesh};
 
 /// One geometry as a parry shape, with the offset of the shape's origin in the geometry frame.
 #[derive(Debug)]
@@ -26,6 +27,7 @@ enum PeerKind {
     Ball(Ball),
     Cuboid(Cuboid),
     Cylinder(Cylinder),
+    Cone(Cone),
     HalfSpace(HalfSpace),
     /// Boxed: a mesh is far larger than the primitives.
     TriMesh(Box<TriMesh>),
@@ -77,6 +79,25 @@ impl PeerShape {
                     Vector3::new(std::f64::consts::FRAC_PI_2, 0.0, 0.0),
                 ),
             }),
+            // A cone: parry's has its base at y = −h and its apex at y = +h; ours has the apex
+            // at the end whose radius is zero: shift by half the length and turn y onto +z
+            // (apex on top) or −z (apex at the bottom).
+            Geometry::Frustum(f)
+                if !flip && ((f.top_radius() == 0.0) != (f.bottom_radius() == 0.0)) =>
+            {
+                let (radius, turn) = if f.top_radius() == 0.0 {
+                    (f.bottom_radius(), std::f64::consts::FRAC_PI_2)
+                } else {
+                    (f.top_radius(), -std::f64::consts::FRAC_PI_2)
+                };
+                Some(Self {
+                    shape: PeerKind::Cone(Cone::new(0.5 * f.length(), radius)),
+                    offset: Isometry3::new(
+                        Vector3::new(0.0, 0.0, 0.5 * f.length()),
+                        Vector3::new(turn, 0.0, 0.0),
+                    ),
+                })
+            }
             Geometry::Plane(p) if p.is_unbounded() => {
                 let z = if flip { -Vector3::z() } else { Vector3::z() };
                 Some(Self {
@@ -93,6 +114,7 @@ impl PeerShape {
             PeerKind::Ball(s) => s,
             PeerKind::Cuboid(s) => s,
             PeerKind::Cylinder(s) => s,
+            PeerKind::Cone(s) => s,
             PeerKind::HalfSpace(s) => s,
             PeerKind::TriMesh(s) => s.as_ref(),
         }
@@ -146,7 +168,7 @@ pub fn contact_in_given_order(
 
 /// parry as a peer engine: its `contact` query behind the same [`GeometryEngine`] trait, so the
 /// trade report measures it on the same scenes, poses and error definitions as ours. It
-/// answers what [`PeerShape`] can represent (spheres, boxes, cylinders, unbounded planes) with
+/// answers what [`PeerShape`] can represent (spheres, boxes, cylinders, cones, unbounded planes) with
 /// one contact per geometry pair: parry's deepest-point depth and normal, and no area (0).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ParryEngine;
@@ -267,5 +289,30 @@ mod tests {
         // The support-map-first path of parry 0.25.3 mistakes the pose direction.
         let given = contact_in_given_order(&ball, &above, &ground, &id).unwrap();
         assert!((given.depth - 1.9).abs() < 1e-15, "{given:?}");
+    }
+
+    /// A cone (a frustum with one radius zero) lands where ours is: standing on its base or
+    /// on its apex, sunk 0.1 into the ground, and a ball above the apex, by hand; a frustum
+    /// with two radii has no parry shape.
+    #[test]
+    fn a_cone_maps_onto_ours_apex_up_or_down() {
+        use contact_core::geometry::Frustum;
+        let ground = PeerShape::new(&Geometry::Plane(Plane::unbounded()), false).unwrap();
+        let id = Isometry3::identity();
+        let sunk = Isometry3::translation(0.0, 0.0, -0.1);
+        for (bottom, top) in [(0.8, 0.0), (0.0, 0.8)] {
+            let cone = Geometry::Frustum(Frustum::new(bottom, top, 2.0).unwrap());
+            let peer = PeerShape::new(&cone, false).unwrap();
+            let c = contact(&peer, &sunk, &ground, &id).unwrap();
+            assert!((c.depth - 0.1).abs() < 1e-9, "{bottom} {top}: {c:?}");
+            assert!((c.normal - Vector3::z()).norm() < 1e-9, "{c:?}");
+            // The ball of radius 0.5 centred 0.4 above the top end (z = 2) overlaps that end by
+            // 0.1 whether the apex or the flat base is there.
+            let ball = PeerShape::new(&Geometry::sphere(0.5).unwrap(), false).unwrap();
+            let c = contact(&ball, &Isometry3::translation(0.0, 0.0, 2.4), &peer, &id).unwrap();
+            assert!((c.depth - 0.1).abs() < 1e-9, "{bottom} {top}: {c:?}");
+        }
+        let frustum = Geometry::Frustum(Frustum::new(0.8, 0.4, 2.0).unwrap());
+        assert!(PeerShape::new(&frustum, false).is_none());
     }
 }
