@@ -196,10 +196,11 @@ impl Flood<'_> {
         let leaf = patches.leaf_of[tri as usize];
         match self.free_patch(leaf) {
             Some(patch) => {
-                let (first, end) = patches.range[patch as usize];
-                for t in first..end {
-                    self.slots.insert(t, self.seed | INSIDE_BIT);
-                }
+                // Only the border can be reached again: every other triangle of the patch has
+                // its three neighbours in it, and none of them is ever visited one by one.
+                let slots = &mut *self.slots;
+                let mark = self.seed | INSIDE_BIT;
+                patches.for_each_border(patch, &self.mesh.neighbors, |t| slots.insert(t, mark));
                 let mesh = self.mesh;
                 self.sums
                     .merge(&patches.cones(patch, &self.apex, |t| mesh.corners(t)));

@@ -11,9 +11,10 @@
 //!   inside the other solid or wholly outside it, so one inside triangle places all of it;
 //! - for nodes of at least [`MIN_PATCH`] triangles, the patch's cone sums as polynomials in the
 //!   apex, about the node's box centre ([`PatchSums`]), so a query's cone sums over the patch
-//!   cost one evaluation, not one per triangle; and its rim, the neighbours outside it of its
+//!   cost one evaluation, not one per triangle; its rim, the neighbours outside it of its
 //!   triangles, so a flood goes on from the patch without reading its inside (a patch of `k`
-//!   triangles has some `3√k` of them).
+//!   triangles has some `3√k` of them); and its border, its triangles with a neighbour outside
+//!   it, the only ones a flood can reach from outside, so only they are marked when it is taken.
 //!
 //! ## The cone sums as polynomials in the apex
 //! For a triangle `(a, b, c)` with coordinates about a centre `m` and the apex `o`, `e = o − m`:
@@ -118,6 +119,10 @@ pub struct PatchIndex {
     /// The rims: each stored patch's triangles' neighbours outside it, in triangle and edge
     /// order (a neighbour across two edges appears twice).
     pub rim: Vec<u32>,
+    /// Per precomputed slot `k`, its border is `border[border_start[k]..border_start[k + 1]]`.
+    pub border_start: Vec<u32>,
+    /// The borders: each stored patch's triangles with a neighbour outside it, in order.
+    pub border: Vec<u32>,
 }
 
 impl PatchIndex {
@@ -196,19 +201,26 @@ impl PatchIndex {
         let mut sums = Vec::new();
         let mut rim_start = vec![0];
         let mut rim = Vec::new();
+        let mut border_start = vec![0];
+        let mut border = Vec::new();
         for i in 0..n {
             let (first, end) = range[i];
             if end - first >= MIN_PATCH {
                 sums_slot[i] = sums.len() as u32;
                 sums.push(all_sums[i]);
                 for t in first..end {
+                    let before = rim.len();
                     for &m in &neighbors[t as usize] {
                         if m < first || m >= end {
                             rim.push(m);
                         }
                     }
+                    if rim.len() > before {
+                        border.push(t);
+                    }
                 }
                 rim_start.push(rim.len() as u32);
+                border_start.push(border.len() as u32);
             }
         }
         Self {
@@ -220,6 +232,8 @@ impl PatchIndex {
             sums,
             rim_start,
             rim,
+            border_start,
+            border,
         }
     }
 
@@ -270,6 +284,29 @@ impl PatchIndex {
         }
     }
 
+    /// Calls `f` with each of the node's triangles that has a neighbour outside it, from the
+    /// stored border or, below [`MIN_PATCH`], from the triangles.
+    #[inline]
+    pub fn for_each_border(&self, node: u32, neighbors: &[[u32; 3]], mut f: impl FnMut(u32)) {
+        let slot = self.sums_slot[node as usize];
+        if slot != NONE {
+            let (start, end) = (
+                self.border_start[slot as usize] as usize,
+                self.border_start[slot as usize + 1] as usize,
+            );
+            for &t in &self.border[start..end] {
+                f(t);
+            }
+            return;
+        }
+        let (first, end) = self.range[node as usize];
+        for t in first..end {
+            if neighbors[t as usize].iter().any(|&m| m < first || m >= end) {
+                f(t);
+            }
+        }
+    }
+
     /// The parent of `node`, `None` at the root.
     #[inline]
     pub fn parent_of(&self, node: u32) -> Option<u32> {
@@ -286,6 +323,7 @@ impl PatchIndex {
             + self.sums_slot.capacity() * 4
             + self.sums.capacity() * std::mem::size_of::<PatchSums>()
             + (self.rim_start.capacity() + self.rim.capacity()) * 4
+            + (self.border_start.capacity() + self.border.capacity()) * 4
     }
 }
 
