@@ -125,8 +125,27 @@ const PAIR: &KronrodPair = &GAUSS_KRONROD_10_21;
 /// halved. The accepted value's error is then below this even there.
 const TRUSTED_DIFFERENCE: f64 = 1e-10;
 
+/// Per halving depth `d` of `[−π/2, π/2]`, `(sin, cos)` of each of the pair's node offsets
+/// from an interval's middle, `x_k·π/2^(d+1)` (computed once).
+fn node_offsets() -> &'static [[(f64, f64); 11]] {
+    static TABLE: OnceLock<Vec<[(f64, f64); 11]>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        (0..=DEPTH_LIMIT)
+            .map(|d| {
+                let width = FRAC_PI_2 / 2f64.powi(d as i32);
+                let mut row = [(0.0, 1.0); 11];
+                for (entry, &x) in row.iter_mut().zip(PAIR.nodes) {
+                    *entry = (width * x).sin_cos();
+                }
+                row
+            })
+            .collect()
+    })
+}
+
 /// Calls `f(x, kronrod_weight, gauss_weight)` at the pair's nodes mapped onto `[a, b]`
-/// (weights scaled to it; 0 for the nodes that are Kronrod nodes only).
+/// (weights scaled to it; 0 for the nodes that are Kronrod nodes only): the tables' check.
+#[cfg(test)]
 fn for_each_kronrod_node(pair: &KronrodPair, a: f64, b: f64, mut f: impl FnMut(f64, f64, f64)) {
     let half = 0.5 * (b - a);
     let mid = 0.5 * (a + b);
@@ -169,16 +188,23 @@ impl Adaptive {
     /// `x = m + w sin t` mapping `t` onto `[lo, hi]`.
     fn rule<const N: usize>(
         (lo, hi): (f64, f64),
-        (t0, t1): (f64, f64),
+        (t0, t1, depth): (f64, f64, u32),
         f: &mut impl FnMut(f64) -> [f64; N],
         work: &mut WorkCounters,
     ) -> Estimates<N> {
         let mut kronrod = [0.0; N];
         let mut gauss = [0.0; N];
         let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let mut count = 0;
-        for_each_kronrod_node(PAIR, t0, t1, |t, wk, wg| {
-            let (sin, cos) = t.sin_cos();
+        // The interval is `[−π/2, π/2]` halved `depth` times: its half-width is `π/2^(depth+1)`
+        // and the nodes' offsets from its middle `tm` have their sines and cosines in a table,
+        // so `sin t` and `cos t` at a node come by the angle-addition formulas from the one
+        // `sin tm`, `cos tm` (to an ulp or two, as `sin_cos` itself is).
+        let tm = 0.5 * (t0 + t1);
+        let (sm, cm) = tm.sin_cos();
+        let offsets = &node_offsets()[depth.min(DEPTH_LIMIT) as usize];
+        let width = FRAC_PI_2 / 2f64.powi(depth.min(DEPTH_LIMIT) as i32);
+        let last = PAIR.nodes.len() - 1;
+        let mut add = |sin: f64, cos: f64, wk: f64, wg: f64| {
             let value = f(mid + half * sin);
             let jacobian = half * cos;
             for k in 0..N {
@@ -186,9 +212,22 @@ impl Adaptive {
                 kronrod[k] += wk * v;
                 gauss[k] += wg * v;
             }
-            count += 1;
-        });
-        work.iterations += count;
+        };
+        for (k, (&(so, co), &w)) in offsets.iter().zip(PAIR.kronrod).enumerate() {
+            let wk = width * w;
+            let wg = if k % 2 == 1 {
+                width * PAIR.gauss[k / 2]
+            } else {
+                0.0
+            };
+            if k == last {
+                add(sm, cm, wk, wg);
+            } else {
+                add(sm * co - cm * so, cm * co + sm * so, wk, wg);
+                add(sm * co + cm * so, cm * co - sm * so, wk, wg);
+            }
+        }
+        work.iterations += 2 * PAIR.nodes.len() as u64 - 1;
         (kronrod, gauss)
     }
 
@@ -240,8 +279,8 @@ impl Adaptive {
                 continue;
             }
             let tm = 0.5 * (t0 + t1);
-            let left = Self::rule((lo, hi), (t0, tm), f, work);
-            let right = Self::rule((lo, hi), (tm, t1), f, work);
+            let left = Self::rule((lo, hi), (t0, tm, depth + 1), f, work);
+            let right = Self::rule((lo, hi), (tm, t1, depth + 1), f, work);
             stack[len] = (t0, tm, left, depth + 1);
             stack[len + 1] = (tm, t1, right, depth + 1);
             len += 2;
@@ -274,7 +313,7 @@ impl Adaptive {
             if piece[1] <= piece[0] || f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
                 continue;
             }
-            *whole = Self::rule((piece[0], piece[1]), (-FRAC_PI_2, FRAC_PI_2), f, work);
+            *whole = Self::rule((piece[0], piece[1]), (-FRAC_PI_2, FRAC_PI_2, 0), f, work);
             *taken = true;
             for (sum, value) in estimate.iter_mut().zip(&whole.0) {
                 *sum += value;
