@@ -409,9 +409,17 @@ pub(crate) fn select(
                 },
             )
         }
-        (G::Cylinder(_) | G::Frustum(_), G::Torus(_))
-        | (G::Torus(_), G::Torus(_))
-        | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
+        (G::Cylinder(_) | G::Frustum(_), G::Torus(torus)) => {
+            let solid = solid_of(a).ok_or_else(|| no(NOT_BUILT))?;
+            no_flip(
+                flip_a || flip_b,
+                Kernel::RevolvedTorus {
+                    solid,
+                    torus: *torus,
+                },
+            )
+        }
+        (G::Torus(_), G::Torus(_)) | (G::Mesh(_), G::Mesh(_)) => Err(no(NOT_BUILT)),
         (G::Mesh(mesh), G::Plane(p)) => {
             let mesh = prepared_mesh(mesh, false).ok_or_else(|| no(MESH_OPEN))?;
             let side = side(flip_b);
