@@ -449,3 +449,93 @@ fn a_rigid_motion_of_both_bodies_moves_the_contact() {
 fn scaling_the_scene_scales_depth_and_points() {
     check_scale(&MAKERS, 63);
 }
+
+#[test]
+fn coaxial_solids_touching_an_equator_or_the_top_circle_have_no_contact() {
+    // A rod filling the hole to the inner equator, a sleeve at the outer equator, a cap on
+    // the plane of the top circle: touching all round, no volume.
+    for (r, z0, len) in [
+        (BIG - SMALL, -1.0, 2.0),
+        (BIG + SMALL + 0.3, -1.0, 2.0),
+        (BIG + SMALL, SMALL, 1.0),
+    ] {
+        let outer = instance(Geometry::Cylinder(Cylinder::new(r, len).unwrap()));
+        let found = query(
+            &outer,
+            &torus(),
+            &Isometry3::translation(0.0, 0.0, z0),
+            &Isometry3::identity(),
+        );
+        // The sleeve (radius beyond the ring) holds the whole torus: that one is a contact.
+        if r > BIG + SMALL + 0.1 {
+            assert_eq!(found.len(), 1, "{found:?}");
+        } else {
+            assert!(found.is_empty(), "{r} {z0}: {found:?}");
+        }
+    }
+}
+
+/// Random poses of needles, plates, cones (an apex included) and rods against thin and fat
+/// tori at 1e-6, 1 and 1e6: every answer well formed (no NaN, no panic), each depth within
+/// the two bodies' reach.
+#[test]
+fn random_extreme_shapes_give_well_formed_contacts() {
+    let mut rng = Rng::new(0x70_12E5);
+    let mut seen = 0;
+    for k in 0..150 {
+        let scale = [1.0, 1e-6, 1e6][k % 3];
+        let (r0, r1, len) = [
+            (1e-3, 1e-3, 1.0),
+            (1.0, 1.0, 1e-3),
+            (0.6, 0.0, 0.8),
+            (0.0, 0.4, 0.5),
+            (0.3, 0.5, 3.0),
+        ][k % 5];
+        let i = instance(Geometry::Frustum(
+            Frustum::new(r0 * scale, r1 * scale, len * scale).unwrap(),
+        ));
+        let small = [0.05, 0.5, 0.95][k % 3];
+        let j = instance(Geometry::Torus(Torus::new(scale, small * scale).unwrap()));
+        let reach = (1.0 + small + r0.max(r1) + len) * scale;
+        let pose = Isometry3::from_parts(
+            Translation3::from(rng.unit_vector() * rng.uniform(0.0, (1.0 + small) * scale)),
+            rng.rotation(),
+        );
+        for c in query(&i, &j, &pose, &Isometry3::identity()) {
+            well_formed(&c);
+            assert!(c.penetration <= 2.0 * reach, "{c:?}");
+            seen += 1;
+        }
+    }
+    assert!(seen > 40, "{seen}");
+}
+
+/// A needle (radius 0.005–0.03) poking into the outer equator, the inner equator or the
+/// top at a random azimuth, narrower than the region search's azimuth samples: found, with
+/// its depth within its own reach.
+#[test]
+fn a_needle_between_azimuth_samples_is_found() {
+    let mut rng = Rng::new(0x70_12EE);
+    for k in 0..45 {
+        let r = rng.uniform(0.005, 0.03);
+        let phi = rng.uniform(0.0, std::f64::consts::TAU);
+        let radial = Vector3::new(phi.cos(), phi.sin(), 0.0);
+        let (foot, outward) = match k % 3 {
+            0 => (radial * (BIG + SMALL), radial),
+            1 => (radial * (BIG - SMALL), -radial),
+            _ => (radial * BIG + Vector3::z() * SMALL, Vector3::z()),
+        };
+        let sink = rng.uniform(0.01, 0.2);
+        // The needle along the outward normal, its bottom cap `sink` inside.
+        let turn = UnitQuaternion::rotation_between(&Vector3::z(), &outward).unwrap();
+        let pose = Isometry3::from_parts(Translation3::from(foot - outward * sink), turn);
+        let needle = instance(Geometry::Cylinder(Cylinder::new(r, 1.0).unwrap()));
+        let found = query(&needle, &torus(), &pose, &Isometry3::identity());
+        assert_eq!(found.len(), 1, "{k}: {found:?}");
+        well_formed(&found[0]);
+        assert!(
+            (found[0].penetration - sink).abs() < 0.1 * sink,
+            "{k}: {found:?}"
+        );
+    }
+}
