@@ -9,10 +9,10 @@
 //! Parry has no ellipsoid, frustum (other than a cone), torus or bounded plane, so the
 //! general-ellipsoid groups (`ellipsoid_ellipsoid`, `ellipsoid_box`, `ellipsoid_cylinder`,
 //! `ellipsoid_frustum`, `ellipsoid_torus`, `ellipsoid_torus_two_regions`,
-//! `ellipsoid_bounded_plane`) and the box–frustum, box–torus, frustum/torus–bounded-plane and
-//! frustum–frustum groups time the exact engine alone; `cylinder_frustum` (a cylinder across
-//! a cone) has parry's `Cone` beside it. A mesh is a parry `TriMesh`; parry is timed only on
-//! the pairs it answers.
+//! `ellipsoid_bounded_plane`) and the box–frustum, box–torus, frustum/torus–bounded-plane,
+//! frustum–frustum, cylinder–torus and frustum–torus groups time the exact engine alone;
+//! `cylinder_frustum` (a cylinder across a cone) has parry's `Cone` beside it. A mesh is a
+//! parry `TriMesh`; parry is timed only on the pairs it answers.
 
 #![expect(
     missing_docs,
@@ -162,6 +162,23 @@ fn cases() -> Vec<Case> {
             i: Geometry::Ellipsoid(Ellipsoid::new(0.5, 0.3, 0.25).unwrap()),
             j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
             pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.3, 0.4, 0.45), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        // A tilted rod across the tube (one region) and a cone on the tube's flank.
+        Case {
+            name: "cylinder_torus",
+            i: cylinder(0.3, 1.5),
+            j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.2, 0.3, -0.6), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "frustum_torus",
+            i: Geometry::Frustum(Frustum::new(0.5, 0.1, 1.0).unwrap()),
+            j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.6, 0.2, -0.3), tilt),
             pose_j: Isometry3::identity(),
             depth: None,
         },

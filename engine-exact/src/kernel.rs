@@ -105,6 +105,12 @@ pub(crate) enum Kernel {
         a: pairs::sphere_solid::Solid,
         b: pairs::sphere_solid::Solid,
     },
+    /// Cylinder or frustum `a` against ring torus `b`, sliced across the torus' axis and
+    /// integrated in polar coordinates about it: one contact per region.
+    RevolvedTorus {
+        solid: pairs::sphere_solid::Solid,
+        torus: Torus,
+    },
     /// Frustum or torus `a` against an unbounded plane `b`.
     RevolvedPlane {
         solid: pairs::sphere_solid::Solid,
@@ -262,6 +268,13 @@ impl Kernel {
                 ref torus,
             } => {
                 pairs::ellipsoid_torus::contacts(semi_axes, pose_a, torus, pose_b, work, emit);
+                None
+            }
+            Self::RevolvedTorus {
+                ref solid,
+                ref torus,
+            } => {
+                pairs::revolved_torus::contacts(solid, pose_a, torus, pose_b, work, emit);
                 None
             }
             Self::MeshBoundedPlane {

@@ -31,6 +31,7 @@ pub mod mesh_plane;
 pub(crate) mod mesh_revolved;
 pub(crate) mod revolved_pair;
 pub mod revolved_plane;
+pub(crate) mod revolved_torus;
 pub mod section;
 pub mod slice_events;
 pub mod sliced;

@@ -29,6 +29,9 @@
 //! - [`revolved_pairs`]: frustum–frustum and cylinder–frustum: frusta of equal radii against
 //!   the cylinder pair, coaxial stacks' closed form, touching, containment, identical solids,
 //!   perpendicular and near-parallel axes at 1e-6 and 1e6;
+//! - [`revolved_torus`]: cylinder–torus and frustum–torus: coaxial pairs against the meridian
+//!   closed form, general poses and two-region rods against the divergence theorem, degenerate
+//!   branches, invariants; [`torus_pair_oracles`]: those oracles;
 //! - [`voxel_oracle`]: grid-cell meshes and their closed-form contact with aligned boxes;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
 //! - [`regressions`]: bugs found, with their reproducers.
@@ -54,7 +57,9 @@ mod properties;
 mod regressions;
 mod revolved_oracles;
 mod revolved_pairs;
+mod revolved_torus;
 mod sliced_oracles;
 mod spherical_reference;
 mod torus_oracles;
+mod torus_pair_oracles;
 mod voxel_oracle;

@@ -57,8 +57,10 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 55] = [
+const BUILT: [(&str, &str); 57] = [
     ("cylinder", "frustum"),
+    ("cylinder", "torus"),
+    ("frustum", "torus"),
     ("frustum", "frustum"),
     ("ellipsoid", "mesh"),
     ("torus", "mesh"),
@@ -169,8 +171,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 55 distinct pairs, 47 of them between different representatives (both orders count).
-    assert_eq!(accepted, 8 + 2 * 47);
+    // 57 distinct pairs, 49 of them between different representatives (both orders count).
+    assert_eq!(accepted, 8 + 2 * 49);
 }
 
 #[test]

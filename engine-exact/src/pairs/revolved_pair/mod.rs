@@ -127,7 +127,7 @@ pub(crate) fn dimensions(solid: &Solid) -> Option<(f64, f64, f64)> {
 
 /// The quadric of a solid with `dims`, bottom centre `origin` and unit `axis`, lengths over
 /// `unit`.
-fn quadric_of(
+pub(crate) fn quadric_of(
     (r0, r1, len): (f64, f64, f64),
     origin: Vector3,
     axis: Vector3,
@@ -143,7 +143,7 @@ fn quadric_of(
 }
 
 /// The whole surface of a frustum: its caps and its lateral surface `π(r₀ + r₁)·slant`.
-fn surface_of(q: &Quadric) -> f64 {
+pub(crate) fn surface_of(q: &Quadric) -> f64 {
     let r1 = q.r0 + q.slope * q.len;
     std::f64::consts::PI * (q.r0 * q.r0 + r1 * r1 + (q.r0 + r1) * q.len * q.slope.hypot(1.0))
 }

@@ -29,7 +29,7 @@ const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
 
 /// Where an end of `b`'s interval along a ray lies.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum End {
+pub(crate) enum End {
     /// On the lateral surface.
     Lateral,
     /// On a cap, outward normal `sign·w`.
@@ -50,9 +50,9 @@ pub(crate) struct Pair {
 /// What every ray of one slice shares: `b`'s quadric at the axis point and its quadratic
 /// form in the slice's plane.
 #[derive(Debug, Clone, Copy)]
-struct Rays {
+pub(crate) struct Rays {
     /// `a`'s radius there.
-    radius: f64,
+    pub(crate) radius: f64,
     /// The axis point's height along `b`'s axis.
     height: f64,
     /// `b`'s axis' components in the slice's plane.
@@ -71,19 +71,7 @@ impl Pair {
     /// The shared terms of the rays of slice `t` (`a`'s radius `r`); `closed` widens `b`'s
     /// slab by [`ON_SURFACE`] (a cap's own slice, whose height is round-off of `b`'s).
     fn rays(&self, t: f64, r: f64, closed: bool) -> Rays {
-        let q = &self.b;
-        let p = Vector3::new(0.0, 0.0, t);
-        let g = q.half_gradient(&p);
-        let m = q.matrix();
-        Rays {
-            radius: r,
-            height: q.height(&p),
-            axis: [q.axis.x, q.axis.y],
-            value: q.value(&p),
-            gradient: [g.x, g.y],
-            form: [m[(0, 0)], m[(0, 1)], m[(1, 1)]],
-            tol: if closed { ON_SURFACE } else { 0.0 },
-        }
+        rays_of(&self.b, t, r, closed)
     }
 
     /// `a`'s radius at height `t`.
@@ -94,102 +82,7 @@ impl Pair {
     /// `b`'s interval `(enter, end, exit, end)` along the whole line `p + ρu` of the slice
     /// `rays`.
     fn interval(&self, rays: &Rays, c: f64, s: f64) -> Option<(f64, End, f64, End)> {
-        let q = &self.b;
-        let (zd, wu) = (rays.height, rays.axis[0] * c + rays.axis[1] * s);
-        // The slab 0 ≤ z ≤ L along the ray.
-        let (mut lo, mut lo_end, mut hi, mut hi_end) =
-            (f64::NEG_INFINITY, End::Open, f64::INFINITY, End::Open);
-        if wu == 0.0 {
-            if zd < -rays.tol || zd > q.len + rays.tol {
-                return None;
-            }
-        } else {
-            let bottom = (-rays.tol - zd) / wu;
-            let top = (q.len + rays.tol - zd) / wu;
-            if wu > 0.0 {
-                (lo, lo_end, hi, hi_end) = (bottom, End::Cap(-1.0), top, End::Cap(1.0));
-            } else {
-                (lo, lo_end, hi, hi_end) = (top, End::Cap(1.0), bottom, End::Cap(-1.0));
-            }
-        }
-        // The quadric a ρ² + 2 b ρ + c ≤ 0.
-        let [m11, m12, m22] = rays.form;
-        let a = m11 * c * c + 2.0 * m12 * c * s + m22 * s * s;
-        let b = rays.gradient[0] * c + rays.gradient[1] * s;
-        let c = rays.value;
-        let pieces: [(f64, f64); 2] = if a == 0.0 {
-            if b > 0.0 {
-                [(f64::NEG_INFINITY, -0.5 * c / b), (1.0, 0.0)]
-            } else if b < 0.0 {
-                [(-0.5 * c / b, f64::INFINITY), (1.0, 0.0)]
-            } else if c <= 0.0 {
-                [(f64::NEG_INFINITY, f64::INFINITY), (1.0, 0.0)]
-            } else {
-                return None;
-            }
-        } else {
-            let disc = b * b - a * c;
-            if disc < 0.0 || disc.is_nan() {
-                if a > 0.0 {
-                    return None;
-                }
-                [(f64::NEG_INFINITY, f64::INFINITY), (1.0, 0.0)]
-            } else {
-                let root = -(b + b.signum() * disc.sqrt());
-                let (mut r1, mut r2) = if root == 0.0 {
-                    (0.0, 0.0)
-                } else {
-                    (root / a, c / root)
-                };
-                if r1 > r2 {
-                    std::mem::swap(&mut r1, &mut r2);
-                }
-                if a > 0.0 {
-                    [(r1, r2), (1.0, 0.0)]
-                } else {
-                    [(f64::NEG_INFINITY, r1), (r2, f64::INFINITY)]
-                }
-            }
-        };
-        // The piece inside the slab on the frustum's own nappe (radius ≥ 0); a cylinder
-        // (a > 0 or a linear quadric) has only one.
-        let mut best: Option<(f64, End, f64, End)> = None;
-        for (l0, l1) in pieces {
-            if l0 > l1 {
-                continue;
-            }
-            let (enter, enter_end) = if l0 > lo {
-                (l0, End::Lateral)
-            } else {
-                (lo, lo_end)
-            };
-            let (exit, exit_end) = if l1 < hi {
-                (l1, End::Lateral)
-            } else {
-                (hi, hi_end)
-            };
-            if enter > exit {
-                continue;
-            }
-            if q.slope != 0.0 {
-                let mid = if enter.is_finite() && exit.is_finite() {
-                    0.5 * (enter + exit)
-                } else if enter.is_finite() {
-                    enter + 1.0
-                } else if exit.is_finite() {
-                    exit - 1.0
-                } else {
-                    0.0
-                };
-                if q.r0 + q.slope * (zd + mid * wu) < 0.0 {
-                    continue;
-                }
-            }
-            if best.is_none_or(|(e0, _, e1, _)| exit - enter > e1 - e0) {
-                best = Some((enter, enter_end, exit, exit_end));
-            }
-        }
-        best
+        interval_of(&self.b, rays, c, s)
     }
 
     /// The polar integrand at `(t, φ)`, `r` being `a`'s radius there (see [`POLAR`]).
@@ -313,4 +206,126 @@ pub(crate) fn rim_axes(w: &Vector3) -> (Vector3, Vector3) {
     };
     let e1 = w.cross(&helper).normalize();
     (e1, w.cross(&e1))
+}
+
+/// The shared terms of the rays of slice `t` of `b = q` (`a`'s radius `r`); `closed` widens `b`'s
+/// slab by [`ON_SURFACE`] (a cap's own slice, whose height is round-off of `b`'s).
+pub(crate) fn rays_of(q: &Quadric, t: f64, r: f64, closed: bool) -> Rays {
+    let p = Vector3::new(0.0, 0.0, t);
+    let g = q.half_gradient(&p);
+    let m = q.matrix();
+    Rays {
+        radius: r,
+        height: q.height(&p),
+        axis: [q.axis.x, q.axis.y],
+        value: q.value(&p),
+        gradient: [g.x, g.y],
+        form: [m[(0, 0)], m[(0, 1)], m[(1, 1)]],
+        tol: if closed { ON_SURFACE } else { 0.0 },
+    }
+}
+
+/// `b`'s interval `(enter, end, exit, end)` along the whole line `p + ρu` of the slice
+/// `rays`.
+pub(crate) fn interval_of(
+    q: &Quadric,
+    rays: &Rays,
+    c: f64,
+    s: f64,
+) -> Option<(f64, End, f64, End)> {
+    let (zd, wu) = (rays.height, rays.axis[0] * c + rays.axis[1] * s);
+    // The slab 0 ≤ z ≤ L along the ray.
+    let (mut lo, mut lo_end, mut hi, mut hi_end) =
+        (f64::NEG_INFINITY, End::Open, f64::INFINITY, End::Open);
+    if wu == 0.0 {
+        if zd < -rays.tol || zd > q.len + rays.tol {
+            return None;
+        }
+    } else {
+        let bottom = (-rays.tol - zd) / wu;
+        let top = (q.len + rays.tol - zd) / wu;
+        if wu > 0.0 {
+            (lo, lo_end, hi, hi_end) = (bottom, End::Cap(-1.0), top, End::Cap(1.0));
+        } else {
+            (lo, lo_end, hi, hi_end) = (top, End::Cap(1.0), bottom, End::Cap(-1.0));
+        }
+    }
+    // The quadric a ρ² + 2 b ρ + c ≤ 0.
+    let [m11, m12, m22] = rays.form;
+    let a = m11 * c * c + 2.0 * m12 * c * s + m22 * s * s;
+    let b = rays.gradient[0] * c + rays.gradient[1] * s;
+    let c = rays.value;
+    let pieces: [(f64, f64); 2] = if a == 0.0 {
+        if b > 0.0 {
+            [(f64::NEG_INFINITY, -0.5 * c / b), (1.0, 0.0)]
+        } else if b < 0.0 {
+            [(-0.5 * c / b, f64::INFINITY), (1.0, 0.0)]
+        } else if c <= 0.0 {
+            [(f64::NEG_INFINITY, f64::INFINITY), (1.0, 0.0)]
+        } else {
+            return None;
+        }
+    } else {
+        let disc = b * b - a * c;
+        if disc < 0.0 || disc.is_nan() {
+            if a > 0.0 {
+                return None;
+            }
+            [(f64::NEG_INFINITY, f64::INFINITY), (1.0, 0.0)]
+        } else {
+            let root = -(b + b.signum() * disc.sqrt());
+            let (mut r1, mut r2) = if root == 0.0 {
+                (0.0, 0.0)
+            } else {
+                (root / a, c / root)
+            };
+            if r1 > r2 {
+                std::mem::swap(&mut r1, &mut r2);
+            }
+            if a > 0.0 {
+                [(r1, r2), (1.0, 0.0)]
+            } else {
+                [(f64::NEG_INFINITY, r1), (r2, f64::INFINITY)]
+            }
+        }
+    };
+    // The piece inside the slab on the frustum's own nappe (radius ≥ 0); a cylinder
+    // (a > 0 or a linear quadric) has only one.
+    let mut best: Option<(f64, End, f64, End)> = None;
+    for (l0, l1) in pieces {
+        if l0 > l1 {
+            continue;
+        }
+        let (enter, enter_end) = if l0 > lo {
+            (l0, End::Lateral)
+        } else {
+            (lo, lo_end)
+        };
+        let (exit, exit_end) = if l1 < hi {
+            (l1, End::Lateral)
+        } else {
+            (hi, hi_end)
+        };
+        if enter > exit {
+            continue;
+        }
+        if q.slope != 0.0 {
+            let mid = if enter.is_finite() && exit.is_finite() {
+                0.5 * (enter + exit)
+            } else if enter.is_finite() {
+                enter + 1.0
+            } else if exit.is_finite() {
+                exit - 1.0
+            } else {
+                0.0
+            };
+            if q.r0 + q.slope * (zd + mid * wu) < 0.0 {
+                continue;
+            }
+        }
+        if best.is_none_or(|(e0, _, e1, _)| exit - enter > e1 - e0) {
+            best = Some((enter, enter_end, exit, exit_end));
+        }
+    }
+    best
 }

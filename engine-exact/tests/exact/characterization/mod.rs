@@ -19,6 +19,7 @@ mod planar;
 pub(crate) mod planar_overlap;
 mod revolved;
 mod revolved_pair;
+mod revolved_torus;
 mod sliced;
 mod solids;
 
@@ -113,6 +114,7 @@ fn characterization_table() {
     rows.extend(ellipsoid_revolved::rows(&mut rng));
     rows.extend(ellipsoid_torus::rows(&mut rng));
     rows.extend(revolved_pair::rows(&mut rng));
+    rows.extend(revolved_torus::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );

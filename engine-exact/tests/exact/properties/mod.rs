@@ -43,6 +43,7 @@ fn tolerance(name: &str) -> f64 {
         || name == "ellipsoid–cylinder"
         || name == "ellipsoid–frustum"
         || name == "ellipsoid–torus"
+        || name == "cylinder/frustum–torus"
         || name == "frustum–frustum/cylinder"
         || name.starts_with("sliced ")
     {
