@@ -37,9 +37,10 @@
 //! empty or, when none is (a sliver), the maximiser of the section's inscribed-circle margin
 //! `μ(t)` — concave in `t` for two convex solids, found by golden-section search; `μ < 0`
 //! everywhere means no overlap. From there bisection on "the section is not empty" (an
-//! interval, by convexity) gives `t_min` and `t_max` to round-off. Those, the square-root ends
+//! interval, by convexity) gives `t_min` and `t_max` to round-off (or within 1e-12 of the
+//! bracket when the section is already non-empty there: the extent ends at a range end). Those, the square-root ends
 //! and `b`'s vertices are the cuts of [`crate::quadrature::Adaptive`]: sine-mapped pieces,
-//! halved where a kink between cuts remains, until the halves agree with the whole to 1e-13
+//! halved where a kink between cuts remains, until the error estimate is within 1e-13
 //! relative or 1e-14 of the whole (volume for the moments, surface for the areas), and
 //! never below the round-off of a slice (1e-14 per unit of range, working units).
 
@@ -47,7 +48,7 @@ use super::section::{MAX_LABELS, Polygon};
 use crate::quadrature;
 use contact_core::{Vector2, Vector3, WorkCounters};
 
-/// The adaptive rule: halves agree to 1e-13 relative, at most 24 halvings per piece (a kink
+/// The adaptive rule: error estimates within 1e-13 relative, at most 24 halvings per piece (a kink
 /// between cuts is then bracketed to 2⁻²⁴ of its piece).
 const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     tolerance: 1e-13,

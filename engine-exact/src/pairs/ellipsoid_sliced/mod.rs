@@ -327,6 +327,24 @@ const SHAPE_SAMPLES: usize = 64;
 /// left (down to 2⁻⁴⁰ of the first sample's offset).
 const END_SAMPLES: usize = 40;
 
+/// Sorts the closed-form `cuts[..*n]`, adds [`shape_events`] between each consecutive two
+/// (the changes the closed forms do not give: a tangency often follows a rim's piercing within
+/// 1e-5 of the range, so each piece is sampled geometrically towards both of its ends), and
+/// sorts again.
+pub(crate) fn add_shape_events_between(
+    cuts: &mut [f64; quadrature::MAX_PIECES + 1],
+    n: &mut usize,
+    shape: impl Fn(f64) -> usize,
+) {
+    cuts[..*n].sort_by(f64::total_cmp);
+    let known = *n;
+    let closed = *cuts;
+    for w in closed[..known].windows(2) {
+        shape_events(w[0], w[1], &shape, cuts, n);
+    }
+    cuts[..*n].sort_by(f64::total_cmp);
+}
+
 /// Adds to `cuts[..*n]` (up to its capacity) the slices inside `(lo, hi)` where the overlap's
 /// shape class `shape(t)` changes (sections becoming tangent, a corner entering): sampled at
 /// 64 slices and at slices approaching both ends geometrically, each change bisected to

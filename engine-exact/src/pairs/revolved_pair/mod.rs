@@ -71,7 +71,7 @@ pub(crate) mod slice;
 mod tests;
 
 use super::clipped::unit_for;
-use super::ellipsoid_sliced::{COMPONENTS, shape_events};
+use super::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
 use super::sliced::golden_search;
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
@@ -342,16 +342,8 @@ fn sums(
     cuts[1] = hi;
     let mut n = 2;
     pair.t_cuts(lo, hi, &mut cuts, &mut n);
-    cuts[..n].sort_by(f64::total_cmp);
-    // The crossing count between each pair of closed-form cuts, sampled geometrically
-    // towards both (a tangency often follows a rim's piercing within 1e-5 of the range).
-    let mut closed = [0.0; MAX_PIECES + 1];
-    let known = n;
-    closed[..known].copy_from_slice(&cuts[..known]);
-    for w in closed[..known].windows(2) {
-        shape_events(w[0], w[1], |t| pair.crossing_count(t), &mut cuts, &mut n);
-    }
-    cuts[..n].sort_by(f64::total_cmp);
+    // The crossing count between each pair of closed-form cuts.
+    add_shape_events_between(&mut cuts, &mut n, |t| pair.crossing_count(t));
     let (t_min, t_max) = pair.extent(lo, hi, &cuts[..n])?;
     if t_min >= t_max {
         return None;

@@ -21,8 +21,9 @@ pub(crate) const ON_SURFACE: f64 = 1e-12;
 /// inside `b` its angle and `∫cos φ`, `∫sin φ`.
 pub(crate) const POLAR: usize = 6;
 
-/// The inner adaptive rule: halves agree to 1e-13 relative.
-const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
+/// The inner adaptive rule over the azimuth: error estimates within 1e-13 relative (the
+/// torus pairs' slices share it).
+pub(crate) const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     tolerance: 1e-13,
     max_depth: 14,
 };

@@ -72,7 +72,7 @@ pub(crate) mod slice;
 mod tests;
 
 use super::clipped::unit_for;
-use super::ellipsoid_sliced::{COMPONENTS, shape_events};
+use super::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
 use super::revolved_pair::{dimensions, quadric_of, surface_of};
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
@@ -250,14 +250,7 @@ impl TorusPair {
         cuts[1] = hi;
         let mut n = 2;
         self.psi_cuts(lo, hi, &mut cuts, &mut n);
-        cuts[..n].sort_by(f64::total_cmp);
-        let mut closed = [0.0; MAX_PIECES + 1];
-        let known = n;
-        closed[..known].copy_from_slice(&cuts[..known]);
-        for w in closed[..known].windows(2) {
-            shape_events(w[0], w[1], |psi| self.shape(psi), &mut cuts, &mut n);
-        }
-        cuts[..n].sort_by(f64::total_cmp);
+        add_shape_events_between(&mut cuts, &mut n, |psi| self.shape(psi));
         let start = self.inside_slice(lo, hi, &cuts[..n], wedge, seed)?;
         let (p_min, p_max) = self.extent(lo, hi, start, wedge);
         if p_min >= p_max {

@@ -13,20 +13,14 @@
 use crate::pairs::revolved_pair::quadric::{
     Quadric, circle_crossings, sinusoid_roots, tangent_directions,
 };
-use crate::pairs::revolved_pair::slice::{ON_SURFACE, interval_of, rays_of, rim_axes};
-use crate::quadrature::{self, MAX_PIECES};
+use crate::pairs::revolved_pair::slice::{ADAPTIVE, ON_SURFACE, interval_of, rays_of, rim_axes};
+use crate::quadrature::MAX_PIECES;
 use contact_core::{Vector3, WorkCounters};
 use std::f64::consts::TAU;
 
 /// Components of the polar integrand: area, the two first moments, then for the outer
 /// circle inside `b` its angle, `∫cos φ`, `∫sin φ`, and the same for the inner circle.
 pub(crate) const POLAR: usize = 9;
-
-/// The inner adaptive rule: halves agree to 1e-13 relative (as the frustum pairs' slices).
-const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
-    tolerance: 1e-13,
-    max_depth: 14,
-};
 
 /// The azimuths `start ≤ φ ≤ end` of one region (`0 < end − start ≤ 2π`).
 #[derive(Debug, Clone, Copy, PartialEq)]
