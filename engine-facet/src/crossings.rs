@@ -75,10 +75,10 @@ pub(crate) fn find_crossings(
                 while keep != 0 {
                     let k = keep.trailing_zeros() as usize;
                     keep &= keep - 1;
-                    let (q, nq) = moved[k];
+                    let (q, nq) = &moved[k];
                     let tb = leaf_b[k];
                     if let (TrianglePair::Segment(s0, s1), ends) =
-                        intersect_on_planes(&p, &q, &n, &nq, distances[k], band)
+                        intersect_on_planes(&p, q, &n, nq, distances[k], band)
                     {
                         hits.push(Hit {
                             ta,

@@ -133,13 +133,12 @@ pub fn intersect_on_planes(
         });
     }
     let dir = np.cross(nq);
-    let (Some(((a0, fa0), (a1, fa1))), Some(((b0, fb0), (b1, fb1)))) =
+    let (Some(((a0, fa0, sa0), (a1, fa1, sa1))), Some(((b0, fb0, sb0), (b1, fb1, sb1)))) =
         (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
     else {
         return outcome(TrianglePair::Disjoint);
     };
     // Both cuts lie on the line of the two planes: overlap their intervals along `dir`.
-    let (sa0, sa1, sb0, sb1) = (a0.dot(&dir), a1.dot(&dir), b0.dot(&dir), b1.dot(&dir));
     if (sa1 < sb0) | (sb1 < sa0) {
         return outcome(TrianglePair::Disjoint);
     }
@@ -159,19 +158,13 @@ pub fn intersect_on_planes(
 
 /// The segment where a triangle meets a plane, given its vertices' signed distances (not all
 /// zero, not all of one strict sign), ordered along `dir`, each end with the corner or edge it
-/// lies on.
+/// lies on and its projection on `dir` (formed once, for the ordering here and the interval
+/// test after).
 #[inline]
-fn plane_cut(
-    t: &[Vector3; 3],
-    d: &[f64; 3],
-    dir: &Vector3,
-) -> Option<((Vector3, Feature), (Vector3, Feature))> {
-    let cut = |i: usize| {
-        let j = (i + 1) % 3;
-        (
-            t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j])),
-            Feature::Edge(i as u8),
-        )
+fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(CutEnd, CutEnd)> {
+    let cut = |i: usize, j: usize| {
+        let point = t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j]));
+        (point, Feature::Edge(i as u8), point.dot(dir))
     };
     if d[0] != 0.0 && d[1] != 0.0 && d[2] != 0.0 {
         // No corner on the plane (nearly always): one corner lies alone on its side and its
@@ -181,24 +174,30 @@ fn plane_cut(
         if (s0 == s1) & (s1 == s2) {
             return None;
         }
-        let lone = 2 * usize::from(s0 == s1) + usize::from(s0 != s1 && s0 == s2);
-        let before = (lone + 2) % 3;
-        let (first, second) = (cut(before.min(lone)), cut(before.max(lone)));
-        let (s_first, s_second) = (first.0.dot(dir), second.0.dot(dir));
-        let lo = if s_second < s_first { second } else { first };
-        let hi = if s_second > s_first { second } else { first };
+        // The lone corner's two edges, the lower-numbered first (edge k runs from corner k to
+        // k + 1): corner 0 alone cuts edges 0 and 2, corner 1 edges 0 and 1, corner 2 edges 1
+        // and 2.
+        let (first, second) = if s1 == s2 {
+            (cut(0, 1), cut(2, 0))
+        } else if s0 == s2 {
+            (cut(0, 1), cut(1, 2))
+        } else {
+            (cut(1, 2), cut(2, 0))
+        };
+        let lo = if second.2 < first.2 { second } else { first };
+        let hi = if second.2 > first.2 { second } else { first };
         return Some((lo, hi));
     }
-    let mut pts = [(Vector3::zeros(), Feature::Corner(0)); 4];
+    let mut pts = [(Vector3::zeros(), Feature::Corner(0), 0.0); 4];
     let mut n = 0;
     for i in 0..3 {
         let j = (i + 1) % 3;
         if d[i] == 0.0 {
-            pts[n] = (t[i], Feature::Corner(i as u8));
+            pts[n] = (t[i], Feature::Corner(i as u8), t[i].dot(dir));
             n += 1;
         }
         if (d[i] > 0.0 && d[j] < 0.0) || (d[i] < 0.0 && d[j] > 0.0) {
-            pts[n] = cut(i);
+            pts[n] = cut(i, j);
             n += 1;
         }
     }
@@ -206,20 +205,20 @@ fn plane_cut(
         return None;
     }
     let (mut lo, mut hi) = (pts[0], pts[0]);
-    let (mut slo, mut shi) = (lo.0.dot(dir), lo.0.dot(dir));
     for p in &pts[1..n] {
-        let s = p.0.dot(dir);
-        if s < slo {
-            slo = s;
+        if p.2 < lo.2 {
             lo = *p;
         }
-        if s > shi {
-            shi = s;
+        if p.2 > hi.2 {
             hi = *p;
         }
     }
     Some((lo, hi))
 }
+
+/// An end of a triangle's cut by a plane: the point, the feature it lies on and its projection
+/// on the cut line's direction.
+type CutEnd = (Vector3, Feature, f64);
 
 /// Overlap of two triangles in one plane (normal `n`): project on the plane's dominant axes and
 /// test edges for crossings, then containment of one vertex.
