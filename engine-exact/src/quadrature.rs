@@ -15,83 +15,69 @@ use std::sync::OnceLock;
 /// Nodes per rule.
 pub const NODES: usize = 12;
 
+/// The `N`-node Gauss–Legendre `(nodes, weights)` on [−1, 1]: Newton on `P_N` from a
+/// Chebyshev-like first guess, to round-off.
+fn legendre_rule<const N: usize>() -> ([f64; N], [f64; N]) {
+    let mut x = [0.0; N];
+    let mut w = [0.0; N];
+    let n = N as f64;
+    for i in 0..N {
+        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n + 0.5)).cos();
+        let mut derivative = 1.0;
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, z);
+            for k in 2..=N {
+                let k = k as f64;
+                let p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            derivative = n * (z * p1 - p0) / (z * z - 1.0);
+            let step = p1 / derivative;
+            z -= step;
+            if step.abs() <= 1e-16 {
+                break;
+            }
+        }
+        x[i] = z;
+        w[i] = 2.0 / ((1.0 - z * z) * derivative * derivative);
+    }
+    (x, w)
+}
+
 /// `(nodes, weights)` on [−1, 1].
 fn rule() -> &'static ([f64; NODES], [f64; NODES]) {
     static RULE: OnceLock<([f64; NODES], [f64; NODES])> = OnceLock::new();
-    RULE.get_or_init(|| {
-        let mut x = [0.0; NODES];
-        let mut w = [0.0; NODES];
-        let n = NODES as f64;
-        for i in 0..NODES {
-            // Chebyshev-like first guess, then Newton on P_n.
-            let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (n + 0.5)).cos();
-            let mut derivative = 1.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, z);
-                for k in 2..=NODES {
-                    let k = k as f64;
-                    let p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                derivative = n * (z * p1 - p0) / (z * z - 1.0);
-                let step = p1 / derivative;
-                z -= step;
-                if step.abs() <= 1e-16 {
-                    break;
-                }
-            }
-            x[i] = z;
-            w[i] = 2.0 / ((1.0 - z * z) * derivative * derivative);
-        }
-        (x, w)
-    })
+    RULE.get_or_init(legendre_rule::<NODES>)
+}
+
+/// Calls `f(t, weight)` at the nodes of `rule` mapped onto `[a, b]`, weights scaled to it.
+fn map_nodes<const N: usize>(
+    (x, w): &([f64; N], [f64; N]),
+    a: f64,
+    b: f64,
+    mut f: impl FnMut(f64, f64),
+) {
+    let half = 0.5 * (b - a);
+    let mid = 0.5 * (a + b);
+    for k in 0..N {
+        f(mid + half * x[k], half * w[k]);
+    }
 }
 
 /// Calls `f(t, weight)` at the rule's nodes mapped onto `[a, b]`, weights scaled to it.
-pub fn for_each_node(a: f64, b: f64, mut f: impl FnMut(f64, f64)) {
-    let (x, w) = rule();
-    let half = 0.5 * (b - a);
-    let mid = 0.5 * (a + b);
-    for k in 0..NODES {
-        f(mid + half * x[k], half * w[k]);
-    }
+pub fn for_each_node(a: f64, b: f64, f: impl FnMut(f64, f64)) {
+    map_nodes(rule(), a, b, f);
 }
 
-/// The 8-node Gauss–Legendre rule on `[−1, 1]`: its non-negative nodes, increasing, and their
-/// weights (the negative nodes mirror them). For integrands analytic well beyond their
-/// interval, where 8 nodes already reach round-off and the 12 of [`for_each_node`] would be
-/// paid for nothing.
-#[allow(
-    clippy::excessive_precision,
-    reason = "the table as published; f64 rounds it"
-)]
-const GAUSS_8: ([f64; 4], [f64; 4]) = (
-    [
-        0.183_434_642_495_649_804_939_476_142_360_2,
-        0.525_532_409_916_328_985_817_739_049_189_2,
-        0.796_666_477_413_626_739_591_553_936_475_8,
-        0.960_289_856_497_536_231_683_560_868_569_5,
-    ],
-    [
-        0.362_683_783_378_361_982_965_150_449_277_2,
-        0.313_706_645_877_887_287_337_962_201_986_6,
-        0.222_381_034_453_374_470_544_355_994_426_2,
-        0.101_228_536_290_376_259_152_531_354_309_96,
-    ],
-);
-
-/// Calls `f(t, weight)` at the 8-node rule's nodes mapped onto `[a, b]`, weights scaled to it:
-/// exact for polynomials of degree 15, and for a function analytic inside the ellipse with
-/// foci `a`, `b` and semi-axes' sum `ρ` half-lengths its error falls like `ρ^−16`.
-pub fn for_each_node_8(a: f64, b: f64, mut f: impl FnMut(f64, f64)) {
-    let (x, w) = GAUSS_8;
-    let half = 0.5 * (b - a);
-    let mid = 0.5 * (a + b);
-    for k in 0..4 {
-        f(mid - half * x[k], half * w[k]);
-        f(mid + half * x[k], half * w[k]);
-    }
+/// Calls `f(t, weight)` at the 8-node Gauss–Legendre rule's nodes mapped onto `[a, b]`,
+/// weights scaled to it: exact for polynomials of degree 15, and for a function analytic
+/// inside the ellipse with foci `a`, `b` and semi-axes' sum `ρ` half-lengths its error falls
+/// like `ρ^−16`. For integrands analytic well beyond their interval, where 8 nodes already
+/// reach round-off and the 12 of [`for_each_node`] would be paid for nothing.
+pub fn for_each_node_8(a: f64, b: f64, f: impl FnMut(f64, f64)) {
+    static RULE_8: OnceLock<([f64; 8], [f64; 8])> = OnceLock::new();
+    map_nodes(RULE_8.get_or_init(legendre_rule::<8>), a, b, f);
 }
 
 /// Most pieces [`Adaptive::integrate_pieces`] takes (cuts − 1).
@@ -382,7 +368,7 @@ mod tests {
         assert!((s - 2.0).abs() < 1e-15, "{s}");
     }
 
-    /// The 8-node table is right to round-off: exact to degree 15 (the weights sum to the
+    /// The 8-node rule is right to round-off: exact to degree 15 (the weights sum to the
     /// length) and not at degree 16.
     #[test]
     fn the_8_node_rule_is_exact_to_degree_15_and_no_further() {
