@@ -379,18 +379,29 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
 }
 
 /// Sutherland–Hodgman: keeps the part of `poly` with `n·(v − p0) ≤ 0`.
+///
+/// Each corner's distance is formed once and carried to the next edge, and the wrap to the
+/// first corner is the last step rather than an index taken modulo the length (a division per
+/// edge).
 pub(crate) fn clip(poly: &[Vector3], out: &mut Vec<Vector3>, n: &Vector3, p0: &Vector3) {
     out.clear();
-    let len = poly.len();
-    for k in 0..len {
-        let (u, v) = (poly[k], poly[(k + 1) % len]);
-        let (du, dv) = (n.dot(&(u - p0)), n.dot(&(v - p0)));
+    let Some(&first) = poly.first() else {
+        return;
+    };
+    let d_first = n.dot(&(first - p0));
+    let (mut u, mut du) = (first, d_first);
+    for k in 1..=poly.len() {
+        let (v, dv) = match poly.get(k) {
+            Some(&v) => (v, n.dot(&(v - p0))),
+            None => (first, d_first),
+        };
         if du <= 0.0 {
             out.push(u);
         }
         if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
             out.push(u + (v - u) * (du / (du - dv)));
         }
+        (u, du) = (v, dv);
     }
 }
 
