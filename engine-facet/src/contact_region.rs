@@ -15,19 +15,24 @@
 //! 3. **Per region.** The oriented loop gives the vector area `S = ½ Σ s₀ × s₁`: the normal is
 //!    `−S/|S|` (from J into I) and the area is `|S|`, the patch's area projected on the contact
 //!    plane. The intersection volume is bounded by I's surface inside J and J's surface inside
-//!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes of
-//!    the triangles it crosses), as tetrahedra from one apex (the first crossing point), gives
-//!    its volume and centroid `g` (the loop's open lid cancels between the two sides). The
-//!    contact points are where the line through `g` along the normal meets each surface (I's
-//!    along `−n`, J's along `+n`; the closest points to `g` when the loop is degenerate or the
-//!    line meets nothing), lifted from the facet onto the curved PN triangle through the
-//!    facet's corners and true corner normals ([`FacetMesh::lift_to_surface`]); the penetration
-//!    is their distance. Every one of these is continuous in the pose, which dynamics needs.
-//!    A region whose centroid lies outside one of the (closed) bodies is not convex — a thin
-//!    crescent where a convex surface presses into a nearly conforming concave one — and the
-//!    line through the centroid crosses a body's far side: its penetration is held to the
-//!    convex bound `3V/|S|` (no convex region of volume `V` and cross-section `|S|` is
-//!    thicker), with J's point moved along the normal to match.
+//!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes
+//!    of the triangles it crosses), as tetrahedra from the region's apex, gives its volume and
+//!    centroid `g` (the loop's open lid cancels between the two sides). The apex is the loop's
+//!    length-weighted centroid: where the other surface is concave the clipped pieces do not
+//!    quite close (see the error bound below) and the sums then depend on the apex, so it is
+//!    one that follows the region, depends on no order of the search and moves continuously
+//!    with the pose. The flood lists what it takes, and its cones are summed once the regions,
+//!    and so their apexes, are known. The contact points are where the line through `g` along
+//!    the normal meets each surface (I's along `−n`, J's along `+n`; the closest points to `g`
+//!    when the loop is degenerate or the line meets nothing), lifted from the facet onto the
+//!    curved PN triangle through the facet's corners and true corner normals
+//!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance. Every one of these
+//!    is continuous in the pose, which dynamics needs. A region whose centroid lies outside one
+//!    of the (closed) bodies is not convex — a thin crescent where a convex surface presses
+//!    into a nearly conforming concave one — and the line through the centroid crosses a body's
+//!    far side: its penetration is held to the convex bound `3V/|S|` (no convex region of
+//!    volume `V` and cross-section `|S|` is thicker), with J's point moved along the normal to
+//!    match.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
@@ -44,10 +49,10 @@
 //! where the other surface is locally convex and underestimates the volume where it is concave.
 
 use crate::facet_mesh::FacetMesh;
+use crate::inside_flood::PATCH_BIT;
 use crate::inside_flood::flood;
 use crate::obb::boxes_overlap;
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
-use crate::surface_sums::SurfaceSums;
 use crate::triangle_pair::Feature;
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
 
@@ -127,8 +132,6 @@ pub(crate) fn mesh_mesh(
         }
         return;
     }
-    // One apex for every cone of this query, in each mesh's frame: the first crossing point.
-    s.apex = [s.hits[0].s0, x.inverse_apply(&s.hits[0].s0)];
     build_nodes(a, b, s);
     flood(a, b, &x, s);
     let region_count = label_regions(s);
@@ -153,7 +156,6 @@ pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u
         hit_start: 0,
         hit_count: 0,
         inside_corners: 0,
-        inside: SurfaceSums::default(),
     });
     s.slots[side as usize].insert(tri, id);
     id
@@ -338,9 +340,14 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         node_hits,
         polygon,
         polygon_next,
-        apex,
+        taken,
         ..
     } = s;
+    // Each region's cones about its own apex (its loop's centroid, see `sum_loops`), in A's
+    // frame and in B's.
+    for r in regions.iter_mut() {
+        r.apex_b = x.inverse_apply(&r.apex);
+    }
     for node in nodes.iter() {
         let mesh = if node.side == 0 { a } else { b };
         polygon.clear();
@@ -355,11 +362,26 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
             }
         }
         let r = &mut regions[node.region as usize];
-        r.sums_a.add_polygon(polygon, &apex[0]);
-        if node.side == 0 {
-            r.sums_a.merge(&node.inside);
+        r.sums_a.add_polygon(polygon, &r.apex);
+    }
+    // The flood's takings, each in its own mesh's frame about its region's apex there.
+    for &(seed, item) in taken.iter() {
+        let node = &nodes[seed as usize];
+        let r = &mut regions[node.region as usize];
+        let (mesh, apex, sums) = if node.side == 0 {
+            (a, r.apex, &mut r.sums_a)
         } else {
-            r.sums_b.merge(&node.inside);
+            (b, r.apex_b, &mut r.sums_b)
+        };
+        if item & PATCH_BIT != 0 {
+            sums.merge(
+                &mesh
+                    .patches
+                    .cones(item & !PATCH_BIT, &apex, |t| mesh.corners(t)),
+            );
+        } else {
+            let [p, q, r] = mesh.corners(item);
+            sums.add_triangle(&p, &q, &r, &apex);
         }
     }
     for r in regions.iter_mut() {
@@ -371,7 +393,7 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         // (at a corner grazing a face, crossing triangles clipped by one plane each leave
         // slivers whose cones do not cancel), and their centroid can lie anywhere.
         r.centroid = if r.volume > 1e-15 * scale * scale * scale && loop_normal(r).is_some() {
-            apex[0] + r.volume_moment / r.volume
+            r.apex + r.volume_moment / r.volume
         } else {
             r.apex
         };

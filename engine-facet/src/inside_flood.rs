@@ -1,6 +1,7 @@
 //! Step 2 of [`crate::contact_region`]: each surface is flooded from its crossing triangles into
-//! the triangles that lie wholly inside the other solid, whose cones (about the query's apex)
-//! are summed into the seed's node; floods that meet unite their seeds' regions.
+//! the triangles that lie wholly inside the other solid, which are listed with their seed's
+//! node (their cones are summed once the regions, and so their apexes, are known); floods that
+//! meet unite their seeds' regions.
 //!
 //! The flood takes whole patches where it can ([`crate::patches`]): on reaching a triangle it
 //! takes the largest subtree of the mesh's tree around it that is one connected patch, holds no
@@ -15,12 +16,12 @@ use crate::contact_region::{RelativePose, corners_in_a, other_plane, union};
 use crate::facet_mesh::FacetMesh;
 use crate::patches::PatchIndex;
 use crate::scratch::{NodeMarks, RegionNode, Scratch};
-use crate::surface_sums::SurfaceSums;
 use contact_core::Vector3;
 
 /// Floods each surface from its crossing triangles into the triangles inside the other solid,
-/// summing them (in their own mesh frame) into the seed node's `inside` sums.
+/// listing each triangle or whole patch taken with its seed node in `s.taken`.
 pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    s.taken.clear();
     let crossing_count = s.nodes.len();
     // Corners of crossing triangles: inside when strictly behind every crossed plane.
     for id in 0..crossing_count {
@@ -65,23 +66,20 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
             continue;
         }
         let mesh = if node.side == 0 { a } else { b };
-        // The seed's sums, side and apex stay local while it floods (its `inside` sums are
-        // written only here, so the order of additions is unchanged).
         let Scratch {
             slots,
             blocked,
             nodes,
             queue,
-            apex,
+            taken,
             ..
         } = s;
         let side = node.side as usize;
         let mut flood = Flood {
             mesh,
             guard: guards[side],
-            apex: apex[side],
             seed: id,
-            sums: nodes[id as usize].inside,
+            taken,
             slots: &mut slots[side],
             blocked: &mut blocked[side],
             nodes,
@@ -106,16 +104,14 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
                     .for_each_rim(patch, &mesh.neighbors, |m| flood.visit(m));
             }
         }
-        let sums = flood.sums;
-        s.nodes[id as usize].inside = sums;
     }
 }
 
 /// Flood mark: an inside triangle's slot holds its seed node with this bit set.
 const INSIDE_BIT: u32 = 1 << 31;
 
-/// Queue entry: a patch (tree node) whose rim is still to be crossed, rather than a triangle.
-const PATCH_BIT: u32 = 1 << 31;
+/// Queue and `taken` entry: a patch (tree node) rather than a triangle.
+pub(crate) const PATCH_BIT: u32 = 1 << 31;
 
 /// Blocks `node` and its ancestors as patches (up to the first one blocked already): they hold
 /// a crossing triangle or a triangle taken already.
@@ -153,9 +149,9 @@ struct Flood<'s> {
     mesh: &'s FacetMesh,
     /// The leak guard `(min, max)` in the mesh's frame.
     guard: (Vector3, Vector3),
-    apex: Vector3,
     seed: u32,
-    sums: SurfaceSums,
+    /// What the floods took: `(seed node, triangle)`, or a patch with [`PATCH_BIT`].
+    taken: &'s mut Vec<(u32, u32)>,
     slots: &'s mut crate::scratch::SlotMap,
     /// Tree nodes that are not patches this query (see [`block_up`]).
     blocked: &'s mut NodeMarks,
@@ -165,7 +161,7 @@ struct Flood<'s> {
 }
 
 impl Flood<'_> {
-    /// Marks `tri` inside, adds its cone and queues it, unless it is marked already (then its
+    /// Marks `tri` inside, lists it and queues it, unless it is marked already (then its
     /// owner joins the seed's region) or it leaves the guard box; takes the largest free patch
     /// around it whole when there is one.
     #[inline(always)]
@@ -180,7 +176,7 @@ impl Flood<'_> {
             }
             return;
         }
-        let [p, q, r] = self.mesh.corners(tri);
+        let p = self.mesh.vertices[self.mesh.triangles[tri as usize][0] as usize].coords;
         let guard = &self.guard;
         // Leak guard: an inside triangle lies in the other mesh's root box.
         if p.x < guard.0.x
@@ -201,15 +197,13 @@ impl Flood<'_> {
                 let slots = &mut *self.slots;
                 let mark = self.seed | INSIDE_BIT;
                 patches.for_each_border(patch, &self.mesh.neighbors, |t| slots.insert(t, mark));
-                let mesh = self.mesh;
-                self.sums
-                    .merge(&patches.cones(patch, &self.apex, |t| mesh.corners(t)));
+                self.taken.push((self.seed, patch | PATCH_BIT));
                 block_up(patches, self.blocked, patch);
                 self.queue.push(patch | PATCH_BIT);
             }
             None => {
                 self.slots.insert(tri, self.seed | INSIDE_BIT);
-                self.sums.add_triangle(&p, &q, &r, &self.apex);
+                self.taken.push((self.seed, tri));
                 block_up(patches, self.blocked, leaf);
                 self.queue.push(tri);
             }

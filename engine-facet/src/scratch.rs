@@ -100,9 +100,6 @@ pub(crate) struct RegionNode {
     pub hit_count: u32,
     /// Bit k set: corner k lies inside the other solid (crossing triangles only).
     pub inside_corners: u8,
-    /// Cones over the inside triangles flooded from this node, in its mesh's frame, about the
-    /// query's apex.
-    pub inside: crate::surface_sums::SurfaceSums,
 }
 
 /// Running sums of one region.
@@ -115,7 +112,9 @@ pub(crate) struct RegionSums {
     pub loop_moment: Vector3,
     pub loop_points: usize,
     pub loop_point_sum: Vector3,
+    /// The region's cone apex (its loop's centroid) in A's frame, and in B's.
     pub apex: Vector3,
+    pub apex_b: Vector3,
     pub volume: f64,
     pub volume_moment: Vector3,
     pub centroid: Vector3,
@@ -142,13 +141,14 @@ pub(crate) struct Scratch {
     pub nodes: Vec<RegionNode>,
     pub node_hits: Vec<u32>,
     pub queue: Vec<u32>,
+    /// The inside flood's takings: `(seed node, triangle)`, or `(seed node, patch | PATCH_BIT)`
+    /// for a whole patch (see [`crate::inside_flood`]).
+    pub taken: Vec<(u32, u32)>,
     pub regions: Vec<RegionSums>,
     pub polygon: Vec<Vector3>,
     pub polygon_next: Vec<Vector3>,
     pub local: Vec<crate::contact_region::LocalContact>,
     pub box_cache: crate::obb_tree::BoxCache,
-    /// The query's cone apex in A's and in B's mesh frame.
-    pub apex: [Vector3; 2],
 }
 
 thread_local! {

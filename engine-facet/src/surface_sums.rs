@@ -4,8 +4,9 @@
 //! For a triangle `(a, b, c)` and the apex `o`, the tetrahedron's signed volume is
 //! `v = (a−o)·((b−o)×(c−o))/6` and its moment about `o` is `v·((a−o)+(b−o)+(c−o))/4`. Summed over
 //! a closed surface (or over pieces that, with a lid through `o`, close it) these give the
-//! enclosed volume and `volume × (centroid − o)`. One apex per query for both meshes (the first
-//! crossing point) keeps round-off relative to the contact's size, not the bodies'.
+//! enclosed volume and `volume × (centroid − o)`. One apex per contact region for both meshes
+//! (the region's loop centroid) keeps round-off relative to the contact's size, not the
+//! bodies'.
 
 use contact_core::Vector3;
 
