@@ -93,20 +93,13 @@ impl ObbTree {
                 .iter()
                 .flat_map(|&t| triangles[t as usize].iter().map(|&v| vertices[v as usize]));
             let obb = if range.len() <= LEAF_TRIANGLES {
-                // A leaf: the first triangle's own frame (edge, in-plane normal, facet normal)
-                // gives a flat box, tighter than principal axes and with no eigen solve.
-                let [p, q, r] = triangles[range[0] as usize].map(|v| vertices[v as usize]);
-                let e = (q - p).try_normalize(0.0).unwrap_or_else(Vector3::x);
-                let n = (q - p)
-                    .cross(&(r - p))
-                    .try_normalize(0.0)
-                    .unwrap_or_else(|| {
-                        e.cross(&Vector3::y())
-                            .try_normalize(0.0)
-                            .unwrap_or_else(Vector3::z)
-                    });
-                let axes = Matrix3::from_columns(&[e, n.cross(&e), n]);
-                Obb::fit_with_axes(points, axes)
+                leaf_box(
+                    vertices,
+                    triangles,
+                    &area_normals,
+                    range,
+                    parent_axes.as_ref(),
+                )
             } else {
                 let patch = parent_axes.filter(|_| range.len() <= PATCH_FRAME_MAX_TRIANGLES);
                 match patch.and_then(|axes| patch_frame(&area_normals, range, &axes)) {
@@ -217,6 +210,59 @@ impl ObbTree {
             }
         }
     }
+}
+
+/// A leaf's box: of the frames of its triangles (each its first edge, the in-plane
+/// perpendicular and its normal: flat boxes) and, when its facets face one way, its patch frame
+/// (see [`patch_frame`]), the one giving the box of least surface area. Per query (callgrind,
+/// the bench's poses; 64 other seeded poses in brackets), against the first triangle's frame
+/// alone: 10k spheres 4.12M → 3.88M instructions (4.21M → 3.96M), 100k 14.4M → 13.5M
+/// (13.0M → 12.2M), tori 5.41M → 5.03M (4.47M → 4.16M). Trying all three edges of each
+/// triangle gains 0.4% more for three times the fits.
+fn leaf_box(
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    area_normals: &[Vector3],
+    range: &[u32],
+    parent_axes: Option<&Matrix3>,
+) -> Obb {
+    let points = || {
+        range
+            .iter()
+            .flat_map(|&t| triangles[t as usize].iter().map(|&v| vertices[v as usize]))
+    };
+    let triangle_frame = |t: u32| {
+        let [p, q, _] = triangles[t as usize].map(|v| vertices[v as usize]);
+        let e = (q - p).try_normalize(0.0)?;
+        let n = area_normals[t as usize].try_normalize(0.0)?;
+        Some(Matrix3::from_columns(&[e, n.cross(&e), n]))
+    };
+    // The first triangle's frame, or for a degenerate one any frame: every leaf gets a box.
+    let first = triangle_frame(range[0]).unwrap_or_else(|| {
+        let [p, q, _] = triangles[range[0] as usize].map(|v| vertices[v as usize]);
+        let e = (q - p).try_normalize(0.0).unwrap_or_else(Vector3::x);
+        let n = e
+            .cross(&Vector3::y())
+            .try_normalize(0.0)
+            .unwrap_or_else(Vector3::z);
+        Matrix3::from_columns(&[e, n.cross(&e), n])
+    });
+    let surface = |o: &Obb| {
+        let h = o.half_extents;
+        h.x * h.y + h.y * h.z + h.z * h.x
+    };
+    let others = range[1..].iter().filter_map(|&t| triangle_frame(t));
+    let patch = parent_axes
+        .filter(|_| range.len() > 1)
+        .and_then(|axes| patch_frame(area_normals, range, axes));
+    let mut best = Obb::fit_with_axes(points(), first);
+    for axes in others.chain(patch) {
+        let candidate = Obb::fit_with_axes(points(), axes);
+        if surface(&candidate) < surface(&best) {
+            best = candidate;
+        }
+    }
+    best
 }
 
 /// The frame of a patch whose facets face one way (see [`COHERENT_NORMALS`]): the mean normal
