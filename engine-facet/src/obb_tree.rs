@@ -103,8 +103,8 @@ impl ObbTree {
             } else {
                 let patch = parent_axes.filter(|_| range.len() <= PATCH_FRAME_MAX_TRIANGLES);
                 match patch.and_then(|axes| patch_frame(&area_normals, range, &axes)) {
-                    Some(axes) => Obb::fit_with_axes(points, axes),
-                    None => Obb::fit(points),
+                    Some(axes) => Obb::fit_with_axes(points.clone(), axes),
+                    None => Obb::fit(points.clone()),
                 }
             };
             if range.len() <= LEAF_TRIANGLES {
@@ -118,6 +118,12 @@ impl ObbTree {
             }
             let axis_index = obb.half_extents.imax();
             let axis = obb.axes.column(axis_index).into_owned();
+            // The split follows the node's own frame, but the box kept is the smaller of its
+            // own and its parent's axes' (see `smaller_box`).
+            let obb = match parent_axes {
+                Some(axes) => smaller_box(obb, Obb::fit_with_axes(points, axes)),
+                None => obb,
+            };
             let key = |t: &u32| centroids[*t as usize].dot(&axis);
             let mean = range.iter().map(key).sum::<f64>() / range.len() as f64;
             let mut split = partition(range, |t| key(t) < mean);
@@ -247,22 +253,31 @@ fn leaf_box(
             .unwrap_or_else(Vector3::z);
         Matrix3::from_columns(&[e, n.cross(&e), n])
     });
-    let surface = |o: &Obb| {
-        let h = o.half_extents;
-        h.x * h.y + h.y * h.z + h.z * h.x
-    };
     let others = range[1..].iter().filter_map(|&t| triangle_frame(t));
     let patch = parent_axes
         .filter(|_| range.len() > 1)
         .and_then(|axes| patch_frame(area_normals, range, axes));
-    let mut best = Obb::fit_with_axes(points(), first);
-    for axes in others.chain(patch) {
-        let candidate = Obb::fit_with_axes(points(), axes);
-        if surface(&candidate) < surface(&best) {
-            best = candidate;
-        }
+    others
+        .chain(patch)
+        .fold(Obb::fit_with_axes(points(), first), |best, axes| {
+            smaller_box(best, Obb::fit_with_axes(points(), axes))
+        })
+}
+
+/// Of two boxes around the same points, the one of least surface area (the first on a tie).
+/// An internal node's box is the smaller of its own frame's and its parent's axes': per query
+/// (callgrind; 64 other seeded poses in brackets) 10k spheres 3.88M → 3.86M instructions
+/// (3.96M → 3.95M), 100k 13.5M → 13.3M (12.2M → 12.0M), tori 5.03M → 4.67M (4.16M → 3.87M).
+fn smaller_box(first: Obb, second: Obb) -> Obb {
+    let surface = |o: &Obb| {
+        let h = o.half_extents;
+        h.x * h.y + h.y * h.z + h.z * h.x
+    };
+    if surface(&second) < surface(&first) {
+        second
+    } else {
+        first
     }
-    best
 }
 
 /// The frame of a patch whose facets face one way (see [`COHERENT_NORMALS`]): the mean normal
