@@ -1,5 +1,6 @@
 //! Triangle–triangle intersection with the intersection segment (Möller 1997, "A fast
-//! triangle-triangle intersection test", with the interval step done on points).
+//! triangle-triangle intersection test": the interval step on each cut end's coordinate along
+//! the line's dominant axis, the segment's points formed only for a crossing).
 //!
 //! Each triangle's vertices are classified against the other's plane by signed distance. A
 //! distance within a band of zero counts as *on* the plane, so vertices on a plane, shared
@@ -133,38 +134,56 @@ pub fn intersect_on_planes(
         });
     }
     let dir = np.cross(nq);
-    let (Some(((a0, fa0, sa0), (a1, fa1, sa1))), Some(((b0, fb0, sb0), (b1, fb1, sb1)))) =
-        (plane_cut(p, &dp, &dir), plane_cut(q, &dq, &dir))
+    // Ends are ordered along the cut line by their coordinate on the axis `dir` leans on most
+    // (signed to run along `dir`): monotonic along the line as the projection on `dir` is, and
+    // one lerp of a coordinate rather than a point and a dot product, so the 3-D points are
+    // formed only for the two ends of a crossing.
+    let axis = dir.iamax();
+    let sign = if dir[axis] < 0.0 { -1.0 } else { 1.0 };
+    let (Some((a0, a1)), Some((b0, b1))) =
+        (plane_cut(p, &dp, axis, sign), plane_cut(q, &dq, axis, sign))
     else {
         return outcome(TrianglePair::Disjoint);
     };
-    // Both cuts lie on the line of the two planes: overlap their intervals along `dir`.
-    if (sa1 < sb0) | (sb1 < sa0) {
+    // Both cuts lie on the line of the two planes: overlap their intervals along it.
+    if (a1.key < b0.key) | (b1.key < a0.key) {
         return outcome(TrianglePair::Disjoint);
     }
     let end_of = |first, feature| SegmentEnd { first, feature };
-    let (start, start_end) = if sa0 >= sb0 {
-        (a0, end_of(true, fa0))
+    let (start, start_end) = if a0.key >= b0.key {
+        (a0.point(p), end_of(true, a0.feature))
     } else {
-        (b0, end_of(false, fb0))
+        (b0.point(q), end_of(false, b0.feature))
     };
-    let (end, end_end) = if sa1 <= sb1 {
-        (a1, end_of(true, fa1))
+    let (end, end_end) = if a1.key <= b1.key {
+        (a1.point(p), end_of(true, a1.feature))
     } else {
-        (b1, end_of(false, fb1))
+        (b1.point(q), end_of(false, b1.feature))
     };
     (TrianglePair::Segment(start, end), [start_end, end_end])
 }
 
 /// The segment where a triangle meets a plane, given its vertices' signed distances (not all
-/// zero, not all of one strict sign), ordered along `dir`, each end with the corner or edge it
-/// lies on and its projection on `dir` (formed once, for the ordering here and the interval
-/// test after).
+/// zero, not all of one strict sign), its ends ordered along the cut line (coordinate `axis`
+/// times `sign`), each with the corner or edge it lies on.
 #[inline]
-fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(CutEnd, CutEnd)> {
+fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], axis: usize, sign: f64) -> Option<(CutEnd, CutEnd)> {
     let cut = |i: usize, j: usize| {
-        let point = t[i] + (t[j] - t[i]) * (d[i] / (d[i] - d[j]));
-        (point, Feature::Edge(i as u8), point.dot(dir))
+        let lambda = d[i] / (d[i] - d[j]);
+        CutEnd {
+            from: i as u8,
+            to: j as u8,
+            lambda,
+            feature: Feature::Edge(i as u8),
+            key: sign * (t[i][axis] + (t[j][axis] - t[i][axis]) * lambda),
+        }
+    };
+    let corner = |i: usize| CutEnd {
+        from: i as u8,
+        to: i as u8,
+        lambda: 0.0,
+        feature: Feature::Corner(i as u8),
+        key: sign * t[i][axis],
     };
     if d[0] != 0.0 && d[1] != 0.0 && d[2] != 0.0 {
         // No corner on the plane (nearly always): one corner lies alone on its side and its
@@ -184,41 +203,70 @@ fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], dir: &Vector3) -> Option<(CutEnd, C
         } else {
             (cut(1, 2), cut(2, 0))
         };
-        let lo = if second.2 < first.2 { second } else { first };
-        let hi = if second.2 > first.2 { second } else { first };
+        let lo = if second.key < first.key {
+            second
+        } else {
+            first
+        };
+        let hi = if second.key > first.key {
+            second
+        } else {
+            first
+        };
         return Some((lo, hi));
     }
-    let mut pts = [(Vector3::zeros(), Feature::Corner(0), 0.0); 4];
+    let mut ends = [corner(0); 4];
     let mut n = 0;
     for i in 0..3 {
         let j = (i + 1) % 3;
         if d[i] == 0.0 {
-            pts[n] = (t[i], Feature::Corner(i as u8), t[i].dot(dir));
+            ends[n] = corner(i);
             n += 1;
         }
         if (d[i] > 0.0 && d[j] < 0.0) || (d[i] < 0.0 && d[j] > 0.0) {
-            pts[n] = cut(i, j);
+            ends[n] = cut(i, j);
             n += 1;
         }
     }
     if n == 0 {
         return None;
     }
-    let (mut lo, mut hi) = (pts[0], pts[0]);
-    for p in &pts[1..n] {
-        if p.2 < lo.2 {
-            lo = *p;
+    let (mut lo, mut hi) = (ends[0], ends[0]);
+    for e in &ends[1..n] {
+        if e.key < lo.key {
+            lo = *e;
         }
-        if p.2 > hi.2 {
-            hi = *p;
+        if e.key > hi.key {
+            hi = *e;
         }
     }
     Some((lo, hi))
 }
 
-/// An end of a triangle's cut by a plane: the point, the feature it lies on and its projection
-/// on the cut line's direction.
-type CutEnd = (Vector3, Feature, f64);
+/// An end of a triangle's cut by a plane: corner `from` (when `to == from`) or the point at
+/// `lambda` along the edge from corner `from` to corner `to`, the feature it lies on, and its
+/// coordinate along the cut line.
+#[derive(Debug, Clone, Copy)]
+struct CutEnd {
+    from: u8,
+    to: u8,
+    lambda: f64,
+    feature: Feature,
+    key: f64,
+}
+
+impl CutEnd {
+    /// The end's point on triangle `t`.
+    #[inline]
+    fn point(&self, t: &[Vector3; 3]) -> Vector3 {
+        let (i, j) = (self.from as usize, self.to as usize);
+        if i == j {
+            t[i]
+        } else {
+            t[i] + (t[j] - t[i]) * self.lambda
+        }
+    }
+}
 
 /// Overlap of two triangles in one plane (normal `n`): project on the plane's dominant axes and
 /// test edges for crossings, then containment of one vertex.
