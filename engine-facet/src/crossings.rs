@@ -33,6 +33,11 @@ pub(crate) fn find_crossings(
     // call for when a small body meets a large one.
     let band = PLANE_EPS * a.longest_edge.max(b.longest_edge);
     let band_squared = band * band;
+    // B's leaves moved into A's frame lately, by the leaf's first triangle (see MOVED_SLOTS).
+    let mut recent = [(
+        u32::MAX,
+        [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES],
+    ); MOVED_SLOTS];
     descend_leaf_pairs(
         &a.tree,
         &b.tree,
@@ -43,11 +48,16 @@ pub(crate) fn find_crossings(
         work,
         |leaf_a, leaf_b| {
             // B's triangles of the leaf moved into A's frame once for all of A's, with their
-            // planes.
-            let mut moved = [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES];
-            for (m, &tb) in moved.iter_mut().zip(leaf_b) {
-                *m = moved_triangle(b, tb, x);
+            // planes, and kept for the next A leaves that meet this B leaf.
+            let key = leaf_b[0];
+            let entry = &mut recent[key as usize % MOVED_SLOTS];
+            if entry.0 != key {
+                entry.0 = key;
+                for (m, &tb) in entry.1.iter_mut().zip(leaf_b) {
+                    *m = moved_triangle(b, tb, x);
+                }
             }
+            let moved = &entry.1;
             for &ta in leaf_a {
                 let p = a.corners(ta);
                 let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
@@ -58,7 +68,7 @@ pub(crate) fn find_crossings(
                 let band_n_squared = band_squared * n.norm_squared();
                 let mut distances = [[0.0; 3]; LEAF_TRIANGLES];
                 let mut keep = 0u32;
-                for (k, (d, (q, _))) in distances.iter_mut().zip(&moved).enumerate() {
+                for (k, (d, (q, _))) in distances.iter_mut().zip(moved).enumerate() {
                     *d = [
                         n.dot(&(q[0] - p[0])),
                         n.dot(&(q[1] - p[0])),
@@ -96,6 +106,13 @@ pub(crate) fn find_crossings(
     );
     work.primitive_tests += tests;
 }
+
+/// Slots of the direct-mapped store of B leaves moved into A's frame (one query's; 6 KB). A B
+/// leaf meets two or three A leaves, mostly close together in the descent: with 16 slots, per
+/// query (callgrind, the bench's poses) 10k spheres 3.68M → 3.63M instructions, 100k 12.7M →
+/// 12.6M, and about 3% less time (interleaved runs); 64 slots gain 0.1% more, 4 slots half as
+/// much. Contacts unchanged bit for bit.
+const MOVED_SLOTS: usize = 16;
 
 /// B's triangle `tb` moved into A's frame, with its plane's normal `(q₁ − q₀) × (q₂ − q₀)`.
 #[inline]
