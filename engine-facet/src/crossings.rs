@@ -23,6 +23,7 @@ pub(crate) fn find_crossings(
         stack,
         hits,
         box_cache,
+        moved: recent,
         ..
     } = s;
     hits.clear();
@@ -33,11 +34,7 @@ pub(crate) fn find_crossings(
     // call for when a small body meets a large one.
     let band = PLANE_EPS * a.longest_edge.max(b.longest_edge);
     let band_squared = band * band;
-    // B's leaves moved into A's frame lately, by the leaf's first triangle (see MOVED_SLOTS).
-    let mut recent = [(
-        u32::MAX,
-        [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES],
-    ); MOVED_SLOTS];
+    recent.reset();
     descend_leaf_pairs(
         &a.tree,
         &b.tree,
@@ -49,15 +46,7 @@ pub(crate) fn find_crossings(
         |leaf_a, leaf_b| {
             // B's triangles of the leaf moved into A's frame once for all of A's, with their
             // planes, and kept for the next A leaves that meet this B leaf.
-            let key = leaf_b[0];
-            let entry = &mut recent[key as usize % MOVED_SLOTS];
-            if entry.0 != key {
-                entry.0 = key;
-                for (m, &tb) in entry.1.iter_mut().zip(leaf_b) {
-                    *m = moved_triangle(b, tb, x);
-                }
-            }
-            let moved = &entry.1;
+            let moved = recent.get(leaf_b, |tb| moved_triangle(b, tb, x));
             for &ta in leaf_a {
                 let p = a.corners(ta);
                 let n = (p[1] - p[0]).cross(&(p[2] - p[0]));
@@ -113,6 +102,50 @@ pub(crate) fn find_crossings(
 /// 12.6M, and about 3% less time (interleaved runs); 64 slots gain 0.1% more, 4 slots half as
 /// much. Contacts unchanged bit for bit.
 const MOVED_SLOTS: usize = 16;
+
+/// A leaf's triangles moved into A's frame, each with its plane's normal.
+type MovedLeaf = [([Vector3; 3], Vector3); LEAF_TRIANGLES];
+
+/// The direct-mapped store of B leaves moved into A's frame, keyed by a leaf's first triangle.
+/// It lives in the scratch buffers, so a query clears only its keys (a separated query would
+/// otherwise pay for filling 6 KB).
+#[derive(Debug, Default)]
+pub(crate) struct MovedLeaves {
+    keys: [u32; MOVED_SLOTS],
+    leaves: Vec<MovedLeaf>,
+}
+
+impl MovedLeaves {
+    /// Forgets every leaf (a new query, a new pose).
+    fn reset(&mut self) {
+        self.keys = [u32::MAX; MOVED_SLOTS];
+        if self.leaves.len() < MOVED_SLOTS {
+            self.leaves.resize(
+                MOVED_SLOTS,
+                [([Vector3::zeros(); 3], Vector3::zeros()); LEAF_TRIANGLES],
+            );
+        }
+    }
+
+    /// The leaf's triangles moved by `move_triangle`, moved now unless stored already. Entries
+    /// past the leaf's length hold another leaf's triangles: callers read only `leaf.len()`.
+    #[inline]
+    fn get(
+        &mut self,
+        leaf: &[u32],
+        move_triangle: impl Fn(u32) -> ([Vector3; 3], Vector3),
+    ) -> &MovedLeaf {
+        let key = leaf[0];
+        let slot = key as usize % MOVED_SLOTS;
+        if self.keys[slot] != key {
+            self.keys[slot] = key;
+            for (m, &t) in self.leaves[slot].iter_mut().zip(leaf) {
+                *m = move_triangle(t);
+            }
+        }
+        &self.leaves[slot]
+    }
+}
 
 /// B's triangle `tb` moved into A's frame, with its plane's normal `(q₁ − q₀) × (q₂ − q₀)`.
 #[inline]

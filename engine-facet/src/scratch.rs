@@ -149,6 +149,8 @@ pub(crate) struct Scratch {
     pub polygon_next: Vec<Vector3>,
     pub local: Vec<crate::contact_region::LocalContact>,
     pub box_cache: crate::obb_tree::BoxCache,
+    /// B's leaves moved into A's frame lately (see [`crate::crossings`]).
+    pub moved: crate::crossings::MovedLeaves,
 }
 
 thread_local! {
