@@ -8,9 +8,10 @@
 //! (see [`COHERENT_NORMALS`], [`PATCH_FRAME_MAX_TRIANGLES`]) is a patch of surface: its box
 //! takes the mean normal as its thin axis and the parent's axis most nearly in the patch's
 //! plane as its first, with no eigen solve. Other nodes (the root, large nodes, a patch that
-//! wraps round) take the principal axes of their vertex covariance. A leaf's box takes its
-//! first triangle's own frame (edge, in-plane perpendicular, facet normal), which is flat and
-//! tight.
+//! wraps round) take the principal axes of their vertex covariance, and keep the box in their
+//! parent's axes instead when that one is smaller. A leaf's box is the smallest of those in
+//! its triangles' own frames (edge, in-plane perpendicular, facet normal: flat and tight) and
+//! its patch frame.
 
 use crate::obb::{Obb, boxes_overlap_in_frame};
 use contact_core::{Matrix3, Point3, Vector3, WorkCounters};
@@ -521,11 +522,13 @@ mod tests {
             v(2.0, 0.0, 0.4),
             v(2.0, 1.0, 0.4),
         ];
-        let triangles = [[0, 1, 2], [1, 3, 2], [1, 4, 3], [4, 5, 3]];
-        let normals: Vec<Vector3> = triangles
-            .iter()
-            .map(|t: &[usize; 3]| (strip[t[1]] - strip[t[0]]).cross(&(strip[t[2]] - strip[t[0]])))
-            .collect();
+        let area_normals = |points: &[Vector3], faces: &[[usize; 3]]| -> Vec<Vector3> {
+            faces
+                .iter()
+                .map(|t| (points[t[1]] - points[t[0]]).cross(&(points[t[2]] - points[t[0]])))
+                .collect()
+        };
+        let normals = area_normals(&strip, &[[0, 1, 2], [1, 3, 2], [1, 4, 3], [4, 5, 3]]);
         let parent = nalgebra::Rotation3::from_euler_angles(0.3, -0.2, 0.9).into_inner();
         let axes = patch_frame(&normals, &[0, 1, 2, 3], &parent).unwrap();
         assert!((axes.transpose() * axes - Matrix3::identity()).norm() < 1e-14);
@@ -539,11 +542,7 @@ mod tests {
             v(0.0, 1.0, 0.0),
             v(0.0, 0.0, 1.0),
         ];
-        let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-        let closed: Vec<Vector3> = faces
-            .iter()
-            .map(|t: &[usize; 3]| (tetra[t[1]] - tetra[t[0]]).cross(&(tetra[t[2]] - tetra[t[0]])))
-            .collect();
+        let closed = area_normals(&tetra, &[[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]);
         assert!(patch_frame(&closed, &[0, 1, 2, 3], &parent).is_none());
     }
 }

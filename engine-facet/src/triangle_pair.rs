@@ -171,16 +171,12 @@ fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], axis: usize, sign: f64) -> Option<(
     let cut = |i: usize, j: usize| {
         let lambda = d[i] / (d[i] - d[j]);
         CutEnd {
-            from: i as u8,
-            to: j as u8,
             lambda,
             feature: Feature::Edge(i as u8),
             key: sign * (t[i][axis] + (t[j][axis] - t[i][axis]) * lambda),
         }
     };
     let corner = |i: usize| CutEnd {
-        from: i as u8,
-        to: i as u8,
         lambda: 0.0,
         feature: Feature::Corner(i as u8),
         key: sign * t[i][axis],
@@ -243,13 +239,10 @@ fn plane_cut(t: &[Vector3; 3], d: &[f64; 3], axis: usize, sign: f64) -> Option<(
     Some((lo, hi))
 }
 
-/// An end of a triangle's cut by a plane: corner `from` (when `to == from`) or the point at
-/// `lambda` along the edge from corner `from` to corner `to`, the feature it lies on, and its
-/// coordinate along the cut line.
+/// An end of a triangle's cut by a plane: the corner or edge it lies on (on edge `k`, at
+/// `lambda` from corner `k` towards corner `k + 1`) and its coordinate along the cut line.
 #[derive(Debug, Clone, Copy)]
 struct CutEnd {
-    from: u8,
-    to: u8,
     lambda: f64,
     feature: Feature,
     key: f64,
@@ -259,11 +252,12 @@ impl CutEnd {
     /// The end's point on triangle `t`.
     #[inline]
     fn point(&self, t: &[Vector3; 3]) -> Vector3 {
-        let (i, j) = (self.from as usize, self.to as usize);
-        if i == j {
-            t[i]
-        } else {
-            t[i] + (t[j] - t[i]) * self.lambda
+        match self.feature {
+            Feature::Corner(k) => t[k as usize],
+            Feature::Edge(k) => {
+                let (i, j) = (k as usize, (k as usize + 1) % 3);
+                t[i] + (t[j] - t[i]) * self.lambda
+            }
         }
     }
 }
