@@ -11,7 +11,7 @@
 
 use super::clipped::{self, box_planes, unit_for};
 use crate::kernel::PairContact;
-use crate::polyhedron::ConvexPolyhedron;
+use crate::polyhedron::{ConvexPolyhedron, MAX_FACE_VERTICES, MAX_FACES};
 use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 
@@ -56,12 +56,12 @@ pub(crate) fn contact(
     }) {
         return None;
     }
-    let poly = ConvexPolyhedron::<14, 18>::cuboid(&center, &half_axes);
+    let mut poly = ConvexPolyhedron::<MAX_FACES, MAX_FACE_VERTICES>::cuboid(&center, &half_axes);
     let planes_a = box_planes(&center, &unit_axes, &ha);
     let planes_b = box_planes(
         &Point3::origin(),
         &[Vector3::x(), Vector3::y(), Vector3::z()],
         &hb,
     );
-    clipped::contact(poly, &planes_a, &planes_b, &planes_b, &frame_b, unit)
+    clipped::contact(&mut poly, &planes_a, &planes_b, &planes_b, &frame_b, unit)
 }

@@ -95,9 +95,9 @@ fn bounded(
     }
     let planes_box = box_planes(&center, &unit_axes, &half);
     // Up to five planes: at most 11 faces; a box face gains one vertex per plane.
-    let poly = ConvexPolyhedron::<11, 12>::cuboid(&center, &half_axes);
+    let mut poly = ConvexPolyhedron::<11, 12>::cuboid(&center, &half_axes);
     clipped::contact(
-        poly,
+        &mut poly,
         &planes_box,
         &prism[..count],
         &prism[..1],

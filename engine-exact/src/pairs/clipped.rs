@@ -103,7 +103,7 @@ pub(crate) fn box_planes(center: &Point3, axes: &[Vector3; 3], half: &Vector3) -
 /// `surface_b` are the planes whose union is `b`'s surface (all of `planes_b` for a solid, the
 /// plane alone for a plane's prism).
 pub(crate) fn contact<const F: usize, const V: usize>(
-    mut poly: ConvexPolyhedron<F, V>,
+    poly: &mut ConvexPolyhedron<F, V>,
     planes_a: &[HalfSpace],
     planes_b: &[HalfSpace],
     surface_b: &[HalfSpace],
