@@ -362,7 +362,8 @@ impl Kernel {
                 ref frustum,
             } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
             Self::CylinderPlane { ref cylinder, side } => {
-                pairs::cylinder_plane::contact(cylinder, pose_a, pose_b, side, work)
+                pairs::cylinder_plane::emit_contact(cylinder, pose_a, pose_b, side, work, emit);
+                None
             }
             Self::CylinderSliced {
                 ref cylinder,

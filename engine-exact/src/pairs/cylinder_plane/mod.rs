@@ -12,16 +12,17 @@
 //! piece between kinks. On a piece `ℓ = L₀ + L₁u` and the height moment is quadratic in `u`,
 //! so the piece needs only `∫ 2√(R² − u²) uᵏ du`, `k ≤ 2`, whose antiderivatives are closed
 //! forms in `φ`, `sin φ = u/R` and `cos φ`: no trigonometric call beyond the kinks' `asin`.
-//! A difference of antiderivatives loses digits on a small piece (a grazing cut near the rim)
-//! and `L₀ + L₁u` on an axis nearly parallel to the plane (huge `L₀`, `L₁` of opposite sign), so
-//! each piece's closed form is kept only where its round-off bound (8ε times the terms'
-//! magnitudes) is below 1e-13 of the piece's integrals; otherwise the piece is summed node by
-//! node by 12-node Gauss–Legendre in `φ` ([`crate::quadrature`]), exact to round-off on these
-//! polynomials, each interval's length formed at its node. Small pieces within `R/2` of the
-//! rim (the cuts of shallow contacts) are first tried by their moments about their inner kink
-//! (`end_piece`, `rim_moments`): series in the distance from the rim, free of both
-//! cancellations. In practice deep contacts are wholly closed form, a shallow one's rim pieces
-//! take the series, and the node rule is left to pieces that are neither. This stays exact when
+//! A piece within `R/2` of the rim whose inner end is a kink (the cuts of shallow contacts)
+//! takes its moments about that kink (`end_piece`, `rim_moments`): series in the distance
+//! from the rim, free of the cancellations below and of the kink's `asin`. For the other
+//! pieces, a difference of antiderivatives loses digits on a small piece and `L₀ + L₁u` on
+//! an axis nearly parallel to the plane (huge `L₀`, `L₁` of opposite sign), so each piece's
+//! closed form is kept only where its round-off bound (8ε times the terms' magnitudes) is
+//! below 1e-13 of the piece's integrals; otherwise the piece is summed node by node by
+//! 12-node Gauss–Legendre in `φ` ([`crate::quadrature`]), exact to round-off on these
+//! polynomials, each interval's length formed at its node. In practice a shallow contact is
+//! wholly series (a wheel on the ground: no `asin` at all), a deep one wholly closed form,
+//! and the node rule is left to pieces that are neither. This stays exact when
 //! the axis is parallel to the plane (a wheel on the ground, `b = 0`) or perpendicular to it
 //! (`a = 0`).
 //!
@@ -52,6 +53,7 @@ use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Contact of `cylinder` at `pose_c` with the plane at `pose_plane` (flipped when `side < 0`).
+#[cfg(test)]
 pub(crate) fn contact(
     cylinder: &Cylinder,
     pose_c: &Isometry3,
@@ -60,6 +62,21 @@ pub(crate) fn contact(
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
     contact_by(cylinder, pose_c, pose_plane, side, work, Rule::ClosedForm)
+}
+
+/// [`contact`], handed to `emit` when there is one: built where it is consumed, so the
+/// contact is not stored on return and read back before the stores retire.
+pub(crate) fn emit_contact(
+    cylinder: &Cylinder,
+    pose_c: &Isometry3,
+    pose_plane: &Isometry3,
+    side: f64,
+    work: &mut WorkCounters,
+    emit: &mut impl FnMut(PairContact),
+) {
+    if let Some(c) = contact_by(cylinder, pose_c, pose_plane, side, work, Rule::ClosedForm) {
+        emit(c);
+    }
 }
 
 /// How each piece's chord integrals are taken.
@@ -73,6 +90,7 @@ enum Rule {
 }
 
 /// [`contact`] with the rule for the pieces' integrals.
+#[inline(always)]
 fn contact_by(
     cylinder: &Cylinder,
     pose_c: &Isometry3,
@@ -147,9 +165,10 @@ fn slice_moments(
     rule: Rule,
     work: &mut WorkCounters,
 ) -> (f64, f64, f64, f64) {
-    // Kinks of ℓ(u), as angles φ = asin(u/R) with sin φ and cos φ, sorted, with the ends
-    // ±π/2. The sine is u/R exactly and the cosine √((R − u)(R + u))/R, free of the
-    // cancellation of √(1 − sin²) near the ends.
+    // Kinks of ℓ(u) with the sine u/R of their angle φ = asin(u/R) and its cosine, sorted,
+    // with the ends ±π/2. The sine is u/R exactly and the cosine √((R − u)(R + u))/R, free of
+    // the cancellation of √(1 − sin²) near the ends. The angle itself (an `asin`) is taken
+    // only for a piece that needs it: one the end-piece series does not serve.
     let end = |s: f64| Cut {
         phi: s * FRAC_PI_2,
         sin: s,
@@ -167,10 +186,14 @@ fn slice_moments(
         };
         for (u, z) in kinks {
             let clamped = u.clamp(-r, r);
-            let sin = clamped / r;
             cuts[count] = Cut {
-                phi: sin.asin(),
-                sin,
+                // A kink clamped to the rim has its angle already: ±π/2.
+                phi: if clamped == u {
+                    f64::NAN
+                } else {
+                    clamped.signum() * FRAC_PI_2
+                },
+                sin: clamped / r,
                 cos: ((r - clamped) * (r + clamped)).sqrt() / r,
                 u: clamped,
                 z: if clamped == u { z } else { f64::NAN },
@@ -180,19 +203,17 @@ fn slice_moments(
     }
     cuts[count] = end(1.0);
     count += 1;
-    // The ends are the extremes (the kinks are clamped to ±R): only the kinks need ordering.
-    if count == 4 && cuts[1].phi.total_cmp(&cuts[2].phi).is_gt() {
+    // The ends are the extremes (the kinks are clamped to ±R): only the kinks need ordering,
+    // by `u` (the angle rises with it).
+    if count == 4 && cuts[1].u.total_cmp(&cuts[2].u).is_gt() {
         cuts.swap(1, 2);
     }
-    // Each cut's antiderivatives once, for the pieces on both sides of it.
-    let mut antiderivatives = [[0.0; 3]; 4];
-    for (f, c) in antiderivatives.iter_mut().zip(&cuts[..count]) {
-        *f = chord_antiderivatives(c);
-    }
+    // Each cut's angle and antiderivatives at most once, for the pieces on both sides of it.
+    let (mut antiderivatives, mut formed) = ([[0.0; 3]; 4], [false; 4]);
     let (mut volume, mut moment_u, mut moment_z, mut section) = (0.0, 0.0, 0.0, 0.0);
     for k in 0..count - 1 {
         let (c0, c1) = (cuts[k], cuts[k + 1]);
-        if c1.phi <= c0.phi {
+        if c1.u <= c0.u {
             continue;
         }
         // On a piece the solid's z interval has fixed branches, read inside it (the middle of
@@ -207,61 +228,31 @@ fn slice_moments(
             let z = (h - a * mid) / b;
             (0.0..=len).contains(&z)
         };
-        // ℓ = L₀ + L₁u and ½(hi² − lo²) = Z₀ + Z₁u + Z₂u².
-        let length = [hi_c - lo_c, hi_s - lo_s];
-        let height = [
-            0.5 * (hi_c * hi_c - lo_c * lo_c),
-            hi_c * hi_s - lo_c * lo_s,
-            0.5 * (hi_s * hi_s - lo_s * lo_s),
-        ];
-        let combine = |m: &[f64; 3]| {
-            (
-                length[0] * m[0] + length[1] * m[1],
-                length[0] * m[1] + length[1] * m[2],
-                height[0] * m[0] + height[1] * m[1] + height[2] * m[2],
-            )
-        };
-        let (closed, bound) = chord_moments(r, &antiderivatives[k], &antiderivatives[k + 1]);
-        let (v, mu, mz) = combine(&closed);
-        // The closed form is a difference of antiderivatives: trusted where its round-off
-        // bound is far below the piece's own integrals; a small piece (a grazing cut) takes
-        // the Gauss rule, whose error is relative to the integrand.
-        let (abs_l, abs_z) = (
-            [length[0].abs(), length[1].abs()],
-            [height[0].abs(), height[1].abs(), height[2].abs()],
-        );
-        let error = 8.0
-            * f64::EPSILON
-            * ((abs_l[0] + abs_z[0]) * bound[0]
-                + (abs_l[0] + abs_l[1] + abs_z[1]) * bound[1]
-                + (abs_l[1] + abs_z[2]) * bound[2]);
-        let trusted = rule == Rule::ClosedForm && error <= 1e-13 * (v.abs() + mu.abs() + mz.abs());
-        let near_end = || {
-            (rule == Rule::ClosedForm)
-                .then(|| end_piece(r, &c0, &c1, (lo_c, lo_s), (hi_c, hi_s)))
-                .flatten()
-        };
-        let (v, mu, mz, chords) = if trusted {
-            (v, mu, mz, closed[0])
-        } else if let Some(sums) = near_end() {
-            sums
-        } else {
-            // Node by node, each interval's length formed where it is evaluated (a nearly
-            // parallel axis makes `L₀ + L₁u` a difference of huge terms).
-            let (mut v, mut mu, mut mz, mut chords) = (0.0, 0.0, 0.0, 0.0);
-            quadrature::for_each_node(c0.phi, c1.phi, |phi, w| {
-                let (sin, cos) = phi.sin_cos();
-                let u = r * sin;
-                let weight = w * 2.0 * r * r * cos * cos;
-                let (lo, hi) = interval(a, b, h, len, u);
-                let length = (hi - lo).max(0.0);
-                v += weight * length;
-                mu += weight * length * u;
-                mz += weight * 0.5 * (hi + lo) * length;
-                chords += weight;
-            });
-            work.iterations += quadrature::NODES as u64;
-            (v, mu, mz, chords)
+        // A piece within R/2 of the rim (a shallow cut) takes the end-piece series, free of
+        // the closed form's cancellations and of its `asin`; the others the closed form where
+        // its round-off bound allows, else the node rule.
+        let near_end = (rule == Rule::ClosedForm)
+            .then(|| end_piece(r, &c0, &c1, (lo_c, lo_s), (hi_c, hi_s)))
+            .flatten();
+        let (v, mu, mz, chords) = match near_end {
+            Some(sums) => sums,
+            None => {
+                for i in [k, k + 1] {
+                    if !formed[i] {
+                        antiderivatives[i] = chord_antiderivatives(&cuts[i]);
+                        formed[i] = true;
+                    }
+                }
+                let (f0, f1) = (antiderivatives[k], antiderivatives[k + 1]);
+                closed_or_nodes(
+                    (a, b, h, r, len),
+                    (&c0, &c1),
+                    (&f0, &f1),
+                    ((lo_c, lo_s), (hi_c, hi_s)),
+                    rule,
+                    work,
+                )
+            }
         };
         volume += v;
         moment_u += mu;
@@ -273,8 +264,66 @@ fn slice_moments(
     (volume, moment_u, moment_z, section)
 }
 
-/// A cut of the chords' range: the angle `φ` of `u = R sin φ` with its sine and cosine, `u`
-/// itself, and at a kink the height the plane's line `(h − a u)/b` takes there exactly (0 or
+/// A piece's `(volume, u-moment, z-moment, ∫ chords)` in closed form from its ends'
+/// antiderivatives `f0`, `f1` where the round-off bound of that difference is far below the
+/// piece's own integrals, else by the node rule (whose error is relative to the integrand),
+/// for the plane `a·u + b·z ≤ h` (`shape = (a, b, h, R, L)`) and the piece's branches.
+fn closed_or_nodes(
+    (a, b, h, r, len): (f64, f64, f64, f64, f64),
+    (c0, c1): (&Cut, &Cut),
+    (f0, f1): (&[f64; 3], &[f64; 3]),
+    ((lo_c, lo_s), (hi_c, hi_s)): ((f64, f64), (f64, f64)),
+    rule: Rule,
+    work: &mut WorkCounters,
+) -> (f64, f64, f64, f64) {
+    // ℓ = L₀ + L₁u and ½(hi² − lo²) = Z₀ + Z₁u + Z₂u².
+    let length = [hi_c - lo_c, hi_s - lo_s];
+    let height = [
+        0.5 * (hi_c * hi_c - lo_c * lo_c),
+        hi_c * hi_s - lo_c * lo_s,
+        0.5 * (hi_s * hi_s - lo_s * lo_s),
+    ];
+    let (closed, bound) = chord_moments(r, f0, f1);
+    let v = length[0] * closed[0] + length[1] * closed[1];
+    let mu = length[0] * closed[1] + length[1] * closed[2];
+    let mz = height[0] * closed[0] + height[1] * closed[1] + height[2] * closed[2];
+    let (abs_l, abs_z) = (
+        [length[0].abs(), length[1].abs()],
+        [height[0].abs(), height[1].abs(), height[2].abs()],
+    );
+    let error = 8.0
+        * f64::EPSILON
+        * ((abs_l[0] + abs_z[0]) * bound[0]
+            + (abs_l[0] + abs_l[1] + abs_z[1]) * bound[1]
+            + (abs_l[1] + abs_z[2]) * bound[2]);
+    if rule == Rule::ClosedForm && error <= 1e-13 * (v.abs() + mu.abs() + mz.abs()) {
+        return (v, mu, mz, closed[0]);
+    }
+    // Node by node, each interval's length formed where it is evaluated (a nearly parallel
+    // axis makes `L₀ + L₁u` a difference of huge terms).
+    let (mut v, mut mu, mut mz, mut chords) = (0.0, 0.0, 0.0, 0.0);
+    quadrature::for_each_node(angle(c0), angle(c1), |phi, w| {
+        let (sin, cos) = phi.sin_cos();
+        let u = r * sin;
+        let weight = w * 2.0 * r * r * cos * cos;
+        let (lo, hi) = interval(a, b, h, len, u);
+        let length = (hi - lo).max(0.0);
+        v += weight * length;
+        mu += weight * length * u;
+        mz += weight * 0.5 * (hi + lo) * length;
+        chords += weight;
+    });
+    work.iterations += quadrature::NODES as u64;
+    (v, mu, mz, chords)
+}
+
+/// A cut's angle `φ = asin(u/R)` (the ends carry theirs, ±π/2).
+fn angle(c: &Cut) -> f64 {
+    if c.phi.is_nan() { c.sin.asin() } else { c.phi }
+}
+
+/// A cut of the chords' range: the angle `φ` of `u = R sin φ` (NaN at a kink until
+/// [`angle`] takes it) with its sine and cosine, `u` itself, and at a kink the height the plane's line `(h − a u)/b` takes there exactly (0 or
 /// the length; NaN at the ends ±R).
 #[derive(Debug, Clone, Copy)]
 struct Cut {
@@ -328,7 +377,7 @@ fn interval_branches(a: f64, b: f64, h: f64, len: f64, u: f64) -> ((f64, f64), (
 /// The antiderivatives of `∫ cos²φ sinᵏφ dφ`, `k = 0, 1, 2`, at a cut: `(φ + s c)/2`, `−c³/3`
 /// and `φ/8 − s c (c² − s²)/8`.
 fn chord_antiderivatives(c: &Cut) -> [f64; 3] {
-    let (s, co, phi) = (c.sin, c.cos, c.phi);
+    let (s, co, phi) = (c.sin, c.cos, angle(c));
     [
         0.5 * (phi + s * co),
         -co * co * co / 3.0,
