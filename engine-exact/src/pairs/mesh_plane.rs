@@ -48,6 +48,9 @@ pub struct PreparedMesh {
     /// Per triangle, a ball around it (its centroid and the farthest corner's distance), so a
     /// line that passes it by is not intersected with it ([`exit_along`]).
     pub(crate) balls: Vec<(Point3, f64)>,
+    /// Per triangle, its unit normal (zero for a degenerate one), so a line that crosses the
+    /// triangle's plane outside its ball is not intersected with it ([`exit_along`]).
+    pub(crate) normals: Vec<Vector3>,
 }
 
 impl PreparedMesh {
@@ -86,6 +89,16 @@ impl PreparedMesh {
                 (g, r)
             })
             .collect();
+        let normals = triangles
+            .iter()
+            .map(|tri| {
+                let [a, b, c] = tri.map(|v| vertices[v as usize]);
+                (b - a)
+                    .cross(&(c - a))
+                    .try_normalize(0.0)
+                    .unwrap_or_default()
+            })
+            .collect();
         Some(Self {
             vertices,
             triangles,
@@ -94,6 +107,7 @@ impl PreparedMesh {
             radius,
             inverted: false,
             balls,
+            normals,
         })
     }
 
@@ -112,6 +126,7 @@ impl PreparedMesh {
             radius: self.radius,
             inverted: !self.inverted,
             balls: self.balls.clone(),
+            normals: self.normals.iter().map(|n| -n).collect(),
         }
     }
 }
@@ -269,11 +284,15 @@ pub(crate) fn contacts(
 /// triangle, [`line_triangle`] with the barycentric bounds widened by 1e-12, so a line through
 /// a shared edge or corner meets one of its triangles despite round-off), or `None`. A
 /// triangle whose ball (grown by 1e-9, more than the widening moves a hit) the line passes by,
-/// lies behind `p` or beyond the nearest hit so far is not intersected: it could give no
-/// nearer hit, so the answer is the same.
+/// lies behind `p` or beyond the nearest hit so far, or whose plane the line crosses outside
+/// the ball, is not intersected: it could give no nearer hit, so the answer is the same.
+/// (The last test spares the walls a line runs along: against the ball alone the line from a
+/// foot's centroid down through its sole is intersected with every wall of the foot.)
 pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -> Option<Point3> {
     let mut best = f64::INFINITY;
-    for (tri, (centre, radius)) in mesh.triangles.iter().zip(&mesh.balls) {
+    for ((tri, (centre, radius)), normal) in
+        mesh.triangles.iter().zip(&mesh.balls).zip(&mesh.normals)
+    {
         let e = centre - p;
         let along = e.dot(direction);
         let reach = radius * (1.0 + 1e-9);
@@ -282,6 +301,21 @@ pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -
         // room for the round-off of `|e|² − along²`.
         let passes_by = square - along * along > reach * reach + 1e-15 * square;
         if passes_by | (along + reach < 0.0) | (along - reach > best) {
+            continue;
+        }
+        // Where the line crosses the triangle's plane (through its centroid), against the
+        // ball, with room for that crossing's round-off, ε·|e|/|n·d| (1e-6·|e|/|n·d| here). A line
+        // parallel to the plane and off it crosses at infinity (missed, as `line_triangle`
+        // finds); one in the plane gives NaN and is tried.
+        let denominator = normal.dot(direction);
+        let t = normal.dot(&e) / denominator;
+        let room = 1e-12 * square / (denominator * denominator);
+        let off = t * direction - e;
+        let misses = off.norm_squared() > reach * reach + room;
+        // Or it crosses behind `p`, or beyond the nearest hit so far, by more than that room.
+        let behind = (t < 0.0) & (t * t > room);
+        let beyond = (t > best) & ((t - best) * (t - best) > room);
+        if misses | behind | beyond {
             continue;
         }
         let [a, b, c] = tri.map(|v| mesh.vertices[v as usize].coords);
