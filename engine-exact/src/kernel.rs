@@ -94,7 +94,8 @@ pub(crate) enum Kernel {
     EllipsoidTorus { semi_axes: Vector3, torus: Torus },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
-    /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing.
+    /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing (two parallel
+    /// cylinders in closed form).
     CylinderSliced {
         cylinder: Cylinder,
         other: pairs::cylinder_solid::Other,

@@ -1,7 +1,7 @@
 //! Characterization rows of the sliced pairs: cylinder–cylinder, cylinder–box and a cylinder
 //! on a bounded plane, against [`crate::sliced_oracles`].
 
-use super::{Case, ITERATIVE_BOUND, Row, run};
+use super::{CLOSED_FORM_BOUND, Case, ITERATIVE_BOUND, Row, run};
 use crate::common::{Expected, Rng, instance};
 use crate::sliced_oracles::{self as oracles, VolumeCentroid};
 use contact_core::geometry::{Cuboid, Cylinder, Plane};
@@ -64,17 +64,21 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
         bound: ITERATIVE_BOUND,
         ..row
     };
+    let closed_form = |row: Row| Row {
+        bound: CLOSED_FORM_BOUND,
+        ..row
+    };
     let gradient = |row: Row| Row {
         bound: GRADIENT_ORACLE_BOUND,
         ..row
     };
     vec![
-        iterative(run(
+        closed_form(run(
             rng,
             SAMPLES,
             "cylinder–cylinder",
             "parallel axes, lens × axial overlap, caps inside or not",
-            "slicing; oracle: lens closed form",
+            "closed form (lens × overlap); oracle: segments by acos",
             |rng| parallel(rng, 0.0),
         )),
         iterative(run(
