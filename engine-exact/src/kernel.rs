@@ -94,8 +94,8 @@ pub(crate) enum Kernel {
     EllipsoidTorus { semi_axes: Vector3, torus: Torus },
     /// Cylinder `a` against an unbounded plane `b`.
     CylinderPlane { cylinder: Cylinder, side: f64 },
-    /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing (two parallel
-    /// cylinders in closed form).
+    /// Cylinder `a` against a cylinder, box or bounded plane `b`, by slicing (a parallel
+    /// cylinder, or a box with an axis along `a`'s, in closed form).
     CylinderSliced {
         cylinder: Cylinder,
         other: pairs::cylinder_solid::Other,

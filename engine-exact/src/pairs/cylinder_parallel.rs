@@ -8,16 +8,17 @@
 //!   formed from the inputs, so a grazing overlap keeps its digits), its distance from `a`'s
 //!   centre `x_a = (d² + r_a² − r_b²)/(2d)`, and the half-angles `α_a = atan2(h, x_a)`,
 //!   `α_b = atan2(h, d − x_a)`. Area `A = r_a² f(α_a) + r_b² f(α_b)`, `f(α) = α − sin α cos α`
-//!   (by its series below 1/2, where the difference cancels). Each segment's first moment
-//!   about its own centre is `⅔h³` (`r sin α = h`), towards the other centre, so the lens's
-//!   first moment about `a`'s centre is `d` times `b`'s segment: centroid `d·r_b² f(α_b)/A`
-//!   along `u`. One disc inside the other (`d ≤ |r_a − r_b|`) gives the smaller disc.
+//!   (`segment_area_factor`: by its series below 1/2, where the difference cancels). Each
+//!   segment's first moment about its own centre is `⅔h³` (`r sin α = h`), towards the other
+//!   centre, so the lens's first moment about `a`'s centre is `d` times `b`'s segment:
+//!   centroid `d·r_b² f(α_b)/A` along `u`. One disc inside the other (`d ≤ |r_a − r_b|`) gives the smaller disc.
 //! - **Volume** `A·H`; **centroid** the lens's, at mid-overlap.
 //! - **`a`'s surface inside `b`** (for the normal, [`super::volume_contact`]): its side's arc
 //!   inside `b`, area vector `2hH·u` (none, or the whole circle summing to zero, when a disc
 //!   holds the other), and each of its caps within `b`'s range, `±A·ẑ`. A cap or side that
-//!   coincides with one of `b`'s counts half to each body: the limit of a vanishing tilt or
-//!   offset either way, and it keeps `S_a = −S_b` (the intersection's closed surface), so
+//!   coincides with one of `b`'s counts half to each body: the mean of the limits of a
+//!   vanishing tilt or offset one way and the other (the answer jumps there with their
+//!   direction), and it keeps `S_a = −S_b` (the intersection's closed surface), so
 //!   exchanging the bodies exchanges the contact.
 //!
 //! Touching (no overlap of discs or of ranges) is no contact.
@@ -88,7 +89,10 @@ fn lens(ra: f64, rb: f64, d: f64) -> Option<Lens> {
     let h = product.max(0.0).sqrt() / (2.0 * d);
     let x_a = ((d - rb) * (d + rb) + ra * ra) / (2.0 * d);
     let (alpha_a, alpha_b) = (h.atan2(x_a), h.atan2(d - x_a));
-    let (segment_a, segment_b) = (ra * ra * f(alpha_a), rb * rb * f(alpha_b));
+    let (segment_a, segment_b) = (
+        ra * ra * segment_area_factor(alpha_a),
+        rb * rb * segment_area_factor(alpha_b),
+    );
     let area = segment_a + segment_b;
     if area.is_nan() || area <= 0.0 {
         return None;
@@ -105,7 +109,7 @@ fn lens(ra: f64, rb: f64, d: f64) -> Option<Lens> {
 /// `α − sin α cos α` (twice a unit disc's segment of half-angle `α`), by its series
 /// `Σ_{k≥1} (−1)^{k+1} (2α)^{2k+1} / (2·(2k+1)!)` below `α = ½`, where the difference
 /// cancels (it is `⅔α³` at small `α`); each term is at most 1/20 of the one before.
-fn f(alpha: f64) -> f64 {
+pub(crate) fn segment_area_factor(alpha: f64) -> f64 {
     if alpha >= 0.5 {
         let (s, c) = alpha.sin_cos();
         return alpha - s * c;
@@ -124,7 +128,7 @@ fn f(alpha: f64) -> f64 {
 
 /// The share of a cap at height `z` of one body inside the other's axial range `(lo, hi)`:
 /// 1 strictly inside, ½ on an end (the caps coincide), 0 outside.
-fn cap_share(z: f64, (lo, hi): (f64, f64)) -> f64 {
+pub(crate) fn cap_share(z: f64, (lo, hi): (f64, f64)) -> f64 {
     if z > lo && z < hi {
         1.0
     } else if z == lo || z == hi {
@@ -211,13 +215,19 @@ mod tests {
     #[test]
     fn the_segment_series_joins_the_difference() {
         let direct = |a: f64| a - a.sin() * a.cos();
-        assert!((f(0.5 - 1e-16) - direct(0.5)).abs() <= 1e-15 * direct(0.5));
+        assert!((segment_area_factor(0.5 - 1e-16) - direct(0.5)).abs() <= 1e-15 * direct(0.5));
         for &a in &[0.4, 0.2, 0.1] {
             let tolerance = 4.0 * f64::EPSILON / (a * a * a) + 1e-15;
-            assert!((f(a) - direct(a)).abs() <= tolerance * f(a), "{a}");
+            assert!(
+                (segment_area_factor(a) - direct(a)).abs() <= tolerance * segment_area_factor(a),
+                "{a}"
+            );
         }
         let a = 1e-7;
-        assert!((f(a) - 2.0 / 3.0 * a * a * a).abs() <= 1e-14 * f(a));
+        assert!(
+            (segment_area_factor(a) - 2.0 / 3.0 * a * a * a).abs()
+                <= 1e-14 * segment_area_factor(a)
+        );
     }
 
     /// Two cylinders side by side are a closed surface split between them: `a`'s area vector

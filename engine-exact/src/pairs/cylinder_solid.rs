@@ -12,11 +12,13 @@
 //!   ([`super::cylinder_parallel`]), and near-parallel axes (the general case, with no
 //!   branch) approach it continuously (1e-12 rad off: within 4e-12 of it, see the
 //!   characterization table).
-//! - **Cylinder–box, cylinder–bounded plane**: among directions perpendicular to the axis
-//!   (64 sampled over a half turn), the one farthest from every face normal (smallest largest
-//!   `|m·n|`): a face parallel to the slicing planes would be a jump in the section, and
-//!   three lines through the origin always leave a direction at least 30° from each, so every
-//!   face keeps `|g| ≥ 1/2` in-plane.
+//! - **Cylinder–box, cylinder–bounded plane**: a box with an axis exactly parallel (or
+//!   opposite) to the cylinder's is not sliced: its section inside the disc times the axial
+//!   overlap, in closed form ([`super::cylinder_prism`]). Otherwise, among directions
+//!   perpendicular to the axis (64 sampled over a half turn), the one farthest from every
+//!   face normal (smallest largest `|m·n|`): a face parallel to the slicing planes would be
+//!   a jump in the section, and three lines through the origin always leave a direction at
+//!   least 30° from each, so every face keeps `|g| ≥ 1/2` in-plane.
 //!
 //! ## The contact (SPEC §4, as [`super::volume_contact`] reads it)
 //! One region (two convex solids meet in one convex piece; the bounded plane's solid is the
@@ -33,6 +35,7 @@
 
 use super::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
 use super::cylinder_parallel::{self, ParallelB};
+use super::cylinder_prism::{self, Prism};
 use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedMoments, SlicedPair};
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
@@ -147,6 +150,37 @@ pub(crate) fn contact(
             };
             work.bounding_volume_tests += 1;
             let m = cylinder_parallel::moments(ra / unit, a.length() / unit, &other)?;
+            let frame = Matrix3::identity();
+            return finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), &[]);
+        }
+    }
+    // A box with an axis exactly parallel (or opposite) to the cylinder's: its section
+    // inside the disc times the axial overlap, in closed form.
+    if let Other::Box(c) = b {
+        if let Some(k) = (0..3).find(|&k| rot_ab[(0, k)] == 0.0 && rot_ab[(1, k)] == 0.0) {
+            let centre = pose_ab * c.center();
+            let half = c.half_extents();
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            let u = Vector2::new(rot_ab[(0, i)], rot_ab[(1, i)]) * half[i];
+            let v = Vector2::new(rot_ab[(0, j)], rot_ab[(1, j)]) * half[j];
+            let middle = Vector2::new(centre.x, centre.y);
+            // Counter-clockwise seen from +z: (i, j, k) is right-handed, so u × v has the sign
+            // of the k axis' z.
+            let mut corners = [
+                middle + u + v,
+                middle - u + v,
+                middle - u - v,
+                middle + u - v,
+            ];
+            if rot_ab[(2, k)] < 0.0 {
+                corners.reverse();
+            }
+            let prism = Prism {
+                corners: corners.map(|p| p / unit),
+                range: ((centre.z - half[k]) / unit, (centre.z + half[k]) / unit),
+            };
+            work.bounding_volume_tests += 1;
+            let m = cylinder_prism::moments(ra / unit, a.length() / unit, &prism)?;
             let frame = Matrix3::identity();
             return finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), &[]);
         }

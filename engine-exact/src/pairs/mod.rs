@@ -18,6 +18,7 @@ pub(crate) mod box_revolved;
 pub mod clipped;
 pub mod cylinder_parallel;
 pub mod cylinder_plane;
+pub mod cylinder_prism;
 pub mod cylinder_solid;
 pub(crate) mod disc_section;
 pub mod ellipsoid_box;

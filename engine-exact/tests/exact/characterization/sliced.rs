@@ -97,20 +97,20 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "slicing; oracle: strips quadrature, S = −∂V/∂x_b",
             crossed,
         )),
-        iterative(run(
+        closed_form(run(
             rng,
             SAMPLES,
             "cylinder–box",
             "a face parallel to the axis cutting the side",
-            "slicing; oracle: circular segment × length",
+            "closed form (disc ∩ section × overlap); oracle: circular segment × length",
             |rng| segment_case(rng, false, false),
         )),
-        iterative(run(
+        closed_form(run(
             rng,
             SAMPLES,
             "cylinder–box",
             "a face across the cap, another cutting the side",
-            "slicing; oracle: disc part × overlap",
+            "closed form (disc ∩ section × overlap); oracle: disc part × overlap",
             |rng| segment_case(rng, true, false),
         )),
         gradient(run(
