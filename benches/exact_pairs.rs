@@ -80,6 +80,16 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::translation(1.3, 0.0, 1.0),
             depth: Some(0.2),
         },
+        // The same pin and slot with the box tilted off the axis: no face parallel to it, so
+        // the pair is sliced (an aligned box takes the closed form above).
+        Case {
+            name: "cylinder_box_tilted",
+            i: cylinder(0.5, 2.0),
+            j: Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 2.0).unwrap()),
+            pose_i: Isometry3::identity(),
+            pose_j: Isometry3::from_parts(nalgebra::Translation3::new(1.3, 0.0, 1.0), tilt),
+            depth: None,
+        },
         Case {
             name: "sphere_plane",
             i: Geometry::sphere(1.0).unwrap(),
