@@ -11,7 +11,8 @@
 //!   (`segment_area_factor`: by its series below 1/2, where the difference cancels). Each
 //!   segment's first moment about its own centre is `⅔h³` (`r sin α = h`), towards the other
 //!   centre, so the lens's first moment about `a`'s centre is `d` times `b`'s segment:
-//!   centroid `d·r_b² f(α_b)/A` along `u`. One disc inside the other (`d ≤ |r_a − r_b|`) gives the smaller disc.
+//!   centroid `d·r_b² f(α_b)/A` along `u`. One disc inside the other (`d ≤ |r_a − r_b|`)
+//!   gives the smaller disc.
 //! - **Volume** `A·H`; **centroid** the lens's, at mid-overlap.
 //! - **`a`'s surface inside `b`** (for the normal, [`super::volume_contact`]): its side's arc
 //!   inside `b`, area vector `2hH·u` (none, or the whole circle summing to zero, when a disc
@@ -138,34 +139,74 @@ pub(crate) fn cap_share(z: f64, (lo, hi): (f64, f64)) -> f64 {
     }
 }
 
+/// A section across the axis of two solids whose intersection is a prism along it (a
+/// parallel cylinder's lens, an aligned box's part of the disc; lengths in the working unit).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Section {
+    /// Area.
+    pub area: f64,
+    /// First moment about the cylinder's axis.
+    pub moment: Vector2,
+    /// Area vector of the cylinder's rim inside the other solid, per unit height.
+    pub rim_vector: Vector2,
+    /// Length of that rim.
+    pub rim_length: f64,
+    /// Length of the other solid's boundary inside the cylinder's disc.
+    pub other_length: f64,
+}
+
+/// The overlap of the cylinder's axial range `[0, len]` with `range`, or `None` when it has
+/// no length.
+pub(crate) fn axial_overlap(len: f64, range: (f64, f64)) -> Option<(f64, f64)> {
+    let (z0, z1) = (range.0.max(0.0), range.1.min(len));
+    (z1 - z0 > 0.0).then_some((z0, z1))
+}
+
+/// The moments of the prism of `section` over the axial `overlap` (from [`axial_overlap`])
+/// of the cylinder (length `len`) and a solid spanning `range`, in the slicing pairs' working
+/// frame (the cylinder's axes, origin at its centre). Caps and end faces within the other's
+/// range count by [`cap_share`].
+pub(crate) fn extrude(
+    section: &Section,
+    len: f64,
+    range: (f64, f64),
+    (z0, z1): (f64, f64),
+) -> SlicedMoments {
+    let height = z1 - z0;
+    let (bottom_a, top_a) = (cap_share(0.0, range), cap_share(len, range));
+    let (bottom_b, top_b) = (
+        cap_share(range.0, (0.0, len)),
+        cap_share(range.1, (0.0, len)),
+    );
+    let centroid = section.moment / section.area;
+    let side = section.rim_vector * height;
+    SlicedMoments {
+        volume: section.area * height,
+        centroid: Vector3::new(centroid.x, centroid.y, 0.5 * (z0 + z1) - 0.5 * len),
+        area_vector_a: Vector3::new(side.x, side.y, (top_a - bottom_a) * section.area),
+        area_a: section.rim_length * height + (bottom_a + top_a) * section.area,
+        area_b: section.other_length * height + (bottom_b + top_b) * section.area,
+    }
+}
+
 /// The intersection's moments for cylinder `a` (radius `ra`, length `la`, working unit
 /// lengths) and `b`, in the slicing pairs' working frame: `a`'s axes, origin at `a`'s centre.
 /// `None` when the discs or the axial ranges do not overlap.
 pub(crate) fn moments(ra: f64, la: f64, b: &ParallelB) -> Option<SlicedMoments> {
-    let (z0, z1) = (b.range.0.max(0.0), b.range.1.min(la));
-    let height = z1 - z0;
-    if height.is_nan() || height <= 0.0 {
-        return None;
-    }
+    let overlap = axial_overlap(la, b.range)?;
     let d = b.centre.norm();
     let lens = lens(ra, b.radius, d)?;
     let u = if d > 0.0 { b.centre / d } else { Vector2::x() };
     // Coinciding sides (the same disc) count half to each body.
     let side_share = if d == 0.0 && ra == b.radius { 0.5 } else { 1.0 };
-    let (bottom_a, top_a) = (cap_share(0.0, b.range), cap_share(la, b.range));
-    let (bottom_b, top_b) = (
-        cap_share(b.range.0, (0.0, la)),
-        cap_share(b.range.1, (0.0, la)),
-    );
-    let side = lens.arc_vector_a * height;
-    let centroid = lens.centroid * u;
-    Some(SlicedMoments {
-        volume: lens.area * height,
-        centroid: Vector3::new(centroid.x, centroid.y, 0.5 * (z0 + z1) - 0.5 * la),
-        area_vector_a: Vector3::new(side * u.x, side * u.y, (top_a - bottom_a) * lens.area),
-        area_a: side_share * lens.arc_a * height + (bottom_a + top_a) * lens.area,
-        area_b: side_share * lens.arc_b * height + (bottom_b + top_b) * lens.area,
-    })
+    let section = Section {
+        area: lens.area,
+        moment: lens.area * lens.centroid * u,
+        rim_vector: lens.arc_vector_a * u,
+        rim_length: side_share * lens.arc_a,
+        other_length: side_share * lens.arc_b,
+    };
+    Some(extrude(&section, la, b.range, overlap))
 }
 
 #[cfg(test)]

@@ -22,9 +22,9 @@
 //!
 //! Touching (no overlap of section or range) is no contact.
 
-use super::cylinder_parallel::{cap_share, segment_area_factor};
+use super::cylinder_parallel::{Section, axial_overlap, extrude, segment_area_factor};
 use super::sliced::SlicedMoments;
-use contact_core::{Vector2, Vector3};
+use contact_core::Vector2;
 use std::f64::consts::PI;
 
 /// The box as the cylinder's frame sees it (lengths in the working unit): its section's
@@ -35,18 +35,6 @@ pub(crate) struct Prism {
     pub corners: [Vector2; 4],
     /// Axial range `[z_0, z_1]`.
     pub range: (f64, f64),
-}
-
-/// The region `D ∩ P` in the plane: area, first moment about the disc's centre, the rim's
-/// arcs inside `P` (area vector per unit height and length) and the length of `P`'s edges
-/// inside `D`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Section {
-    area: f64,
-    moment: Vector2,
-    arc_vector: Vector2,
-    arc_length: f64,
-    edge_length: f64,
 }
 
 /// Where the edge `p → q` runs inside the disc of radius `r` about the origin, as its
@@ -106,9 +94,9 @@ fn section(r: f64, corners: &[Vector2; 4]) -> Option<Section> {
         return inside.then(|| Section {
             area: PI * r * r,
             moment: Vector2::zeros(),
-            arc_vector: Vector2::zeros(),
-            arc_length: 2.0 * PI * r,
-            edge_length: 0.0,
+            rim_vector: Vector2::zeros(),
+            rim_length: 2.0 * PI * r,
+            other_length: 0.0,
         });
     }
     let origin = vertices[0].0;
@@ -137,9 +125,9 @@ fn section(r: f64, corners: &[Vector2; 4]) -> Option<Section> {
     (area > 0.0).then_some(Section {
         area,
         moment,
-        arc_vector,
-        arc_length,
-        edge_length,
+        rim_vector: arc_vector,
+        rim_length: arc_length,
+        other_length: edge_length,
     })
 }
 
@@ -147,26 +135,9 @@ fn section(r: f64, corners: &[Vector2; 4]) -> Option<Section> {
 /// the box `prism`, in the slicing pairs' working frame: the cylinder's axes, origin at its
 /// centre. `None` when the section or the axial ranges do not overlap.
 pub(crate) fn moments(r: f64, len: f64, prism: &Prism) -> Option<SlicedMoments> {
-    let (z0, z1) = (prism.range.0.max(0.0), prism.range.1.min(len));
-    let height = z1 - z0;
-    if height.is_nan() || height <= 0.0 {
-        return None;
-    }
-    let s = section(r, &prism.corners)?;
-    let (bottom_a, top_a) = (cap_share(0.0, prism.range), cap_share(len, prism.range));
-    let (bottom_b, top_b) = (
-        cap_share(prism.range.0, (0.0, len)),
-        cap_share(prism.range.1, (0.0, len)),
-    );
-    let centroid = s.moment / s.area;
-    let side = s.arc_vector * height;
-    Some(SlicedMoments {
-        volume: s.area * height,
-        centroid: Vector3::new(centroid.x, centroid.y, 0.5 * (z0 + z1) - 0.5 * len),
-        area_vector_a: Vector3::new(side.x, side.y, (top_a - bottom_a) * s.area),
-        area_a: s.arc_length * height + (bottom_a + top_a) * s.area,
-        area_b: s.edge_length * height + (bottom_b + top_b) * s.area,
-    })
+    let overlap = axial_overlap(len, prism.range)?;
+    let section = section(r, &prism.corners)?;
+    Some(extrude(&section, len, prism.range, overlap))
 }
 
 #[cfg(test)]
@@ -233,11 +204,11 @@ mod tests {
                 }
             }
             assert!(
-                (s.arc_length - length).abs() <= 1e-4,
+                (s.rim_length - length).abs() <= 1e-4,
                 "{c:?}: {s:?} {length}"
             );
             assert!(
-                (s.arc_vector - vector).norm() <= 1e-4,
+                (s.rim_vector - vector).norm() <= 1e-4,
                 "{c:?}: {s:?} {vector:?}"
             );
         }

@@ -131,59 +131,11 @@ pub(crate) fn contact(
             0,
         ),
     };
-    // Exactly parallel (or opposite) axes: the lens times the axial overlap, in closed form.
-    if let Other::Cylinder(c) = b {
-        let axis = rot_ab.column(2);
-        if axis.x == 0.0 && axis.y == 0.0 {
-            // b's frame has its origin on the bottom cap's centre, as a's does.
-            let origin = pose_ab.translation.vector;
-            let lb = c.length();
-            let range = if axis.z > 0.0 {
-                (origin.z, origin.z + lb)
-            } else {
-                (origin.z - lb, origin.z)
-            };
-            let other = ParallelB {
-                centre: Vector2::new(origin.x, origin.y) / unit,
-                radius: c.radius() / unit,
-                range: (range.0 / unit, range.1 / unit),
-            };
-            work.bounding_volume_tests += 1;
-            let m = cylinder_parallel::moments(ra / unit, a.length() / unit, &other)?;
-            let frame = Matrix3::identity();
-            return finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), &[]);
-        }
-    }
-    // A box with an axis exactly parallel (or opposite) to the cylinder's: its section
-    // inside the disc times the axial overlap, in closed form.
-    if let Other::Box(c) = b {
-        if let Some(k) = (0..3).find(|&k| rot_ab[(0, k)] == 0.0 && rot_ab[(1, k)] == 0.0) {
-            let centre = pose_ab * c.center();
-            let half = c.half_extents();
-            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-            let u = Vector2::new(rot_ab[(0, i)], rot_ab[(1, i)]) * half[i];
-            let v = Vector2::new(rot_ab[(0, j)], rot_ab[(1, j)]) * half[j];
-            let middle = Vector2::new(centre.x, centre.y);
-            // Counter-clockwise seen from +z: (i, j, k) is right-handed, so u × v has the sign
-            // of the k axis' z.
-            let mut corners = [
-                middle + u + v,
-                middle - u + v,
-                middle - u - v,
-                middle + u - v,
-            ];
-            if rot_ab[(2, k)] < 0.0 {
-                corners.reverse();
-            }
-            let prism = Prism {
-                corners: corners.map(|p| p / unit),
-                range: ((centre.z - half[k]) / unit, (centre.z + half[k]) / unit),
-            };
-            work.bounding_volume_tests += 1;
-            let m = cylinder_prism::moments(ra / unit, a.length() / unit, &prism)?;
-            let frame = Matrix3::identity();
-            return finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), &[]);
-        }
+    // Exactly parallel axes, or a box axis along the cylinder's: a prism, in closed form.
+    if let Some(m) = aligned_moments(a, b, &rot_ab, &pose_ab, unit) {
+        work.bounding_volume_tests += 1;
+        let frame = Matrix3::identity();
+        return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
     }
     let n = match b {
         Other::Cylinder(_) => {
@@ -384,6 +336,65 @@ pub(crate) fn contact(
         (&frame, &centre_a, unit),
         &prism_planes[..prism_count],
     )
+}
+
+/// When the intersection is a prism along `a`'s axis (`b` a cylinder with its axis exactly
+/// parallel or opposite, or a box with an axis so), its moments in closed form in the working
+/// frame (`a`'s axes, origin at `a`'s centre, lengths divided by `unit`): `Some(None)` when
+/// they do not overlap. `None` for any other pose, which is sliced.
+fn aligned_moments(
+    a: &Cylinder,
+    b: &Other,
+    rot_ab: &Matrix3,
+    pose_ab: &Isometry3,
+    unit: f64,
+) -> Option<Option<SlicedMoments>> {
+    let (ra, la) = (a.radius() / unit, a.length() / unit);
+    let along = |k: usize| rot_ab[(0, k)] == 0.0 && rot_ab[(1, k)] == 0.0;
+    match b {
+        Other::Cylinder(c) if along(2) => {
+            // b's frame has its origin on the bottom cap's centre, as a's does.
+            let origin = pose_ab.translation.vector;
+            let lb = c.length();
+            let range = if rot_ab[(2, 2)] > 0.0 {
+                (origin.z, origin.z + lb)
+            } else {
+                (origin.z - lb, origin.z)
+            };
+            let other = ParallelB {
+                centre: Vector2::new(origin.x, origin.y) / unit,
+                radius: c.radius() / unit,
+                range: (range.0 / unit, range.1 / unit),
+            };
+            Some(cylinder_parallel::moments(ra, la, &other))
+        }
+        Other::Box(c) => {
+            let k = (0..3).find(|&k| along(k))?;
+            let centre = pose_ab * c.center();
+            let half = c.half_extents();
+            let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+            let u = Vector2::new(rot_ab[(0, i)], rot_ab[(1, i)]) * half[i];
+            let v = Vector2::new(rot_ab[(0, j)], rot_ab[(1, j)]) * half[j];
+            let middle = Vector2::new(centre.x, centre.y);
+            // Counter-clockwise seen from +z: (i, j, k) is right-handed, so u × v has the sign
+            // of the k axis' z.
+            let mut corners = [
+                middle + u + v,
+                middle - u + v,
+                middle - u - v,
+                middle + u - v,
+            ];
+            if rot_ab[(2, k)] < 0.0 {
+                corners.reverse();
+            }
+            let prism = Prism {
+                corners: corners.map(|p| p / unit),
+                range: ((centre.z - half[k]) / unit, (centre.z + half[k]) / unit),
+            };
+            Some(cylinder_prism::moments(ra, la, &prism))
+        }
+        _ => None,
+    }
 }
 
 /// The contact from the intersection's moments `m` in the working frame (`frame`'s columns in

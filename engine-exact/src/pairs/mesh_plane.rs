@@ -304,9 +304,9 @@ pub(crate) fn exit_along(mesh: &PreparedMesh, p: &Point3, direction: &Vector3) -
             continue;
         }
         // Where the line crosses the triangle's plane (through its centroid), against the
-        // ball, with room for that crossing's round-off, ε·|e|/|n·d| (1e-6·|e|/|n·d| here). A line
-        // parallel to the plane and off it crosses at infinity (missed, as `line_triangle`
-        // finds); one in the plane gives NaN and is tried.
+        // ball, with room for that crossing's round-off, ε·|e|/|n·d| (1e-6·|e|/|n·d| here).
+        // A line parallel to the plane and off it crosses at infinity (missed, as
+        // `line_triangle` finds); one in the plane gives NaN and is tried.
         let denominator = normal.dot(direction);
         let t = normal.dot(&e) / denominator;
         let room = 1e-12 * square / (denominator * denominator);

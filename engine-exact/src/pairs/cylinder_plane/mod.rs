@@ -323,8 +323,8 @@ fn angle(c: &Cut) -> f64 {
 }
 
 /// A cut of the chords' range: the angle `φ` of `u = R sin φ` (NaN at a kink until
-/// [`angle`] takes it) with its sine and cosine, `u` itself, and at a kink the height the plane's line `(h − a u)/b` takes there exactly (0 or
-/// the length; NaN at the ends ±R).
+/// [`angle`] takes it) with its sine and cosine, `u` itself, and at a kink the height the
+/// plane's line `(h − a u)/b` takes there exactly (0 or the length; NaN at the ends ±R).
 #[derive(Debug, Clone, Copy)]
 struct Cut {
     phi: f64,
