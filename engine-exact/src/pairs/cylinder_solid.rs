@@ -1,6 +1,6 @@
 //! A cylinder against a cylinder, a box or a bounded plane: the intersection's moments by
-//! slicing ([`super::sliced`]; two parallel cylinders in closed form), the contact from them
-//! by [`super::volume_contact`].
+//! slicing ([`super::sliced`]; two parallel cylinders and a box in closed form), the
+//! contact from them by [`super::volume_contact`].
 //!
 //! ## The slicing direction `n` (perpendicular to the first cylinder's axis)
 //! - **Cylinder–cylinder**: `n = â × b̂ / |â × b̂|`, perpendicular to both axes, so each plane
@@ -14,7 +14,10 @@
 //!   characterization table).
 //! - **Cylinder–box, cylinder–bounded plane**: a box with an axis exactly parallel (or
 //!   opposite) to the cylinder's is not sliced: its section inside the disc times the axial
-//!   overlap, in closed form ([`super::cylinder_prism`]). Otherwise, among directions
+//!   overlap, in closed form ([`super::cylinder_prism`]); a box at any other tilt is not
+//!   sliced either (the divergence theorem over the intersection's boundary, in closed form:
+//!   `cylinder_polyhedron`) unless a face is within 1e-3 of parallel to the axis, where that
+//!   closed form would lose precision. Otherwise, among directions
 //!   perpendicular to the axis (64 sampled over a half turn), the one farthest from every
 //!   face normal (smallest largest `|m·n|`): a face parallel to the slicing planes would be
 //!   a jump in the section, and three lines through the origin always leave a direction at
@@ -35,6 +38,7 @@
 
 use super::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
 use super::cylinder_parallel::{self, ParallelB};
+use super::cylinder_polyhedron;
 use super::cylinder_prism::{self, Prism};
 use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedMoments, SlicedPair};
 use super::solid_distance::{Solid, signed_distance};
@@ -110,6 +114,29 @@ pub(crate) fn contact(
     pose_b: &Isometry3,
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
+    contact_by(a, pose_a, b, pose_b, work, Method::ClosedForm)
+}
+
+/// How a tilted box is taken: the closed form where it applies, or always sliced (the
+/// closed form's independent check).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Method {
+    /// [`cylinder_polyhedron`] unless a face is nearly parallel to the axis.
+    ClosedForm,
+    /// Sliced.
+    #[cfg_attr(not(test), allow(dead_code))]
+    Sliced,
+}
+
+/// [`contact`], a tilted box taken by `method`.
+pub(crate) fn contact_by(
+    a: &Cylinder,
+    pose_a: &Isometry3,
+    b: &Other,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+    method: Method,
+) -> Option<PairContact> {
     let (ra, hla) = (a.radius(), 0.5 * a.length());
     let size_b = match b {
         Other::Cylinder(c) => c.radius().max(0.5 * c.length()),
@@ -136,6 +163,26 @@ pub(crate) fn contact(
         work.bounding_volume_tests += 1;
         let frame = Matrix3::identity();
         return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
+    }
+    // A box at any other tilt: the divergence theorem over the intersection's boundary, in
+    // closed form, unless a face is nearly parallel to the axis.
+    if let (Other::Box(c), Method::ClosedForm) = (b, method) {
+        let centre = (pose_ab * c.center()).coords - centre_a;
+        let half = c.half_extents();
+        work.bounding_volume_tests += 1;
+        let box_a = (
+            Vector3::zeros(),
+            Matrix3::identity(),
+            Vector3::new(ra, ra, hla),
+        );
+        if separated(&box_a, &(centre, rot_ab, half)) {
+            return None;
+        }
+        let faces = cylinder_polyhedron::box_faces(&(centre / unit), &rot_ab, &(half / unit));
+        if let Some(m) = cylinder_polyhedron::moments(ra / unit, hla / unit, &faces) {
+            let frame = Matrix3::identity();
+            return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
+        }
     }
     let n = match b {
         Other::Cylinder(_) => {
