@@ -152,3 +152,50 @@ fn a_grazing_ellipsoid_lens_is_not_deeper_than_its_overlap() {
         }
     }
 }
+
+/// The regions of a solid against a mesh were joined across a cut by the chords' indices in
+/// slices just off the cut, which may hold a round-off chord more than the piece's middle
+/// (the cut a few ulps from its event): a tilted frustum through a box mesh's top face, where
+/// the face's diagonal pierces the frustum's side 1.4e-7 above where the face first touches
+/// it, came out as two contacts (depths 0.89 and 13.3) instead of one. The same box as a box
+/// is the oracle.
+#[test]
+fn a_chord_of_round_off_length_does_not_split_a_mesh_region() {
+    use contact_core::geometry::{Cuboid, Frustum};
+    use nalgebra::{Quaternion, Translation3};
+    let h = 10.21013006913768;
+    let frustum = Frustum::new(1.27626625864221, 1.0532439000904752, 1.1444786565947003).unwrap();
+    let pose_i = Isometry3::from_parts(
+        Translation3::new(-1.809003494924881, 0.40255571174116433, -0.9268775037399369),
+        UnitQuaternion::from_quaternion(Quaternion::new(
+            -0.9741240407888629,
+            0.15604607161994802,
+            -0.10238576717297311,
+            0.1274720807453974,
+        )),
+    );
+    let pose_j = Isometry3::from_parts(
+        Translation3::new(-2.7885562509904114, -6.454173172169375, -7.345033912417039),
+        UnitQuaternion::from_quaternion(Quaternion::new(
+            0.8448560972313947,
+            -0.3334021746768694,
+            0.19233259348444393,
+            0.37157682701591893,
+        )),
+    );
+    let mesh = crate::common::boxes_mesh(&[(contact_core::Point3::origin(), Vector3::repeat(h))]);
+    let i = instance(Geometry::Frustum(frustum));
+    let got = one(
+        &i,
+        &instance(Geometry::Mesh(Arc::new(mesh))),
+        &pose_i,
+        &pose_j,
+    );
+    let want = one(
+        &i,
+        &instance(Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap())),
+        &pose_i,
+        &pose_j,
+    );
+    crate::common::assert_close(&got, &want, 1.3, 1.3 * 1.3, 1e-9, "frustum on a box mesh");
+}

@@ -11,7 +11,9 @@
 //!
 //! both integrated by an adaptive 7-point Gauss–Legendre rule that halves in the plain
 //! variable, with the square-root ends mapped away by `t = m + h·sin θ`. The area vector
-//! `S_a` of the cylinder's surface inside the other solid is then the negative gradient of the
+//! `S_a` of the cylinder's surface inside the other solid is, for the box, the same rule
+//! around the cylinder's side (the length of each of its lines inside the box) plus the caps'
+//! parts inside the box's sections; for crossed cylinders, the negative gradient of the
 //! oracle's volume with respect to translating the other solid (`−∂V/∂x_b`: moving `b` by `δ`
 //! changes the volume by `S_b·δ`, and `S_b = −S_a` over the closed surface), by central
 //! differences extrapolated twice (Richardson). The contact points are where the line through
@@ -326,12 +328,16 @@ fn box_section(c: &Vector3, axes: &Matrix3, h: &Vector3, z: f64, reach: f64) -> 
 
 /// Volume and centroid of cylinder (radius `r`, z from 0 to `l`) ∩ box, by slices
 /// perpendicular to the cylinder's axis, each the disc meeting the box's section.
+/// Volume and centroid of cylinder (radius `r`, z from 0 to `l`) ∩ box, by slices
+/// perpendicular to the cylinder's axis, each the disc meeting the box's section, to the
+/// absolute tolerance `tol` per piece and component.
 pub fn cylinder_box_volume(
     r: f64,
     l: f64,
     c: &Vector3,
     axes: &Matrix3,
     h: &Vector3,
+    tol: f64,
 ) -> Option<VolumeCentroid> {
     let mut breaks = Vec::new();
     for v in 0..8 {
@@ -373,8 +379,6 @@ pub fn cylinder_box_volume(
         }
     }
     let reach = 4.0 * (r + h.norm() + c.norm());
-    let scale = r.max(l).max(h.max());
-    let tol = 1e-13 * scale.powi(3);
     let s = integrate(0.0, l, &breaks, tol, &mut |z| {
         let poly = box_section(c, axes, h, z, reach);
         if poly.is_empty() {
@@ -387,6 +391,100 @@ pub fn cylinder_box_volume(
         volume: s[0],
         centroid: Point3::new(s[1], s[2], s[3]) / s[0],
     })
+}
+
+/// The area vector `S_a = ∫ n dA` of the cylinder's surface (radius `r`, z from 0 to `l`)
+/// inside the box, outward of the cylinder: the caps' parts inside the box's sections at
+/// `z = 0, l` (`∓A ẑ`), and the side's, `∫ r (cos φ, sin φ, 0) ℓ(φ) dφ` with `ℓ(φ)` the
+/// length of the side's line at `φ` inside the box (each of the box's slabs is an interval
+/// in `z` along it), integrated around the circle between the angles where two of those
+/// intervals' ends meet (where `ℓ` has kinks).
+pub fn cylinder_box_area_vector(
+    r: f64,
+    l: f64,
+    c: &Vector3,
+    axes: &Matrix3,
+    h: &Vector3,
+) -> Vector3 {
+    let reach = 4.0 * (r + h.norm() + c.norm());
+    let scale = r.max(l).max(h.max());
+    let cap = |z: f64| {
+        let poly = box_section(c, axes, h, z, reach);
+        if poly.is_empty() {
+            0.0
+        } else {
+            disc_polygon(r, &poly)[0]
+        }
+    };
+    // Each end of a slab's interval as z(φ) = α + β cos φ + γ sin φ, and for a slab parallel
+    // to the axis its sides as α + β cos φ + γ sin φ = 0.
+    let mut ends: Vec<[f64; 3]> = vec![[0.0, 0.0, 0.0], [l, 0.0, 0.0]];
+    let mut walls: Vec<[f64; 3]> = Vec::new();
+    for k in 0..3 {
+        let m = axes.column(k).into_owned();
+        let across = m.x * c.x + m.y * c.y;
+        for sign in [1.0, -1.0] {
+            if m.z != 0.0 {
+                ends.push([
+                    c.z + (sign * h[k] + across) / m.z,
+                    -r * m.x / m.z,
+                    -r * m.y / m.z,
+                ]);
+            } else {
+                walls.push([-(sign * h[k] + across), r * m.x, r * m.y]);
+            }
+        }
+    }
+    let roots = |f: [f64; 3], out: &mut Vec<f64>| {
+        let radius = f[1].hypot(f[2]);
+        if radius > f[0].abs() {
+            let psi = f[2].atan2(f[1]);
+            let spread = (-f[0] / radius).acos();
+            for phi in [psi - spread, psi + spread] {
+                out.push(phi.rem_euclid(2.0 * std::f64::consts::PI));
+            }
+        }
+    };
+    let mut breaks = Vec::new();
+    for i in 0..ends.len() {
+        for j in 0..i {
+            roots(
+                [
+                    ends[i][0] - ends[j][0],
+                    ends[i][1] - ends[j][1],
+                    ends[i][2] - ends[j][2],
+                ],
+                &mut breaks,
+            );
+        }
+    }
+    for w in &walls {
+        roots(*w, &mut breaks);
+    }
+    let length = |phi: f64| {
+        let p = Vector2::new(r * phi.cos(), r * phi.sin());
+        let (mut lo, mut hi) = (0.0f64, l);
+        for k in 0..3 {
+            let m = axes.column(k).into_owned();
+            let q = m.x * (p.x - c.x) + m.y * (p.y - c.y);
+            if m.z == 0.0 {
+                if q.abs() > h[k] {
+                    return 0.0;
+                }
+                continue;
+            }
+            let (a, b) = (c.z + (-h[k] - q) / m.z, c.z + (h[k] - q) / m.z);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        }
+        (hi - lo).max(0.0)
+    };
+    let tol = 1e-15 * scale * scale;
+    let side = integrate(0.0, 2.0 * std::f64::consts::PI, &breaks, tol, &mut |phi| {
+        let len = r * length(phi);
+        [len * phi.cos(), len * phi.sin()]
+    });
+    Vector3::new(side[0], side[1], cap(l) - cap(0.0))
 }
 
 /// `[A, ∫u, ∫v]` of the set `|u| ≤ wa`, `|v| ≤ ha`, `|e·p − ce| ≤ wb`, `|f·p − cf| ≤ hb`

@@ -179,6 +179,7 @@ fn chord_ends(slice: &Slice) -> (Vec<Option<usize>>, Vec<Option<usize>>) {
 fn join_across_cuts(setup: &Setup, labels: &Labels, forest: &mut UnionFind) {
     let pieces = setup.cuts.len() - 1;
     let (mut below, mut above) = (Slice::default(), Slice::default());
+    let mut middle_slice = Slice::default();
     for p in 0..pieces.saturating_sub(1) {
         let (Some(_), Some(_)) = (middle(setup, p), middle(setup, p + 1)) else {
             continue;
@@ -194,6 +195,12 @@ fn join_across_cuts(setup: &Setup, labels: &Labels, forest: &mut UnionFind) {
         let t_above = cut + off(setup.cuts[p + 2] - cut);
         setup.slice(p, t_below, &mut below);
         setup.slice(p + 1, t_above, &mut above);
+        // The nodes are the chords at each piece's middle; a slice just off a cut whose
+        // height is a few ulps from its event may hold one more or one fewer (a chord of
+        // round-off length), so the chords are matched to the middle's by their triangle and
+        // their order along it, not by their index.
+        let node_below = middle_nodes(setup, labels, p, &below, &mut middle_slice);
+        let node_above = middle_nodes(setup, labels, p + 1, &above, &mut middle_slice);
         let along = |slice: &Slice, c: usize| {
             let (k, a, e, _) = slice.chords[c];
             let (_, p0, _, p1, _) = slice.segments[k];
@@ -201,10 +208,10 @@ fn join_across_cuts(setup: &Setup, labels: &Labels, forest: &mut UnionFind) {
             let dd = d.norm_squared().max(f64::MIN_POSITIVE);
             ((a - p0).dot(&d) / dd, (e - p0).dot(&d) / dd)
         };
-        for ca in 0..below.chords.len() {
+        for (ca, node_a) in node_below.iter().enumerate() {
             let tri = below.segments[below.chords[ca].0].0;
             let (a0, a1) = along(&below, ca);
-            for cb in 0..above.chords.len() {
+            for (cb, node_b) in node_above.iter().enumerate() {
                 if above.segments[above.chords[cb].0].0 != tri {
                     continue;
                 }
@@ -214,14 +221,50 @@ fn join_across_cuts(setup: &Setup, labels: &Labels, forest: &mut UnionFind) {
                 // by its own vanishing length.
                 let shared = a1.min(b1) - a0.max(b0);
                 if shared > 1e-4 * (a1 - a0).max(b1 - b0) {
-                    forest.union(
-                        (labels.offsets[p] + ca) as u32,
-                        (labels.offsets[p + 1] + cb) as u32,
-                    );
+                    if let (Some(na), Some(nb)) = (node_a, node_b) {
+                        forest.union(*na, *nb);
+                    }
                 }
             }
         }
     }
+}
+
+/// The node of each chord of `slice` (a slice of piece `p`): the chord of the piece's middle
+/// on the same triangle with the same rank along it, `None` when the middle has no such chord.
+fn middle_nodes(
+    setup: &Setup,
+    labels: &Labels,
+    p: usize,
+    slice: &Slice,
+    scratch: &mut Slice,
+) -> Vec<Option<u32>> {
+    let Some(t) = middle(setup, p) else {
+        return vec![None; slice.chords.len()];
+    };
+    setup.slice(p, t, scratch);
+    let ranked = |s: &Slice| {
+        let mut seen: std::collections::HashMap<u32, usize> = std::collections::HashMap::new();
+        s.chords
+            .iter()
+            .map(|&(k, ..)| {
+                let tri = s.segments[k].0;
+                let rank = seen.entry(tri).or_insert(0);
+                *rank += 1;
+                (tri, *rank)
+            })
+            .collect::<Vec<_>>()
+    };
+    let at_middle = ranked(scratch);
+    ranked(slice)
+        .iter()
+        .map(|key| {
+            at_middle
+                .iter()
+                .position(|m| m == key)
+                .map(|c| (labels.offsets[p] + c) as u32)
+        })
+        .collect()
 }
 
 /// Whether the point `x` of the slice `z = t` lies inside the mesh's solid: the parity of the

@@ -208,8 +208,13 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                     let angle = rng.uniform(0.3, 5.5);
                     let p = Point2::new(1.5 * angle.cos(), 1.5 * angle.sin());
                     let (s, q, n) = oracles::curve_closest(&curve, &p);
-                    if s >= -1e-3 || (!closed && (q - curve.point(curve.domain()[0])).norm() < 1e-3)
-                    {
+                    // An open curve's closest point at either end is no contact (beyond the
+                    // end), and the normal is not the curve's there.
+                    let at_end = curve
+                        .domain()
+                        .iter()
+                        .any(|&u| (q - curve.point(u)).norm() < 1e-3);
+                    if s >= -1e-3 || (!closed && at_end) {
                         return None;
                     }
                     Some(Case {
