@@ -312,6 +312,18 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+        // The same across feet each dented at a top corner (not convex: sliced).
+        Case {
+            name: "cylinder_mesh_dented_feet",
+            i: cylinder(0.3, 3.0),
+            j: Geometry::Mesh(std::sync::Arc::new(dented_feet())),
+            pose_i: Isometry3::from_parts(
+                nalgebra::Translation3::new(-1.5, 0.0, 1.1),
+                UnitQuaternion::from_euler_angles(0.1, FRAC_PI_2 - 0.2, 0.0),
+            ),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
         Case {
             name: "frustum_mesh_two_feet",
             i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
@@ -466,6 +478,17 @@ fn two_feet() -> TriangleMesh {
         }
     }
     TriangleMesh::new(vertices, triangles).unwrap()
+}
+
+/// [`two_feet`] with each foot's top corner at `+x, +y` pushed in and down: no longer convex.
+fn dented_feet() -> TriangleMesh {
+    let feet = two_feet();
+    let mut vertices = feet.vertices().to_vec();
+    for foot in 0..2 {
+        let v = &mut vertices[8 * foot + 7];
+        *v = Point3::new(v.x - 0.1, v.y - 0.1, 0.7);
+    }
+    TriangleMesh::new(vertices, feet.triangles().to_vec()).unwrap()
 }
 
 fn bench_pairs(c: &mut Criterion) {

@@ -179,7 +179,7 @@ pub(crate) fn contact_by(
             return None;
         }
         let faces = cylinder_polyhedron::box_faces(&(centre / unit), &rot_ab, &(half / unit));
-        if let Some(m) = cylinder_polyhedron::moments(ra / unit, hla / unit, &faces) {
+        if let Some(m) = cylinder_polyhedron::box_moments(ra / unit, hla / unit, &faces) {
             let frame = Matrix3::identity();
             return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
         }

@@ -23,6 +23,7 @@
 //! per-region sums) live in a thread-local scratch that grows to the largest mesh seen and is
 //! then reused: no allocation once warm.
 
+use super::convex_parts::{ConvexPart, convex_parts};
 use crate::kernel::PairContact;
 use contact_core::geometry::TriangleMesh;
 use contact_core::geometry::{closest_point_on_triangle, line_triangle};
@@ -51,6 +52,9 @@ pub struct PreparedMesh {
     /// Per triangle, its unit normal (zero for a degenerate one), so a line that crosses the
     /// triangle's plane outside its ball is not intersected with it ([`exit_along`]).
     pub(crate) normals: Vec<Vector3>,
+    /// The components, when each is a convex solid (see `convex_parts`); empty otherwise and
+    /// for a mesh turned inside out.
+    pub(crate) convex_parts: Vec<ConvexPart>,
 }
 
 impl PreparedMesh {
@@ -99,6 +103,7 @@ impl PreparedMesh {
                     .unwrap_or_default()
             })
             .collect();
+        let convex_parts = convex_parts(&vertices, &triangles, &neighbours);
         Some(Self {
             vertices,
             triangles,
@@ -108,6 +113,7 @@ impl PreparedMesh {
             inverted: false,
             balls,
             normals,
+            convex_parts,
         })
     }
 
@@ -118,7 +124,7 @@ impl PreparedMesh {
         // Edge k of [a, c, b] is edge 2 − k of [a, b, c] reversed (k = 0: a→c is c→a, edge 2;
         // k = 1: c→b, edge 1; k = 2: b→a, edge 0), with the same neighbour across it.
         let neighbours = self.neighbours.iter().map(|n| [n[2], n[1], n[0]]).collect();
-        Self {
+        let mut out = Self {
             vertices: self.vertices.clone(),
             triangles,
             neighbours,
@@ -127,7 +133,12 @@ impl PreparedMesh {
             inverted: !self.inverted,
             balls: self.balls.clone(),
             normals: self.normals.iter().map(|n| -n).collect(),
+            convex_parts: Vec::new(),
+        };
+        if !out.inverted {
+            out.convex_parts = convex_parts(&out.vertices, &out.triangles, &out.neighbours);
         }
+        out
     }
 }
 

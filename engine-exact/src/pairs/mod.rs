@@ -16,6 +16,7 @@ pub mod box_half_space;
 pub mod box_plane;
 pub(crate) mod box_revolved;
 pub mod clipped;
+pub(crate) mod convex_parts;
 pub mod cylinder_parallel;
 pub mod cylinder_plane;
 pub(crate) mod cylinder_polyhedron;

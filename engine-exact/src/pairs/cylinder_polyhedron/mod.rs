@@ -1,7 +1,9 @@
 //! A cylinder against a convex polyhedron (a box at any tilt), in closed form: the
 //! intersection's volume, centroid and surface measures by the divergence theorem over its
 //! boundary, every piece of which is a plane region bounded by segments and circular arcs or
-//! a patch of the cylinder's side bounded by the arcs the faces and caps cut from it.
+//! a patch of the cylinder's side bounded by the arcs the faces and caps cut from it. The
+//! polyhedron is a box ([`box_faces`]) or a convex component of a closed mesh, its triangles
+//! the faces ([`mesh`]).
 //!
 //! ## The method
 //! In the working frame (the cylinder's axes, origin at its centre, caps at `z = ±h`, radius
@@ -45,6 +47,7 @@
 //!   turn) and no face pieces; `P` inside the cylinder has face pieces only.
 //! - **Touching**: no region has area, so no volume: no contact.
 
+pub(crate) mod mesh;
 mod trig;
 
 use super::disc_region::{RimArc, disc_region};
@@ -57,7 +60,8 @@ use trig::{Arc, Poly};
 pub(crate) const NEAR_VERTICAL: f64 = 1e-3;
 
 /// One face of the polyhedron: the plane `normal·x = offset` (unit outward normal) and its
-/// corners, counter-clockwise seen from outside.
+/// corners (a quad's four, or a triangle's three and a fourth unused), counter-clockwise seen
+/// from outside.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Face {
     /// Outward unit normal.
@@ -66,6 +70,8 @@ pub(crate) struct Face {
     pub offset: f64,
     /// Corners, counter-clockwise seen from outside.
     pub corners: [Vector3; 4],
+    /// How many corners it has (3 or 4).
+    pub count: usize,
 }
 
 /// The six faces of the box with centre `centre`, unit axes the columns of `axes` (right
@@ -93,6 +99,7 @@ pub(crate) fn box_faces(centre: &Vector3, axes: &Matrix3, half: &Vector3) -> [Fa
                 s[j] = sj;
                 corner(s)
             }),
+            count: 4,
         }
     })
 }
@@ -106,8 +113,8 @@ struct Bound {
     z: [f64; 3],
 }
 
-/// Most rim arcs kept (a box has at most a dozen in practice; more is sliced).
-const MAX_ARCS: usize = 64;
+/// Most rim arcs kept against a box (a dozen in practice; more is sliced).
+const BOX_ARCS: usize = 64;
 
 /// A flat piece of the intersection's boundary: its plane's `n·x` offset from the frame's
 /// origin along its unit normal, area, and first moment about the frame's origin.
@@ -121,14 +128,20 @@ struct Flat {
     cap: bool,
 }
 
-/// Most flat pieces: two caps and a box's six faces.
-const MAX_FLATS: usize = 8;
+/// Most flat pieces against a box: two caps and its six faces.
+const BOX_FLATS: usize = 8;
+
+/// [`moments`] against a box's six faces.
+pub(crate) fn box_moments(r: f64, h: f64, faces: &[Face; 6]) -> Option<Option<SlicedMoments>> {
+    moments::<BOX_FLATS, BOX_ARCS>(r, h, faces)
+}
 
 /// Clips `poly` to the convex polygon `corners` (counter-clockwise when `orient` is +1,
 /// clockwise when −1).
-fn clip_to(poly: &mut Polygon, corners: &[Vector2; 4], orient: f64) {
-    for k in 0..4 {
-        let (p, q) = (corners[k], corners[(k + 1) % 4]);
+fn clip_to(poly: &mut Polygon, corners: &[Vector2], orient: f64) {
+    let n = corners.len();
+    for k in 0..n {
+        let (p, q) = (corners[k], corners[(k + 1) % n]);
         let e = (q - p) * orient;
         let g = Vector2::new(e.y, -e.x);
         poly.clip(&g, g.dot(&p), 4);
@@ -136,11 +149,16 @@ fn clip_to(poly: &mut Polygon, corners: &[Vector2; 4], orient: f64) {
 }
 
 /// The intersection's moments for the cylinder of radius `r` and caps at `z = ±h` against the
-/// convex polyhedron `faces` (at most six), in the working frame of the module docs:
-/// `Some(None)` when they do not overlap with volume, `None` when a face is nearly parallel
-/// to the axis (sliced by the caller).
-pub(crate) fn moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMoments>> {
-    if faces.len() > MAX_FLATS - 2
+/// convex polyhedron `faces`, in the working frame of the module docs: `Some(None)` when they
+/// do not overlap with volume, `None` when a face is nearly parallel to the axis or the
+/// pieces exceed the capacities (`FLATS` flat pieces, two of them the caps; `ARCS` rim arcs),
+/// which the caller slices.
+pub(crate) fn moments<const FLATS: usize, const ARCS: usize>(
+    r: f64,
+    h: f64,
+    faces: &[Face],
+) -> Option<Option<SlicedMoments>> {
+    if faces.len() + 2 > FLATS
         || faces
             .iter()
             .any(|f| f.normal.z != 0.0 && f.normal.z.abs() < NEAR_VERTICAL)
@@ -156,11 +174,11 @@ pub(crate) fn moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMom
         },
         sign: 0.0,
         z: [0.0; 3],
-    }; MAX_ARCS];
+    }; ARCS];
     let mut arc_count = 0;
     let mut overflow = false;
     let mut keep = |arc: &RimArc, sign: f64, z: [f64; 3]| {
-        if arc_count < MAX_ARCS {
+        if arc_count < ARCS {
             bounds[arc_count] = Bound { arc: *arc, sign, z };
             arc_count += 1;
         } else {
@@ -173,7 +191,7 @@ pub(crate) fn moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMom
         area: 0.0,
         moment: Vector3::zeros(),
         cap: false,
-    }; MAX_FLATS];
+    }; FLATS];
     let mut flat_count = 0;
     // The caps: the disc inside the polyhedron's section.
     for (z, sign) in [(h, 1.0), (-h, -1.0)] {
@@ -209,7 +227,7 @@ pub(crate) fn moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMom
             let mut strip = Polygon::rectangle(Vector2::new(w2.sqrt(), h));
             // (t, z) is right-handed seen from outside: the corners stay counter-clockwise.
             let corners = f.corners.map(|c| Vector2::new(along.dot(&c.xy()), c.z));
-            clip_to(&mut strip, &corners, 1.0);
+            clip_to(&mut strip, &corners[..f.count], 1.0);
             let m = strip.measures();
             if m.area > 0.0 {
                 let xy = across * (q / length * m.area) + along * m.moment.x;
@@ -227,7 +245,11 @@ pub(crate) fn moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMom
         // Seen along the axis: the projected face within the slab |z(p)| ≤ h.
         let orient = n.z.signum();
         let mut projected = Polygon::rectangle(square);
-        clip_to(&mut projected, &f.corners.map(|c| c.xy()), orient);
+        clip_to(
+            &mut projected,
+            &f.corners.map(|c| c.xy())[..f.count],
+            orient,
+        );
         let (nh, nz) = (n.xy(), n.z.abs());
         projected.clip(&(-orient * nh), h * nz - orient * d, 4);
         projected.clip(&(orient * nh), h * nz + orient * d, 4);

@@ -1,6 +1,8 @@
 //! A cylinder, a frustum (cone) or a ring torus against a closed triangle mesh (taken as
 //! exact): the intersection's moments by slicing perpendicular to the solid's axis, one
-//! contact per connected region.
+//! contact per connected region. A cylinder against a mesh whose components are all convex
+//! (and apart) takes each component in closed form instead
+//! ([`super::cylinder_polyhedron`]), unless a face is within 1e-3 of parallel to its axis.
 //!
 //! ## The slices
 //! In the solid's frame (axis `z`, lengths divided by a power of two near its size) the plane
@@ -53,6 +55,7 @@ pub(crate) mod section;
 
 pub(crate) use ellipsoid::ellipsoid_contacts;
 use region::{Region, area_scale};
+pub(crate) use region::{fallback, on_mesh};
 
 use super::clipped::unit_for;
 use super::mesh_plane::PreparedMesh;
@@ -272,6 +275,12 @@ pub(crate) fn contacts(
     work: &mut WorkCounters,
     emit: &mut dyn FnMut(PairContact),
 ) {
+    // A cylinder against convex parts: each in closed form.
+    if let Solid::Cylinder(c) = solid {
+        if super::cylinder_polyhedron::mesh::mesh_contacts(c, pose_a, mesh, pose_b, work, emit) {
+            return;
+        }
+    }
     let Some((profile, size)) = Profile::of(solid) else {
         return;
     };

@@ -268,7 +268,7 @@ impl Region<'_> {
 }
 
 /// Where the line from `g` along `d` first meets the mesh (at `pose_b`), or its closest point.
-pub(super) fn on_mesh(mesh: &PreparedMesh, pose_b: &Isometry3, g: &Point3, d: &Vector3) -> Point3 {
+pub(crate) fn on_mesh(mesh: &PreparedMesh, pose_b: &Isometry3, g: &Point3, d: &Vector3) -> Point3 {
     let from = pose_b.inverse_transform_point(g);
     let direction = pose_b.inverse_transform_vector(d);
     pose_b * exit_along(mesh, &from, &direction).unwrap_or_else(|| closest_on_mesh(mesh, &from))
@@ -276,7 +276,7 @@ pub(super) fn on_mesh(mesh: &PreparedMesh, pose_b: &Isometry3, g: &Point3, d: &V
 
 /// The normal when the area vector vanishes: with no mesh surface inside the solid, from the
 /// centroid to the mesh's closest point; otherwise `against_solid()`.
-pub(super) fn fallback(
+pub(crate) fn fallback(
     solid_inside: bool,
     mesh: &PreparedMesh,
     pose_b: &Isometry3,

@@ -1,0 +1,181 @@
+//! A closed mesh's connected components that are convex solids, found once when the mesh is
+//! prepared, so the pairs with a closed form against a convex polyhedron (the cylinder's)
+//! can take each as one.
+//!
+//! A component is convex when every edge is convex: the vertex across it of the neighbouring
+//! triangle lies on or behind the triangle's plane (within 1e-12 of the component's size). A
+//! closed, connected, embedded surface that is locally convex at every edge bounds a convex
+//! solid, and its solid meets another convex solid in one convex region: one contact. The
+//! parts are only used when their bounding boxes are pairwise apart (two parts touching would
+//! make one region of the mesh's solid, two contacts of the parts), and when each has at most
+//! [`MAX_PART_TRIANGLES`] triangles (the closed forms' fixed capacity).
+
+use contact_core::Point3;
+
+/// Most triangles a convex part may have.
+pub(crate) const MAX_PART_TRIANGLES: usize = 48;
+
+/// One convex component of a mesh.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ConvexPart {
+    /// Its triangles' indices.
+    pub triangles: Vec<u32>,
+    /// A ball holding it: centre and radius (mesh frame).
+    pub centre: Point3,
+    /// The ball's radius.
+    pub radius: f64,
+}
+
+/// The mesh's convex parts, or none when a component is not convex, is too large, or two
+/// components' bounding boxes meet.
+pub(crate) fn convex_parts(
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    neighbours: &[[u32; 3]],
+) -> Vec<ConvexPart> {
+    let mut component = vec![u32::MAX; triangles.len()];
+    let mut parts: Vec<(Vec<u32>, Point3, Point3)> = Vec::new();
+    for seed in 0..triangles.len() {
+        if component[seed] != u32::MAX {
+            continue;
+        }
+        let label = parts.len() as u32;
+        let mut members = vec![seed as u32];
+        component[seed] = label;
+        let mut next = 0;
+        while next < members.len() {
+            let t = members[next] as usize;
+            next += 1;
+            for &n in &neighbours[t] {
+                if component[n as usize] == u32::MAX {
+                    component[n as usize] = label;
+                    members.push(n);
+                }
+            }
+            if members.len() > MAX_PART_TRIANGLES {
+                return Vec::new();
+            }
+        }
+        let (mut lo, mut hi) = (
+            vertices[triangles[seed][0] as usize],
+            vertices[triangles[seed][0] as usize],
+        );
+        for &t in &members {
+            for &v in &triangles[t as usize] {
+                lo = lo.inf(&vertices[v as usize]);
+                hi = hi.sup(&vertices[v as usize]);
+            }
+        }
+        parts.push((members, lo, hi));
+    }
+    for (members, lo, hi) in &parts {
+        let size = (hi - lo).norm();
+        for &t in members {
+            let tri = triangles[t as usize];
+            let [a, b, c] = tri.map(|v| vertices[v as usize]);
+            let Some(normal) = (b - a).cross(&(c - a)).try_normalize(0.0) else {
+                return Vec::new();
+            };
+            for &n in &neighbours[t as usize] {
+                let across = triangles[n as usize]
+                    .iter()
+                    .find(|v| !tri.contains(v))
+                    .map(|&v| vertices[v as usize]);
+                match across {
+                    Some(p) if normal.dot(&(p - a)) <= 1e-12 * size => {}
+                    _ => return Vec::new(),
+                }
+            }
+        }
+    }
+    for i in 0..parts.len() {
+        for j in 0..i {
+            let ((_, lo_i, hi_i), (_, lo_j, hi_j)) = (&parts[i], &parts[j]);
+            let apart = (0..3).any(|k| hi_i[k] < lo_j[k] || hi_j[k] < lo_i[k]);
+            if !apart {
+                return Vec::new();
+            }
+        }
+    }
+    parts
+        .into_iter()
+        .map(|(triangles, lo, hi)| ConvexPart {
+            triangles,
+            centre: nalgebra::center(&lo, &hi),
+            radius: 0.5 * (hi - lo).norm(),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use contact_core::Vector3;
+    use contact_core::geometry::TriangleMesh;
+
+    fn boxes(boxes: &[(Point3, Vector3)]) -> TriangleMesh {
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for (c, h) in boxes {
+            let base = vertices.len() as u32;
+            for k in 0..8 {
+                let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
+                vertices.push(Point3::new(
+                    c.x + s(0) * h.x,
+                    c.y + s(1) * h.y,
+                    c.z + s(2) * h.z,
+                ));
+            }
+            for q in [
+                [0, 2, 3, 1],
+                [4, 5, 7, 6],
+                [0, 1, 5, 4],
+                [2, 6, 7, 3],
+                [0, 4, 6, 2],
+                [1, 3, 7, 5],
+            ] {
+                triangles.push([base + q[0], base + q[1], base + q[2]]);
+                triangles.push([base + q[0], base + q[2], base + q[3]]);
+            }
+        }
+        TriangleMesh::new(vertices, triangles).unwrap()
+    }
+
+    fn parts_of(mesh: &TriangleMesh) -> Vec<ConvexPart> {
+        let prepared = crate::pairs::mesh_plane::PreparedMesh::new(mesh).unwrap();
+        convex_parts(
+            &prepared.vertices,
+            &prepared.triangles,
+            &prepared.neighbours,
+        )
+    }
+
+    /// Two boxes apart are two parts; overlapping bounding boxes, none.
+    #[test]
+    fn boxes_apart_are_parts_and_touching_ones_are_not() {
+        let h = Vector3::repeat(0.5);
+        let two = parts_of(&boxes(&[
+            (Point3::origin(), h),
+            (Point3::new(2.0, 0.0, 0.0), h),
+        ]));
+        assert_eq!(two.len(), 2);
+        assert_eq!(two[0].triangles.len(), 12);
+        assert!((two[1].centre - Point3::new(2.0, 0.0, 0.0)).norm() < 1e-15);
+        let touching = parts_of(&boxes(&[
+            (Point3::origin(), h),
+            (Point3::new(1.0, 0.0, 0.0), h),
+        ]));
+        assert!(touching.is_empty());
+    }
+
+    /// A mesh with a dent (a vertex pushed inwards) is not convex.
+    #[test]
+    fn a_dented_box_is_not_convex() {
+        let mesh = boxes(&[(Point3::origin(), Vector3::repeat(0.5))]);
+        let mut vertices = mesh.vertices().to_vec();
+        vertices[7] = Point3::new(0.3, 0.3, 0.3);
+        let dented = TriangleMesh::new(vertices, mesh.triangles().to_vec()).unwrap();
+        assert!(parts_of(&dented).is_empty());
+        assert_eq!(parts_of(&mesh).len(), 1);
+    }
+}
