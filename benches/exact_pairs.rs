@@ -423,6 +423,32 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+        // The same bodies well inside a large bounded ground (no edge within reach): the
+        // bounded pairs answer with the unbounded plane's closed forms.
+        Case {
+            name: "cylinder_bounded_plane_inside",
+            i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "torus_bounded_plane_inside",
+            i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "ellipsoid_bounded_plane_inside",
+            i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
         Case {
             name: "circle_curve",
             i: Geometry::Circle(Circle::new(0.3).unwrap()),
