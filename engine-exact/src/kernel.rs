@@ -346,6 +346,17 @@ impl Kernel {
                 side,
             } => {
                 let centre = contact_core::Point3::from(pose_a.translation.vector);
+                // As the ellipsoid: the half-space's answer with the centre on the free side.
+                let free_side = pose_b.inverse_transform_point(&centre).z * side > 0.0;
+                if free_side && pairs::bounded_plane::well_inside(plane, pose_b, &centre, radius) {
+                    return {
+                        if let Some(c) = pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+                        {
+                            emit(c);
+                        }
+                        Ok(())
+                    };
+                }
                 pairs::bounded_plane::local_box(plane, side, pose_b, &centre, radius).and_then(
                     |(cuboid, pose_box)| {
                         let solid = pairs::sphere_solid::Solid::Box(cuboid);

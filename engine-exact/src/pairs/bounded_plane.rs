@@ -91,9 +91,10 @@ mod tests {
         ]
     }
 
-    /// A body well inside the rectangle: the prism's answer (slicing, or the ellipsoid–box
-    /// pair on the local box) is the half-space's closed form, for a cylinder, a frustum, a
-    /// torus and an ellipsoid at tilts and depths across their range, either side.
+    /// A body well inside the rectangle: the prism's answer (slicing, clipping, or the
+    /// ellipsoid–box and sphere–box pairs on the local box) is the half-space's closed form,
+    /// for a cylinder, a frustum, a torus, an ellipsoid, a sphere and a mesh at tilts and
+    /// depths across their range, either side.
     #[test]
     fn well_inside_the_prism_is_the_half_space() {
         let plane = Plane::bounded(-10.0, 12.0, -9.0, 11.0).unwrap();
@@ -194,6 +195,21 @@ mod tests {
                 ellipsoid_plane::contact(&semi, &pose, &pose_plane, side),
                 0.9,
             );
+            // Sphere: the sphere–box pair on the local box, its centre on the free side.
+            let radius = 0.45;
+            let pose = at(depth.min(0.4) + 0.02);
+            let centre = Point3::from(pose.translation.vector);
+            let boxed = local_box(&plane, side, &pose_plane, &centre, radius).and_then(
+                |(cuboid, pose_box)| {
+                    let solid = crate::pairs::sphere_solid::Solid::Box(cuboid);
+                    crate::pairs::sphere_solid::contact(radius, &pose, &solid, &pose_box)
+                },
+            );
+            one(
+                boxed,
+                crate::pairs::sphere_plane::contact(radius, &pose, &pose_plane, side),
+                0.45,
+            );
         }
         // A mesh (a box of 12 triangles): the box–mesh pair on the prism.
         let mesh = {
@@ -258,7 +274,7 @@ mod tests {
             }
         }
         assert!(compared > 100, "{compared}");
-        // Measured over 180 contacts: 7.4e-15 (depth), 7.0e-15 (normal), 1.2e-14 (points),
+        // Measured over 220 contacts: 7.4e-15 (depth), 7.0e-15 (normal), 1.2e-14 (points),
         // 8.3e-15 (area).
         assert!(worst.iter().all(|&e| e <= 1e-12), "{worst:?}");
     }
