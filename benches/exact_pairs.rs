@@ -408,6 +408,14 @@ fn cases() -> Vec<Case> {
             depth: None,
         },
         Case {
+            name: "cylinder_bounded_plane",
+            i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
+            j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
             name: "torus_bounded_plane",
             i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
             j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),

@@ -16,8 +16,9 @@
 //!   opposite) to the cylinder's is not sliced: its section inside the disc times the axial
 //!   overlap, in closed form ([`super::cylinder_prism`]); a box at any other tilt is not
 //!   sliced either (the divergence theorem over the intersection's boundary, in closed form:
-//!   `cylinder_polyhedron`) unless a face is within 1e-3 of parallel to the axis, where that
-//!   closed form would lose precision. Otherwise, among directions
+//!   `cylinder_polyhedron`), nor is a bounded plane's prism (its faces cut to the cylinder's
+//!   reach), unless a face is within 1e-3 of parallel to the axis, where that closed form
+//!   would lose precision. Otherwise, among directions
 //!   perpendicular to the axis (64 sampled over a half turn), the one farthest from every
 //!   face normal (smallest largest `|m·n|`): a face parallel to the slicing planes would be
 //!   a jump in the section, and three lines through the origin always leave a direction at
@@ -182,6 +183,26 @@ pub(crate) fn contact_by(
         if let Some(m) = cylinder_polyhedron::box_moments(ra / unit, hla / unit, &faces) {
             let frame = Matrix3::identity();
             return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
+        }
+    }
+    // A bounded plane's prism, likewise (its faces cut to the cylinder's reach).
+    if let (Other::Plane { .. }, Method::ClosedForm) = (b, method) {
+        if let Some(m) = prism_moments(
+            &prism_planes[..prism_count],
+            (&rot_ab, &pose_ab.translation.vector, &centre_a),
+            (ra, hla, unit),
+        ) {
+            work.bounding_volume_tests += 1;
+            let frame = Matrix3::identity();
+            return finish(
+                a,
+                pose_a,
+                b,
+                pose_b,
+                &m?,
+                (&frame, &centre_a, unit),
+                &prism_planes[..prism_count],
+            );
         }
     }
     let n = match b {
@@ -383,6 +404,35 @@ pub(crate) fn contact_by(
         (&frame, &centre_a, unit),
         &prism_planes[..prism_count],
     )
+}
+
+/// The moments of the cylinder (radius `ra`, half-length `hla`) against the bounded plane's
+/// prism `planes` (in the plane's frame) in closed form, in the working
+/// frame (`a`'s axes, origin `centre_a`, lengths divided by `unit`; `rot_ab`, `t_ab` map the
+/// plane's frame into `a`'s); `None` where [`cylinder_polyhedron::box_moments`] would be.
+fn prism_moments(
+    planes: &[HalfSpace],
+    (rot_ab, t_ab, centre_a): (&Matrix3, &Vector3, &Vector3),
+    (ra, hla, unit): (f64, f64, f64),
+) -> Option<Option<SlicedMoments>> {
+    let reach = ra.hypot(hla) / unit;
+    let to_working = |normal: &Vector3, offset: f64| {
+        let n = rot_ab * normal;
+        (n, (offset + n.dot(t_ab) - n.dot(centre_a)) / unit)
+    };
+    let mut working = [(Vector3::zeros(), 0.0); 5];
+    for (w, h) in working.iter_mut().zip(planes) {
+        *w = to_working(&h.normal, h.offset);
+    }
+    let mut faces = [cylinder_polyhedron::Face {
+        normal: Vector3::zeros(),
+        offset: 0.0,
+        corners: [Vector3::zeros(); cylinder_polyhedron::FACE_CORNERS],
+        count: 0,
+    }; 5];
+    let count =
+        cylinder_polyhedron::half_spaces::faces(&working[..planes.len()], reach, &mut faces)?;
+    cylinder_polyhedron::polyhedron_moments(ra / unit, hla / unit, &faces[..count])
 }
 
 /// When the intersection is a prism along `a`'s axis (`b` a cylinder with its axis exactly

@@ -3,7 +3,7 @@
 //! contact each, the points and the containment normal as the mesh's sliced regions take
 //! them (`mesh_revolved`).
 
-use super::{Face, moments};
+use super::{FACE_CORNERS, Face, moments};
 use crate::kernel::PairContact;
 use crate::pairs::clipped::unit_for;
 use crate::pairs::convex_parts::MAX_PART_TRIANGLES;
@@ -45,7 +45,7 @@ pub(crate) fn mesh_contacts(
     let mut faces = [Face {
         normal: Vector3::zeros(),
         offset: 0.0,
-        corners: [Vector3::zeros(); 4],
+        corners: [Vector3::zeros(); FACE_CORNERS],
         count: 3,
     }; MAX_PART_TRIANGLES];
     for part in &mesh.convex_parts {
@@ -64,7 +64,7 @@ pub(crate) fn mesh_contacts(
             *face = Face {
                 normal,
                 offset: normal.dot(&v0),
-                corners: [v0, corner(1), corner(2), v0],
+                corners: std::array::from_fn(|c| if c < 3 { corner(c) } else { v0 }),
                 count: 3,
             };
         }

@@ -47,6 +47,7 @@
 //!   turn) and no face pieces; `P` inside the cylinder has face pieces only.
 //! - **Touching**: no region has area, so no volume: no contact.
 
+pub(crate) mod half_spaces;
 pub(crate) mod mesh;
 mod trig;
 
@@ -59,9 +60,11 @@ use trig::{Arc, Poly};
 /// Faces closer than this to parallel with the axis (`|n_z|`, not zero) are sliced instead.
 pub(crate) const NEAR_VERTICAL: f64 = 1e-3;
 
+/// Most corners a face has (a bounded plane's top face: its square clipped by four walls).
+pub(crate) const FACE_CORNERS: usize = 9;
+
 /// One face of the polyhedron: the plane `normal·x = offset` (unit outward normal) and its
-/// corners (a quad's four, or a triangle's three and a fourth unused), counter-clockwise seen
-/// from outside.
+/// first `count` corners, counter-clockwise seen from outside.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Face {
     /// Outward unit normal.
@@ -69,8 +72,8 @@ pub(crate) struct Face {
     /// `normal·x` on the face.
     pub offset: f64,
     /// Corners, counter-clockwise seen from outside.
-    pub corners: [Vector3; 4],
-    /// How many corners it has (3 or 4).
+    pub corners: [Vector3; FACE_CORNERS],
+    /// How many corners it has.
     pub count: usize,
 }
 
@@ -92,7 +95,8 @@ pub(crate) fn box_faces(centre: &Vector3, axes: &Matrix3, half: &Vector3) -> [Fa
         Face {
             normal,
             offset: normal.dot(centre) + half[k],
-            corners: quad.map(|(si, sj)| {
+            corners: std::array::from_fn(|c| {
+                let (si, sj) = quad[c % 4];
                 let mut s = [0.0; 3];
                 s[k] = sign;
                 s[i] = si;
@@ -133,6 +137,11 @@ const BOX_FLATS: usize = 8;
 
 /// [`moments`] against a box's six faces.
 pub(crate) fn box_moments(r: f64, h: f64, faces: &[Face; 6]) -> Option<Option<SlicedMoments>> {
+    moments::<BOX_FLATS, BOX_ARCS>(r, h, faces)
+}
+
+/// [`moments`] against at most six faces (a bounded plane's prism).
+pub(crate) fn polyhedron_moments(r: f64, h: f64, faces: &[Face]) -> Option<Option<SlicedMoments>> {
     moments::<BOX_FLATS, BOX_ARCS>(r, h, faces)
 }
 
