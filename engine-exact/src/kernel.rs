@@ -24,6 +24,18 @@ pub(crate) struct PairContact {
 }
 
 impl PairContact {
+    /// The errors of `self` against `want`: depth, normal and the points' distances relative
+    /// to `size`, the area to `size²` (for the tests that hold one method to another).
+    #[cfg(test)]
+    pub fn errors(&self, want: &Self, size: f64) -> [f64; 4] {
+        [
+            (self.depth - want.depth).abs() / size,
+            (self.normal - want.normal).norm(),
+            ((self.point_a - want.point_a).norm() + (self.point_b - want.point_b).norm()) / size,
+            (self.area - want.area).abs() / (size * size),
+        ]
+    }
+
     /// The same contact with `a` and `b` exchanged.
     pub fn swapped(self) -> Self {
         Self {

@@ -81,16 +81,6 @@ mod tests {
     use contact_core::geometry::{Cylinder, Frustum, Torus};
     use contact_core::{UnitQuaternion, Vector3, WorkCounters};
 
-    /// `(depth, normal, points, area)` errors of `got` against `want`, relative to `size`.
-    fn errors(got: &PairContact, want: &PairContact, size: f64) -> [f64; 4] {
-        [
-            (got.depth - want.depth).abs() / size,
-            (got.normal - want.normal).norm(),
-            ((got.point_a - want.point_a).norm() + (got.point_b - want.point_b).norm()) / size,
-            (got.area - want.area).abs() / (size * size),
-        ]
-    }
-
     /// A body well inside the rectangle: the prism's answer (slicing, clipping, or the
     /// ellipsoid–box and sphere–box pairs on the local box) is the half-space's closed form,
     /// for a cylinder, a frustum, a torus, an ellipsoid, a sphere and a mesh at tilts and
@@ -117,7 +107,7 @@ mod tests {
             let mut work = WorkCounters::default();
             let mut one = |got: Option<PairContact>, want: Option<PairContact>, size: f64| {
                 if let (Some(g), Some(w)) = (got, want) {
-                    let e = errors(&g, &w, size);
+                    let e = g.errors(&w, size);
 
                     for i in 0..4 {
                         worst[i] = worst[i].max(e[i]);
@@ -212,29 +202,8 @@ mod tests {
             );
         }
         // A mesh (a box of 12 triangles): the box–mesh pair on the prism.
-        let mesh = {
-            let h = Vector3::new(0.7, 0.4, 0.5);
-            let vertices: Vec<Point3> = (0..8)
-                .map(|k| {
-                    let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-                    Point3::new(s(0) * h.x, s(1) * h.y, s(2) * h.z)
-                })
-                .collect();
-            let mut triangles = Vec::new();
-            for q in [
-                [0, 2, 3, 1],
-                [4, 5, 7, 6],
-                [0, 1, 5, 4],
-                [2, 6, 7, 3],
-                [0, 4, 6, 2],
-                [1, 3, 7, 5],
-            ] {
-                triangles.push([q[0], q[1], q[2]]);
-                triangles.push([q[0], q[2], q[3]]);
-            }
-            let mesh = contact_core::geometry::TriangleMesh::new(vertices, triangles).unwrap();
-            crate::pairs::mesh_plane::PreparedMesh::new(&mesh).unwrap()
-        };
+        let cuboid = contact_core::geometry::Cuboid::centered(0.7, 0.4, 0.5).unwrap();
+        let mesh = crate::pairs::mesh_box::box_mesh(&cuboid).unwrap();
         for k in 0..20 {
             let f = k as f64;
             let side = if k % 2 == 0 { 1.0 } else { -1.0 };
@@ -265,7 +234,7 @@ mod tests {
             );
             assert_eq!(prism.len(), half.len(), "{k}");
             for (g, w) in prism.iter().zip(&half) {
-                let e = errors(g, w, 1.4);
+                let e = g.errors(w, 1.4);
                 assert!(e[3] <= 1e-9, "mesh {k}: {g:?} {w:?}");
                 for i in 0..4 {
                     worst[i] = worst[i].max(e[i]);

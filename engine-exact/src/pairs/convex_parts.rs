@@ -114,31 +114,7 @@ mod tests {
     use contact_core::geometry::TriangleMesh;
 
     fn boxes(boxes: &[(Point3, Vector3)]) -> TriangleMesh {
-        let mut vertices = Vec::new();
-        let mut triangles = Vec::new();
-        for (c, h) in boxes {
-            let base = vertices.len() as u32;
-            for k in 0..8 {
-                let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-                vertices.push(Point3::new(
-                    c.x + s(0) * h.x,
-                    c.y + s(1) * h.y,
-                    c.z + s(2) * h.z,
-                ));
-            }
-            for q in [
-                [0, 2, 3, 1],
-                [4, 5, 7, 6],
-                [0, 1, 5, 4],
-                [2, 6, 7, 3],
-                [0, 4, 6, 2],
-                [1, 3, 7, 5],
-            ] {
-                triangles.push([base + q[0], base + q[1], base + q[2]]);
-                triangles.push([base + q[0], base + q[2], base + q[3]]);
-            }
-        }
-        TriangleMesh::new(vertices, triangles).unwrap()
+        crate::pairs::mesh_box::boxes_surface(boxes)
     }
 
     fn parts_of(mesh: &TriangleMesh) -> Vec<ConvexPart> {

@@ -21,20 +21,6 @@ impl Rng {
     }
 }
 
-/// The errors of `got` against `want` relative to `size`: depth, normal, points, area.
-fn errors(
-    got: &crate::kernel::PairContact,
-    want: &crate::kernel::PairContact,
-    size: f64,
-) -> [f64; 4] {
-    [
-        (got.depth - want.depth).abs() / size,
-        (got.normal - want.normal).norm(),
-        ((got.point_a - want.point_a).norm() + (got.point_b - want.point_b).norm()) / size,
-        (got.area - want.area).abs() / (size * size),
-    ]
-}
-
 #[test]
 fn tilted_boxes_agree_with_the_slicing() {
     let mut rng = Rng(7);
@@ -67,7 +53,7 @@ fn tilted_boxes_agree_with_the_slicing() {
         let want = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Sliced);
         match (got, want) {
             (Some(g), Some(w)) => {
-                let e = errors(&g, &w, r.max(l).max(half.norm()));
+                let e = g.errors(&w, r.max(l).max(half.norm()));
                 for k in 0..4 {
                     worst[k] = worst[k].max(e[k]);
                 }
@@ -134,36 +120,11 @@ fn convex_mesh_parts_agree_with_the_slicing() {
     use crate::pairs::mesh_revolved;
     use crate::pairs::solid_distance::Solid;
     use contact_core::Point3;
-    use contact_core::geometry::TriangleMesh;
     let boxes = [
         (Point3::new(-0.9, 0.0, 0.0), Vector3::new(0.5, 0.6, 0.4)),
         (Point3::new(0.8, 0.1, -0.2), Vector3::new(0.3, 0.5, 0.7)),
     ];
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for (c, h) in &boxes {
-        let base = vertices.len() as u32;
-        for k in 0..8 {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            vertices.push(Point3::new(
-                c.x + s(0) * h.x,
-                c.y + s(1) * h.y,
-                c.z + s(2) * h.z,
-            ));
-        }
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    let convex = PreparedMesh::new(&TriangleMesh::new(vertices, triangles).unwrap()).unwrap();
+    let convex = PreparedMesh::new(&crate::pairs::mesh_box::boxes_surface(&boxes)).unwrap();
     assert_eq!(convex.convex_parts.len(), 2);
     let mut sliced = convex.clone();
     sliced.convex_parts.clear();
@@ -205,7 +166,7 @@ fn convex_mesh_parts_agree_with_the_slicing() {
                     dx.total_cmp(&dy)
                 })
                 .unwrap();
-            let e = errors(g, w, 2.0);
+            let e = g.errors(w, 2.0);
             for k in 0..4 {
                 worst[k] = worst[k].max(e[k]);
             }
@@ -262,7 +223,7 @@ fn bounded_plane_edges_agree_with_the_slicing() {
         let want = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Sliced);
         match (got, want) {
             (Some(g), Some(w)) => {
-                let e = errors(&g, &w, r.max(l));
+                let e = g.errors(&w, r.max(l));
                 for i in 0..4 {
                     worst[i] = worst[i].max(e[i]);
                 }
