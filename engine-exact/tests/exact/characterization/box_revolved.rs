@@ -387,7 +387,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             SLICED_SAMPLES,
             "cylinder–mesh",
             "axis tilted ≥ 12° from the mesh's top face normal, other faces out of reach",
-            "slicing across the axis: mesh section chords and arcs; oracle: Simpson over slices across the axis",
+            "closed form per convex part (the box-shaped mesh is one; sliced within 1e-3 of a face along the axis); oracle: Simpson over slices across the axis",
             |rng| {
                 let (r, len) = (rng.uniform(0.3, 1.5), rng.uniform(0.3, 2.0));
                 let q = tilt(rng)?;
