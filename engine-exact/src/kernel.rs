@@ -295,14 +295,9 @@ impl Kernel {
                 ref plane,
                 side,
             } => {
-                let centre = pose_a * mesh.centre;
-                if pairs::bounded_plane::well_inside(plane, pose_b, &centre, mesh.radius) {
-                    pairs::mesh_plane::contacts(mesh, pose_a, pose_b, side, work, emit);
-                } else {
-                    pairs::mesh_box::bounded_plane_contacts(
-                        mesh, pose_a, plane, side, pose_b, work, emit,
-                    );
-                }
+                pairs::mesh_box::bounded_plane_contacts(
+                    mesh, pose_a, plane, side, pose_b, work, emit,
+                );
                 None
             }
             Self::BoxRevolved {
@@ -317,15 +312,10 @@ impl Kernel {
                 ref plane,
                 side,
             } => {
-                let (centre, reach) = revolved_ball(solid, pose_a);
-                if pairs::bounded_plane::well_inside(plane, pose_b, &centre, reach) {
-                    pairs::revolved_plane::contact(solid, pose_a, pose_b, side, work)
-                } else {
-                    pairs::box_revolved::bounded_plane_contacts(
-                        solid, pose_a, plane, side, pose_b, work, emit,
-                    );
-                    None
-                }
+                pairs::box_revolved::bounded_plane_contacts(
+                    solid, pose_a, plane, side, pose_b, work, emit,
+                );
+                None
             }
             Self::EllipsoidBoundedPlane {
                 semi_axes,
@@ -413,19 +403,7 @@ impl Kernel {
             Self::CylinderSliced {
                 ref cylinder,
                 ref other,
-            } => {
-                if let pairs::cylinder_solid::Other::Plane { ref plane, side } = *other {
-                    let (centre, reach) =
-                        revolved_ball(&pairs::solid_distance::Solid::Cylinder(*cylinder), pose_a);
-                    if pairs::bounded_plane::well_inside(plane, pose_b, &centre, reach) {
-                        pairs::cylinder_plane::emit_contact(
-                            cylinder, pose_a, pose_b, side, work, emit,
-                        );
-                        return Ok(());
-                    }
-                }
-                pairs::cylinder_solid::contact(cylinder, pose_a, other, pose_b, work)
-            }
+            } => pairs::cylinder_solid::contact(cylinder, pose_a, other, pose_b, work),
             Self::RevolvedPair { ref a, ref b } => {
                 pairs::revolved_pair::contact(a, pose_a, b, pose_b, work)
             }
@@ -515,23 +493,4 @@ impl Kernel {
         }
         Ok(())
     }
-}
-
-/// A ball holding the cylinder, frustum or torus `solid` at `pose`: its world centre (the
-/// middle of the axis; a torus' centre) and radius.
-fn revolved_ball(solid: &pairs::solid_distance::Solid, pose: &Isometry3) -> (Point3, f64) {
-    use pairs::solid_distance::Solid;
-    let (middle, reach) = match *solid {
-        Solid::Cylinder(c) => (0.5 * c.length(), c.radius().hypot(0.5 * c.length())),
-        Solid::Frustum(f) => (
-            0.5 * f.length(),
-            f.bottom_radius()
-                .max(f.top_radius())
-                .hypot(0.5 * f.length()),
-        ),
-        Solid::Torus(t) => (0.0, t.major_radius() + t.minor_radius()),
-        // Not revolved: a ball about the frame's origin holding a box.
-        Solid::Box(b) => (0.0, b.half_extents().norm() + b.center().coords.norm()),
-    };
-    (pose * Point3::new(0.0, 0.0, middle), reach)
 }

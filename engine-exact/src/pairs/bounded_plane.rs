@@ -128,12 +128,13 @@ mod tests {
                 &(pose * Point3::new(0.0, 0.0, 0.7)),
                 reach
             ));
-            let sliced = cylinder_solid::contact(
+            let sliced = cylinder_solid::contact_by(
                 &cylinder,
                 &pose,
                 &Other::Plane { plane, side },
                 &pose_plane,
                 &mut work,
+                cylinder_solid::Method::Sliced,
             );
             one(
                 sliced,
@@ -151,7 +152,7 @@ mod tests {
             ] {
                 let pose = at(0.6) * Isometry3::translation(0.0, 0.0, -middle);
                 let mut found = Vec::new();
-                box_revolved::bounded_plane_contacts(
+                box_revolved::prism_contacts(
                     &solid,
                     &pose,
                     &plane,
@@ -215,7 +216,7 @@ mod tests {
             );
             let mut work = WorkCounters::default();
             let (mut prism, mut half) = (Vec::new(), Vec::new());
-            crate::pairs::mesh_box::bounded_plane_contacts(
+            crate::pairs::mesh_box::prism_contacts(
                 &mesh,
                 &pose,
                 &plane,

@@ -118,18 +118,19 @@ pub(crate) fn contact(
     contact_by(a, pose_a, b, pose_b, work, Method::ClosedForm)
 }
 
-/// How a tilted box is taken: the closed form where it applies, or always sliced (the
-/// closed form's independent check).
+/// How a tilted box or a bounded plane is taken: the closed forms where they apply, or always
+/// sliced (the closed forms' independent check).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Method {
-    /// [`cylinder_polyhedron`] unless a face is nearly parallel to the axis.
+    /// [`cylinder_polyhedron`] unless a face is nearly parallel to the axis; a bounded plane
+    /// with every edge out of reach as the unbounded one.
     ClosedForm,
     /// Sliced.
     #[cfg_attr(not(test), allow(dead_code))]
     Sliced,
 }
 
-/// [`contact`], a tilted box taken by `method`.
+/// [`contact`], a tilted box or a bounded plane taken by `method`.
 pub(crate) fn contact_by(
     a: &Cylinder,
     pose_a: &Isometry3,
@@ -139,6 +140,13 @@ pub(crate) fn contact_by(
     method: Method,
 ) -> Option<PairContact> {
     let (ra, hla) = (a.radius(), 0.5 * a.length());
+    // A bounded plane with every edge out of reach is the unbounded plane, in closed form.
+    if let (Other::Plane { plane, side }, Method::ClosedForm) = (b, method) {
+        let centre = pose_a * Point3::new(0.0, 0.0, hla);
+        if super::bounded_plane::well_inside(plane, pose_b, &centre, ra.hypot(hla)) {
+            return super::cylinder_plane::contact(a, pose_a, pose_b, *side, work);
+        }
+    }
     let size_b = match b {
         Other::Cylinder(c) => c.radius().max(0.5 * c.length()),
         Other::Box(c) => c.half_extents().norm(),

@@ -53,7 +53,6 @@ use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Contact of `cylinder` at `pose_c` with the plane at `pose_plane` (flipped when `side < 0`).
-#[cfg(test)]
 pub(crate) fn contact(
     cylinder: &Cylinder,
     pose_c: &Isometry3,

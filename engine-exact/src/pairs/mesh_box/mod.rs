@@ -419,10 +419,30 @@ fn boxes_triangles(boxes: &[(Point3, Vector3)]) -> (Vec<Point3>, Vec<[u32; 3]>) 
     (vertices, triangles)
 }
 
+/// The contacts of `mesh` (at `pose_mesh`) with the bounded `plane` (at `pose_plane`,
+/// flipped when `side < 0`): the unbounded plane's clipping when every edge is out of the
+/// mesh's reach ([`super::bounded_plane::well_inside`]), otherwise [`prism_contacts`].
+pub(crate) fn bounded_plane_contacts(
+    mesh: &PreparedMesh,
+    pose_mesh: &Isometry3,
+    plane: &Plane,
+    side: f64,
+    pose_plane: &Isometry3,
+    work: &mut WorkCounters,
+    emit: &mut dyn FnMut(PairContact),
+) {
+    let centre = pose_mesh * mesh.centre;
+    if super::bounded_plane::well_inside(plane, pose_plane, &centre, mesh.radius) {
+        super::mesh_plane::contacts(mesh, pose_mesh, pose_plane, side, work, emit);
+        return;
+    }
+    prism_contacts(mesh, pose_mesh, plane, side, pose_plane, work, emit);
+}
+
 /// Contacts of `mesh` at `pose_mesh` (`a`) with the bounded `plane` (flipped when `side <
 /// 0`) at `pose_plane` (`b`): the mesh against the box standing for the plane about the mesh's
 /// ball.
-pub(crate) fn bounded_plane_contacts(
+pub(crate) fn prism_contacts(
     mesh: &PreparedMesh,
     pose_mesh: &Isometry3,
     plane: &Plane,
