@@ -82,6 +82,8 @@ pub mod polyhedron;
 mod prepared;
 pub mod quadrature;
 mod ray_exit;
+#[cfg(test)]
+mod test_rng;
 
 use contact_core::{
     Geometry, GeometryEngine, GeometryInstance, PrepareError, PreparedPair, Unsupported,

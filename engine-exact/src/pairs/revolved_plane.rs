@@ -64,6 +64,7 @@ use std::f64::consts::PI;
 const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     tolerance: 1e-13,
     max_depth: 8,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// The profile of a solid of revolution in its `(ρ, z)` half-plane, lengths divided by the

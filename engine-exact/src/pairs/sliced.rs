@@ -53,6 +53,7 @@ use contact_core::{Vector2, Vector3, WorkCounters};
 const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     tolerance: 1e-13,
     max_depth: 24,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// Each piece may keep this fraction of the whole integral (volume or surface).

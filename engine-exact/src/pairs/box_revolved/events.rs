@@ -19,8 +19,8 @@
 //! a face tangency, an edge's tangency — a double root — or a rim on a face at an end), so
 //! between consecutive cuts the overlap is empty throughout or nowhere.
 //! The quartic's real roots in `(0, 1)` are isolated between the real roots of its
-//! derivative (recursively: cubic, quadratic) and each bracketed sign change is bisected to
-//! round-off; a root pair closer than round-off (an edge touching the surface) shows no sign
+//! derivative (recursively: cubic, quadratic) and each bracketed sign change is refined to
+//! round-off by Newton's steps kept inside the bracket; a root pair closer than round-off (an edge touching the surface) shows no sign
 //! change and is dropped: its slices' overlap is itself round-off.
 
 use super::{FLAT, MAX_CUTS, Profile, Setup};
@@ -84,7 +84,7 @@ pub(crate) fn roots_in(c: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize) {
     ends[m + 1] = hi;
     let mut n = 0;
     for piece in ends[..m + 2].windows(2) {
-        let (mut a, mut b) = (piece[0], piece[1]);
+        let (a, b) = (piece[0], piece[1]);
         let (fa, fb) = (eval(c, a), eval(c, b));
         if fa == 0.0 && a > lo && n < 4 {
             out[n] = a;
@@ -96,23 +96,52 @@ pub(crate) fn roots_in(c: &[f64; 5], lo: f64, hi: f64) -> ([f64; 4], usize) {
             continue;
         }
         let rising = fb > 0.0;
-        for _ in 0..200 {
-            let mid = 0.5 * (a + b);
-            if mid <= a || mid >= b {
-                break;
-            }
-            if (eval(c, mid) > 0.0) == rising {
-                b = mid;
-            } else {
-                a = mid;
-            }
-        }
+        let root = newton_in_bracket(c, degree, rising, (a, b));
         if n < 4 {
-            out[n] = 0.5 * (a + b);
+            out[n] = root;
             n += 1;
         }
     }
     (out, n)
+}
+
+/// The root of the polynomial `c` (of `degree`) in the bracket `(a, b)` where it is monotone,
+/// rising or not, with a sign change: Newton's steps from the middle, each kept inside the
+/// bracket (a bisection when a step would leave it) and the bracket shrunk by each value's
+/// sign, to round-off — as exact as bisecting to the last bit, in a handful of steps.
+fn newton_in_bracket(c: &[f64; 5], degree: usize, rising: bool, (mut a, mut b): (f64, f64)) -> f64 {
+    let mut x = 0.5 * (a + b);
+    for _ in 0..200 {
+        // The value and the slope by Horner's rule.
+        let (mut f, mut df) = (c[degree], 0.0);
+        for k in (0..degree).rev() {
+            df = df * x + f;
+            f = f * x + c[k];
+        }
+        if f == 0.0 {
+            return x;
+        }
+        if (f > 0.0) == rising {
+            b = x;
+        } else {
+            a = x;
+        }
+        let step = f / df;
+        // A step at round-off of `x`: converged (one more would only trade ulps).
+        if step.abs() <= 2.0 * f64::EPSILON * x.abs() {
+            return x;
+        }
+        let mut next = x - step;
+        if !(next > a && next < b) {
+            next = 0.5 * (a + b);
+        }
+        // The bracket at round-off: nothing between its ends.
+        if next <= a || next >= b {
+            return x;
+        }
+        x = next;
+    }
+    x
 }
 
 /// The polynomial in `s` (coefficients of `s^k`) whose roots are where the edge `start + s·d`

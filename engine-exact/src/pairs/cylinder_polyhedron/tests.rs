@@ -4,22 +4,9 @@
 
 use super::{Face, box_faces, box_moments};
 use crate::pairs::cylinder_solid::{Method, Other, contact_by};
+use crate::test_rng::Rng;
 use contact_core::geometry::{Cuboid, Cylinder};
 use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
-
-/// A small deterministic generator (SplitMix64).
-struct Rng(u64);
-
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
-    }
-}
 
 #[test]
 fn tilted_boxes_agree_with_the_slicing() {

@@ -38,6 +38,7 @@ use nalgebra::{Matrix2, Matrix3, Vector2};
 pub(crate) const ADAPTIVE: Adaptive = Adaptive {
     tolerance: 1e-13,
     max_depth: 20,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// The integrand's components: area, `t`·area, the in-plane first moments (2), the area

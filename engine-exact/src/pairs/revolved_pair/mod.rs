@@ -1,9 +1,22 @@
 //! Frustum–frustum and cylinder–frustum (a cylinder is the frustum of equal radii; cones
-//! included): the intersection's moments by slicing across `a`'s axis and integrating each
-//! slice in polar coordinates about that axis, the contact from them by
-//! [`super::volume_contact`].
+//! included): the intersection's moments by the divergence theorem over the two lateral
+//! surfaces ([`lateral`]: one-dimensional integrals over each surface's azimuth, cut at
+//! closed-form events), or, for axes within [`PARALLEL`] of parallel, by slicing across `a`'s
+//! axis and integrating each slice in polar coordinates about that axis; the contact from
+//! them by [`super::volume_contact`].
 //!
-//! ## The method
+//! ## The divergence theorem
+//! With `ŵ` perpendicular to both axes, fields along `ŵ` have no flux through any cap, so the
+//! volume and the first moments are fluxes through the lateral surfaces alone ([`lateral`]).
+//! They are taken about the midpoint of the axes' closest points, and again about the
+//! centroid so found when that point lies more than [`REFERENCE_REACH`] of the region's
+//! thicknesses from it (a small or thin region, whose fluxes would otherwise cancel far
+//! above its volume). `a`'s area vector is its lateral surface's (the same integrals) and
+//! its caps' overlaps with `b` (the polar slices below, at `t = 0, L`). Each azimuthal
+//! integral runs on the 41-node Kronrod pair: the pieces between the events are analytic, and
+//! the wider rule takes most of them whole where the 21-node one halves them twice.
+//!
+//! ## The slicing (axes near parallel, and the independent check)
 //! In `a`'s frame (axis `z`, bottom at `z = 0`, lengths divided by a power of two near the
 //! pair's size) the plane `z = t` cuts `a` in the disc `ρ ≤ R(t) = r₀ + k t`. In polar
 //! coordinates `(ρ, φ)` about the axis point, the ray along `u(φ)` meets `b` in one interval in
@@ -65,6 +78,9 @@
 //!   identical solids) the opposite of `a`'s nearest face normal; area a quarter of the
 //!   intersection's surface.
 
+#[cfg(test)]
+mod divergence_tests;
+pub(crate) mod lateral;
 pub(crate) mod quadric;
 pub(crate) mod slice;
 #[cfg(test)]
@@ -89,6 +105,7 @@ use slice::{Pair, rim_axes};
 const OUTER: Adaptive = Adaptive {
     tolerance: 1e-11,
     max_depth: 14,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// The absolute error each outer piece may keep: 1e-12 of the whole volume (for the volume
@@ -296,6 +313,22 @@ impl Pair {
     }
 }
 
+/// How the intersection's moments are integrated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Method {
+    /// By the divergence theorem over the lateral surfaces ([`lateral`]) unless the axes are
+    /// within [`PARALLEL`] of parallel, sliced there.
+    Divergence,
+    /// Always sliced across `a`'s axis (the divergence theorem's independent check).
+    #[cfg_attr(not(test), allow(dead_code))]
+    Sliced,
+}
+
+/// Axes whose angle's sine is below this are sliced: the lateral surfaces' tangency events
+/// lose their conditioning as the generators turn parallel to the other's axis, and the
+/// slicing's coaxial branches take over continuously.
+pub(crate) const PARALLEL: f64 = 1e-3;
+
 /// The integrals `[V, ∫t, ∫x, ∫y, S_a (3), a's surface inside b, 0]` of `solid_a` at `pose_a`
 /// against `solid_b` at `pose_b` in working units (`a`'s frame over the returned unit), or
 /// `None` when they are apart or only touch.
@@ -305,6 +338,7 @@ fn sums(
     solid_b: &Solid,
     pose_b: &Isometry3,
     work: &mut WorkCounters,
+    method: Method,
 ) -> Option<(Pair, [f64; COMPONENTS], f64)> {
     let (dims_a, dims_b) = (dimensions(solid_a)?, dimensions(solid_b)?);
     let size = |(r0, r1, len): (f64, f64, f64)| r0.max(r1).max(len);
@@ -336,6 +370,11 @@ fn sums(
     let (lo, hi) = (b_lo.max(0.0), b_hi.min(pair.a.len));
     if lo.is_nan() || hi.is_nan() || lo >= hi {
         return None;
+    }
+    let across = Vector3::new(-pair.b.axis.y, pair.b.axis.x, 0.0);
+    if method == Method::Divergence && across.norm() >= PARALLEL {
+        let r = divergence_sums(&pair, &across.normalize(), lo, hi, work)?;
+        return Some((pair, r, unit));
     }
     let mut cuts = [0.0; MAX_PIECES + 1];
     cuts[0] = lo;
@@ -373,7 +412,13 @@ fn sums(
         work,
     );
     *work += slices;
-    // a's caps inside b (zero when b does not reach them).
+    add_caps(&pair, lo, hi, &mut r, work);
+    Some((pair, r, unit))
+}
+
+/// Adds `a`'s caps inside `b` (zero when `b`'s extent `[lo, hi]` along `z` misses them) to
+/// the area vector and the unsigned area of `r`.
+fn add_caps(pair: &Pair, lo: f64, hi: f64, r: &mut [f64; COMPONENTS], work: &mut WorkCounters) {
     for (cap, sign) in [(0.0, -1.0), (pair.a.len, 1.0)] {
         if cap >= lo && cap <= hi {
             let area = pair.slice(cap, true, work)[0];
@@ -381,7 +426,58 @@ fn sums(
             r[7] += area;
         }
     }
-    Some((pair, r, unit))
+}
+
+/// How far (in thicknesses of the region: its volume over its lateral surfaces' area) the
+/// fields' reference point may lie from the centroid before the fluxes are integrated again
+/// about the centroid (each lost digit is a factor of ten of this distance).
+const REFERENCE_REACH: f64 = 8.0;
+
+/// [`sums`] by the divergence theorem ([`lateral`]): the volume and moments from the two
+/// lateral surfaces' fluxes (`w` the unit perpendicular to both axes), `a`'s area vector
+/// from its lateral surface and caps; `None` when no volume is found (apart, touching).
+fn divergence_sums(
+    pair: &Pair,
+    w: &Vector3,
+    lo: f64,
+    hi: f64,
+    work: &mut WorkCounters,
+) -> Option<[f64; COMPONENTS]> {
+    let (swapped, origin, axes) = pair.swapped();
+    let mut fields = lateral::Fields {
+        centre: lateral::reference_point(pair),
+        w: *w,
+        e1: Vector3::z(),
+        e2: w.cross(&Vector3::z()),
+    };
+    let mut recentred = false;
+    let (on_a, volume, moment) = loop {
+        let on_a = pair.lateral(&fields, work);
+        let on_b = swapped.lateral(&fields.in_frame(&origin, &axes), work);
+        let volume = on_a[0] + on_b[0];
+        if volume.is_nan() || volume <= 0.0 {
+            return None;
+        }
+        let offset = fields.w * (on_a[1] + on_b[1])
+            + fields.e1 * (on_a[2] + on_b[2])
+            + fields.e2 * (on_a[3] + on_b[3]);
+        let moment = fields.centre * volume + offset;
+        // Each flux is integrated to a relative tolerance of its own size, about the
+        // reference point's distance from the region times its surface: far more than the
+        // volume (its thickness times the surface) for a small or thin region far from the
+        // axes' closest points. Then once more about the centroid just found.
+        let thickness = volume / (on_a[7] + on_b[7]);
+        if recentred || offset.norm() / volume <= REFERENCE_REACH * thickness {
+            break (on_a, volume, moment);
+        }
+        fields.centre = moment / volume;
+        recentred = true;
+    };
+    let mut r = [
+        volume, moment.z, moment.x, moment.y, on_a[4], on_a[5], on_a[6], on_a[7], 0.0,
+    ];
+    add_caps(pair, lo, hi, &mut r, work);
+    Some(r)
 }
 
 /// The contact of the cylinder or frustum `solid_a` at `pose_a` with the cylinder or frustum
@@ -393,7 +489,19 @@ pub(crate) fn contact(
     pose_b: &Isometry3,
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
-    let (pair, mut r, unit) = sums(solid_a, pose_a, solid_b, pose_b, work)?;
+    contact_by(solid_a, pose_a, solid_b, pose_b, work, Method::Divergence)
+}
+
+/// [`contact`], the moments integrated by `method`.
+pub(crate) fn contact_by(
+    solid_a: &Solid,
+    pose_a: &Isometry3,
+    solid_b: &Solid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+    method: Method,
+) -> Option<PairContact> {
+    let (pair, mut r, unit) = sums(solid_a, pose_a, solid_b, pose_b, work, method)?;
     let volume = r[0];
     if volume.is_nan() || volume <= 0.0 {
         return None;
@@ -406,7 +514,7 @@ pub(crate) fn contact(
     let none_of_a = r[7] <= ENCLOSED * whole_b;
     r[8] = if none_of_a { whole_b } else { s_a.norm() };
     if !none_of_a && s_a.norm() <= ENCLOSED * (r[7] + r[8]) {
-        r[8] = sums(solid_b, pose_b, solid_a, pose_a, work).map_or(0.0, |(_, s, _)| s[7]);
+        r[8] = sums(solid_b, pose_b, solid_a, pose_a, work, method).map_or(0.0, |(_, s, _)| s[7]);
         // A whole surface inside the other solid, in closed form: either order then gives
         // the same area.
         if r[7] >= (1.0 - WHOLE) * whole_a {

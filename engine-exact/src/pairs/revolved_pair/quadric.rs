@@ -110,13 +110,20 @@ pub(crate) fn circle_crossings(
     r: f64,
 ) -> ([f64; 8], usize) {
     let f = circle_form(q, c, a1, a2, r);
-    let mut out = [0.0; 8];
-    let mut n = 0;
     let scale = f.iter().map(|v| v.abs()).fold(0.0, f64::max);
     let size = (r + c.norm() + q.origin.norm() + q.r0 + q.len).powi(2);
     if scale.is_nan() || scale <= 1e-14 * size {
-        return (out, 0);
+        return ([0.0; 8], 0);
     }
+    trig_roots(&f)
+}
+
+/// The zeros `ψ ∈ (−π, π]` of the trigonometric form
+/// `m₁₁C² + 2m₁₂CS + m₂₂S² + 2(g₁C + g₂S) + h` (`f = [m₁₁, m₁₂, m₂₂, g₁, g₂, h]`, `C = cos ψ`,
+/// `S = sin ψ`; at most four); how many.
+pub(crate) fn trig_roots(f: &[f64; 6]) -> ([f64; 8], usize) {
+    let mut out = [0.0; 8];
+    let mut n = 0;
     for (flip, offset) in [(1.0, 0.0), (-1.0, PI)] {
         // ψ = offset + 2 atan τ: cos and sin change sign with the half-turn, the
         // quadratic part does not.
@@ -132,7 +139,7 @@ pub(crate) fn circle_crossings(
         for &tau in &roots[..count] {
             let mut psi = offset + 2.0 * tau.atan();
             for _ in 0..3 {
-                let (v, d) = trig(&f, psi);
+                let (v, d) = trig(f, psi);
                 if d == 0.0 || !(v / d).is_finite() || (v / d).abs() > 1e-3 {
                     break;
                 }

@@ -26,6 +26,7 @@ pub(crate) const POLAR: usize = 6;
 pub(crate) const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     tolerance: 1e-13,
     max_depth: 14,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// Where an end of `b`'s interval along a ray lies.
@@ -234,17 +235,46 @@ pub(crate) fn interval_of(
     c: f64,
     s: f64,
 ) -> Option<(f64, End, f64, End)> {
-    let (zd, wu) = (rays.height, rays.axis[0] * c + rays.axis[1] * s);
-    // The slab 0 ≤ z ≤ L along the ray.
+    let [m11, m12, m22] = rays.form;
+    let a = m11 * c * c + 2.0 * m12 * c * s + m22 * s * s;
+    let b = rays.gradient[0] * c + rays.gradient[1] * s;
+    let line = Line {
+        height: rays.height,
+        rate: rays.axis[0] * c + rays.axis[1] * s,
+        quadratic: [a, b, rays.value],
+        tol: rays.tol,
+    };
+    interval_on_line(q, &line)
+}
+
+/// A line `p + ρv` seen by a frustum `q`: the height along `q`'s axis at `ρ = 0` and its rate,
+/// and `q`'s lateral quadric along it, `Q(p + ρv) = a ρ² + 2 b ρ + c` as `[a, b, c]`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Line {
+    /// `w·(p − o)`.
+    pub height: f64,
+    /// `w·v`.
+    pub rate: f64,
+    /// `[vᵀMv, vᵀ∇Q(p)/2, Q(p)]`.
+    pub quadratic: [f64; 3],
+    /// How far `q`'s slab is widened.
+    pub tol: f64,
+}
+
+/// `q`'s interval `(enter, end, exit, end)` along `line` (in its parameter `ρ`), or `None`
+/// when the line misses `q`.
+pub(crate) fn interval_on_line(q: &Quadric, line: &Line) -> Option<(f64, End, f64, End)> {
+    let (zd, wu) = (line.height, line.rate);
+    // The slab 0 ≤ z ≤ L along the line.
     let (mut lo, mut lo_end, mut hi, mut hi_end) =
         (f64::NEG_INFINITY, End::Open, f64::INFINITY, End::Open);
     if wu == 0.0 {
-        if zd < -rays.tol || zd > q.len + rays.tol {
+        if zd < -line.tol || zd > q.len + line.tol {
             return None;
         }
     } else {
-        let bottom = (-rays.tol - zd) / wu;
-        let top = (q.len + rays.tol - zd) / wu;
+        let bottom = (-line.tol - zd) / wu;
+        let top = (q.len + line.tol - zd) / wu;
         if wu > 0.0 {
             (lo, lo_end, hi, hi_end) = (bottom, End::Cap(-1.0), top, End::Cap(1.0));
         } else {
@@ -252,10 +282,7 @@ pub(crate) fn interval_of(
         }
     }
     // The quadric a ρ² + 2 b ρ + c ≤ 0.
-    let [m11, m12, m22] = rays.form;
-    let a = m11 * c * c + 2.0 * m12 * c * s + m22 * s * s;
-    let b = rays.gradient[0] * c + rays.gradient[1] * s;
-    let c = rays.value;
+    let [a, b, c] = line.quadratic;
     let pieces: [(f64, f64); 2] = if a == 0.0 {
         if b > 0.0 {
             [(f64::NEG_INFINITY, -0.5 * c / b), (1.0, 0.0)]

@@ -89,6 +89,7 @@ use std::f64::consts::PI;
 const OUTER: Adaptive = Adaptive {
     tolerance: 1e-11,
     max_depth: 14,
+    pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// Cuts in `ψ` closer than this fraction of the region's extent are merged.

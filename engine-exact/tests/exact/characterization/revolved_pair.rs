@@ -108,7 +108,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             SAMPLES,
             "frustum–frustum, cylinder–frustum",
             "equal radii, general and perpendicular poses",
-            "polar-ray slicing; oracle: cylinder–cylinder slicing",
+            "divergence theorem, lateral fluxes; oracle: cylinder–cylinder slicing",
             equal_radii,
         )),
     ]

@@ -1,0 +1,108 @@
+//! The divergence theorem over the lateral surfaces against the slicing across `a`'s axis (a
+//! different method: nested polar quadratures) on random frusta, cylinders and cones.
+
+use super::slice::Pair;
+use super::{Method, contact_by, quadric_of};
+use crate::pairs::solid_distance::Solid;
+use crate::test_rng::Rng;
+use contact_core::geometry::{Cylinder, Frustum};
+use contact_core::{Isometry3, Vector3, WorkCounters};
+
+/// A cylinder, a frustum, or a cone (no radius at one end).
+fn solid(rng: &mut Rng) -> Solid {
+    let (r0, len) = (rng.uniform(0.2, 1.0), rng.uniform(0.3, 1.8));
+    match (rng.uniform(0.0, 4.0)) as u32 {
+        0 => Solid::Cylinder(Cylinder::new(r0, len).unwrap()),
+        1 => Solid::Frustum(Frustum::new(r0, 0.0, len).unwrap()),
+        2 => Solid::Frustum(Frustum::new(0.0, r0, len).unwrap()),
+        _ => Solid::Frustum(Frustum::new(r0, rng.uniform(0.1, 1.0), len).unwrap()),
+    }
+}
+
+fn size(s: &Solid) -> f64 {
+    let (r0, r1, len) = super::dimensions(s).unwrap();
+    r0.max(r1).max(len)
+}
+
+/// The discriminant along the generators is a trigonometric form of degree two: its five
+/// samples' form reproduces it everywhere.
+#[test]
+fn the_generators_discriminant_is_of_degree_two() {
+    let mut rng = Rng(3);
+    for _ in 0..200 {
+        let (a, b) = (solid(&mut rng), solid(&mut rng));
+        let (da, db) = (
+            super::dimensions(&a).unwrap(),
+            super::dimensions(&b).unwrap(),
+        );
+        let pair = Pair {
+            a: quadric_of(da, Vector3::zeros(), Vector3::z(), 1.0),
+            b: quadric_of(
+                db,
+                Vector3::new(
+                    rng.uniform(-1.0, 1.0),
+                    rng.uniform(-1.0, 1.0),
+                    rng.uniform(-1.0, 2.0),
+                ),
+                rng.unit(),
+                1.0,
+            ),
+        };
+        let m = pair.b.matrix();
+        let f = pair.discriminant_form(&m);
+        let scale = f.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        for k in 0..16 {
+            let phi = -3.0 + 0.4 * k as f64;
+            let (s, c) = phi.sin_cos();
+            let form = f[0] * c * c
+                + 2.0 * f[1] * c * s
+                + f[2] * s * s
+                + 2.0 * (f[3] * c + f[4] * s)
+                + f[5];
+            let [alpha, beta, gamma] = pair.generator_quadratic(&m, phi);
+            let direct = beta * beta - alpha * gamma;
+            assert!(
+                (form - direct).abs() <= 1e-12 * scale,
+                "{form} vs {direct} ({scale})"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_divergence_theorem_agrees_with_the_slicing() {
+    let mut rng = Rng(11);
+    let (mut worst, mut compared) = ([0.0f64; 4], 0);
+    while compared < 300 {
+        let (a, b) = (solid(&mut rng), solid(&mut rng));
+        let reach = size(&a) + size(&b);
+        let pose_b = Isometry3::new(
+            Vector3::new(
+                rng.uniform(-0.5, 0.5) * reach,
+                rng.uniform(-0.5, 0.5) * reach,
+                rng.uniform(-0.3, 1.0) * reach,
+            ),
+            rng.unit() * rng.uniform(0.0, std::f64::consts::PI),
+        );
+        let pose_a = Isometry3::identity();
+        let mut work = WorkCounters::default();
+        let want = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Sliced);
+        let got = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Divergence);
+        match (&got, &want) {
+            (Some(g), Some(w)) => {
+                let e = g.errors(w, size(&a).max(size(&b)));
+                for k in 0..4 {
+                    worst[k] = worst[k].max(e[k]);
+                }
+                assert!(
+                    e.iter().all(|&x| x <= 1e-9),
+                    "{e:?}\n{a:?}\n{b:?}\n{pose_b:?}"
+                );
+                compared += 1;
+            }
+            (None, None) => {}
+            _ => panic!("{got:?} vs {want:?}\n{a:?}\n{b:?}\n{pose_b:?}"),
+        }
+    }
+    eprintln!("divergence against slicing, worst over {compared}: {worst:?}");
+}
