@@ -25,7 +25,8 @@ fn size(s: &Solid) -> f64 {
 }
 
 /// The discriminant along the generators is a trigonometric form of degree two: its five
-/// samples' form reproduces it everywhere.
+/// samples' form reproduces it everywhere; and the generators' expanded coefficients give
+/// the quadratic formed directly from the points.
 #[test]
 fn the_generators_discriminant_is_of_degree_two() {
     let mut rng = Rng(3);
@@ -48,8 +49,7 @@ fn the_generators_discriminant_is_of_degree_two() {
                 1.0,
             ),
         };
-        let m = pair.b.matrix();
-        let f = pair.discriminant_form(&m);
+        let f = pair.discriminant_form();
         let scale = f.iter().map(|v| v.abs()).fold(0.0, f64::max);
         for k in 0..16 {
             let phi = -3.0 + 0.4 * k as f64;
@@ -59,12 +59,21 @@ fn the_generators_discriminant_is_of_degree_two() {
                 + f[2] * s * s
                 + 2.0 * (f[3] * c + f[4] * s)
                 + f[5];
-            let [alpha, beta, gamma] = pair.generator_quadratic(&m, phi);
+            let [alpha, beta, gamma] = pair.generator_quadratic(phi);
             let direct = beta * beta - alpha * gamma;
             assert!(
                 (form - direct).abs() <= 1e-12 * scale,
                 "{form} vs {direct} ({scale})"
             );
+            // The expanded generators against the direct ones.
+            let expanded = pair.expanded_quadratic(phi);
+            let size = alpha.abs() + beta.abs() + gamma.abs();
+            for (e, d) in expanded.iter().zip([alpha, beta, gamma]) {
+                assert!(
+                    (e - d).abs() <= 1e-14 * size,
+                    "{expanded:?} vs {alpha} {beta} {gamma}"
+                );
+            }
         }
     }
 }

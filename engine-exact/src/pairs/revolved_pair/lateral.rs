@@ -37,7 +37,9 @@
 use super::quadric::{Quadric, circle_crossings, sinusoid_roots, trig_roots, wrap};
 use super::slice::{Line, Pair, interval_on_line, rim_axes};
 use crate::quadrature::{Adaptive, MAX_PIECES, Pair as KronrodPair};
-use contact_core::{Matrix3, Vector3, WorkCounters};
+#[cfg(test)]
+use contact_core::Matrix3;
+use contact_core::{Vector3, WorkCounters};
 use std::f64::consts::PI;
 
 /// Components of the lateral integrals: the fluxes of `s ŵ`, `½ s² ŵ`, `p₁ s ŵ`, `p₂ s ŵ`
@@ -80,9 +82,163 @@ impl Fields {
     }
 }
 
+/// `b`'s view of `a`'s generators as trigonometric polynomials in the azimuth: each
+/// quantity of the line ([`Line`]) as `[1, C, S, C², CS, S²]`-coefficients (`C = cos φ`,
+/// `S = sin φ`), expanded once from `b`'s quadric in `a`'s frame.
+#[derive(Debug, Clone, Copy)]
+struct Generators {
+    /// `w·(o − o_b)`: constant, `C`, `S`.
+    height: [f64; 3],
+    /// `w·d`.
+    rate: [f64; 3],
+    /// `dᵀMd`.
+    alpha: [f64; 6],
+    /// `dᵀ(M(o − o_b) − k_b r_b w)`.
+    beta: [f64; 6],
+    /// `Q_b(o)`.
+    gamma: [f64; 6],
+}
+
+impl Generators {
+    /// The generators of `a` (origin `o = r₀u`, direction `d = k u + ẑ`) against `b`'s
+    /// quadric `Q(x) = (x − o_b)ᵀM(x − o_b) − 2k_b r_b w·(x − o_b) − r_b²`.
+    fn new(pair: &Pair) -> Self {
+        let (r0, k) = (pair.a.r0, pair.a.slope);
+        let q = &pair.b;
+        let (b, ob) = (q.axis, q.origin);
+        let m = q.matrix();
+        let m_ob = m * ob;
+        let g0 = -m_ob - b * (q.slope * q.r0);
+        let (m00, m01, m11, m20, m21, m22) = (
+            m[(0, 0)],
+            m[(0, 1)],
+            m[(1, 1)],
+            m[(2, 0)],
+            m[(2, 1)],
+            m[(2, 2)],
+        );
+        let ko = 2.0 * q.slope * q.r0;
+        Self {
+            height: [-b.dot(&ob), r0 * b.x, r0 * b.y],
+            rate: [b.z, k * b.x, k * b.y],
+            alpha: [
+                m22,
+                2.0 * k * m20,
+                2.0 * k * m21,
+                k * k * m00,
+                2.0 * k * k * m01,
+                k * k * m11,
+            ],
+            beta: [
+                g0.z,
+                k * g0.x + r0 * m20,
+                k * g0.y + r0 * m21,
+                k * r0 * m00,
+                2.0 * k * r0 * m01,
+                k * r0 * m11,
+            ],
+            gamma: [
+                ob.dot(&m_ob) + ko * b.dot(&ob) - q.r0 * q.r0,
+                -2.0 * r0 * m_ob.x - ko * r0 * b.x,
+                -2.0 * r0 * m_ob.y - ko * r0 * b.y,
+                r0 * r0 * m00,
+                2.0 * r0 * r0 * m01,
+                r0 * r0 * m11,
+            ],
+        }
+    }
+
+    /// The generator at azimuth `(c, s)`.
+    fn line(&self, c: f64, s: f64) -> Line {
+        let t = [1.0, c, s, c * c, c * s, s * s];
+        let dot = |f: &[f64; 6]| f.iter().zip(&t).map(|(a, b)| a * b).sum::<f64>();
+        let lin = |f: &[f64; 3]| f[0] + f[1] * c + f[2] * s;
+        Line {
+            height: lin(&self.height),
+            rate: lin(&self.rate),
+            quadratic: [dot(&self.alpha), dot(&self.beta), dot(&self.gamma)],
+            tol: 0.0,
+        }
+    }
+}
+
+/// What every azimuth of one lateral integral shares: the generators, `a`'s shape and the
+/// fields' frame.
+struct Integrand<'p> {
+    /// The pair.
+    pair: &'p Pair,
+    /// `a`'s generators seen by `b`.
+    generators: Generators,
+    /// `√(1 + k²)`: the surface element's length per unit of `R dφ dz`.
+    slant: f64,
+    /// `ŵ`, `ê₁`, `ê₂`.
+    axes: [Vector3; 3],
+    /// `c·ŵ`, `c·ê₁`, `c·ê₂`.
+    offsets: [f64; 3],
+}
+
+impl Integrand<'_> {
+    fn new<'p>(pair: &'p Pair, fields: &Fields) -> Integrand<'p> {
+        let axes = [fields.w, fields.e1, fields.e2];
+        Integrand {
+            pair,
+            generators: Generators::new(pair),
+            slant: pair.a.slope.hypot(1.0),
+            axes,
+            offsets: axes.map(|e| e.dot(&fields.centre)),
+        }
+    }
+
+    /// The integrand per unit of `φ` (see [`LATERAL`]): along the generator a point at height
+    /// `z` is `(R u, z)`, so each field's coordinate is `R (e·u) + z e_z − c·e`.
+    fn at(&self, phi: f64) -> [f64; LATERAL] {
+        let mut out = [0.0; LATERAL];
+        let (s, c) = phi.sin_cos();
+        let a = &self.pair.a;
+        let Some((enter, _, exit, _)) = interval_on_line(&self.pair.b, &self.generators.line(c, s))
+        else {
+            return out;
+        };
+        let (lo, hi) = (enter.max(0.0), exit.min(a.len));
+        if hi <= lo {
+            return out;
+        }
+        let (r0, k) = (a.r0, a.slope);
+        let [w, e1, e2] = &self.axes;
+        let [cw, c1, c2] = self.offsets;
+        let (uw, u1, u2) = (w.x * c + w.y * s, e1.x * c + e1.y * s, e2.x * c + e2.y * s);
+        // ŵ·(u − k ẑ): the surface element's projection on ŵ per unit of R.
+        let facing = uw - k * w.z;
+        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let offset = half * FRAC_1_SQRT_3;
+        let mut radii = 0.0;
+        for z in [mid - offset, mid + offset] {
+            let r = r0 + k * z;
+            let along = r * uw + z * w.z - cw;
+            let flux = half * r * facing * along;
+            out[0] += flux;
+            out[1] += 0.5 * along * flux;
+            out[2] += (r * u1 + z * e1.z - c1) * flux;
+            out[3] += (r * u2 + z * e2.z - c2) * flux;
+            radii += r;
+        }
+        // ∫R dz, exact for the linear radius.
+        let area = half * radii;
+        out[4] = area * c;
+        out[5] = area * s;
+        out[6] = -k * area;
+        out[7] = self.slant * area;
+        out
+    }
+}
+
+/// `1/√3`: the two Gauss points' offset from the middle, per half-width.
+const FRAC_1_SQRT_3: f64 = 0.577_350_269_189_625_8;
+
 impl Pair {
     /// The generator of `a` at azimuth `(c, s)` as a line seen by `b` (`m` is `b`'s
-    /// quadratic form).
+    /// quadratic form), formed directly from the points (the expanded [`Generators`]' check).
+    #[cfg(test)]
     fn generator(&self, m: &Matrix3, c: f64, s: f64) -> Line {
         let q = &self.b;
         let (r0, k) = (self.a.r0, self.a.slope);
@@ -104,85 +260,29 @@ impl Pair {
         }
     }
 
-    /// The integrand per unit of `φ` (see [`LATERAL`]).
-    fn lateral_integrand(
-        &self,
-        (m, slant): (&Matrix3, f64),
-        fields: &Fields,
-        phi: f64,
-    ) -> [f64; LATERAL] {
-        let mut out = [0.0; LATERAL];
+    /// `[α, β, γ]` of `b`'s quadratic `α z² + 2β z + γ` along `a`'s generator at `φ`,
+    /// formed directly.
+    #[cfg(test)]
+    pub(crate) fn generator_quadratic(&self, phi: f64) -> [f64; 3] {
         let (s, c) = phi.sin_cos();
-        let Some((enter, _, exit, _)) = interval_on_line(&self.b, &self.generator(m, c, s)) else {
-            return out;
-        };
-        let (lo, hi) = (enter.max(0.0), exit.min(self.a.len));
-        if hi <= lo {
-            return out;
-        }
-        let (r0, k) = (self.a.r0, self.a.slope);
-        let Fields { centre, w, e1, e2 } = fields;
-        // ŵ·(u − k ẑ): the surface element's projection on ŵ per unit of R.
-        let facing = w.x * c + w.y * s - k * w.z;
-        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let offset = half / 3f64.sqrt();
-        for z in [mid - offset, mid + offset] {
-            let r = r0 + k * z;
-            let d = Vector3::new(r * c, r * s, z) - centre;
-            let (along, p1, p2) = (d.dot(w), d.dot(e1), d.dot(e2));
-            let flux = half * r * facing * along;
-            out[0] += flux;
-            out[1] += 0.5 * along * flux;
-            out[2] += p1 * flux;
-            out[3] += p2 * flux;
-            out[4] += half * r * c;
-            out[5] += half * r * s;
-            out[6] -= half * k * r;
-            out[7] += half * slant * r;
-        }
-        out
+        self.generator(&self.b.matrix(), c, s).quadratic
     }
 
-    /// `[α, β, γ]` of `b`'s quadratic `α z² + 2β z + γ` along `a`'s generator at `φ`.
-    pub(crate) fn generator_quadratic(&self, m: &Matrix3, phi: f64) -> [f64; 3] {
+    /// `[α, β, γ]` of the expanded generators at `φ`.
+    #[cfg(test)]
+    pub(crate) fn expanded_quadratic(&self, phi: f64) -> [f64; 3] {
         let (s, c) = phi.sin_cos();
-        self.generator(m, c, s).quadratic
+        Generators::new(self).line(c, s).quadratic
     }
 
-    /// The discriminant of `b`'s quadratic along `a`'s generator at `φ` (positive where the
-    /// generator's line crosses `b`'s lateral quadric).
-    fn discriminant(&self, m: &Matrix3, phi: f64) -> f64 {
-        let [alpha, beta, gamma] = self.generator_quadratic(m, phi);
-        beta * beta - alpha * gamma
-    }
-
-    /// The discriminant as the trigonometric form of [`trig_roots`], from its five Fourier
-    /// coefficients (it is of degree two, see the module docs).
-    pub(crate) fn discriminant_form(&self, m: &Matrix3) -> [f64; 6] {
-        let (mut a0, mut a1, mut b1, mut a2, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for j in 0..5 {
-            let phi = 2.0 * PI * j as f64 / 5.0;
-            let d = self.discriminant(m, phi);
-            a0 += d;
-            a1 += d * phi.cos();
-            b1 += d * phi.sin();
-            a2 += d * (2.0 * phi).cos();
-            b2 += d * (2.0 * phi).sin();
-        }
-        let f = 2.0 / 5.0;
-        // a₂ cos 2φ + b₂ sin 2φ + a₁ cos φ + b₁ sin φ + a₀ as m₁₁C² + 2m₁₂CS + m₂₂S² + ….
-        [
-            f * a2,
-            f * b2,
-            -f * a2,
-            0.5 * f * a1,
-            0.5 * f * b1,
-            a0 / 5.0,
-        ]
+    /// [`discriminant_form`] of `a`'s generators against `b`.
+    #[cfg(test)]
+    pub(crate) fn discriminant_form(&self) -> [f64; 6] {
+        discriminant_form(&Generators::new(self))
     }
 
     /// The cuts in `φ ∈ [−π, π]` of `a`'s lateral surface inside `b`, sorted; how many.
-    fn lateral_cuts(&self, m: &Matrix3) -> ([f64; MAX_PIECES + 1], usize) {
+    fn lateral_cuts(&self, generators: &Generators) -> ([f64; MAX_PIECES + 1], usize) {
         let mut cuts = [0.0; MAX_PIECES + 1];
         cuts[0] = -PI;
         cuts[1] = PI;
@@ -231,7 +331,7 @@ impl Pair {
             }
         }
         // a's generators tangent to b's lateral quadric.
-        let (psi, k) = trig_roots(&self.discriminant_form(m));
+        let (psi, k) = trig_roots(&discriminant_form(generators));
         for &x in &psi[..k] {
             push(x, &mut cuts);
         }
@@ -242,10 +342,8 @@ impl Pair {
     /// The integrals of [`LATERAL`] over `a`'s lateral surface inside `b`, the fields given in
     /// `a`'s frame.
     pub(crate) fn lateral(&self, fields: &Fields, work: &mut WorkCounters) -> [f64; LATERAL] {
-        let m = self.b.matrix();
-        // √(1 + k²): the surface element's length per unit of R dφ dz.
-        let slant = self.a.slope.hypot(1.0);
-        let (mut cuts, n) = self.lateral_cuts(&m);
+        let integrand = Integrand::new(self, fields);
+        let (mut cuts, n) = self.lateral_cuts(&integrand.generators);
         let floor = |e: &[f64; LATERAL]| {
             // Relative to the surface's own first estimates: a small region's integrals are
             // as small as it (no floor of the pair's size).
@@ -253,12 +351,7 @@ impl Pair {
             let s = (e[7].abs() * 1e-14).max(f64::MIN_POSITIVE);
             [v, v, v, v, s, s, s, s]
         };
-        RULE.integrate_pieces(
-            &mut cuts[..n],
-            &mut |phi| self.lateral_integrand((&m, slant), fields, phi),
-            &floor,
-            work,
-        )
+        RULE.integrate_pieces(&mut cuts[..n], &mut |phi| integrand.at(phi), &floor, work)
     }
 
     /// The same pair seen from `b`: `b` at the origin along `z`, `a` posed in `b`'s frame;
@@ -308,4 +401,31 @@ pub(crate) fn reference_point(pair: &Pair) -> Vector3 {
         s = ((bb - c) / aa).clamp(0.0, 1.0);
     }
     0.5 * (d1 * s + b.origin + d2 * t)
+}
+
+/// The discriminant `β² − αγ` of `b`'s quadratic along `a`'s generators as the trigonometric
+/// form of [`trig_roots`], from its five Fourier coefficients (it is of degree two, see the
+/// module docs).
+fn discriminant_form(generators: &Generators) -> [f64; 6] {
+    let (mut a0, mut a1, mut b1, mut a2, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for j in 0..5 {
+        let phi = 2.0 * PI * j as f64 / 5.0;
+        let [alpha, beta, gamma] = generators.line(phi.cos(), phi.sin()).quadratic;
+        let d = beta * beta - alpha * gamma;
+        a0 += d;
+        a1 += d * phi.cos();
+        b1 += d * phi.sin();
+        a2 += d * (2.0 * phi).cos();
+        b2 += d * (2.0 * phi).sin();
+    }
+    let f = 2.0 / 5.0;
+    // a₂ cos 2φ + b₂ sin 2φ + a₁ cos φ + b₁ sin φ + a₀ as m₁₁C² + 2m₁₂CS + m₂₂S² + ….
+    [
+        f * a2,
+        f * b2,
+        -f * a2,
+        0.5 * f * a1,
+        0.5 * f * b1,
+        a0 / 5.0,
+    ]
 }

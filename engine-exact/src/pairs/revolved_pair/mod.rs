@@ -412,21 +412,40 @@ fn sums(
         work,
     );
     *work += slices;
-    add_caps(&pair, lo, hi, &mut r, work);
+    add_caps(
+        &pair,
+        (lo, hi),
+        (&slice::ADAPTIVE, slice::SLICE_FLOOR),
+        &mut r,
+        work,
+    );
     Some((pair, r, unit))
 }
 
 /// Adds `a`'s caps inside `b` (zero when `b`'s extent `[lo, hi]` along `z` misses them) to
 /// the area vector and the unsigned area of `r`.
-fn add_caps(pair: &Pair, lo: f64, hi: f64, r: &mut [f64; COMPONENTS], work: &mut WorkCounters) {
+fn add_caps(
+    pair: &Pair,
+    (lo, hi): (f64, f64),
+    rule: (&Adaptive, f64),
+    r: &mut [f64; COMPONENTS],
+    work: &mut WorkCounters,
+) {
     for (cap, sign) in [(0.0, -1.0), (pair.a.len, 1.0)] {
         if cap >= lo && cap <= hi {
-            let area = pair.slice(cap, true, work)[0];
+            let area = pair.slice_by(rule, cap, true, work)[0];
             r[6] += sign * area;
             r[7] += area;
         }
     }
 }
+
+/// The caps' polar integrals alongside the divergence theorem: as the slices' rule, on the
+/// 41-node pair (their pieces are cut at every kink, see [`slice`]).
+const CAP_RULE: Adaptive = Adaptive {
+    pair: crate::quadrature::Pair::Kronrod41,
+    ..slice::ADAPTIVE
+};
 
 /// How far (in thicknesses of the region: its volume over its lateral surfaces' area) the
 /// fields' reference point may lie from the centroid before the fluxes are integrated again
@@ -476,7 +495,8 @@ fn divergence_sums(
     let mut r = [
         volume, moment.z, moment.x, moment.y, on_a[4], on_a[5], on_a[6], on_a[7], 0.0,
     ];
-    add_caps(pair, lo, hi, &mut r, work);
+    // No absolute floor: a small region's caps are as small as it, and its normal is theirs.
+    add_caps(pair, (lo, hi), (&CAP_RULE, 0.0), &mut r, work);
     Some(r)
 }
 

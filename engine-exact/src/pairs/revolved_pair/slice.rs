@@ -29,6 +29,10 @@ pub(crate) const ADAPTIVE: quadrature::Adaptive = quadrature::Adaptive {
     pair: crate::quadrature::Pair::Kronrod21,
 };
 
+/// The slices' absolute floor per disc area: inside the nested slicing, a slice's round-off
+/// is not worth chasing below 1e-15 of the disc (the outer rule's tolerance is looser).
+pub(crate) const SLICE_FLOOR: f64 = 1e-15;
+
 /// Where an end of `b`'s interval along a ray lies.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum End {
@@ -176,6 +180,18 @@ impl Pair {
 
     /// `∫ polar dφ` over the slice `t` (see [`POLAR`]).
     pub fn slice(&self, t: f64, closed: bool, work: &mut WorkCounters) -> [f64; POLAR] {
+        self.slice_by((&ADAPTIVE, SLICE_FLOOR), t, closed, work)
+    }
+
+    /// [`Pair::slice`] by `rule`, each piece keeping an absolute error of `floor` times the
+    /// disc's area besides the relative 1e-14 of the slice's.
+    pub fn slice_by(
+        &self,
+        (rule, floor): (&quadrature::Adaptive, f64),
+        t: f64,
+        closed: bool,
+        work: &mut WorkCounters,
+    ) -> [f64; POLAR] {
         let r = self.radius_a(t);
         if r <= 0.0 {
             return [0.0; POLAR];
@@ -183,12 +199,14 @@ impl Pair {
         let (mut cuts, n) = self.cuts(t, r);
         let rays = self.rays(t, r, closed);
         let floor = |e: &[f64; POLAR]| {
-            let v = (e[0].abs() * 1e-14).max(1e-15 * r * r);
+            let v = (e[0].abs() * 1e-14)
+                .max(floor * r * r)
+                .max(f64::MIN_POSITIVE);
             let m = v * r;
             let angle = 1e-14;
             [v, m, m, angle, angle, angle]
         };
-        ADAPTIVE.integrate_pieces(
+        rule.integrate_pieces(
             &mut cuts[..n],
             &mut |phi| self.polar(&rays, phi),
             &floor,
@@ -273,8 +291,10 @@ pub(crate) fn interval_on_line(q: &Quadric, line: &Line) -> Option<(f64, End, f6
             return None;
         }
     } else {
-        let bottom = (-line.tol - zd) / wu;
-        let top = (q.len + line.tol - zd) / wu;
+        // One division for both caps (the chain of divisions and the root is the cost).
+        let inverse = 1.0 / wu;
+        let bottom = (-line.tol - zd) * inverse;
+        let top = (q.len + line.tol - zd) * inverse;
         if wu > 0.0 {
             (lo, lo_end, hi, hi_end) = (bottom, End::Cap(-1.0), top, End::Cap(1.0));
         } else {
