@@ -1,9 +1,11 @@
 //! A cylinder against a cylinder, a box or a bounded plane: the intersection's moments by
-//! slicing ([`super::sliced`]; two parallel cylinders and a box in closed form), the
-//! contact from them by [`super::volume_contact`].
+//! slicing ([`super::sliced`]; two parallel cylinders and a box in closed form, two crossed
+//! ones by the divergence theorem over their lateral surfaces, [`super::revolved_pair`]),
+//! the contact from them by [`super::volume_contact`].
 //!
 //! ## The slicing direction `n` (perpendicular to the first cylinder's axis)
-//! - **Cylinder–cylinder**: `n = â × b̂ / |â × b̂|`, perpendicular to both axes, so each plane
+//! - **Cylinder–cylinder** (axes within [`super::revolved_pair::PARALLEL`] of parallel, and
+//!   the divergence theorem's check): `n = â × b̂ / |â × b̂|`, perpendicular to both axes, so each plane
 //!   `x·n = t` cuts both cylinders parallel to their axes (two rectangles). In `a`'s frame
 //!   `â = ẑ` and `â × b̂ = (−b_y, b_x, 0)` is exact, so `n·b̂` is a round-off of `|â × b̂|`
 //!   itself and stays tiny however close to parallel the axes are; `b̂` is then projected on
@@ -41,6 +43,7 @@ use super::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
 use super::cylinder_parallel::{self, ParallelB};
 use super::cylinder_polyhedron;
 use super::cylinder_prism::{self, Prism};
+use super::revolved_pair;
 use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedMoments, SlicedPair};
 use super::solid_distance::{Solid, signed_distance};
 use super::volume_contact::{self, ENCLOSED, VolumeMoments};
@@ -118,12 +121,14 @@ pub(crate) fn contact(
     contact_by(a, pose_a, b, pose_b, work, Method::ClosedForm)
 }
 
-/// How a tilted box or a bounded plane is taken: the closed forms where they apply, or always
-/// sliced (the closed forms' independent check).
+/// How crossed cylinders, a tilted box or a bounded plane are taken: the closed forms (and
+/// the divergence theorem) where they apply, or always sliced (their independent check).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Method {
-    /// [`cylinder_polyhedron`] unless a face is nearly parallel to the axis; a bounded plane
-    /// with every edge out of reach as the unbounded one.
+    /// Crossed cylinders (axes at least [`revolved_pair::PARALLEL`] apart) by the divergence
+    /// theorem over the lateral surfaces ([`revolved_pair`]); [`cylinder_polyhedron`]
+    /// unless a face is nearly parallel to the axis; a bounded plane with every edge out of
+    /// reach as the unbounded one.
     ClosedForm,
     /// Sliced.
     #[cfg_attr(not(test), allow(dead_code))]
@@ -211,6 +216,14 @@ pub(crate) fn contact_by(
                 (&frame, &centre_a, unit),
                 &prism_planes[..prism_count],
             );
+        }
+    }
+    // Crossed cylinders: the divergence theorem over the two lateral surfaces.
+    if let (Other::Cylinder(c), Method::ClosedForm) = (b, method) {
+        let axis = rot_ab.column(2);
+        if axis.x.hypot(axis.y) >= revolved_pair::PARALLEL {
+            let (a, c) = (Solid::Cylinder(*a), Solid::Cylinder(*c));
+            return revolved_pair::contact(&a, pose_a, &c, pose_b, work);
         }
     }
     let n = match b {

@@ -115,3 +115,48 @@ fn the_divergence_theorem_agrees_with_the_slicing() {
     }
     eprintln!("divergence against slicing, worst over {compared}: {worst:?}");
 }
+
+/// Crossed cylinders through the kernel's path (the divergence theorem) against the
+/// cylinder pair's polygon slicing perpendicular to both axes.
+#[test]
+fn crossed_cylinders_agree_with_the_polygon_slicing() {
+    use crate::pairs::cylinder_solid::{self, Other};
+    let mut rng = Rng(5);
+    let (mut worst, mut compared) = ([0.0f64; 4], 0);
+    while compared < 300 {
+        let a = Cylinder::new(rng.uniform(0.2, 1.0), rng.uniform(0.3, 1.8)).unwrap();
+        let b = Cylinder::new(rng.uniform(0.2, 1.0), rng.uniform(0.3, 1.8)).unwrap();
+        let reach = a.radius() + b.radius() + 0.5 * (a.length() + b.length());
+        let pose_b = Isometry3::new(
+            Vector3::new(
+                rng.uniform(-0.5, 0.5) * reach,
+                rng.uniform(-0.5, 0.5) * reach,
+                rng.uniform(-0.3, 1.0) * reach,
+            ),
+            rng.unit() * rng.uniform(0.0, std::f64::consts::PI),
+        );
+        let pose_a = Isometry3::identity();
+        let mut work = WorkCounters::default();
+        let run = |method, work: &mut WorkCounters| {
+            cylinder_solid::contact_by(&a, &pose_a, &Other::Cylinder(b), &pose_b, work, method)
+        };
+        let got = run(cylinder_solid::Method::ClosedForm, &mut work);
+        let want = run(cylinder_solid::Method::Sliced, &mut work);
+        match (&got, &want) {
+            (Some(g), Some(w)) => {
+                let e = g.errors(w, reach);
+                for k in 0..4 {
+                    worst[k] = worst[k].max(e[k]);
+                }
+                assert!(
+                    e.iter().all(|&x| x <= 1e-9),
+                    "{e:?}\n{a:?}\n{b:?}\n{pose_b:?}"
+                );
+                compared += 1;
+            }
+            (None, None) => {}
+            _ => panic!("{got:?} vs {want:?}\n{a:?}\n{b:?}\n{pose_b:?}"),
+        }
+    }
+    eprintln!("crossed cylinders against the polygon slicing, worst over {compared}: {worst:?}");
+}

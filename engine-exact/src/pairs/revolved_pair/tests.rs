@@ -1,8 +1,9 @@
-//! The kernel against the cylinder–cylinder pair (slicing perpendicular to both axes, polygon
-//! sections: a different method) on frusta of equal radii, and the coaxial closed form.
+//! The kernel against the cylinder–cylinder pair's slicing (perpendicular to both axes,
+//! polygon sections: a different method) on frusta of equal radii, and the coaxial closed
+//! form.
 
 use super::contact;
-use crate::pairs::cylinder_solid::{self, Other};
+use crate::pairs::cylinder_solid::{self, Method, Other};
 use crate::pairs::solid_distance::Solid;
 use contact_core::geometry::{Cylinder, Frustum};
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -29,8 +30,15 @@ fn equal_radius_frusta_agree_with_the_cylinder_pair() {
             Cylinder::new(rb, lb).unwrap(),
         );
         let mut work = WorkCounters::default();
-        let want = cylinder_solid::contact(&ca, &pose_a, &Other::Cylinder(cb), &pose_b, &mut work)
-            .unwrap();
+        let want = cylinder_solid::contact_by(
+            &ca,
+            &pose_a,
+            &Other::Cylinder(cb),
+            &pose_b,
+            &mut work,
+            Method::Sliced,
+        )
+        .unwrap();
         let fa = Solid::Frustum(Frustum::new(ra, ra, la).unwrap());
         let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
         for (a, b) in [(fa, fb), (Solid::Cylinder(ca), fb)] {
@@ -117,8 +125,15 @@ fn perpendicular_axes_agree_with_the_cylinder_pair() {
         Cylinder::new(rb, lb).unwrap(),
     );
     let mut work = WorkCounters::default();
-    let want =
-        cylinder_solid::contact(&ca, &pose_a, &Other::Cylinder(cb), &pose_b, &mut work).unwrap();
+    let want = cylinder_solid::contact_by(
+        &ca,
+        &pose_a,
+        &Other::Cylinder(cb),
+        &pose_b,
+        &mut work,
+        Method::Sliced,
+    )
+    .unwrap();
     let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
     let got = contact(&Solid::Cylinder(ca), &pose_a, &fb, &pose_b, &mut work).unwrap();
     let size = ra.max(la).max(rb).max(lb);
@@ -166,8 +181,15 @@ fn a_tangency_just_after_a_rim_piercing_is_cut() {
         Cylinder::new(rb, lb).unwrap(),
     );
     let mut work = WorkCounters::default();
-    let want =
-        cylinder_solid::contact(&ca, &pose_a, &Other::Cylinder(cb), &pose_b, &mut work).unwrap();
+    let want = cylinder_solid::contact_by(
+        &ca,
+        &pose_a,
+        &Other::Cylinder(cb),
+        &pose_b,
+        &mut work,
+        Method::Sliced,
+    )
+    .unwrap();
     let fa = Solid::Frustum(Frustum::new(ra, ra, la).unwrap());
     let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
     let swapped = contact(&fb, &pose_b, &fa, &pose_a, &mut work).unwrap();

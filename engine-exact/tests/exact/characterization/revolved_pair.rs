@@ -1,15 +1,20 @@
 //! Characterization rows of frustum–frustum and cylinder–frustum: coaxial stacks (a closed
-//! form by symmetry) and frusta of equal radii against the cylinder–cylinder pair (a
-//! different method: slicing perpendicular to both axes, polygon sections).
+//! form by symmetry) and frusta of equal radii against the crossed cylinders' strips oracle
+//! (slices perpendicular to both axes, written apart from the engine). The engine's own
+//! checks of general frusta and cones, and of crossed cylinders, are its unit tests of the
+//! divergence theorem against the polar slicing and the polygon slicing (1e-9).
 
+use super::sliced::{GRADIENT_ORACLE_BOUND, crossed};
 use super::{Case, ITERATIVE_BOUND, Row, at, run};
-use crate::common::{Expected, Rng, instance, query};
+use crate::common::{Expected, Rng, instance};
 use contact_core::geometry::{Cylinder, Frustum};
-use contact_core::{Geometry, Isometry3, Point3, Vector3};
-use nalgebra::Translation3;
+use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 
-/// Samples per row: each query integrates slices in polar coordinates (milliseconds).
+/// Samples per row: the coaxial stacks are sliced in polar coordinates (milliseconds).
 const SAMPLES: usize = 60;
+/// The strips oracle integrates the volume seven times per sample (the gradient), as in the
+/// crossed cylinders' row.
+const ORACLE_SAMPLES: usize = 25;
 
 fn frustum(r0: f64, r1: f64, len: f64) -> Geometry {
     Geometry::Frustum(Frustum::new(r0, r1, len).unwrap())
@@ -48,43 +53,24 @@ fn coaxial(rng: &mut Rng) -> Option<Case> {
     })
 }
 
-/// Frusta of equal radii in general poses (crossed, skew, a quarter perpendicular) against
-/// the cylinder pair's answer.
+/// Frusta of equal radii in the crossed cylinders' family (crossed and skew axes, any
+/// offset; `j` always, `i` every other time a frustum): the same solids, so the same strips
+/// oracle ([`crossed`]).
 fn equal_radii(rng: &mut Rng) -> Option<Case> {
-    let (ra, la) = (rng.uniform(0.3, 1.0), rng.uniform(0.4, 1.6));
-    let (rb, lb) = (rng.uniform(0.3, 1.0), rng.uniform(0.4, 1.6));
-    let turn = if rng.uniform(0.0, 1.0) < 0.25 {
-        nalgebra::UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::FRAC_PI_2)
-    } else {
-        rng.rotation()
-    };
-    let offset = Vector3::new(0.0, 0.0, 0.5 * la) + rng.unit_vector() * rng.uniform(0.0, 0.8);
-    let pose_j = Isometry3::from_parts(Translation3::from(offset), turn);
-    let cylinder = |r, l| instance(Geometry::Cylinder(Cylinder::new(r, l).unwrap()));
-    let found = query(
-        &cylinder(ra, la),
-        &cylinder(rb, lb),
-        &Isometry3::identity(),
-        &pose_j,
-    );
-    let c = found.first()?;
-    let i = if rng.uniform(0.0, 1.0) < 0.5 {
-        cylinder(ra, la)
-    } else {
-        instance(frustum(ra, ra, la))
+    let as_frustum = rng.uniform(0.0, 1.0) < 0.5;
+    let case = crossed(rng)?;
+    let frustum_of = |g: &GeometryInstance| match *g.geometry {
+        Geometry::Cylinder(c) => instance(frustum(c.radius(), c.radius(), c.length())),
+        ref other => panic!("the crossed family is of cylinders: {other:?}"),
     };
     Some(Case {
-        i,
-        j: instance(frustum(rb, rb, lb)),
-        pose_i: Isometry3::identity(),
-        pose_j,
-        expected: Expected {
-            point_i: c.point_i_w,
-            point_j: c.point_j_w,
-            normal: c.normal_w,
-            depth: c.penetration,
+        i: if as_frustum {
+            frustum_of(&case.i)
+        } else {
+            case.i.clone()
         },
-        length: ra.max(la).max(rb).max(lb),
+        j: frustum_of(&case.j),
+        ..case
     })
 }
 
@@ -92,6 +78,10 @@ fn equal_radii(rng: &mut Rng) -> Option<Case> {
 pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
     let iterative = |row: Row| Row {
         bound: ITERATIVE_BOUND,
+        ..row
+    };
+    let gradient = |row: Row| Row {
+        bound: GRADIENT_ORACLE_BOUND,
         ..row
     };
     vec![
@@ -103,12 +93,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "polar-ray slicing; oracle: symmetry",
             coaxial,
         )),
-        iterative(run(
+        gradient(run(
             rng,
-            SAMPLES,
+            ORACLE_SAMPLES,
             "frustum–frustum, cylinder–frustum",
-            "equal radii, general and perpendicular poses",
-            "divergence theorem, lateral fluxes; oracle: cylinder–cylinder slicing",
+            "equal radii, crossed and skew axes (≥ 0.05 rad apart), any offset",
+            "divergence theorem, lateral fluxes; oracle: strips quadrature, S = −∂V/∂x_b",
             equal_radii,
         )),
     ]
