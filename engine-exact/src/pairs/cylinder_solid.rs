@@ -1,10 +1,10 @@
 //! A cylinder against a cylinder, a box or a bounded plane: the intersection's moments by
 //! slicing ([`super::sliced`]; two parallel cylinders and a box in closed form, two crossed
-//! ones by the divergence theorem over their lateral surfaces, [`super::revolved_pair`]),
+//! ones by the divergence theorem over their lateral surfaces, `revolved_pair`),
 //! the contact from them by [`super::volume_contact`].
 //!
 //! ## The slicing direction `n` (perpendicular to the first cylinder's axis)
-//! - **Cylinder–cylinder** (axes within [`super::revolved_pair::PARALLEL`] of parallel, and
+//! - **Cylinder–cylinder** (axes within `revolved_pair::PARALLEL` of parallel, and
 //!   the divergence theorem's check): `n = â × b̂ / |â × b̂|`, perpendicular to both axes, so each plane
 //!   `x·n = t` cuts both cylinders parallel to their axes (two rectangles). In `a`'s frame
 //!   `â = ẑ` and `â × b̂ = (−b_y, b_x, 0)` is exact, so `n·b̂` is a round-off of `|â × b̂|`
