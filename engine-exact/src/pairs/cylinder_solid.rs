@@ -218,12 +218,16 @@ pub(crate) fn contact_by(
             );
         }
     }
-    // Crossed cylinders: the divergence theorem over the two lateral surfaces.
+    // Crossed cylinders: the divergence theorem over the two lateral surfaces, unless they
+    // only graze.
     if let (Other::Cylinder(c), Method::ClosedForm) = (b, method) {
         let axis = rot_ab.column(2);
         if axis.x.hypot(axis.y) >= revolved_pair::PARALLEL {
             let (a, c) = (Solid::Cylinder(*a), Solid::Cylinder(*c));
-            return revolved_pair::contact(&a, pose_a, &c, pose_b, work);
+            // A grazing sliver it declines is sliced below.
+            if let Ok(found) = revolved_pair::divergence_contact(&a, pose_a, &c, pose_b, work) {
+                return found;
+            }
         }
     }
     let n = match b {

@@ -50,9 +50,45 @@ pub(crate) const LATERAL: usize = 8;
 /// The azimuthal rule: error estimates within 1e-13 relative, as the slices'.
 const RULE: Adaptive = Adaptive {
     tolerance: 1e-13,
-    max_depth: 20,
+    max_depth: 14,
     pair: KronrodPair::Kronrod41,
 };
+
+/// One lateral surface inside the other solid: its integrand, its events, and how well its
+/// generators meet the other solid.
+pub(crate) struct Lateral<'p> {
+    /// The integrand.
+    integrand: Integrand<'p>,
+    /// The events, sorted, `−π` and `π` included.
+    cuts: [f64; MAX_PIECES + 1],
+    /// How many.
+    n: usize,
+    /// The largest `(β² − αγ)/(β² + |αγ|)` among the generators at the middles of the pieces
+    /// that meet the other solid: near 0 when every one of them is within round-off of
+    /// tangent to its quadric (a grazing sliver, whose interval lengths `∝ √(β² − αγ)` have
+    /// lost their digits), 1 when one crosses it squarely (or meets only its caps).
+    pub conditioning: f64,
+}
+
+impl Lateral<'_> {
+    /// The integrals of [`LATERAL`].
+    pub(crate) fn integrate(&mut self, work: &mut WorkCounters) -> [f64; LATERAL] {
+        let floor = |e: &[f64; LATERAL]| {
+            // Relative to the surface's own first estimates: a small region's integrals are
+            // as small as it (no floor of the pair's size).
+            let v = (e[0].abs() * 1e-14).max(f64::MIN_POSITIVE);
+            let s = (e[7].abs() * 1e-14).max(f64::MIN_POSITIVE);
+            [v, v, v, v, s, s, s, s]
+        };
+        let integrand = &self.integrand;
+        RULE.integrate_pieces(
+            &mut self.cuts[..self.n],
+            &mut |phi| integrand.at(phi),
+            &floor,
+            work,
+        )
+    }
+}
 
 /// The reference point and the frame of the fields, in the working frame of the surface's
 /// solid.
@@ -296,12 +332,15 @@ impl Pair {
         };
         let (a, q) = (&self.a, &self.b);
         let b_rims = [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)];
+        // A rim clear of the other solid's bounding ball crosses none of its surface: its
+        // events (real crossings lie on the solid) are skipped.
+        let (ball_a, ball_b) = (ball(a), ball(q));
         // a's rims against b's lateral quadric and cap planes.
         for (z, r) in [(0.0, a.r0), (a.len, a.r0 + a.slope * a.len)] {
-            if r <= 0.0 {
+            let centre = Vector3::new(0.0, 0.0, z);
+            if r <= 0.0 || circle_clear_of(&centre, &Vector3::z(), r, &ball_b) {
                 continue;
             }
-            let centre = Vector3::new(0.0, 0.0, z);
             let (psi, k) = circle_crossings(q, &centre, &Vector3::x(), &Vector3::y(), r);
             for &x in &psi[..k] {
                 push(x, &mut cuts);
@@ -318,10 +357,10 @@ impl Pair {
         // b's rims piercing a's lateral quadric.
         let (e1, e2) = rim_axes(&q.axis);
         for (h, rim) in b_rims {
-            if rim <= 0.0 {
+            let centre = q.origin + q.axis * h;
+            if rim <= 0.0 || circle_clear_of(&centre, &q.axis, rim, &ball_a) {
                 continue;
             }
-            let centre = q.origin + q.axis * h;
             let (psi, k) = circle_crossings(a, &centre, &e1, &e2, rim);
             for &x in &psi[..k] {
                 let point = centre + rim * (x.cos() * e1 + x.sin() * e2);
@@ -339,19 +378,38 @@ impl Pair {
         (cuts, n)
     }
 
-    /// The integrals of [`LATERAL`] over `a`'s lateral surface inside `b`, the fields given in
-    /// `a`'s frame.
-    pub(crate) fn lateral(&self, fields: &Fields, work: &mut WorkCounters) -> [f64; LATERAL] {
+    /// `a`'s lateral surface inside `b`, ready to integrate: its events and how well its
+    /// generators meet `b`, the fields given in `a`'s frame.
+    pub(crate) fn lateral(&self, fields: &Fields) -> Lateral<'_> {
         let integrand = Integrand::new(self, fields);
-        let (mut cuts, n) = self.lateral_cuts(&integrand.generators);
-        let floor = |e: &[f64; LATERAL]| {
-            // Relative to the surface's own first estimates: a small region's integrals are
-            // as small as it (no floor of the pair's size).
-            let v = (e[0].abs() * 1e-14).max(f64::MIN_POSITIVE);
-            let s = (e[7].abs() * 1e-14).max(f64::MIN_POSITIVE);
-            [v, v, v, v, s, s, s, s]
-        };
-        RULE.integrate_pieces(&mut cuts[..n], &mut |phi| integrand.at(phi), &floor, work)
+        let (cuts, n) = self.lateral_cuts(&integrand.generators);
+        // The best-conditioned generator among the pieces' middles that meet `b`.
+        let mut conditioning = 0.0f64;
+        for piece in cuts[..n].windows(2) {
+            let phi = 0.5 * (piece[0] + piece[1]);
+            let (s, c) = phi.sin_cos();
+            let line = integrand.generators.line(c, s);
+            if let Some((enter, _, exit, _)) = interval_on_line(&self.b, &line) {
+                if exit.min(self.a.len) > enter.max(0.0) {
+                    let [alpha, beta, gamma] = line.quadratic;
+                    let scale = beta * beta + (alpha * gamma).abs();
+                    let disc = beta * beta - alpha * gamma;
+                    // No real roots (a cone's inside along the whole line): caps only.
+                    let ratio = if disc > 0.0 && scale > 0.0 {
+                        disc / scale
+                    } else {
+                        1.0
+                    };
+                    conditioning = conditioning.max(ratio);
+                }
+            }
+        }
+        Lateral {
+            integrand,
+            cuts,
+            n,
+            conditioning,
+        }
     }
 
     /// The same pair seen from `b`: `b` at the origin along `z`, `a` posed in `b`'s frame;
@@ -375,6 +433,31 @@ impl Pair {
         };
         (pair, q.origin, axes)
     }
+}
+
+/// A frustum's bounding ball: centre at its axis' midpoint, radius to its wider rim.
+fn ball(q: &Quadric) -> (Vector3, f64) {
+    let r1 = q.r0 + q.slope * q.len;
+    (
+        q.origin + q.axis * (0.5 * q.len),
+        q.r0.max(r1).hypot(0.5 * q.len),
+    )
+}
+
+/// Whether the circle (centre `c`, unit normal `normal`, radius `r`) stays outside the ball
+/// `(centre, radius)`, by more than round-off: its nearest point is `√((ρ − r)² + h²)` from
+/// the ball's centre, `h` and `ρ` that centre's height over the circle's plane and distance
+/// from its axis.
+fn circle_clear_of(
+    c: &Vector3,
+    normal: &Vector3,
+    r: f64,
+    (centre, radius): &(Vector3, f64),
+) -> bool {
+    let d = centre - c;
+    let h = normal.dot(&d);
+    let rho = (d - normal * h).norm();
+    (rho - r).hypot(h) > radius * (1.0 + 1e-9) + 1e-12
 }
 
 /// The midpoint of the closest points of the two axes' segments (`a`'s from the origin along
