@@ -54,13 +54,15 @@ pub(super) fn divergence_sums(
         e1: Vector3::z(),
         e2: w.cross(&Vector3::z()),
     };
+    let (mut lateral_a, mut lateral_b) = (
+        pair.lateral(&fields),
+        swapped.lateral(&fields.in_frame(&origin, &axes)),
+    );
+    if lateral_a.conditioning.max(lateral_b.conditioning) < GRAZING {
+        return Err(Unresolved);
+    }
     let mut recentred = false;
     let (on_a, on_b, volume, moment) = loop {
-        let fields_b = fields.in_frame(&origin, &axes);
-        let (mut lateral_a, mut lateral_b) = (pair.lateral(&fields), swapped.lateral(&fields_b));
-        if lateral_a.conditioning.max(lateral_b.conditioning) < GRAZING {
-            return Err(Unresolved);
-        }
         let (on_a, on_b) = (lateral_a.integrate(work), lateral_b.integrate(work));
         let volume = on_a[0] + on_b[0];
         if volume.is_nan() || volume <= 0.0 {
@@ -79,6 +81,8 @@ pub(super) fn divergence_sums(
             break (on_a, on_b, volume, moment);
         }
         fields.centre = moment / volume;
+        lateral_a.set_fields(&fields);
+        lateral_b.set_fields(&fields.in_frame(&origin, &axes));
         recentred = true;
     };
     let mut r = [

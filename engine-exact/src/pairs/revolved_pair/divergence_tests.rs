@@ -3,6 +3,7 @@
 
 use super::slice::Pair;
 use super::{Method, contact_by, quadric_of};
+use crate::kernel::PairContact;
 use crate::pairs::solid_distance::Solid;
 use crate::test_rng::Rng;
 use contact_core::geometry::{Cylinder, Frustum};
@@ -22,6 +23,28 @@ fn solid(rng: &mut Rng) -> Solid {
 fn size(s: &Solid) -> f64 {
     let (r0, r1, len) = super::dimensions(s).unwrap();
     r0.max(r1).max(len)
+}
+
+/// Holds `got` to `want` within 1e-9 of `size` (both or neither found), widening `worst`;
+/// 1 when both were found (compared), else 0.
+fn tally(
+    worst: &mut [f64; 4],
+    (got, want): (&Option<PairContact>, &Option<PairContact>),
+    size: f64,
+    scene: &dyn std::fmt::Debug,
+) -> usize {
+    match (got, want) {
+        (Some(g), Some(w)) => {
+            let e = g.errors(w, size);
+            for k in 0..4 {
+                worst[k] = worst[k].max(e[k]);
+            }
+            assert!(e.iter().all(|&x| x <= 1e-9), "{e:?}\n{scene:?}");
+            1
+        }
+        (None, None) => 0,
+        _ => panic!("{got:?} vs {want:?}\n{scene:?}"),
+    }
 }
 
 /// The discriminant along the generators is a trigonometric form of degree two: its five
@@ -97,21 +120,8 @@ fn the_divergence_theorem_agrees_with_the_slicing() {
         let mut work = WorkCounters::default();
         let want = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Sliced);
         let got = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Divergence);
-        match (&got, &want) {
-            (Some(g), Some(w)) => {
-                let e = g.errors(w, size(&a).max(size(&b)));
-                for k in 0..4 {
-                    worst[k] = worst[k].max(e[k]);
-                }
-                assert!(
-                    e.iter().all(|&x| x <= 1e-9),
-                    "{e:?}\n{a:?}\n{b:?}\n{pose_b:?}"
-                );
-                compared += 1;
-            }
-            (None, None) => {}
-            _ => panic!("{got:?} vs {want:?}\n{a:?}\n{b:?}\n{pose_b:?}"),
-        }
+        let scene = (a, b, pose_b);
+        compared += tally(&mut worst, (&got, &want), size(&a).max(size(&b)), &scene);
     }
     eprintln!("divergence against slicing, worst over {compared}: {worst:?}");
 }
@@ -142,21 +152,8 @@ fn crossed_cylinders_agree_with_the_polygon_slicing() {
         };
         let got = run(cylinder_solid::Method::ClosedForm, &mut work);
         let want = run(cylinder_solid::Method::Sliced, &mut work);
-        match (&got, &want) {
-            (Some(g), Some(w)) => {
-                let e = g.errors(w, reach);
-                for k in 0..4 {
-                    worst[k] = worst[k].max(e[k]);
-                }
-                assert!(
-                    e.iter().all(|&x| x <= 1e-9),
-                    "{e:?}\n{a:?}\n{b:?}\n{pose_b:?}"
-                );
-                compared += 1;
-            }
-            (None, None) => {}
-            _ => panic!("{got:?} vs {want:?}\n{a:?}\n{b:?}\n{pose_b:?}"),
-        }
+        let scene = (a, b, pose_b);
+        compared += tally(&mut worst, (&got, &want), reach, &scene);
     }
     eprintln!("crossed cylinders against the polygon slicing, worst over {compared}: {worst:?}");
 }

@@ -71,6 +71,12 @@ pub(crate) struct Lateral<'p> {
 }
 
 impl Lateral<'_> {
+    /// The same surface with the fields taken about another point (the events and the
+    /// generators do not depend on it).
+    pub(crate) fn set_fields(&mut self, fields: &Fields) {
+        self.integrand.set_fields(fields);
+    }
+
     /// The integrals of [`LATERAL`].
     pub(crate) fn integrate(&mut self, work: &mut WorkCounters) -> [f64; LATERAL] {
         let floor = |e: &[f64; LATERAL]| {
@@ -215,14 +221,21 @@ struct Integrand<'p> {
 
 impl Integrand<'_> {
     fn new<'p>(pair: &'p Pair, fields: &Fields) -> Integrand<'p> {
-        let axes = [fields.w, fields.e1, fields.e2];
-        Integrand {
+        let mut integrand = Integrand {
             pair,
             generators: Generators::new(pair),
             slant: pair.a.slope.hypot(1.0),
-            axes,
-            offsets: axes.map(|e| e.dot(&fields.centre)),
-        }
+            axes: [Vector3::zeros(); 3],
+            offsets: [0.0; 3],
+        };
+        integrand.set_fields(fields);
+        integrand
+    }
+
+    /// Takes the fields' frame and reference point.
+    fn set_fields(&mut self, fields: &Fields) {
+        self.axes = [fields.w, fields.e1, fields.e2];
+        self.offsets = self.axes.map(|e| e.dot(&fields.centre));
     }
 
     /// The integrand per unit of `φ` (see [`LATERAL`]): along the generator a point at height

@@ -8,6 +8,24 @@ use crate::pairs::solid_distance::Solid;
 use contact_core::geometry::{Cylinder, Frustum};
 use contact_core::{Isometry3, Vector3, WorkCounters};
 
+/// The cylinder pair's polygon slicing (the independent method these tests hold to).
+fn polygon_slicing(
+    a: &Cylinder,
+    pose_a: &Isometry3,
+    b: &Cylinder,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+) -> Option<crate::kernel::PairContact> {
+    cylinder_solid::contact_by(
+        a,
+        pose_a,
+        &Other::Cylinder(*b),
+        pose_b,
+        work,
+        Method::Sliced,
+    )
+}
+
 /// `(ra, la, rb, lb, translation of b, rotation vector of b)`, `a` at the origin.
 type Pose = (f64, f64, f64, f64, [f64; 3], [f64; 3]);
 
@@ -30,15 +48,7 @@ fn equal_radius_frusta_agree_with_the_cylinder_pair() {
             Cylinder::new(rb, lb).unwrap(),
         );
         let mut work = WorkCounters::default();
-        let want = cylinder_solid::contact_by(
-            &ca,
-            &pose_a,
-            &Other::Cylinder(cb),
-            &pose_b,
-            &mut work,
-            Method::Sliced,
-        )
-        .unwrap();
+        let want = polygon_slicing(&ca, &pose_a, &cb, &pose_b, &mut work).unwrap();
         let fa = Solid::Frustum(Frustum::new(ra, ra, la).unwrap());
         let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
         for (a, b) in [(fa, fb), (Solid::Cylinder(ca), fb)] {
@@ -125,15 +135,7 @@ fn perpendicular_axes_agree_with_the_cylinder_pair() {
         Cylinder::new(rb, lb).unwrap(),
     );
     let mut work = WorkCounters::default();
-    let want = cylinder_solid::contact_by(
-        &ca,
-        &pose_a,
-        &Other::Cylinder(cb),
-        &pose_b,
-        &mut work,
-        Method::Sliced,
-    )
-    .unwrap();
+    let want = polygon_slicing(&ca, &pose_a, &cb, &pose_b, &mut work).unwrap();
     let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
     let got = contact(&Solid::Cylinder(ca), &pose_a, &fb, &pose_b, &mut work).unwrap();
     let size = ra.max(la).max(rb).max(lb);
@@ -181,15 +183,7 @@ fn a_tangency_just_after_a_rim_piercing_is_cut() {
         Cylinder::new(rb, lb).unwrap(),
     );
     let mut work = WorkCounters::default();
-    let want = cylinder_solid::contact_by(
-        &ca,
-        &pose_a,
-        &Other::Cylinder(cb),
-        &pose_b,
-        &mut work,
-        Method::Sliced,
-    )
-    .unwrap();
+    let want = polygon_slicing(&ca, &pose_a, &cb, &pose_b, &mut work).unwrap();
     let fa = Solid::Frustum(Frustum::new(ra, ra, la).unwrap());
     let fb = Solid::Frustum(Frustum::new(rb, rb, lb).unwrap());
     let swapped = contact(&fb, &pose_b, &fa, &pose_a, &mut work).unwrap();
