@@ -48,10 +48,15 @@ pub(crate) fn surface_point_along_w(
 fn positive_root(a: f64, b: f64, c: f64) -> f64 {
     let disc = (b * b - 4.0 * a * c).max(0.0);
     let q = -0.5 * (b + b.signum() * disc.sqrt());
-    if q == 0.0 {
-        return 0.0;
+    // The roots are q/a and c/q, of opposite signs (c ≤ 0 < a): q's sign picks the
+    // non-negative one, a single division.
+    if q > 0.0 {
+        q / a
+    } else if q < 0.0 {
+        (c / q).max(0.0)
+    } else {
+        0.0
     }
-    (q / a).max(c / q).max(0.0)
 }
 
 /// Exit through the planes `z = 0` (going down) and `z = top` (going up).
@@ -94,13 +99,24 @@ pub(crate) fn ellipsoid_exit(semi: &Vector3, o: &Vector3, d: &Vector3) -> Option
 
 /// A cylinder on the `z` axis from `z = 0` to its length.
 pub(crate) fn cylinder_exit(cylinder: &Cylinder, o: &Vector3, d: &Vector3) -> Option<f64> {
-    frustum_like_exit(
-        cylinder.radius(),
-        cylinder.radius(),
-        cylinder.length(),
-        o,
-        d,
-    )
+    // The frustum's exit with the slope 0 taken out: the same arithmetic, without the slope's
+    // division or the radial distance's square root.
+    let (r, length) = (cylinder.radius(), cylinder.length());
+    let tolerance = 1e-12 * r.max(length);
+    let rho2 = o.x * o.x + o.y * o.y;
+    let reach = r + tolerance;
+    if o.z < -tolerance || o.z > length + tolerance || rho2 > reach * reach {
+        return None;
+    }
+    let caps = cap_exit(o, d, length);
+    let a = d.x * d.x + d.y * d.y;
+    let side = if a > 0.0 {
+        let b = 2.0 * (o.x * d.x + o.y * d.y);
+        positive_root(a, b, (rho2 - r * r).min(0.0))
+    } else {
+        f64::INFINITY
+    };
+    Some(caps.min(side))
 }
 
 /// A frustum (or cone) on the `z` axis, bottom radius at `z = 0`, top at its length.

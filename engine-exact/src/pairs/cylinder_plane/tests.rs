@@ -125,8 +125,8 @@ fn the_end_moments_series_matches_quadrature_in_the_root_of_the_rim_distance() {
     }
 }
 
-/// The moments of a piece off the rim, by both of its branches (the difference of series
-/// for wide pieces, the rule in `d` for narrow ones), against Gauss–Legendre in
+/// The moments of a piece off the rim, by all of its branches (the difference of series
+/// for wide pieces, the 8-, 4- and 2-node rules in `d` for narrower ones), against Gauss–Legendre in
 /// `s = 1 − t`, `x = η t²`, over `s ∈ [0, 1 − t₀]` (8 pieces of 12 nodes; smooth there,
 /// and `d = η s (2 − s)` keeps its digits). `η` a power of two and `t₀` of few bits, so
 /// `η_rim = η t₀²` is exact and both integrate the same range.
@@ -141,8 +141,13 @@ fn rim_moments_off_the_rim_match_quadrature_in_the_root_of_the_rim_distance() {
             0.75,
             0.875,
             0.9375,
+            1.0 - 2f64.powi(-4),
+            1.0 - 2f64.powi(-7),
             1.0 - 2f64.powi(-10),
+            1.0 - 2f64.powi(-14),
             1.0 - 2f64.powi(-20),
+            1.0 - 2f64.powi(-17),
+            1.0 - 2f64.powi(-26),
         ] {
             let eta_rim = eta * t_start * t_start;
             let span = 1.0 - t_start;
