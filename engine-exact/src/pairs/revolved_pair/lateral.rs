@@ -345,13 +345,12 @@ impl Pair {
         };
         let (a, q) = (&self.a, &self.b);
         let b_rims = [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)];
-        // A rim clear of the other solid's bounding ball crosses none of its surface: its
-        // events (real crossings lie on the solid) are skipped.
-        let (ball_a, ball_b) = (ball(a), ball(q));
+        // A rim clear of the other solid crosses none of its surface: its events (real
+        // crossings lie on the solid) are skipped.
         // a's rims against b's lateral quadric and cap planes.
         for (z, r) in [(0.0, a.r0), (a.len, a.r0 + a.slope * a.len)] {
             let centre = Vector3::new(0.0, 0.0, z);
-            if r <= 0.0 || circle_clear_of(&centre, &Vector3::z(), r, &ball_b) {
+            if r <= 0.0 || circle_clear_of(&centre, &Vector3::z(), r, q) {
                 continue;
             }
             let (psi, k) = circle_crossings(q, &centre, &Vector3::x(), &Vector3::y(), r);
@@ -371,7 +370,7 @@ impl Pair {
         let (e1, e2) = rim_axes(&q.axis);
         for (h, rim) in b_rims {
             let centre = q.origin + q.axis * h;
-            if rim <= 0.0 || circle_clear_of(&centre, &q.axis, rim, &ball_a) {
+            if rim <= 0.0 || circle_clear_of(&centre, &q.axis, rim, a) {
                 continue;
             }
             let (psi, k) = circle_crossings(a, &centre, &e1, &e2, rim);
@@ -457,20 +456,33 @@ fn ball(q: &Quadric) -> (Vector3, f64) {
     )
 }
 
-/// Whether the circle (centre `c`, unit normal `normal`, radius `r`) stays outside the ball
-/// `(centre, radius)`, by more than round-off: its nearest point is `√((ρ − r)² + h²)` from
-/// the ball's centre, `h` and `ρ` that centre's height over the circle's plane and distance
-/// from its axis.
-fn circle_clear_of(
-    c: &Vector3,
-    normal: &Vector3,
-    r: f64,
-    (centre, radius): &(Vector3, f64),
-) -> bool {
+/// Whether the circle (centre `c`, unit normal `normal`, radius `r`) stays clear of the
+/// frustum `q`, by more than round-off (1e-9 of the frustum's bounding ball), by any of three
+/// tests, each of a region holding the frustum:
+/// - its bounding ball: the circle's nearest point is `√((ρ − r)² + h²)` from the ball's
+///   centre, `h` and `ρ` that centre's height over the circle's plane and distance from its
+///   axis;
+/// - the infinite cylinder of the frustum's wider radius about its axis: every point of the
+///   circle is at least `D − r` from that axis, `D` the centre's distance from it;
+/// - the slab between its cap planes: the circle spans `r·|normal × axis|` either side of its
+///   centre's height along the axis.
+///
+/// The ball alone misses a long solid's rims crossing another far from its ends.
+fn circle_clear_of(c: &Vector3, normal: &Vector3, r: f64, q: &Quadric) -> bool {
+    let (centre, radius) = ball(q);
+    let margin = 1e-9 * radius;
     let d = centre - c;
     let h = normal.dot(&d);
     let rho = (d - normal * h).norm();
-    (rho - r).hypot(h) > radius * (1.0 + 1e-9) + 1e-12
+    if (rho - r).hypot(h) > radius + margin {
+        return true;
+    }
+    let from_origin = c - q.origin;
+    let height = q.axis.dot(&from_origin);
+    let across = (from_origin - q.axis * height).norm();
+    let widest = q.r0.max(q.r0 + q.slope * q.len);
+    let extent = r * normal.cross(&q.axis).norm();
+    across - r > widest + margin || height - extent > q.len + margin || height + extent < -margin
 }
 
 /// The midpoint of the closest points of the two axes' segments (`a`'s from the origin along
@@ -524,4 +536,61 @@ fn discriminant_form(generators: &Generators) -> [f64; 6] {
         0.5 * f * b1,
         a0 / 5.0,
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+
+    /// A circle called clear of a frustum has none of 4000 points on it inside the frustum's
+    /// solid (brute force, radial distance against the radius at the point's height), over
+    /// random frusta, cones and cylinders and circles around them; and the tests do call
+    /// circles clear that the bounding ball alone would not (a long solid's far rims).
+    #[test]
+    fn a_circle_called_clear_of_a_frustum_has_no_point_in_it() {
+        let mut rng = Rng(11);
+        let (mut clear, mut beyond_ball) = (0, 0);
+        for _ in 0..4000 {
+            let (r0, r1, len) = (
+                rng.uniform(0.0, 1.0),
+                rng.uniform(0.0, 1.0),
+                rng.uniform(0.2, 6.0),
+            );
+            let q = Quadric {
+                origin: Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0.0),
+                axis: rng.unit(),
+                r0,
+                slope: (r1 - r0) / len,
+                len,
+            };
+            let (centre, normal, r) = (
+                Vector3::new(
+                    rng.uniform(-4.0, 4.0),
+                    rng.uniform(-4.0, 4.0),
+                    rng.uniform(-4.0, 4.0),
+                ),
+                rng.unit(),
+                rng.uniform(0.05, 1.5),
+            );
+            if !circle_clear_of(&centre, &normal, r, &q) {
+                continue;
+            }
+            clear += 1;
+            let (ball_centre, ball_radius) = ball(&q);
+            let (e1, e2) = rim_axes(&normal);
+            let mut inside_ball = false;
+            for k in 0..4000 {
+                let psi = 2.0 * PI * k as f64 / 4000.0;
+                let p = centre + r * (psi.cos() * e1 + psi.sin() * e2);
+                let height = q.height(&p);
+                let radius = q.r0 + q.slope * height;
+                let inside = (0.0..=q.len).contains(&height) && q.across(&p).norm() <= radius;
+                assert!(!inside, "{q:?} {centre:?} {normal:?} {r}: {p:?}");
+                inside_ball |= (p - ball_centre).norm() <= ball_radius;
+            }
+            beyond_ball += usize::from(inside_ball);
+        }
+        assert!(clear > 1000 && beyond_ball > 100, "{clear} {beyond_ball}");
+    }
 }
