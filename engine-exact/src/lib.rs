@@ -82,6 +82,7 @@ pub mod polyhedron;
 mod prepared;
 pub mod quadrature;
 mod ray_exit;
+mod sin_cos;
 #[cfg(test)]
 mod test_rng;
 

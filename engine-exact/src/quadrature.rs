@@ -297,6 +297,32 @@ fn for_each_kronrod_node(pair: &KronrodPair, a: f64, b: f64, mut f: impl FnMut(f
     }
 }
 
+/// A vector-valued integrand of [`Adaptive`]: any `FnMut(f64) -> [f64; N]`, or a type that
+/// evaluates a whole rule's nodes at once ([`Integrand::at_each`]).
+pub trait Integrand<const N: usize> {
+    /// The value at `x`.
+    fn at(&mut self, x: f64) -> [f64; N];
+
+    /// The values at each of `xs`, into `out` (as long): one at a time unless overridden. An
+    /// integrand whose evaluation is one long chain of dependent steps (a root, a division, a
+    /// product of their results) overrides it to take each step for all the points before the
+    /// next, so that the points' chains run side by side instead of one after another.
+    fn at_each(&mut self, xs: &[f64], out: &mut [[f64; N]]) {
+        for (x, value) in xs.iter().zip(out) {
+            *value = self.at(*x);
+        }
+    }
+}
+
+impl<const N: usize, F: FnMut(f64) -> [f64; N]> Integrand<N> for F {
+    fn at(&mut self, x: f64) -> [f64; N] {
+        self(x)
+    }
+}
+
+/// The most nodes of one rule (both signs and the middle): 41.
+pub const MAX_RULE_NODES: usize = 2 * MAX_NODES - 1;
+
 /// Adaptive sine-mapped Gauss–Kronrod quadrature of vector-valued integrands on pieces
 /// `[lo, hi]` whose ends may be square-root-type (a width `√(hi − x)` vanishing there).
 ///
@@ -328,7 +354,7 @@ impl Adaptive {
         &self,
         (lo, hi): (f64, f64),
         (t0, t1, depth): (f64, f64, u32),
-        f: &mut impl FnMut(f64) -> [f64; N],
+        f: &mut impl Integrand<N>,
         work: &mut WorkCounters,
     ) -> Estimates<N> {
         let mut kronrod = [0.0; N];
@@ -344,14 +370,15 @@ impl Adaptive {
         let offsets = &node_offsets(self.pair)[depth.min(DEPTH_LIMIT) as usize];
         let width = FRAC_PI_2 / 2f64.powi(depth.min(DEPTH_LIMIT) as i32);
         let last = table.nodes.len() - 1;
-        let mut add = |sin: f64, cos: f64, wk: f64, wg: f64| {
-            let value = f(mid + half * sin);
-            let jacobian = half * cos;
-            for k in 0..N {
-                let v = jacobian * value[k];
-                kronrod[k] += wk * v;
-                gauss[k] += wg * v;
-            }
+        // The nodes in the order their values are summed (each offset's pair, then the
+        // middle), evaluated all at once.
+        let mut xs = [0.0; MAX_RULE_NODES];
+        let mut weights = [(0.0, 0.0, 0.0); MAX_RULE_NODES];
+        let mut count = 0;
+        let mut node = |sin: f64, cos: f64, wk: f64, wg: f64| {
+            xs[count] = mid + half * sin;
+            weights[count] = (half * cos, wk, wg);
+            count += 1;
         };
         for (k, (&(so, co), &w)) in offsets.iter().zip(table.kronrod).enumerate() {
             let wk = width * w;
@@ -361,10 +388,19 @@ impl Adaptive {
                 0.0
             };
             if k == last {
-                add(sm, cm, wk, wg);
+                node(sm, cm, wk, wg);
             } else {
-                add(sm * co - cm * so, cm * co + sm * so, wk, wg);
-                add(sm * co + cm * so, cm * co - sm * so, wk, wg);
+                node(sm * co - cm * so, cm * co + sm * so, wk, wg);
+                node(sm * co + cm * so, cm * co - sm * so, wk, wg);
+            }
+        }
+        let mut values = [[0.0; N]; MAX_RULE_NODES];
+        f.at_each(&xs[..count], &mut values[..count]);
+        for (value, &(jacobian, wk, wg)) in values[..count].iter().zip(&weights[..count]) {
+            for k in 0..N {
+                let v = jacobian * value[k];
+                kronrod[k] += wk * v;
+                gauss[k] += wg * v;
             }
         }
         work.iterations += 2 * table.nodes.len() as u64 - 1;
@@ -401,7 +437,7 @@ impl Adaptive {
         &self,
         (lo, hi): (f64, f64),
         whole: Estimates<N>,
-        f: &mut impl FnMut(f64) -> [f64; N],
+        f: &mut impl Integrand<N>,
         floor: &[f64; N],
         work: &mut WorkCounters,
         total: &mut [f64; N],
@@ -437,7 +473,7 @@ impl Adaptive {
     pub fn integrate_pieces<const N: usize>(
         &self,
         cuts: &mut [f64],
-        f: &mut impl FnMut(f64) -> [f64; N],
+        f: &mut impl Integrand<N>,
         floor: &impl Fn(&[f64; N]) -> [f64; N],
         work: &mut WorkCounters,
     ) -> [f64; N] {
@@ -453,7 +489,7 @@ impl Adaptive {
         let mut taken = [false; MAX_PIECES];
         let mut estimate = [0.0; N];
         for ((piece, whole), taken) in cuts.windows(2).zip(wholes.iter_mut()).zip(&mut taken) {
-            if piece[1] <= piece[0] || f(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
+            if piece[1] <= piece[0] || f.at(0.5 * (piece[0] + piece[1])).iter().all(|&v| v == 0.0) {
                 continue;
             }
             *whole = self.rule((piece[0], piece[1]), (-FRAC_PI_2, FRAC_PI_2, 0), f, work);

@@ -1,9 +1,14 @@
 //! The frustum pair's moments by the divergence theorem over the two lateral surfaces
 //! ([`super::lateral`]), with `a`'s caps from the polar slices; declined for grazing slivers.
+//!
+//! Where no cap can meet the intersection (each solid lies strictly between the other's cap
+//! planes) and one solid is a cylinder, one lateral surface is enough: fields along the
+//! cylinder's axis are tangent to its lateral surface, so all their flux crosses the other's
+//! ([`one_surface_sums`]). Two long cylinders crossing away from their ends are the case.
 
 use super::add_caps;
 use super::lateral;
-use super::slice::{self, Pair};
+use super::slice::{self, Pair, rim_axes};
 use crate::pairs::ellipsoid_sliced::COMPONENTS;
 use crate::quadrature::Adaptive;
 use contact_core::{Vector3, WorkCounters};
@@ -43,10 +48,15 @@ const REFERENCE_REACH: f64 = 8.0;
 pub(super) fn divergence_sums(
     pair: &Pair,
     w: &Vector3,
-    lo: f64,
-    hi: f64,
+    (lo, hi): (f64, f64),
+    surfaces: Surfaces,
     work: &mut WorkCounters,
 ) -> Result<Option<[f64; COMPONENTS]>, Unresolved> {
+    if surfaces == Surfaces::OneWherePossible {
+        if let Some(r) = one_surface_sums(pair, work) {
+            return Ok(r);
+        }
+    }
     let (swapped, origin, axes) = pair.swapped();
     let mut fields = lateral::Fields {
         centre: lateral::reference_point(pair),
@@ -108,4 +118,126 @@ pub(super) fn divergence_sums(
         r[8] += caps_b[7];
     }
     Ok(Some(r))
+}
+
+/// Which lateral surfaces [`divergence_sums`] integrates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Surfaces {
+    /// One where [`one_surface_sums`] applies, else both.
+    OneWherePossible,
+    /// Both always (the one-surface sums' check).
+    #[cfg_attr(not(test), allow(dead_code))]
+    Both,
+}
+
+/// The sums from one lateral surface alone, where no cap can meet the intersection (each
+/// solid lies strictly between the other's cap planes, [`caps_clear`]) and one solid is a
+/// cylinder: the fields of [`lateral`] taken along that cylinder's axis are tangent to its
+/// lateral surface, so their flux through the intersection's boundary all crosses the other
+/// solid's lateral surface. That surface's area vector is then minus the cylinder's (the
+/// boundary is closed), and its unsigned area the surface inside the other solid on its
+/// side; the cylinder's surface inside the other is left at the area vector's length (a
+/// lower bound, as the slicing takes it: it only sizes the vanishing tests). `None` where
+/// this does not apply, or declines: no cylinder, a cap in reach, a grazing sliver, or an
+/// area vector near vanishing (a symmetric crossing, whose area the whole surface sizes):
+/// both surfaces are integrated there. `Some(None)`: no volume.
+pub(super) fn one_surface_sums(
+    pair: &Pair,
+    work: &mut WorkCounters,
+) -> Option<Option<[f64; COMPONENTS]>> {
+    // The surface integrated is b's when a is the cylinder (the fields along a's axis, z).
+    let of_b = if pair.b.slope == 0.0 {
+        false
+    } else if pair.a.slope == 0.0 {
+        true
+    } else {
+        return None;
+    };
+    if !caps_clear(pair) {
+        return None;
+    }
+    let (swapped, origin, axes) = pair.swapped();
+    let axis = if of_b { Vector3::z() } else { pair.b.axis };
+    let (e1, e2) = rim_axes(&axis);
+    let mut fields = lateral::Fields {
+        centre: lateral::reference_point(pair),
+        w: axis,
+        e1,
+        e2,
+    };
+    let seen = |fields: &lateral::Fields| {
+        if of_b {
+            fields.in_frame(&origin, &axes)
+        } else {
+            *fields
+        }
+    };
+    let mut surface = if of_b {
+        swapped.lateral(&seen(&fields))
+    } else {
+        pair.lateral(&seen(&fields))
+    };
+    if surface.conditioning < GRAZING {
+        return None;
+    }
+    let mut recentred = false;
+    loop {
+        let on = surface.integrate(work);
+        let volume = on[0];
+        if volume.is_nan() || volume <= 0.0 {
+            return Some(None);
+        }
+        let offset = fields.w * on[1] + fields.e1 * on[2] + fields.e2 * on[3];
+        let moment = fields.centre * volume + offset;
+        // As in `divergence_sums`, the region's surface about twice the one integrated.
+        let thickness = volume / (2.0 * on[7]);
+        if recentred || offset.norm() / volume <= REFERENCE_REACH * thickness {
+            let own = Vector3::new(on[4], on[5], on[6]);
+            let s_a = if of_b {
+                -(axes[0] * own.x + axes[1] * own.y + axes[2] * own.z)
+            } else {
+                own
+            };
+            let projected = s_a.norm();
+            if projected.is_nan() || projected <= NEAR_VANISHING * on[7] {
+                return None;
+            }
+            let (inside_b, inside_a) = if of_b {
+                (projected, on[7])
+            } else {
+                (on[7], projected)
+            };
+            return Some(Some([
+                volume, moment.z, moment.x, moment.y, s_a.x, s_a.y, s_a.z, inside_b, inside_a,
+            ]));
+        }
+        fields.centre = moment / volume;
+        surface.set_fields(&seen(&fields));
+        recentred = true;
+    }
+}
+
+/// Whether each solid lies strictly between the other's cap planes (by 1e-9 of the longer
+/// solid): then no cap meets the other solid, and the intersection's boundary is lateral
+/// surface only. A frustum is the hull of its rims, so its extent along a direction is its
+/// rims' (a rim of radius `r` about an axis `â` spans `r·|d × â|` either side of its
+/// centre's height along `d`).
+fn caps_clear(pair: &Pair) -> bool {
+    let (a, b) = (&pair.a, &pair.b);
+    let margin = 1e-9 * a.len.max(b.len);
+    let within = |(lo, hi): (f64, f64), len: f64| lo > margin && hi < len - margin;
+    let extent = |q: &super::quadric::Quadric, d: &Vector3, from: &Vector3| {
+        let spread = d.cross(&q.axis).norm();
+        let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+        for (t, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
+            let centre = d.dot(&(q.origin + q.axis * t - from));
+            range = (
+                range.0.min(centre - r * spread),
+                range.1.max(centre + r * spread),
+            );
+        }
+        range
+    };
+    within(extent(b, &Vector3::z(), &Vector3::zeros()), a.len)
+        && within(extent(a, &b.axis, &b.origin), b.len)
 }

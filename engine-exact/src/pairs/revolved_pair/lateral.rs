@@ -36,7 +36,8 @@
 
 use super::quadric::{Quadric, circle_crossings, sinusoid_roots, trig_roots, wrap};
 use super::slice::{Line, Pair, interval_on_line, rim_axes};
-use crate::quadrature::{Adaptive, MAX_PIECES, Pair as KronrodPair};
+use crate::quadrature::{self, Adaptive, MAX_PIECES, MAX_RULE_NODES, Pair as KronrodPair};
+use crate::sin_cos::sin_cos;
 #[cfg(test)]
 use contact_core::Matrix3;
 use contact_core::{Vector3, WorkCounters};
@@ -81,18 +82,16 @@ impl Lateral<'_> {
     pub(crate) fn integrate(&mut self, work: &mut WorkCounters) -> [f64; LATERAL] {
         let floor = |e: &[f64; LATERAL]| {
             // Relative to the surface's own first estimates: a small region's integrals are
-            // as small as it (no floor of the pair's size).
+            // as small as it (no floor of the pair's size). A moment may vanish by symmetry
+            // (about a reference point on a plane of symmetry): its floor, 1e-12 of the
+            // volume times the working unit, holds the centroid to 1e-12 of the pair's size,
+            // where the volume's would ask a vanishing integral for 1e-14.
             let v = (e[0].abs() * 1e-14).max(f64::MIN_POSITIVE);
+            let m = (e[0].abs() * 1e-12).max(f64::MIN_POSITIVE);
             let s = (e[7].abs() * 1e-14).max(f64::MIN_POSITIVE);
-            [v, v, v, v, s, s, s, s]
+            [v, m, m, m, s, s, s, s]
         };
-        let integrand = &self.integrand;
-        RULE.integrate_pieces(
-            &mut self.cuts[..self.n],
-            &mut |phi| integrand.at(phi),
-            &floor,
-            work,
-        )
+        RULE.integrate_pieces(&mut self.cuts[..self.n], &mut &self.integrand, &floor, work)
     }
 }
 
@@ -238,21 +237,30 @@ impl Integrand<'_> {
         self.offsets = self.axes.map(|e| e.dot(&fields.centre));
     }
 
-    /// The integrand per unit of `φ` (see [`LATERAL`]): along the generator a point at height
-    /// `z` is `(R u, z)`, so each field's coordinate is `R (e·u) + z e_z − c·e`.
+    /// The integrand per unit of `φ` (see [`LATERAL`]).
     fn at(&self, phi: f64) -> [f64; LATERAL] {
+        let (s, c) = sin_cos(phi);
+        self.on_generator(c, s, self.inside(c, s))
+    }
+
+    /// The part `(lo, hi)` of the generator at azimuth `(c, s)` inside `b` (`hi ≤ lo` when
+    /// none is).
+    fn inside(&self, c: f64, s: f64) -> (f64, f64) {
+        match interval_on_line(&self.pair.b, &self.generators.line(c, s)) {
+            Some((enter, _, exit, _)) => (enter.max(0.0), exit.min(self.pair.a.len)),
+            None => (0.0, 0.0),
+        }
+    }
+
+    /// The integrand on the generator at azimuth `(c, s)` over its part `(lo, hi)` inside `b`:
+    /// along the generator a point at height `z` is `(R u, z)`, so each field's coordinate is
+    /// `R (e·u) + z e_z − c·e`.
+    fn on_generator(&self, c: f64, s: f64, (lo, hi): (f64, f64)) -> [f64; LATERAL] {
         let mut out = [0.0; LATERAL];
-        let (s, c) = phi.sin_cos();
-        let a = &self.pair.a;
-        let Some((enter, _, exit, _)) = interval_on_line(&self.pair.b, &self.generators.line(c, s))
-        else {
-            return out;
-        };
-        let (lo, hi) = (enter.max(0.0), exit.min(a.len));
         if hi <= lo {
             return out;
         }
-        let (r0, k) = (a.r0, a.slope);
+        let (r0, k) = (self.pair.a.r0, self.pair.a.slope);
         let [w, e1, e2] = &self.axes;
         let [cw, c1, c2] = self.offsets;
         let (uw, u1, u2) = (w.x * c + w.y * s, e1.x * c + e1.y * s, e2.x * c + e2.y * s);
@@ -278,6 +286,34 @@ impl Integrand<'_> {
         out[6] = -k * area;
         out[7] = self.slant * area;
         out
+    }
+}
+
+/// A rule's nodes step by step over all of them (the azimuths' sines and cosines, then the
+/// generators' intervals in `b`, then the sums): each node's chain of a sine, a root and
+/// divisions is long, and the nodes' chains are independent.
+impl quadrature::Integrand<LATERAL> for &Integrand<'_> {
+    fn at(&mut self, phi: f64) -> [f64; LATERAL] {
+        Integrand::at(self, phi)
+    }
+
+    fn at_each(&mut self, phis: &[f64], out: &mut [[f64; LATERAL]]) {
+        for (phis, out) in phis
+            .chunks(MAX_RULE_NODES)
+            .zip(out.chunks_mut(MAX_RULE_NODES))
+        {
+            let mut trig = [(0.0, 0.0); MAX_RULE_NODES];
+            for (phi, (s, c)) in phis.iter().zip(&mut trig) {
+                (*s, *c) = sin_cos(*phi);
+            }
+            let mut parts = [(0.0, 0.0); MAX_RULE_NODES];
+            for (&(s, c), part) in trig.iter().zip(&mut parts).take(phis.len()) {
+                *part = self.inside(c, s);
+            }
+            for ((&(s, c), &part), value) in trig.iter().zip(&parts).zip(out) {
+                *value = self.on_generator(c, s, part);
+            }
+        }
     }
 }
 

@@ -102,7 +102,7 @@ use crate::quadrature::MAX_PIECES;
 use crate::ray_exit::surface_point_along_w;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 pub(crate) use divergence::Unresolved;
-use divergence::divergence_sums;
+use divergence::{Surfaces, divergence_sums};
 use quadric::{Quadric, circle_crossings};
 use slice::{Pair, rim_axes};
 
@@ -413,7 +413,13 @@ fn sums(
     };
     let across = Vector3::new(-pair.b.axis.y, pair.b.axis.x, 0.0);
     if method != Method::Sliced && across.norm() >= PARALLEL {
-        match divergence_sums(&pair, &across.normalize(), lo, hi, work) {
+        match divergence_sums(
+            &pair,
+            &across.normalize(),
+            (lo, hi),
+            Surfaces::OneWherePossible,
+            work,
+        ) {
             Ok(r) => {
                 return Ok(r.map(|r| Sums {
                     pair,
