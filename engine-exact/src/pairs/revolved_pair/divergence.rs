@@ -145,6 +145,15 @@ pub(super) fn one_surface_sums(
     pair: &Pair,
     work: &mut WorkCounters,
 ) -> Option<Option<[f64; COMPONENTS]>> {
+    if !caps_clear(pair) {
+        return None;
+    }
+    if pair.b.slope != 0.0 {
+        let apex = pair.b.origin - pair.b.axis * (pair.b.r0 / pair.b.slope);
+        if let Some(r) = radial_sums(pair, &apex, work) {
+            return Some(r);
+        }
+    }
     // The surface integrated is b's when a is the cylinder (the fields along a's axis, z).
     let of_b = if pair.b.slope == 0.0 {
         false
@@ -153,9 +162,6 @@ pub(super) fn one_surface_sums(
     } else {
         return None;
     };
-    if !caps_clear(pair) {
-        return None;
-    }
     let (swapped, origin, axes) = pair.swapped();
     let axis = if of_b { Vector3::z() } else { pair.b.axis };
     let (e1, e2) = rim_axes(&axis);
@@ -215,6 +221,45 @@ pub(super) fn one_surface_sums(
         surface.set_fields(&seen(&fields));
         recentred = true;
     }
+}
+
+/// How far (in thicknesses of the region) a cone's apex may lie from the centroid for the
+/// fields radial from it ([`radial_sums`]): their fluxes cancel over the region as that
+/// distance over its thickness, and cannot be taken about another point (only fields
+/// through the apex are tangent to the cone); past this the other ways are taken.
+const RADIAL_REACH: f64 = 1e3;
+
+/// [`one_surface_sums`] for `b` a frustum (a cone's part) whose `apex` is given (in `a`'s
+/// frame): the fields radial from the apex are tangent to `b`'s lateral surface, so all
+/// their flux crosses `a`'s. `None` where it declines (a grazing sliver, an apex beyond
+/// [`RADIAL_REACH`], an area vector near vanishing); `Some(None)`: no volume.
+fn radial_sums(
+    pair: &Pair,
+    apex: &Vector3,
+    work: &mut WorkCounters,
+) -> Option<Option<[f64; COMPONENTS]>> {
+    let mut surface = pair.lateral_radial(apex);
+    if surface.conditioning < GRAZING {
+        return None;
+    }
+    let on = surface.integrate(work);
+    let volume = on[0];
+    if volume.is_nan() || volume <= 0.0 {
+        return Some(None);
+    }
+    let moment = apex * volume + Vector3::new(on[1], on[2], on[3]);
+    let thickness = volume / (2.0 * on[7]);
+    if (moment / volume - apex).norm() > RADIAL_REACH * thickness {
+        return None;
+    }
+    let s_a = Vector3::new(on[4], on[5], on[6]);
+    let projected = s_a.norm();
+    if projected.is_nan() || projected <= NEAR_VANISHING * on[7] {
+        return None;
+    }
+    Some(Some([
+        volume, moment.z, moment.x, moment.y, s_a.x, s_a.y, s_a.z, on[7], projected,
+    ]))
 }
 
 /// Whether each solid lies strictly between the other's cap planes (by 1e-9 of the longer

@@ -216,6 +216,9 @@ struct Integrand<'p> {
     axes: [Vector3; 3],
     /// `c·ŵ`, `c·ê₁`, `c·ê₂`.
     offsets: [f64; 3],
+    /// The apex `p` of the fields radial from it ([`Pair::lateral_radial`]), in place of the
+    /// fields along `ŵ`.
+    radial: Option<Vector3>,
 }
 
 impl Integrand<'_> {
@@ -226,6 +229,7 @@ impl Integrand<'_> {
             slant: pair.a.slope.hypot(1.0),
             axes: [Vector3::zeros(); 3],
             offsets: [0.0; 3],
+            radial: None,
         };
         integrand.set_fields(fields);
         integrand
@@ -261,15 +265,50 @@ impl Integrand<'_> {
             return out;
         }
         let (r0, k) = (self.pair.a.r0, self.pair.a.slope);
+        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let offset = half * FRAC_1_SQRT_3;
+        let points = [mid - offset, mid + offset];
+        if let Some(p) = &self.radial {
+            // (x − p)·(u − k ẑ) = R − k z − p·(u − k ẑ) = r₀ − p·u + k p_z along the whole
+            // generator: the radial fields' flux per unit of R dz is that over 3, and times
+            // (x − p)ᵢ/4 for the moments.
+            let height = r0 - (p.x * c + p.y * s) + k * p.z;
+            for z in points {
+                let r = r0 + k * z;
+                let flux = half * r * height;
+                out[0] += flux / 3.0;
+                out[1] += 0.25 * (r * c - p.x) * flux;
+                out[2] += 0.25 * (r * s - p.y) * flux;
+                out[3] += 0.25 * (z - p.z) * flux;
+            }
+        } else {
+            self.along_fields(c, s, (half, points), &mut out);
+        }
+        // ∫R dz, exact for the linear radius.
+        let area = half * points.iter().map(|z| r0 + k * z).sum::<f64>();
+        out[4] = area * c;
+        out[5] = area * s;
+        out[6] = -k * area;
+        out[7] = self.slant * area;
+        out
+    }
+
+    /// The fluxes of the fields along `ŵ` on the generator at azimuth `(c, s)`, over the part
+    /// of half-width `half` with Gauss points `points`, into `out[..4]`.
+    fn along_fields(
+        &self,
+        c: f64,
+        s: f64,
+        (half, points): (f64, [f64; 2]),
+        out: &mut [f64; LATERAL],
+    ) {
+        let (r0, k) = (self.pair.a.r0, self.pair.a.slope);
         let [w, e1, e2] = &self.axes;
         let [cw, c1, c2] = self.offsets;
         let (uw, u1, u2) = (w.x * c + w.y * s, e1.x * c + e1.y * s, e2.x * c + e2.y * s);
         // ŵ·(u − k ẑ): the surface element's projection on ŵ per unit of R.
         let facing = uw - k * w.z;
-        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let offset = half * FRAC_1_SQRT_3;
-        let mut radii = 0.0;
-        for z in [mid - offset, mid + offset] {
+        for z in points {
             let r = r0 + k * z;
             let along = r * uw + z * w.z - cw;
             let flux = half * r * facing * along;
@@ -277,15 +316,7 @@ impl Integrand<'_> {
             out[1] += 0.5 * along * flux;
             out[2] += (r * u1 + z * e1.z - c1) * flux;
             out[3] += (r * u2 + z * e2.z - c2) * flux;
-            radii += r;
         }
-        // ∫R dz, exact for the linear radius.
-        let area = half * radii;
-        out[4] = area * c;
-        out[5] = area * s;
-        out[6] = -k * area;
-        out[7] = self.slant * area;
-        out
     }
 }
 
@@ -424,6 +455,22 @@ impl Pair {
         }
         cuts[..n].sort_by(f64::total_cmp);
         (cuts, n)
+    }
+
+    /// [`Pair::lateral`] with the fields radial from `apex` (in `a`'s frame) in place of the
+    /// fields along `ŵ`: `(x − p)/3` and `(x − p)(x − p)ᵢ/4` (`i` = `a`'s `x`, `y`, `z`), of
+    /// divergences 1 and `(x − p)ᵢ`, tangent to every lateral surface whose generators meet at
+    /// `p` (a cone's through its apex). Their fluxes are the volume and the moments about `p`.
+    pub(crate) fn lateral_radial(&self, apex: &Vector3) -> Lateral<'_> {
+        let fields = Fields {
+            centre: *apex,
+            w: Vector3::x(),
+            e1: Vector3::y(),
+            e2: Vector3::z(),
+        };
+        let mut lateral = self.lateral(&fields);
+        lateral.integrand.radial = Some(*apex);
+        lateral
     }
 
     /// `a`'s lateral surface inside `b`, ready to integrate: its events and how well its
