@@ -47,7 +47,7 @@
 use super::solid_distance::Solid;
 use crate::kernel::PairContact;
 use crate::quadrature;
-use crate::ray_exit::surface_point_along;
+use crate::ray_exit::{cylinder_exit, surface_point_along};
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -124,8 +124,16 @@ fn contact_by(
     let u_bar = moment_u * inv_volume;
     let centroid = Vector3::new(e.x * u_bar, e.y * u_bar, moment_z * inv_volume);
     let to_plane = (h - n.dot(&centroid)).max(0.0);
-    let on_cylinder = surface_point_along(&Solid::Cylinder(*cylinder), &centroid, &-n);
     let on_plane = centroid + to_plane * n;
+    // Along the normal the two points are `to_plane + t` apart, `t` the ray's exit from the
+    // cylinder: no root of their difference's square (the last step of a long chain).
+    let (on_cylinder, depth) = match cylinder_exit(cylinder, &centroid, &-n) {
+        Some(t) => (centroid - t * n, to_plane + t),
+        None => {
+            let on = surface_point_along(&Solid::Cylinder(*cylinder), &centroid, &-n);
+            (on, (on_plane - on).norm())
+        }
+    };
     let area = if b.abs() < 1e-9 {
         let u = h / a;
         if u.abs() < r {
@@ -147,7 +155,7 @@ fn contact_by(
         point_a: world(on_cylinder),
         point_b: world(on_plane),
         normal: normal_w,
-        depth: (on_plane - on_cylinder).norm(),
+        depth,
         area,
     })
 }
@@ -155,6 +163,7 @@ fn contact_by(
 /// The solid's volume, its first moments along `e` (radial, towards the plane's normal) and
 /// along the axis, and the chords' integral where the plane crosses between the caps, for
 /// the plane `a·u + b·z ≤ h` in the cylinder's frame (see the module doc).
+#[inline(always)]
 fn slice_moments(
     a: f64,
     b: f64,
@@ -354,6 +363,7 @@ fn interval(a: f64, b: f64, h: f64, len: f64, u: f64) -> (f64, f64) {
 /// there: `(lo, hi)`, each `(constant, slope)` of `const + slope·u` (`z ≤ (h − a u)/b` for
 /// `b > 0` up to the top cap, `z ≥ (h − a u)/b` for `b < 0` from the bottom cap, all or
 /// nothing for `b = 0`), with `line` the plane's line `(h/b, −a/b)`.
+#[inline(always)]
 fn interval_branches(
     a: f64,
     b: f64,
@@ -410,6 +420,7 @@ fn chord_moments(r: f64, f0: &[f64; 3], f1: &[f64; 3]) -> ([f64; 3], [f64; 3]) {
 /// `½(hi² − lo²)` expanded about `u_k` and the moments `N_p = ∫ 2√(R² − u²)·|u − u_k|ᵖ du` by
 /// the series of [`end_moments`]. `(volume, u-moment, z-moment, ∫ chords)`, or `None` for
 /// any other piece.
+#[inline(always)]
 fn end_piece(
     r: f64,
     c0: &Cut,
@@ -454,6 +465,7 @@ fn end_piece(
 /// whose weight is then smooth (its root lies seven half-widths away or more): the rule's
 /// error is below round-off.
 /// `None` for a piece of no width.
+#[inline(always)]
 fn rim_moments(r: f64, eta: f64, eta_rim: f64) -> Option<[f64; 3]> {
     let width = eta - eta_rim;
     if width <= 0.0 {
@@ -498,8 +510,10 @@ fn rim_moments(r: f64, eta: f64, eta_rim: f64) -> Option<[f64; 3]> {
 /// `2√(2R)·η^{3/2+p}·Σ_j c_j (η/2R)^j B(3/2 + j, p + 1)`, `c_j = (−1)ʲ binom(½, j)`. Every
 /// term has the sign of the first after it, and the ratio of terms is below `η/2R ≤ ¼`, so
 /// the sum keeps its digits; 40 terms reach round-off.
+#[inline(always)]
 fn end_moments(r: f64, eta: f64) -> [f64; 3] {
-    let t = eta / (2.0 * r);
+    // 1/(2R) apart from η, which arrives last: one product on its way, not a division.
+    let t = eta * (0.5 / r);
     let (mut sums, mut power) = ([0.0f64; 3], 1.0f64);
     for coefficients in &END_SERIES {
         sums[0] += coefficients[0] * power;
