@@ -238,6 +238,13 @@ fn radial_sums(
     apex: &Vector3,
     work: &mut WorkCounters,
 ) -> Option<Option<[f64; COMPONENTS]>> {
+    // Lengths here are in units of the pair's size, and a thickness is at most that: an apex
+    // more than the reach from the axes' closest points (the region is near them) is about
+    // as far from the centroid in thicknesses, declined before integrating anything (a
+    // frustum all but a cylinder, whose apex is far off).
+    if (apex - lateral::reference_point(pair)).norm() > RADIAL_REACH {
+        return None;
+    }
     let mut surface = pair.lateral_radial(apex);
     if surface.conditioning < GRAZING {
         return None;
