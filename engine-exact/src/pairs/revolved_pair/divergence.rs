@@ -2,9 +2,10 @@
 //! ([`super::lateral`]), with `a`'s caps from the polar slices; declined for grazing slivers.
 //!
 //! Where no cap can meet the intersection (each solid lies strictly between the other's cap
-//! planes) and one solid is a cylinder, one lateral surface is enough: fields along the
-//! cylinder's axis are tangent to its lateral surface, so all their flux crosses the other's
-//! ([`one_surface_sums`]). Two long cylinders crossing away from their ends are the case.
+//! planes), one lateral surface is enough ([`one_surface_sums`]): fields radial from `b`'s
+//! cone's apex, or along a cylinder's axis, are tangent to that solid's lateral surface, so
+//! all their flux crosses the other's. Two long solids crossing away from their ends are the
+//! case.
 
 use super::add_caps;
 use super::lateral;
@@ -131,16 +132,18 @@ pub(super) enum Surfaces {
 }
 
 /// The sums from one lateral surface alone, where no cap can meet the intersection (each
-/// solid lies strictly between the other's cap planes, [`caps_clear`]) and one solid is a
-/// cylinder: the fields of [`lateral`] taken along that cylinder's axis are tangent to its
-/// lateral surface, so their flux through the intersection's boundary all crosses the other
-/// solid's lateral surface. That surface's area vector is then minus the cylinder's (the
-/// boundary is closed), and its unsigned area the surface inside the other solid on its
-/// side; the cylinder's surface inside the other is left at the area vector's length (a
-/// lower bound, as the slicing takes it: it only sizes the vanishing tests). `None` where
-/// this does not apply, or declines: no cylinder, a cap in reach, a grazing sliver, or an
-/// area vector near vanishing (a symmetric crossing, whose area the whole surface sizes):
-/// both surfaces are integrated there. `Some(None)`: no volume.
+/// solid lies strictly between the other's cap planes, [`caps_clear`]): for `b` a frustum,
+/// the fields radial from its apex over `a`'s surface ([`radial_sums`]); else (or where
+/// those decline), for a cylinder among them, the fields of [`lateral`] taken along its axis
+/// over the other's surface. Either family is tangent to the one solid's lateral surface, so
+/// their flux through the intersection's boundary all crosses the other's. That surface's
+/// area vector is then minus the first's (the boundary is closed), and its unsigned area the
+/// surface inside the other solid on its side; the first's surface inside the other is left
+/// at the area vector's length (a lower bound, as the slicing takes it: it only sizes the
+/// vanishing tests). `None` where this does not apply, or declines: a cap in reach, two
+/// frusta whose apexes are out of reach, a grazing sliver, or an area vector near vanishing
+/// (a symmetric crossing, whose area the whole surface sizes): both surfaces are integrated
+/// there. `Some(None)`: no volume.
 pub(super) fn one_surface_sums(
     pair: &Pair,
     work: &mut WorkCounters,
