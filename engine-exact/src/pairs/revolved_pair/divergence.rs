@@ -8,6 +8,7 @@
 //! case.
 
 use super::add_caps;
+use super::caps_clear::caps_clear;
 use super::lateral;
 use super::slice::{self, Pair, rim_axes};
 use crate::pairs::ellipsoid_sliced::COMPONENTS;
@@ -270,29 +271,4 @@ fn radial_sums(
     Some(Some([
         volume, moment.z, moment.x, moment.y, s_a.x, s_a.y, s_a.z, on[7], projected,
     ]))
-}
-
-/// Whether each solid lies strictly between the other's cap planes (by 1e-9 of the longer
-/// solid): then no cap meets the other solid, and the intersection's boundary is lateral
-/// surface only. A frustum is the hull of its rims, so its extent along a direction is its
-/// rims' (a rim of radius `r` about an axis `â` spans `r·|d × â|` either side of its
-/// centre's height along `d`).
-fn caps_clear(pair: &Pair) -> bool {
-    let (a, b) = (&pair.a, &pair.b);
-    let margin = 1e-9 * a.len.max(b.len);
-    let within = |(lo, hi): (f64, f64), len: f64| lo > margin && hi < len - margin;
-    let extent = |q: &super::quadric::Quadric, d: &Vector3, from: &Vector3| {
-        let spread = d.cross(&q.axis).norm();
-        let mut range = (f64::INFINITY, f64::NEG_INFINITY);
-        for (t, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
-            let centre = d.dot(&(q.origin + q.axis * t - from));
-            range = (
-                range.0.min(centre - r * spread),
-                range.1.max(centre + r * spread),
-            );
-        }
-        range
-    };
-    within(extent(b, &Vector3::z(), &Vector3::zeros()), a.len)
-        && within(extent(a, &b.axis, &b.origin), b.len)
 }

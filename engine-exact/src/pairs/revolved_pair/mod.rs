@@ -88,6 +88,7 @@
 //!   identical solids) the opposite of `a`'s nearest face normal; area a quarter of the
 //!   intersection's surface.
 
+mod caps_clear;
 mod divergence;
 #[cfg(test)]
 mod divergence_tests;

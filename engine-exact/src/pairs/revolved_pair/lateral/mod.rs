@@ -477,9 +477,12 @@ impl Pair {
     }
 }
 
-/// The midpoint of the closest points of the two axes' segments (`a`'s from the origin along
-/// `z`), the fields' reference point: inside or near the intersection, so that the fluxes do
-/// not cancel far above the volume.
+/// The fields' reference point: on the segment between the closest points of the two axes'
+/// segments (`a`'s from the origin along `z`), the middle of the part of that line within
+/// both solids' radii there (`u ∈ [d − r_b, r_a]` from `a`'s point, `d` the points'
+/// distance): inside or near the intersection, so that the fluxes do not cancel far above
+/// the volume (the points' midpoint lies a radius' difference away from a shallow crossing
+/// of unequal radii, which then took a second pass about the centroid).
 pub(crate) fn reference_point(pair: &Pair) -> Vector3 {
     let (a, b) = (&pair.a, &pair.b);
     let (d1, d2) = (Vector3::z() * a.len, b.axis * b.len);
@@ -500,5 +503,16 @@ pub(crate) fn reference_point(pair: &Pair) -> Vector3 {
         t = 1.0;
         s = ((bb - c) / aa).clamp(0.0, 1.0);
     }
-    0.5 * (d1 * s + b.origin + d2 * t)
+    let (on_a, on_b) = (d1 * s, b.origin + d2 * t);
+    let (r_a, r_b) = (
+        (a.r0 + a.slope * a.len * s).max(0.0),
+        (b.r0 + b.slope * b.len * t).max(0.0),
+    );
+    let gap = on_b - on_a;
+    let d = gap.norm();
+    if d > 0.0 && (d - r_b + r_a).is_finite() {
+        on_a + gap * (0.5 * (d - r_b + r_a) / d)
+    } else {
+        0.5 * (on_a + on_b)
+    }
 }
