@@ -91,18 +91,7 @@ mod tests {
         let mut rng = Rng(23);
         let (mut clear, mut beyond_ball) = (0, 0);
         for _ in 0..6000 {
-            let (r0, r1, len) = (
-                rng.uniform(0.0, 1.0),
-                rng.uniform(0.0, 1.0),
-                rng.uniform(0.2, 6.0),
-            );
-            let q = Quadric {
-                origin: Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0.0),
-                axis: rng.unit(),
-                r0,
-                slope: (r1 - r0) / len,
-                len,
-            };
+            let q = Quadric::random(&mut rng);
             let centre = Vector3::new(
                 rng.uniform(-3.0, 3.0),
                 rng.uniform(-3.0, 3.0),
@@ -118,10 +107,7 @@ mod tests {
                 for k in 0..200 {
                     let (rho, psi) = (r * f64::from(i) / 40.0, 2.0 * PI * f64::from(k) / 200.0);
                     let p = centre + rho * (psi.cos() * e1 + psi.sin() * e2);
-                    let height = q.height(&p);
-                    let radius = q.r0 + q.slope * height;
-                    let inside = (0.0..=q.len).contains(&height) && q.across(&p).norm() <= radius;
-                    assert!(!inside, "{q:?} {centre:?} {normal:?} {r}: {p:?}");
+                    assert!(!q.holds(&p), "{q:?} {centre:?} {normal:?} {r}: {p:?}");
                 }
             }
             let widest = q.r0.max(q.r0 + q.slope * q.len);

@@ -54,6 +54,31 @@ impl Quadric {
         (rho - r) * (rho + r)
     }
 
+    /// A random frustum, cone or cylinder (radii in `[0, 1)`, length in `[0.2, 6)`, origin
+    /// near the axis `z`, any axis): the clearance tests' solids.
+    #[cfg(test)]
+    pub fn random(rng: &mut crate::test_rng::Rng) -> Self {
+        let (r0, r1, len) = (
+            rng.uniform(0.0, 1.0),
+            rng.uniform(0.0, 1.0),
+            rng.uniform(0.2, 6.0),
+        );
+        Self {
+            origin: Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0.0),
+            axis: rng.unit(),
+            r0,
+            slope: (r1 - r0) / len,
+            len,
+        }
+    }
+
+    /// Whether `x` is in the solid (between the caps, within the radius at its height): the
+    /// clearance tests' brute force.
+    #[cfg(test)]
+    pub fn holds(&self, x: &Vector3) -> bool {
+        (0.0..=self.len).contains(&self.height(x)) && self.across(x).norm() <= self.radius_at(x)
+    }
+
     /// `∇Q(x)/2 = P(x − o) − k r(x) w`.
     pub fn half_gradient(&self, x: &Vector3) -> Vector3 {
         self.across(x) - self.axis * (self.slope * self.radius_at(x))

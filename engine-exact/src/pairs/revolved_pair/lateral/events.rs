@@ -152,18 +152,7 @@ mod tests {
         let mut rng = Rng(11);
         let (mut clear, mut beyond_ball) = (0, 0);
         for _ in 0..4000 {
-            let (r0, r1, len) = (
-                rng.uniform(0.0, 1.0),
-                rng.uniform(0.0, 1.0),
-                rng.uniform(0.2, 6.0),
-            );
-            let q = Quadric {
-                origin: Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0.0),
-                axis: rng.unit(),
-                r0,
-                slope: (r1 - r0) / len,
-                len,
-            };
+            let q = Quadric::random(&mut rng);
             let (centre, normal, r) = (
                 Vector3::new(
                     rng.uniform(-4.0, 4.0),
@@ -183,10 +172,7 @@ mod tests {
             for k in 0..4000 {
                 let psi = 2.0 * PI * k as f64 / 4000.0;
                 let p = centre + r * (psi.cos() * e1 + psi.sin() * e2);
-                let height = q.height(&p);
-                let radius = q.r0 + q.slope * height;
-                let inside = (0.0..=q.len).contains(&height) && q.across(&p).norm() <= radius;
-                assert!(!inside, "{q:?} {centre:?} {normal:?} {r}: {p:?}");
+                assert!(!q.holds(&p), "{q:?} {centre:?} {normal:?} {r}: {p:?}");
                 inside_ball |= (p - ball_centre).norm() <= ball_radius;
             }
             beyond_ball += usize::from(inside_ball);
