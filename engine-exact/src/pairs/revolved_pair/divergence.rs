@@ -1,11 +1,10 @@
 //! The frustum pair's moments by the divergence theorem over the two lateral surfaces
 //! ([`super::lateral`]), with `a`'s caps from the polar slices; declined for grazing slivers.
 //!
-//! Where no cap can meet the intersection (each solid lies strictly between the other's cap
-//! planes), one lateral surface is enough ([`one_surface_sums`]): fields radial from `b`'s
-//! cone's apex, or along a cylinder's axis, are tangent to that solid's lateral surface, so
-//! all their flux crosses the other's. Two long solids crossing away from their ends are the
-//! case.
+//! Where no cap can meet the intersection (`caps_clear`), one lateral surface is enough
+//! ([`one_surface_sums`]): fields radial from `b`'s cone's apex, or along a cylinder's axis,
+//! are tangent to that solid's lateral surface, so all their flux crosses the other's. Two
+//! long solids crossing away from their ends are the case.
 
 use super::add_caps;
 use super::caps_clear::caps_clear;
@@ -132,8 +131,8 @@ pub(super) enum Surfaces {
     Both,
 }
 
-/// The sums from one lateral surface alone, where no cap can meet the intersection (each
-/// solid lies strictly between the other's cap planes, [`caps_clear`]): for `b` a frustum,
+/// The sums from one lateral surface alone, where no cap can meet the intersection
+/// ([`caps_clear`]): for `b` a frustum,
 /// the fields radial from its apex over `a`'s surface ([`radial_sums`]); else (or where
 /// those decline), for a cylinder among them, the fields of [`lateral`] taken along its axis
 /// over the other's surface. Either family is tangent to the one solid's lateral surface, so

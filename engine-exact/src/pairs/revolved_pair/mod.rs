@@ -16,11 +16,12 @@
 //! integral runs on the 41-node Kronrod pair: the pieces between the events are analytic, and
 //! the wider rule takes most of them whole where the 21-node one halves them twice.
 //!
-//! Where each solid lies strictly between the other's cap planes, no cap can meet the
-//! intersection, and one lateral surface is enough ([`divergence`]): fields along a
-//! cylinder's axis, or radial from a cone's apex, are tangent to that solid's lateral
-//! surface, so all their flux crosses the other's (half the integrals: two long cylinders
-//! crossing away from their ends, a cylinder through a cone's side).
+//! Where no cap can meet the intersection (the other solid wholly on one side of each cap's
+//! plane, or the cap's disc outside its widest cylinder), one lateral surface is enough
+//! ([`divergence`]): fields along a cylinder's axis, or radial from a cone's apex, are
+//! tangent to that solid's lateral surface, so all their flux crosses the other's (half the
+//! integrals: two long cylinders crossing away from their ends, a cylinder through a cone's
+//! side).
 //!
 //! Grazing slivers (every generator meeting the other solid within 1e-5 of tangent to its
 //! quadric, on both surfaces: their interval lengths have lost their digits) are declined
