@@ -23,7 +23,7 @@
 //! per-region sums) live in a thread-local scratch that grows to the largest mesh seen and is
 //! then reused: no allocation once warm.
 
-use super::convex_parts::{ConvexPart, convex_parts};
+use super::mesh_parts::{MeshPart, mesh_parts};
 use crate::kernel::PairContact;
 use contact_core::geometry::TriangleMesh;
 use contact_core::geometry::{closest_point_on_triangle, line_triangle};
@@ -52,9 +52,9 @@ pub struct PreparedMesh {
     /// Per triangle, its unit normal (zero for a degenerate one), so a line that crosses the
     /// triangle's plane outside its ball is not intersected with it ([`exit_along`]).
     pub(crate) normals: Vec<Vector3>,
-    /// The components, when each is a convex solid (see `convex_parts`); empty otherwise and
-    /// for a mesh turned inside out.
-    pub(crate) convex_parts: Vec<ConvexPart>,
+    /// The components, when they are apart and small enough (see `mesh_parts`); empty
+    /// otherwise and for a mesh turned inside out.
+    pub(crate) parts: Vec<MeshPart>,
 }
 
 impl PreparedMesh {
@@ -103,7 +103,7 @@ impl PreparedMesh {
                     .unwrap_or_default()
             })
             .collect();
-        let convex_parts = convex_parts(&vertices, &triangles, &neighbours);
+        let parts = mesh_parts(&vertices, &triangles, &neighbours);
         Some(Self {
             vertices,
             triangles,
@@ -113,7 +113,7 @@ impl PreparedMesh {
             inverted: false,
             balls,
             normals,
-            convex_parts,
+            parts,
         })
     }
 
@@ -133,10 +133,10 @@ impl PreparedMesh {
             inverted: !self.inverted,
             balls: self.balls.clone(),
             normals: self.normals.iter().map(|n| -n).collect(),
-            convex_parts: Vec::new(),
+            parts: Vec::new(),
         };
         if !out.inverted {
-            out.convex_parts = convex_parts(&out.vertices, &out.triangles, &out.neighbours);
+            out.parts = mesh_parts(&out.vertices, &out.triangles, &out.neighbours);
         }
         out
     }

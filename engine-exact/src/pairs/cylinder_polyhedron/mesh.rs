@@ -1,12 +1,22 @@
-//! A cylinder against a closed mesh whose components are all convex solids (see
-//! `convex_parts`): each component met is one convex polyhedron of the closed form, one
-//! contact each, the points and the containment normal as the mesh's sliced regions take
-//! them (`mesh_revolved`).
+//! A cylinder against a closed mesh of small components apart from one another (see
+//! `mesh_parts`): each component met is one polyhedron of the closed form, the points and
+//! the containment normal as the mesh's sliced regions take them (`mesh_revolved`).
+//!
+//! A convex component meets the cylinder in one convex region: one contact. One that is not
+//! convex takes its caps from its section ([`super::Caps::Section`]) and may meet the
+//! cylinder in several regions. Each region's boundary holds a piece of the component's
+//! surface (the cylinder lies convex, so no region has a cavity; a boundary of the
+//! cylinder's surface alone is all of it, inside the solid, with no face pieces at all), and
+//! the pieces of triangles sharing an edge that runs into the cylinder's interior lie on one
+//! boundary. So when those pieces are one edge-connected set the intersection is one region,
+//! one contact; otherwise (regions apart, or one joined only across the cylinder's surface)
+//! the mesh is sliced, which labels its regions.
 
-use super::{FACE_CORNERS, Face, moments};
+use super::links::{Links, join_edges};
+use super::{Caps, FACE_CORNERS, Face, moments, moments_of};
 use crate::kernel::PairContact;
 use crate::pairs::clipped::unit_for;
-use crate::pairs::convex_parts::MAX_PART_TRIANGLES;
+use crate::pairs::mesh_parts::MAX_PART_TRIANGLES;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::mesh_revolved::{fallback, on_mesh};
 use crate::pairs::sliced::SlicedMoments;
@@ -21,9 +31,10 @@ const FLATS: usize = MAX_PART_TRIANGLES + 2;
 /// Rim arcs: a few per triangle at most (a triangle's piece is bounded by three edges).
 const ARCS: usize = 4 * MAX_PART_TRIANGLES;
 
-/// The contacts of `cylinder` at `pose_a` with the convex parts of `mesh` at `pose_b`, handed
-/// to `emit`; false (and nothing emitted) when the mesh has no convex parts or one needs the
-/// slicing (a face within 1e-3 of parallel to the axis), which the caller then runs.
+/// The contacts of `cylinder` at `pose_a` with the parts of `mesh` at `pose_b`, handed to
+/// `emit`; false (and nothing emitted) when the mesh has no parts or one needs the slicing (a
+/// face within 1e-3 of parallel to the axis, a cap's section not clear-cut, a component met
+/// in pieces not shown to be one region), which the caller then runs.
 pub(crate) fn mesh_contacts(
     cylinder: &Cylinder,
     pose_a: &Isometry3,
@@ -32,7 +43,7 @@ pub(crate) fn mesh_contacts(
     work: &mut WorkCounters,
     emit: &mut dyn FnMut(PairContact),
 ) -> bool {
-    if mesh.inverted || mesh.convex_parts.is_empty() {
+    if mesh.inverted || mesh.parts.is_empty() {
         return false;
     }
     let (r, half) = (cylinder.radius(), 0.5 * cylinder.length());
@@ -48,28 +59,47 @@ pub(crate) fn mesh_contacts(
         corners: [Vector3::zeros(); FACE_CORNERS],
         count: 3,
     }; MAX_PART_TRIANGLES];
-    for part in &mesh.convex_parts {
+    let mut corners = [[Vector3::zeros(); 3]; MAX_PART_TRIANGLES];
+    for part in &mesh.parts {
         let c = (relative * part.centre).coords - centre_a;
         work.bounding_volume_tests += 1;
         if c.z.abs() - part.radius >= half || c.xy().norm() - part.radius >= r {
             continue;
         }
-        for (face, &t) in faces.iter_mut().zip(&part.triangles) {
-            let corner = |k: usize| {
-                let v = mesh.vertices[mesh.triangles[t as usize][k] as usize];
-                ((relative * v).coords - centre_a) / unit
-            };
+        let count = part.triangles.len();
+        for ((face, tri), &t) in faces.iter_mut().zip(&mut corners).zip(&part.triangles) {
+            *tri = mesh.triangles[t as usize]
+                .map(|v| ((relative * mesh.vertices[v as usize]).coords - centre_a) / unit);
             let normal = rotation * mesh.normals[t as usize];
-            let v0 = corner(0);
             *face = Face {
                 normal,
-                offset: normal.dot(&v0),
-                corners: std::array::from_fn(|c| if c < 3 { corner(c) } else { v0 }),
+                offset: normal.dot(&tri[0]),
+                corners: std::array::from_fn(|c| tri[c.min(2)]),
                 count: 3,
             };
         }
-        work.primitive_tests += part.triangles.len() as u64;
-        match moments::<FLATS, ARCS>(r / unit, half / unit, &faces[..part.triangles.len()]) {
+        work.primitive_tests += count as u64;
+        let (r_w, h_w) = (r / unit, half / unit);
+        let moments = if part.convex {
+            moments::<FLATS, ARCS>(r_w, h_w, &faces[..count])
+        } else {
+            let mut links = Links::new();
+            join_edges(&mut links, part, &corners[..count], r_w, h_w);
+            let m = moments_of::<FLATS, ARCS>(
+                r_w,
+                h_w,
+                &faces[..count],
+                Caps::Section(&corners[..count]),
+                Some(&mut links),
+            );
+            if let Some(Some(_)) = m {
+                if !links.one() {
+                    return false;
+                }
+            }
+            m
+        };
+        match moments {
             None => return false,
             Some(None) => {}
             Some(Some(m)) if found_count < found.len() => {

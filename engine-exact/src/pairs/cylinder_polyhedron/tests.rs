@@ -99,8 +99,7 @@ fn a_nearly_parallel_face_is_sliced() {
 }
 
 /// A cylinder against a mesh of two boxes (two convex parts) in closed form against the
-/// slicing of the same mesh (its parts forgotten), region by region, over random poses; and
-/// a mesh whose parts are not all convex is sliced.
+/// slicing of the same mesh (its parts forgotten), region by region, over random poses.
 #[test]
 fn convex_mesh_parts_agree_with_the_slicing() {
     use crate::pairs::mesh_plane::PreparedMesh;
@@ -112,9 +111,9 @@ fn convex_mesh_parts_agree_with_the_slicing() {
         (Point3::new(0.8, 0.1, -0.2), Vector3::new(0.3, 0.5, 0.7)),
     ];
     let convex = PreparedMesh::new(&crate::pairs::mesh_box::boxes_surface(&boxes)).unwrap();
-    assert_eq!(convex.convex_parts.len(), 2);
+    assert_eq!(convex.parts.len(), 2);
     let mut sliced = convex.clone();
-    sliced.convex_parts.clear();
+    sliced.parts.clear();
     let mut rng = Rng(11);
     let (mut worst, mut compared) = ([0.0f64; 4], 0);
     for _ in 0..300 {

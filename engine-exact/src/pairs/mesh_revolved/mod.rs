@@ -1,8 +1,9 @@
 //! A cylinder, a frustum (cone) or a ring torus against a closed triangle mesh (taken as
 //! exact): the intersection's moments by slicing perpendicular to the solid's axis, one
-//! contact per connected region. A cylinder against a mesh whose components are all convex
-//! (and apart) takes each component in closed form instead
-//! ([`super::cylinder_polyhedron`]), unless a face is within 1e-3 of parallel to its axis.
+//! contact per connected region. A cylinder against a mesh whose components are apart and
+//! small takes each component in closed form instead ([`super::cylinder_polyhedron`]),
+//! unless a face is within 1e-3 of parallel to its axis, a cap's section is not clear-cut, or
+//! a component's pieces are not shown to be one region.
 //!
 //! ## The slices
 //! In the solid's frame (axis `z`, lengths divided by a power of two near its size) the plane
@@ -275,7 +276,7 @@ pub(crate) fn contacts(
     work: &mut WorkCounters,
     emit: &mut dyn FnMut(PairContact),
 ) {
-    // A cylinder against convex parts: each in closed form.
+    // A cylinder against a mesh's parts: each in closed form where it can.
     if let Solid::Cylinder(c) = solid {
         if super::cylinder_polyhedron::mesh::mesh_contacts(c, pose_a, mesh, pose_b, work, emit) {
             return;

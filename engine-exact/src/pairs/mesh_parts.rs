@@ -1,38 +1,44 @@
-//! A closed mesh's connected components that are convex solids, found once when the mesh is
-//! prepared, so the pairs with a closed form against a convex polyhedron (the cylinder's)
-//! can take each as one.
+//! A closed mesh's connected components, found once when the mesh is prepared, so the pairs
+//! with a closed form against a polyhedron (the cylinder's) can take each as one solid.
 //!
 //! A component is convex when every edge is convex: the vertex across it of the neighbouring
 //! triangle lies on or behind the triangle's plane (within 1e-12 of the component's size). A
 //! closed, connected, embedded surface that is locally convex at every edge bounds a convex
-//! solid, and its solid meets another convex solid in one convex region: one contact. The
-//! parts are only used when their bounding boxes are pairwise apart (two parts touching would
-//! make one region of the mesh's solid, two contacts of the parts), and when each has at most
-//! [`MAX_PART_TRIANGLES`] triangles (the closed forms' fixed capacity).
+//! solid, and its solid meets another convex solid in one convex region: one contact. A
+//! component that is not convex may meet it in several regions, which the closed form tells
+//! apart or hands to the slicing. The parts are only used when their bounding boxes are
+//! pairwise apart (two parts touching would make one region of the mesh's solid, two contacts
+//! of the parts), and when each has at most [`MAX_PART_TRIANGLES`] triangles (the closed
+//! forms' fixed capacity).
 
 use contact_core::Point3;
 
-/// Most triangles a convex part may have.
+/// Most triangles a part may have.
 pub(crate) const MAX_PART_TRIANGLES: usize = 48;
 
-/// One convex component of a mesh.
+/// One component of a mesh.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct ConvexPart {
+pub(crate) struct MeshPart {
     /// Its triangles' indices.
     pub triangles: Vec<u32>,
+    /// `neighbours[k][e]`: the position in [`Self::triangles`] of the triangle across edge
+    /// `e` (vertices `e`, `e + 1`) of the part's `k`-th triangle.
+    pub neighbours: Vec<[u8; 3]>,
     /// A ball holding it: centre and radius (mesh frame).
     pub centre: Point3,
     /// The ball's radius.
     pub radius: f64,
+    /// Whether it bounds a convex solid.
+    pub convex: bool,
 }
 
-/// The mesh's convex parts, or none when a component is not convex, is too large, or two
-/// components' bounding boxes meet.
-pub(crate) fn convex_parts(
+/// The mesh's components, or none when one is too large or two components' bounding boxes
+/// meet.
+pub(crate) fn mesh_parts(
     vertices: &[Point3],
     triangles: &[[u32; 3]],
     neighbours: &[[u32; 3]],
-) -> Vec<ConvexPart> {
+) -> Vec<MeshPart> {
     let mut component = vec![u32::MAX; triangles.len()];
     let mut parts: Vec<(Vec<u32>, Point3, Point3)> = Vec::new();
     for seed in 0..triangles.len() {
@@ -68,26 +74,6 @@ pub(crate) fn convex_parts(
         }
         parts.push((members, lo, hi));
     }
-    for (members, lo, hi) in &parts {
-        let size = (hi - lo).norm();
-        for &t in members {
-            let tri = triangles[t as usize];
-            let [a, b, c] = tri.map(|v| vertices[v as usize]);
-            let Some(normal) = (b - a).cross(&(c - a)).try_normalize(0.0) else {
-                return Vec::new();
-            };
-            for &n in &neighbours[t as usize] {
-                let across = triangles[n as usize]
-                    .iter()
-                    .find(|v| !tri.contains(v))
-                    .map(|&v| vertices[v as usize]);
-                match across {
-                    Some(p) if normal.dot(&(p - a)) <= 1e-12 * size => {}
-                    _ => return Vec::new(),
-                }
-            }
-        }
-    }
     for i in 0..parts.len() {
         for j in 0..i {
             let ((_, lo_i, hi_i), (_, lo_j, hi_j)) = (&parts[i], &parts[j]);
@@ -99,12 +85,48 @@ pub(crate) fn convex_parts(
     }
     parts
         .into_iter()
-        .map(|(triangles, lo, hi)| ConvexPart {
-            triangles,
-            centre: nalgebra::center(&lo, &hi),
-            radius: 0.5 * (hi - lo).norm(),
+        .map(|(members, lo, hi)| {
+            let convex = is_convex(vertices, triangles, neighbours, &members, (hi - lo).norm());
+            // Positions within the part (it has at most MAX_PART_TRIANGLES < 256 triangles).
+            let position = |t: u32| members.iter().position(|&m| m == t).unwrap_or(0) as u8;
+            let neighbours = members
+                .iter()
+                .map(|&t| neighbours[t as usize].map(position))
+                .collect();
+            MeshPart {
+                triangles: members,
+                neighbours,
+                centre: nalgebra::center(&lo, &hi),
+                radius: 0.5 * (hi - lo).norm(),
+                convex,
+            }
         })
         .collect()
+}
+
+/// Whether the component `members` (of size `size`) is convex at every edge: the vertex across
+/// each edge on or behind the triangle's plane. A triangle without a normal is not.
+fn is_convex(
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    neighbours: &[[u32; 3]],
+    members: &[u32],
+    size: f64,
+) -> bool {
+    members.iter().all(|&t| {
+        let tri = triangles[t as usize];
+        let [a, b, c] = tri.map(|v| vertices[v as usize]);
+        let Some(normal) = (b - a).cross(&(c - a)).try_normalize(0.0) else {
+            return false;
+        };
+        neighbours[t as usize].iter().all(|&n| {
+            let across = triangles[n as usize]
+                .iter()
+                .find(|v| !tri.contains(v))
+                .map(|&v| vertices[v as usize]);
+            matches!(across, Some(p) if normal.dot(&(p - a)) <= 1e-12 * size)
+        })
+    })
 }
 
 #[cfg(test)]
@@ -117,9 +139,9 @@ mod tests {
         crate::pairs::mesh_box::boxes_surface(boxes)
     }
 
-    fn parts_of(mesh: &TriangleMesh) -> Vec<ConvexPart> {
+    fn parts_of(mesh: &TriangleMesh) -> Vec<MeshPart> {
         let prepared = crate::pairs::mesh_plane::PreparedMesh::new(mesh).unwrap();
-        convex_parts(
+        mesh_parts(
             &prepared.vertices,
             &prepared.triangles,
             &prepared.neighbours,
@@ -151,7 +173,27 @@ mod tests {
         let mut vertices = mesh.vertices().to_vec();
         vertices[7] = Point3::new(0.3, 0.3, 0.3);
         let dented = TriangleMesh::new(vertices, mesh.triangles().to_vec()).unwrap();
-        assert!(parts_of(&dented).is_empty());
-        assert_eq!(parts_of(&mesh).len(), 1);
+        let parts = parts_of(&dented);
+        assert_eq!(parts.len(), 1);
+        assert!(!parts[0].convex);
+        let whole = parts_of(&mesh);
+        assert_eq!(whole.len(), 1);
+        assert!(whole[0].convex);
+    }
+
+    /// The part's neighbours are the mesh's, by position in the part.
+    #[test]
+    fn part_neighbours_are_the_meshs() {
+        let h = Vector3::repeat(0.5);
+        let mesh = boxes(&[(Point3::origin(), h), (Point3::new(2.0, 0.0, 0.0), h)]);
+        let prepared = crate::pairs::mesh_plane::PreparedMesh::new(&mesh).unwrap();
+        for part in parts_of(&mesh) {
+            for (k, &t) in part.triangles.iter().enumerate() {
+                for e in 0..3 {
+                    let across = part.triangles[part.neighbours[k][e] as usize];
+                    assert_eq!(across, prepared.neighbours[t as usize][e]);
+                }
+            }
+        }
     }
 }
