@@ -5,12 +5,11 @@
 //! A convex component meets the cylinder in one convex region: one contact. One that is not
 //! convex takes its caps from its section ([`super::Caps::Section`]) and may meet the
 //! cylinder in several regions. Each region's boundary holds a piece of the component's
-//! surface (the cylinder lies convex, so no region has a cavity; a boundary of the
-//! cylinder's surface alone is all of it, inside the solid, with no face pieces at all), and
-//! the pieces of triangles sharing an edge that runs into the cylinder's interior lie on one
-//! boundary. So when those pieces are one edge-connected set the intersection is one region,
-//! one contact; otherwise (regions apart, or one joined only across the cylinder's surface)
-//! the mesh is sliced, which labels its regions.
+//! surface (the cylinder is convex, so no region has a cavity; a boundary of the cylinder's
+//! surface alone is all of it, inside the solid, with no face pieces at all). So when the
+//! pieces are shown to be joined (across edges into the cylinder, the caps and the side:
+//! [`super::links`]) the intersection is one region, one contact; otherwise the mesh is
+//! sliced, which labels its regions.
 
 use super::links::{Links, join_edges};
 use super::{Caps, FACE_CORNERS, Face, moments, moments_of};

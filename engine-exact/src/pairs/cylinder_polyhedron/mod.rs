@@ -33,11 +33,11 @@
 //!
 //! Then `V = ⅓ ∮ (x − o)·n dA` and `∫(x − o) dV = ¼ ∮ (x − o)((x − o)·n) dA` (from
 //! `∇·(xᵢ x) = 4xᵢ`), about `o` the centroid of the flat pieces (a point of a convex
-//! intersection, near one that is not): `(x − o)·n` is `r − o_x cos φ − o_y sin φ` on the side and a constant on
-//! each flat piece, every term as small as the region, so a shallow region keeps its
-//! precision (about the cylinder's centre, terms of the pair's size cancel to the region's:
-//! measured 1e-6 relative spread of a depth of 4e-4 of the size under rotations about the
-//! axis, against 2e-12 about `o`). The cylinder's surface inside `P` (area vector and area,
+//! intersection, near one that is not): `(x − o)·n` is `r − o_x cos φ − o_y sin φ` on the
+//! side and a constant on each flat piece, every term as small as the region, so a shallow
+//! region keeps its precision (about the cylinder's centre, terms of the pair's size cancel
+//! to the region's: measured 1e-6 relative spread of a depth of 4e-4 of the size under
+//! rotations about the axis, against 2e-12 about `o`). The cylinder's surface inside `P` (area vector and area,
 //! for the normal) is the side's and the caps'; `P`'s inside `C` is the faces'.
 //!
 //! ## Degenerate branches
