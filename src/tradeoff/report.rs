@@ -1,7 +1,7 @@
 //! Writing the trade: a text table, CSV, JSON and an error-against-time plot.
 
 use super::measure::{ReferenceSource, TradeRecord};
-use crate::output::svg_plot::{Plot, Scale, Series};
+use crate::svg_plot::{Plot, Scale, Series};
 use std::fmt::Write;
 
 fn opt(v: Option<f64>) -> String {

@@ -1,0 +1,259 @@
+//! Run results streamed to a directory as they are computed:
+//!
+//! - `parts.csv`: per output step and moving part, the CM position, orientation quaternion,
+//!   velocity and angular velocity (world frame);
+//! - `contacts.csv`: per output step and contact, the points on I and J, the normal (J into I),
+//!   penetration and its rate, normal force, friction force and torque, area;
+//! - `frames.jsonl`: the same, one JSON object per output step (JSON lines, so a run cut short
+//!   leaves every completed line readable);
+//! - at the end (also after a failure): `contact_force.svg` and `penetration.svg` against time,
+//!   one curve per CONTACT, and `summary.json`.
+//!
+//! The streams are flushed at most every [`FLUSH_INTERVAL`] of wall time (three write system
+//! calls per output step cost more than the dynamics of a small model) and always by
+//! [`ResultWriter::finish`], which a run calls whether it succeeded or failed (a writer dropped
+//! without it flushes too): what was computed is on disk when the run stops, and a run being
+//! watched sees its files grow while it runs. Frames are serialized straight from the states,
+//! without building JSON values.
+
+use crate::svg_plot::{Plot, Scale, Series};
+use contact_solver::mbs::PartId;
+use contact_solver::simulate::Frame;
+use serde::Serialize;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// The longest wall time a computed output step waits in memory before it is written out.
+pub const FLUSH_INTERVAL: Duration = Duration::from_millis(50);
+
+/// One part in a `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct PartLine {
+    part: u32,
+    position: [f64; 3],
+    quaternion: [f64; 4],
+    velocity: [f64; 3],
+    angular_velocity: [f64; 3],
+}
+
+/// One contact in a `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct ContactLine<'a> {
+    contact: &'a str,
+    index: usize,
+    point_i: [f64; 3],
+    point_j: [f64; 3],
+    normal: [f64; 3],
+    penetration: f64,
+    penetration_rate: f64,
+    normal_force: f64,
+    friction_force: [f64; 3],
+    friction_torque: f64,
+    area: f64,
+}
+
+/// One `frames.jsonl` line.
+#[derive(Debug, Serialize)]
+struct FrameLine<'a> {
+    time: f64,
+    parts: &'a [PartLine],
+    contacts: &'a [ContactLine<'a>],
+}
+
+/// Writes a run's frames into a directory.
+#[derive(Debug)]
+pub struct ResultWriter {
+    dir: PathBuf,
+    parts_csv: BufWriter<File>,
+    contacts_csv: BufWriter<File>,
+    frames: BufWriter<File>,
+    part_ids: Vec<(PartId, u32)>,
+    contact_names: Vec<String>,
+    force_series: Vec<Vec<(f64, f64)>>,
+    depth_series: Vec<Vec<(f64, f64)>>,
+    parts_line: Vec<PartLine>,
+    last_flush: Instant,
+}
+
+impl ResultWriter {
+    /// Creates `dir` (and parents) and the streamed files, with their headers.
+    pub fn create(
+        dir: &Path,
+        part_ids: Vec<(PartId, u32)>,
+        contact_names: Vec<String>,
+    ) -> std::io::Result<Self> {
+        std::fs::create_dir_all(dir)?;
+        let open = |name: &str| File::create(dir.join(name)).map(BufWriter::new);
+        let mut parts_csv = open("parts.csv")?;
+        writeln!(parts_csv, "time,part,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz")?;
+        let mut contacts_csv = open("contacts.csv")?;
+        writeln!(
+            contacts_csv,
+            "time,contact,index,geometry_i,geometry_j,point_i_x,point_i_y,point_i_z,point_j_x,point_j_y,point_j_z,normal_x,normal_y,normal_z,penetration,penetration_rate,normal_force,friction_x,friction_y,friction_z,friction_torque,area"
+        )?;
+        let n = contact_names.len();
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            parts_csv,
+            contacts_csv,
+            frames: open("frames.jsonl")?,
+            part_ids,
+            contact_names,
+            force_series: vec![Vec::new(); n],
+            depth_series: vec![Vec::new(); n],
+            parts_line: Vec::new(),
+            last_flush: Instant::now(),
+        })
+    }
+
+    /// The directory written to.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// Writes one frame to every stream (flushed at most every [`FLUSH_INTERVAL`]).
+    pub fn write(&mut self, frame: &Frame) -> std::io::Result<()> {
+        let t = frame.t;
+        let mut parts_json = std::mem::take(&mut self.parts_line);
+        parts_json.clear();
+        for &(id, adams) in &self.part_ids {
+            let s = &frame.parts[id.0];
+            let p = s.pose_w.translation.vector;
+            let q = s.pose_w.rotation.quaternion();
+            let (v, w) = (s.velocity_w, s.angular_velocity_w);
+            writeln!(
+                self.parts_csv,
+                "{t:?},{adams},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?}",
+                p.x, p.y, p.z, q.w, q.i, q.j, q.k, v.x, v.y, v.z, w.x, w.y, w.z
+            )?;
+            parts_json.push(PartLine {
+                part: adams,
+                position: [p.x, p.y, p.z],
+                quaternion: [q.w, q.i, q.j, q.k],
+                velocity: [v.x, v.y, v.z],
+                angular_velocity: [w.x, w.y, w.z],
+            });
+        }
+        let mut contacts_json = Vec::new();
+        for (k, reports) in frame.contacts.iter().enumerate() {
+            let name = &self.contact_names[k];
+            let (mut total, mut deepest) = (0.0, 0.0_f64);
+            for (index, r) in reports.iter().enumerate() {
+                let c = &r.contact;
+                let (pi, pj, n, f) = (c.point_i_w, c.point_j_w, c.normal_w, r.friction_force_w);
+                writeln!(
+                    self.contacts_csv,
+                    "{t:?},{name},{index},{},{},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?},{:?}",
+                    c.geometry_i,
+                    c.geometry_j,
+                    pi.x,
+                    pi.y,
+                    pi.z,
+                    pj.x,
+                    pj.y,
+                    pj.z,
+                    n.x,
+                    n.y,
+                    n.z,
+                    c.penetration,
+                    r.penetration_rate,
+                    r.normal_force,
+                    f.x,
+                    f.y,
+                    f.z,
+                    r.friction_torque,
+                    c.area
+                )?;
+                contacts_json.push(ContactLine {
+                    contact: name,
+                    index,
+                    point_i: [pi.x, pi.y, pi.z],
+                    point_j: [pj.x, pj.y, pj.z],
+                    normal: [n.x, n.y, n.z],
+                    penetration: c.penetration,
+                    penetration_rate: r.penetration_rate,
+                    normal_force: r.normal_force,
+                    friction_force: [f.x, f.y, f.z],
+                    friction_torque: r.friction_torque,
+                    area: c.area,
+                });
+                total += r.normal_force;
+                deepest = deepest.max(c.penetration);
+            }
+            self.force_series[k].push((t, total));
+            self.depth_series[k].push((t, deepest));
+        }
+        serde_json::to_writer(
+            &mut self.frames,
+            &FrameLine {
+                time: t,
+                parts: &parts_json,
+                contacts: &contacts_json,
+            },
+        )?;
+        self.parts_line = parts_json;
+        writeln!(self.frames)?;
+        if self.last_flush.elapsed() >= FLUSH_INTERVAL {
+            self.flush()?;
+        }
+        Ok(())
+    }
+
+    /// Writes out everything computed so far.
+    pub fn flush(&mut self) -> std::io::Result<()> {
+        self.last_flush = Instant::now();
+        self.parts_csv.flush()?;
+        self.contacts_csv.flush()?;
+        self.frames.flush()
+    }
+
+    /// Writes the plots and `summary.json` (call after the run, whether it succeeded or not).
+    pub fn finish(&mut self, summary: &serde_json::Value) -> std::io::Result<Vec<PathBuf>> {
+        self.flush()?;
+        let series = |data: &[Vec<(f64, f64)>]| -> Vec<Series> {
+            self.contact_names
+                .iter()
+                .zip(data)
+                .map(|(name, points)| Series {
+                    name: name.clone(),
+                    points: points.clone(),
+                    line: true,
+                })
+                .collect()
+        };
+        let force = Plot {
+            title: "Contact normal force".into(),
+            x_label: "time".into(),
+            y_label: "normal force (sum over the contact's regions)".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            series: series(&self.force_series),
+        };
+        let depth = Plot {
+            title: "Penetration".into(),
+            x_label: "time".into(),
+            y_label: "largest penetration".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            series: series(&self.depth_series),
+        };
+        let mut written = Vec::new();
+        for (name, text) in [
+            ("contact_force.svg", force.to_svg()),
+            ("penetration.svg", depth.to_svg()),
+        ] {
+            let path = self.dir.join(name);
+            std::fs::write(&path, text)?;
+            written.push(path);
+        }
+        let path = self.dir.join("summary.json");
+        std::fs::write(
+            &path,
+            serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?,
+        )?;
+        written.push(path);
+        Ok(written)
+    }
+}

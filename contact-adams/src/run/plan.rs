@@ -1,0 +1,529 @@
+//! The analyses a run performs, in order, from the command file's SIMULATE commands (or the
+//! `contact run` flags), with the INTEGRATOR and EQUILIBRIUM settings in force at each.
+//!
+//! - SIMULATE/DYNAMICS and SIMULATE/KINEMATICS run from the current time to END (or for
+//!   DURATION); consecutive SIMULATEs of the same analysis run as one span (a note says so).
+//! - SIMULATE/TRANSIENT runs kinematics when the model has zero degrees of freedom and dynamics
+//!   otherwise, as in Adams. The degrees of freedom are `6n − rank(Φ_v)` at the model's
+//!   configuration assembled at the TRANSIENT's start time (`n` moving parts, `Φ_v` the
+//!   constraint Jacobian of joints, JPRIMs and MOTIONs): the rank, not the count of equations,
+//!   since redundant constraints are common (a planar slider-crank built from revolute joints
+//!   has more equations than coordinates). The step records the choice ([`TransientChoice`]) so
+//!   the run summary can say which analysis ran and why.
+//! - SIMULATE/STATICS finds the equilibrium at the current time; a following analysis starts
+//!   from it (Adams: dynamics after statics starts from equilibrium, at rest).
+//! - SIMULATE/INITIAL_CONDITIONS writes the assembled initial state at the current time.
+//! - LINEAR/EIGENSOL linearizes at the state reached so far, at the current time: after a
+//!   SIMULATE/STATICS the equilibrium, after a SIMULATE/DYNAMICS its last state, first in the
+//!   file the initial state ([`contact_solver::linear`]). It ends a span of SIMULATEs.
+//! - Without SIMULATE commands: dynamics from 0 to `--end`.
+
+use crate::model::{
+    Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
+};
+use contact_solver::bdf::{Corrector, IntegratorSettings};
+use contact_solver::linear::LinearSettings;
+use contact_solver::statics::StaticsSettings;
+
+/// Why a SIMULATE/TRANSIENT ran as kinematics or as dynamics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TransientChoice {
+    /// The model's degrees of freedom where the TRANSIENT starts: 6 per moving part minus the
+    /// rank of the constraint Jacobian.
+    pub degrees_of_freedom: usize,
+}
+
+impl TransientChoice {
+    /// The analysis the TRANSIENT runs: KINEMATICS with zero degrees of freedom, else DYNAMICS.
+    pub fn analysis(&self) -> &'static str {
+        if self.degrees_of_freedom == 0 {
+            "KINEMATICS"
+        } else {
+            "DYNAMICS"
+        }
+    }
+}
+
+impl std::fmt::Display for TransientChoice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.degrees_of_freedom {
+            0 => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as KINEMATICS: the model has 0 degrees of freedom (its joints and MOTIONs fix every part)"
+            ),
+            1 => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as DYNAMICS: the model has 1 degree of freedom"
+            ),
+            dof => write!(
+                f,
+                "SIMULATE/TRANSIENT ran as DYNAMICS: the model has {dof} degrees of freedom"
+            ),
+        }
+    }
+}
+
+/// One analysis of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnalysisStep {
+    /// Transient dynamics.
+    Dynamics {
+        /// Start time.
+        start: f64,
+        /// End time.
+        end: f64,
+        /// Time between frames.
+        output_step: f64,
+        /// The integrator's settings.
+        integrator: IntegratorSettings,
+        /// Set when a SIMULATE/TRANSIENT chose dynamics.
+        transient: Option<TransientChoice>,
+    },
+    /// Kinematics of a zero-DOF model.
+    Kinematics {
+        /// Start time.
+        start: f64,
+        /// End time.
+        end: f64,
+        /// Time between frames.
+        output_step: f64,
+        /// Set when a SIMULATE/TRANSIENT chose kinematics.
+        transient: Option<TransientChoice>,
+    },
+    /// Static equilibrium at time `t`.
+    Statics {
+        /// Time.
+        t: f64,
+        /// EQUILIBRIUM (with the integrator for the quasi-dynamic method).
+        settings: StaticsSettings,
+    },
+    /// The assembled initial conditions at time `t`.
+    InitialConditions {
+        /// Time.
+        t: f64,
+    },
+    /// LINEAR/EIGENSOL: the eigenvalues at the state reached so far, at time `t`.
+    Linear {
+        /// Time.
+        t: f64,
+        /// NODAMPIN.
+        settings: LinearSettings,
+    },
+}
+
+impl AnalysisStep {
+    /// The analysis's name as in SIMULATE.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Dynamics { .. } => "DYNAMICS",
+            Self::Kinematics { .. } => "KINEMATICS",
+            Self::Statics { .. } => "STATICS",
+            Self::InitialConditions { .. } => "INITIAL_CONDITIONS",
+            Self::Linear { .. } => "LINEAR",
+        }
+    }
+
+    /// Why a SIMULATE/TRANSIENT ran as this analysis (`None` when it was asked for by name).
+    pub fn transient(&self) -> Option<TransientChoice> {
+        match self {
+            Self::Dynamics { transient, .. } | Self::Kinematics { transient, .. } => *transient,
+            Self::Statics { .. } | Self::InitialConditions { .. } | Self::Linear { .. } => None,
+        }
+    }
+}
+
+/// The flags of `contact run` that override the command file.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PlanOverrides {
+    /// `--end`: the end of the last timed analysis (or of the dynamics without a command file).
+    pub end: Option<f64>,
+    /// `--dtout`.
+    pub dtout: Option<f64>,
+    /// `--steps`.
+    pub steps: Option<u32>,
+}
+
+/// A timed span being collected from consecutive SIMULATEs.
+struct Span {
+    analysis: ModelAnalysis,
+    start: f64,
+    end: f64,
+    output: Option<OutputSteps>,
+    integrator: IntegratorSettings,
+    transient: Option<TransientChoice>,
+}
+
+/// The analyses of `model`'s command file, in order, with notes on anything interpreted.
+///
+/// `degrees_of_freedom(t)` gives the model's degrees of freedom at its configuration assembled
+/// at time `t`; it is asked only for a SIMULATE/TRANSIENT (at that command's start time).
+pub fn plan_analyses(
+    model: &Model,
+    overrides: PlanOverrides,
+    degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, String>,
+) -> Result<(Vec<AnalysisStep>, Vec<String>), String> {
+    let mut notes = Vec::new();
+    let mut integrator = convert_integrator(&model.integrator)?;
+    let mut equilibrium = model.equilibrium.clone();
+    let mut steps = Vec::new();
+    let mut span: Option<Span> = None;
+    let mut time = 0.0;
+    for (origin, command) in &model.commands {
+        match command {
+            Command::Integrator(s) => integrator = convert_integrator(s)?,
+            Command::Equilibrium(s) => equilibrium = s.clone(),
+            Command::Simulate {
+                analysis,
+                span: when,
+                output,
+            } => {
+                let mut transient = None;
+                let timed = match analysis {
+                    ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
+                    ModelAnalysis::Transient => {
+                        let choice = TransientChoice {
+                            degrees_of_freedom: degrees_of_freedom(time)
+                                .map_err(|e| format!("{origin}: SIMULATE/TRANSIENT: {e}"))?,
+                        };
+                        notes.push(format!("{origin}: {choice}"));
+                        transient = Some(choice);
+                        Some(if choice.degrees_of_freedom == 0 {
+                            ModelAnalysis::Kinematics
+                        } else {
+                            ModelAnalysis::Dynamics
+                        })
+                    }
+                    ModelAnalysis::Kinematics => Some(ModelAnalysis::Kinematics),
+                    ModelAnalysis::Statics | ModelAnalysis::InitialConditions => None,
+                };
+                let Some(timed) = timed else {
+                    if let Some(done) = span.take() {
+                        steps.push(finish(done, overrides, &mut notes, false));
+                    }
+                    steps.push(if *analysis == ModelAnalysis::Statics {
+                        AnalysisStep::Statics {
+                            t: time,
+                            settings: convert_equilibrium(&equilibrium, integrator),
+                        }
+                    } else {
+                        AnalysisStep::InitialConditions { t: time }
+                    });
+                    continue;
+                };
+                let stop = match when {
+                    Some(SimulationSpan::End(t)) => *t,
+                    Some(SimulationSpan::Duration(d)) => time + d,
+                    None => return Err(format!("{origin}: SIMULATE needs END or DURATION")),
+                };
+                match &mut span {
+                    Some(current) if current.analysis == timed => {
+                        notes.push(format!(
+                            "{origin}: consecutive SIMULATE commands run as one span to END = {stop}"
+                        ));
+                        current.end = stop;
+                        current.output = current.output.or(*output);
+                        current.transient = current.transient.or(transient);
+                    }
+                    _ => {
+                        if let Some(done) = span.take() {
+                            steps.push(finish(done, overrides, &mut notes, false));
+                        }
+                        span = Some(Span {
+                            analysis: timed,
+                            start: time,
+                            end: stop,
+                            output: *output,
+                            integrator,
+                            transient,
+                        });
+                    }
+                }
+                time = stop;
+            }
+            Command::Linear { damping } => {
+                if let Some(done) = span.take() {
+                    steps.push(finish(done, overrides, &mut notes, false));
+                }
+                steps.push(AnalysisStep::Linear {
+                    t: time,
+                    settings: LinearSettings { damping: *damping },
+                });
+            }
+            Command::Stop => break,
+            other => notes.push(format!(
+                "{origin}: {other:?} is not applied by this solver yet: it is ignored"
+            )),
+        }
+    }
+    match span.take() {
+        Some(done) => steps.push(finish(done, overrides, &mut notes, true)),
+        None if steps.is_empty() => {
+            let end = overrides
+                .end
+                .ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
+            let done = Span {
+                analysis: ModelAnalysis::Dynamics,
+                start: 0.0,
+                end,
+                output: None,
+                integrator,
+                transient: None,
+            };
+            steps.push(finish(done, overrides, &mut notes, true));
+        }
+        None => {
+            if overrides.end.is_some() {
+                notes.push(
+                    "--end is not used: the command file runs no DYNAMICS or KINEMATICS".into(),
+                );
+            }
+        }
+    }
+    Ok((steps, notes))
+}
+
+/// The step of a finished span; `last` when `--end` may override its END.
+fn finish(
+    span: Span,
+    overrides: PlanOverrides,
+    notes: &mut Vec<String>,
+    last: bool,
+) -> AnalysisStep {
+    let end = if last {
+        overrides.end.unwrap_or(span.end)
+    } else {
+        span.end
+    };
+    let duration = end - span.start;
+    let output_step = match (overrides.dtout, overrides.steps, span.output) {
+        (Some(dt), _, _) => dt,
+        (None, Some(n), _) => duration / f64::from(n.max(1)),
+        (None, None, Some(OutputSteps::Interval(dt))) => dt,
+        (None, None, Some(OutputSteps::Steps(n))) => duration / f64::from(n.max(1)),
+        (None, None, None) => {
+            notes.push("no DTOUT or STEPS: writing 100 output steps".into());
+            duration / 100.0
+        }
+    };
+    match span.analysis {
+        ModelAnalysis::Kinematics => AnalysisStep::Kinematics {
+            start: span.start,
+            end,
+            output_step,
+            transient: span.transient,
+        },
+        _ => AnalysisStep::Dynamics {
+            start: span.start,
+            end,
+            output_step,
+            integrator: span.integrator,
+            transient: span.transient,
+        },
+    }
+}
+
+/// The solver's EQUILIBRIUM settings.
+fn convert_equilibrium(s: &EquilibriumSettings, integrator: IntegratorSettings) -> StaticsSettings {
+    StaticsSettings {
+        tlimit: s.tlimit,
+        alimit: s.alimit,
+        maxit: s.maxit as usize,
+        error: s.error,
+        imbalance: s.imbalance,
+        stability: s.stability,
+        dynamic: s.dynamic,
+        integrator,
+    }
+}
+
+/// The solver's INTEGRATOR settings.
+pub fn convert_integrator(
+    s: &crate::model::IntegratorSettings,
+) -> Result<IntegratorSettings, String> {
+    let corrector = match s.corrector.as_deref() {
+        None | Some("MODIFIED") => Corrector::Modified,
+        Some("ORIGINAL") | Some("FULL") => Corrector::Full,
+        Some(other) => {
+            return Err(format!(
+                "INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)"
+            ));
+        }
+    };
+    let settings = IntegratorSettings {
+        error: s.error,
+        hmax: s.hmax,
+        hmin: s.hmin,
+        hinit: s.hinit,
+        kmax: s.kmax as usize,
+        maxit: s.maxit as usize,
+        corrector,
+    };
+    settings
+        .validate()
+        .map_err(|e| format!("INTEGRATOR: {e}"))?;
+    Ok(settings)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dataset::read_str;
+    use std::path::Path;
+
+    fn plan(acf: &str, overrides: PlanOverrides) -> (Vec<AnalysisStep>, Vec<String>) {
+        plan_with_dof(acf, overrides, None)
+    }
+
+    /// The plan of `acf`, the model having `dof` degrees of freedom (`None`: asking is an
+    /// error, the plan must not need them).
+    fn plan_with_dof(
+        acf: &str,
+        overrides: PlanOverrides,
+        dof: Option<usize>,
+    ) -> (Vec<AnalysisStep>, Vec<String>) {
+        let loaded = read_str(
+            "plan\nPART/1, GROUND\nEND\n",
+            "plan.adm",
+            Some((acf, Path::new("plan.acf"))),
+        );
+        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+        let mut asked = |_: f64| dof.ok_or_else(|| "not asked for".to_string());
+        plan_analyses(&loaded.model, overrides, &mut asked).unwrap()
+    }
+
+    #[test]
+    fn simulate_commands_become_analyses_in_order_with_the_settings_in_force() {
+        let (steps, notes) = plan(
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
+             SIMULATE/DYNAMICS, DURATION = 1, DTOUT = 0.5\nEQUILIBRIUM/ MAXIT = 7, DYNAMIC\nSIMULATE/STATICS\n\
+             SIMULATE/KINEMATICS, DURATION = 0.5, STEPS = 5\nSIMULATE/INITIAL_CONDITIONS\nSTOP\n",
+            PlanOverrides::default(),
+        );
+        assert_eq!(steps.len(), 4, "{steps:?}");
+        let AnalysisStep::Dynamics {
+            start,
+            end,
+            output_step,
+            ..
+        } = steps[0]
+        else {
+            panic!("{:?}", steps[0]);
+        };
+        assert_eq!((start, end, output_step), (0.0, 2.0, 0.1));
+        let AnalysisStep::Statics { t, settings } = steps[1] else {
+            panic!("{:?}", steps[1]);
+        };
+        assert_eq!((t, settings.maxit, settings.dynamic), (2.0, 7, true));
+        assert_eq!(
+            steps[2],
+            AnalysisStep::Kinematics {
+                start: 2.0,
+                end: 2.5,
+                output_step: 0.1,
+                transient: None,
+            }
+        );
+        assert_eq!(steps[3], AnalysisStep::InitialConditions { t: 2.5 });
+        assert!(
+            notes.iter().any(|n| n.contains("one span to END = 2")),
+            "{notes:?}"
+        );
+    }
+
+    #[test]
+    fn linear_runs_at_the_state_reached_so_far_and_ends_a_span() {
+        let (steps, _) = plan(
+            "plan.adm\nplan\nLINEAR/EIGENSOL\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
+             LIN/EIGEN, NODAMP\nSIMULATE/DYNAMICS, END = 2, DTOUT = 0.1\nSIMULATE/STATICS\nLINEAR/EIGENSOL\nSTOP\n",
+            PlanOverrides::default(),
+        );
+        let names: Vec<&str> = steps.iter().map(AnalysisStep::name).collect();
+        assert_eq!(
+            names,
+            [
+                "LINEAR", "DYNAMICS", "LINEAR", "DYNAMICS", "STATICS", "LINEAR"
+            ]
+        );
+        let undamped = LinearSettings { damping: false };
+        assert_eq!(
+            steps[0],
+            AnalysisStep::Linear {
+                t: 0.0,
+                settings: LinearSettings::default()
+            }
+        );
+        assert_eq!(
+            steps[2],
+            AnalysisStep::Linear {
+                t: 1.0,
+                settings: undamped
+            }
+        );
+        assert!(matches!(steps[5], AnalysisStep::Linear { t: 2.0, .. }));
+    }
+
+    #[test]
+    fn end_overrides_the_last_timed_analysis_and_is_noted_when_unused() {
+        let overrides = PlanOverrides {
+            end: Some(3.0),
+            ..PlanOverrides::default()
+        };
+        let (steps, _) = plan(
+            "plan.adm\nplan\nSIMULATE/STATICS\nSIMULATE/DYNAMICS, END = 1, STEPS = 10\nSTOP\n",
+            overrides,
+        );
+        let AnalysisStep::Dynamics {
+            end, output_step, ..
+        } = steps[1]
+        else {
+            panic!("{:?}", steps[1]);
+        };
+        assert_eq!((end, output_step), (3.0, 0.3));
+        let (steps, notes) = plan("plan.adm\nplan\nSIMULATE/STATICS\nSTOP\n", overrides);
+        assert_eq!(steps.len(), 1);
+        assert!(
+            notes.iter().any(|n| n.contains("--end is not used")),
+            "{notes:?}"
+        );
+    }
+
+    #[test]
+    fn transient_runs_kinematics_without_degrees_of_freedom_and_dynamics_with_them() {
+        let acf = "plan.adm\nplan\nSIMULATE/TRANSIENT, END = 1, DTOUT = 0.1\nSTOP\n";
+        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(0));
+        let choice = TransientChoice {
+            degrees_of_freedom: 0,
+        };
+        assert_eq!(
+            steps,
+            vec![AnalysisStep::Kinematics {
+                start: 0.0,
+                end: 1.0,
+                output_step: 0.1,
+                transient: Some(choice),
+            }]
+        );
+        assert!(
+            notes.iter().any(|n| n.contains("ran as KINEMATICS")),
+            "{notes:?}"
+        );
+        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(2));
+        assert_eq!(steps.len(), 1);
+        assert_eq!(steps[0].name(), "DYNAMICS");
+        assert_eq!(steps[0].transient().map(|c| c.degrees_of_freedom), Some(2));
+        assert!(
+            notes
+                .iter()
+                .any(|n| n.contains("ran as DYNAMICS: the model has 2 degrees of freedom")),
+            "{notes:?}"
+        );
+        // A DYNAMICS followed by a TRANSIENT that chooses dynamics runs as one span.
+        let (steps, _) = plan_with_dof(
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2, DTOUT = 0.1\nSTOP\n",
+            PlanOverrides::default(),
+            Some(1),
+        );
+        assert_eq!(steps.len(), 1);
+        assert!(matches!(steps[0], AnalysisStep::Dynamics { end: 2.0, .. }));
+    }
+}

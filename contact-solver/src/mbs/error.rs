@@ -1,0 +1,119 @@
+//! Errors of building a multibody system and of finding its initial conditions.
+
+use crate::dae::EvaluationError;
+use thiserror::Error;
+
+/// Why a multibody system could not be built or started.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum MbsError {
+    /// A numeric argument is out of its allowed range.
+    #[error("{element}: {argument} = {value} is out of range: must be {allowed}")]
+    InvalidArgument {
+        /// The element the argument belongs to (e.g. `PART/2`).
+        element: String,
+        /// The argument's name.
+        argument: &'static str,
+        /// The value given, at round-trip precision.
+        value: String,
+        /// The allowed range.
+        allowed: &'static str,
+    },
+    /// A part id that the builder never returned.
+    #[error("{element}: part id {id} does not exist (the model has parts 0..={last}, 0 = ground)")]
+    UnknownPart {
+        /// The element that refers to the part.
+        element: String,
+        /// The id given.
+        id: usize,
+        /// The largest valid id.
+        last: usize,
+    },
+    /// A marker id that the builder never returned.
+    #[error("{element}: marker id {id} does not exist (the model has {count} markers)")]
+    UnknownMarker {
+        /// The element that refers to the marker.
+        element: String,
+        /// The id given.
+        id: usize,
+        /// How many markers exist.
+        count: usize,
+    },
+    /// A constraint or force whose two markers sit on the same part (it would constrain nothing).
+    #[error("{element}: markers I and J are both on part {part}; they must be on different parts")]
+    SamePart {
+        /// The element.
+        element: String,
+        /// The part both markers are on.
+        part: usize,
+    },
+    /// A MOTION on a joint type or degree of freedom that cannot carry it.
+    #[error("{motion}: a {dof} motion needs a {allowed} joint, but {joint} is {kind}")]
+    MotionOnWrongJoint {
+        /// The motion.
+        motion: String,
+        /// The joint it refers to.
+        joint: String,
+        /// The joint's kind.
+        kind: &'static str,
+        /// `translational` or `rotational`.
+        dof: &'static str,
+        /// The joint kinds allowed for that degree of freedom.
+        allowed: &'static str,
+    },
+    /// A constraint id that the builder never returned.
+    #[error("{element}: constraint id {id} does not exist (the model has {count} constraints)")]
+    UnknownConstraint {
+        /// The element that refers to the constraint.
+        element: String,
+        /// The id given.
+        id: usize,
+        /// How many constraints exist.
+        count: usize,
+    },
+    /// Newton iteration on Φ(q, t) = 0 did not converge from the user's positions.
+    #[error(
+        "assembly failed after {iterations} iterations: |Φ|/L = {residual:e} on {worst} \
+         (tolerance {tolerance:e}); check that the joints can be closed from the given positions"
+    )]
+    AssemblyFailed {
+        /// Iterations made.
+        iterations: usize,
+        /// The largest constraint residual left, relative: lengths over the model's length
+        /// scale L, angles (cosines) as they are.
+        residual: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The element with the largest residual.
+        worst: String,
+    },
+    /// The constraint equations are redundant or inconsistent at the initial configuration:
+    /// the acceleration-level system [M Φ_vᵀ; Φ_v 0] is singular.
+    #[error(
+        "the constraints are redundant or singular at t = {time}: [M Φ_vᵀ; Φ_v 0] cannot be \
+         factored; remove duplicated joints or JPRIMs"
+    )]
+    SingularConstraints {
+        /// The time of the initial conditions.
+        time: f64,
+    },
+    /// An element could not be evaluated at the initial state.
+    #[error(transparent)]
+    Evaluation(#[from] EvaluationError),
+}
+
+impl MbsError {
+    /// Builds an [`MbsError::InvalidArgument`] for a numeric value.
+    pub(crate) fn invalid(
+        element: &str,
+        argument: &'static str,
+        value: f64,
+        allowed: &'static str,
+    ) -> Self {
+        Self::InvalidArgument {
+            element: element.to_owned(),
+            argument,
+            value: format!("{value:?}"),
+            allowed,
+        }
+    }
+}
