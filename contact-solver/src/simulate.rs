@@ -6,8 +6,10 @@
 //! rate δ̇ > 0 the onset is estimated as `t_c = t − δ/δ̇`; the step is rejected and retried to
 //! end just after the onset, at `t_c + ONSET_MARGIN·(t − t_c)` (clamped inside the step), and
 //! the integrator restarts at order 1 — so contacts begin with a small penetration, at first
-//! order, with small steps. Each onset is predicted once. The run reports how many steps were
-//! rejected for onsets and the largest penetration a contact started with.
+//! order, with small steps. Each onset is predicted once; a step too short for a time strictly
+//! inside it (a sliver of a few ulps, left before a stop time or a retry target) is kept as
+//! it is. The run reports how many steps were rejected for onsets and the largest penetration
+//! a contact started with.
 //!
 //! **Output** frames are interpolated from the BDF history at the output times, so frequent
 //! output costs no extra steps; only END is a stop time.
@@ -222,7 +224,9 @@ pub fn simulate_with_progress(
         if onset.is_finite() {
             let retry = (onset + ONSET_MARGIN * (t - onset))
                 .clamp(t_before + ONSET_MARGIN * (t - t_before), t);
-            if retry < t {
+            // A step too short to split in floating point (a sliver left before a stop time
+            // or a retry target) keeps its onset: the contact starts within that sliver.
+            if retry > t_before && retry < t {
                 // State kept per accepted step goes back with the step, before the retry.
                 for c in contacts {
                     c.rolled_back();

@@ -3,6 +3,7 @@
 
 use crate::obb_tree::ObbTree;
 use crate::patches::PatchIndex;
+use crate::smooth_patch::{pn_control_points, pn_point, pn_reach};
 use crate::tessellate::Tessellation;
 use contact_core::geometry::{closest_point_on_triangle, line_triangle};
 use contact_core::{Point3, Vector3};
@@ -45,6 +46,9 @@ pub struct FacetMesh {
     pub longest_edge: f64,
     /// True when closed and outward oriented (inside tests are meaningful).
     pub closed: bool,
+    /// How far any curved PN triangle reaches beyond its flat facet (0 for flat facets):
+    /// every point of the smooth surface lies within it of the facets.
+    pub pn_reach: f64,
 }
 
 impl FacetMesh {
@@ -126,6 +130,12 @@ impl FacetMesh {
             })
             .fold(0.0, f64::max)
             .sqrt();
+        let pn_reach = triangles
+            .iter()
+            .zip(&corner_normals)
+            .filter(|(_, n)| n[0] != n[1] || n[1] != n[2])
+            .map(|(t, n)| pn_reach(&t.map(|v| vertices[v as usize].coords), n))
+            .fold(0.0, f64::max);
         Self {
             vertices,
             triangles,
@@ -140,6 +150,7 @@ impl FacetMesh {
             size: (hi - lo).norm(),
             longest_edge,
             closed,
+            pn_reach,
         }
     }
 
@@ -418,11 +429,12 @@ impl FacetMesh {
     /// from the chord back to within `O(h⁴/ρ³)` of the true surface (h the edge length, ρ the
     /// curvature radius), which removes the chord deviation from depths and contact points.
     pub fn lift_to_surface(&self, t: u32, p: &Vector3) -> Vector3 {
-        let [p1, p2, p3] = self.corners(t);
-        let [n1, n2, n3] = self.corner_normals[t as usize];
-        if n1 == n2 && n2 == n3 {
+        let corners = self.corners(t);
+        let normals = self.corner_normals[t as usize];
+        if normals[0] == normals[1] && normals[1] == normals[2] {
             return *p;
         }
+        let [p1, p2, p3] = corners;
         // Barycentric coordinates of p (on the triangle's plane).
         let (e1, e2, ep) = (p2 - p1, p3 - p1, p - p1);
         let (d11, d12, d22) = (e1.dot(&e1), e1.dot(&e2), e2.dot(&e2));
@@ -433,29 +445,15 @@ impl FacetMesh {
         }
         let u = (d22 * dp1 - d12 * dp2) / denom;
         let v = (d11 * dp2 - d12 * dp1) / denom;
-        let w = 1.0 - u - v;
-        let edge = |pi: &Vector3, pj: &Vector3, ni: &Vector3| {
-            (2.0 * pi + pj - (pj - pi).dot(ni) * ni) / 3.0
-        };
-        let b210 = edge(&p1, &p2, &n1);
-        let b120 = edge(&p2, &p1, &n2);
-        let b021 = edge(&p2, &p3, &n2);
-        let b012 = edge(&p3, &p2, &n3);
-        let b102 = edge(&p3, &p1, &n3);
-        let b201 = edge(&p1, &p3, &n1);
-        let e = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0;
-        let centre = (p1 + p2 + p3) / 3.0;
-        let b111 = e + 0.5 * (e - centre);
-        p1 * (w * w * w)
-            + p2 * (u * u * u)
-            + p3 * (v * v * v)
-            + b210 * (3.0 * w * w * u)
-            + b120 * (3.0 * w * u * u)
-            + b201 * (3.0 * w * w * v)
-            + b021 * (3.0 * u * u * v)
-            + b102 * (3.0 * w * v * v)
-            + b012 * (3.0 * u * v * v)
-            + b111 * (6.0 * w * u * v)
+        let b = pn_control_points(&corners, &normals);
+        pn_point(&b, [1.0 - u - v, u, v])
+    }
+
+    /// Whether triangle `t` stands for a curved surface (its corner normals differ).
+    #[inline]
+    pub fn is_curved(&self, t: u32) -> bool {
+        let [n1, n2, n3] = self.corner_normals[t as usize];
+        n1 != n2 || n2 != n3
     }
 }
 

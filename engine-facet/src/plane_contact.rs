@@ -19,6 +19,7 @@
 
 use crate::contact_region::{LocalContact, add_polygon, clip, label_regions, new_node, union};
 use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
+use crate::plane_support::{Support, alone_contact, blended, supports_by_region};
 use crate::scratch::{RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -60,17 +61,26 @@ pub(crate) fn mesh_plane(
             let reach: f64 = (0..3)
                 .map(|i| obb.half_extents[i] * n.dot(&obb.axes.column(i)).abs())
                 .sum();
-            height(&obb.center) - reach <= 0.0
+            height(&obb.center) - reach <= a.pn_reach
         },
         |t| below.push(t),
     );
     work.bounding_volume_tests += box_tests;
+    let mut curved = std::mem::take(&mut s.curved);
+    curved.clear();
     for &t in &below {
         work.primitive_tests += 1;
         let c = a.corners(t);
-        if c.iter().any(|v| height(v) <= 0.0) && !(bounded && beyond(&c)) {
+        if bounded && beyond(&c) {
+            continue;
+        }
+        let lowest = c.iter().map(&height).fold(f64::INFINITY, f64::min);
+        if lowest <= 0.0 {
             let crossing = c.iter().any(|v| height(v) > 0.0);
             new_node(s, 0, t, crossing);
+        }
+        if lowest <= a.pn_reach && a.is_curved(t) {
+            curved.push(t);
         }
     }
     s.queue = below;
@@ -87,9 +97,30 @@ pub(crate) fn mesh_plane(
     let count = label_regions(s);
     s.regions.clear();
     s.regions.resize(count, RegionSums::default());
+    // The smooth surface's support points (`plane_support`): a region they answer whole
+    // needs no facet sums.
+    let mut by_region = vec![None; count];
+    let mut alone = Vec::new();
+    if !curved.is_empty() {
+        let region_tris: Vec<(u32, u32)> = s.nodes.iter().map(|n| (n.tri, n.region)).collect();
+        supports_by_region(
+            a,
+            &n,
+            &height,
+            &curved,
+            &region_tris,
+            &mut by_region,
+            &mut alone,
+        );
+    }
+    s.curved = curved;
+    let smooth_only: Vec<bool> = by_region
+        .iter()
+        .map(|b| b.is_some_and(|s: Support| s.weight >= 1.0))
+        .collect();
     // Waterline loops, oriented along n_tri × n_plane as mesh–mesh segments are.
     for node in &s.nodes {
-        if !node.crossing {
+        if !node.crossing || smooth_only[node.region as usize] {
             continue;
         }
         let c = a.corners(node.tri);
@@ -135,7 +166,10 @@ pub(crate) fn mesh_plane(
         };
         r.apex = a_point - n * height(&a_point);
     }
-    for node in nodes.iter() {
+    for node in nodes
+        .iter()
+        .filter(|node| !smooth_only[node.region as usize])
+    {
         polygon.clear();
         polygon.extend_from_slice(&a.corners(node.tri));
         if node.crossing {
@@ -158,7 +192,10 @@ pub(crate) fn mesh_plane(
         };
         r.best_i = (f64::INFINITY, r.centroid, u32::MAX);
     }
-    for node in nodes.iter() {
+    for node in nodes
+        .iter()
+        .filter(|node| !smooth_only[node.region as usize])
+    {
         let r = &mut regions[node.region as usize];
         let p = a.closest_on_triangle(node.tri, &r.centroid);
         let d = (p - r.centroid).norm_squared();
@@ -167,6 +204,11 @@ pub(crate) fn mesh_plane(
         }
     }
     for (index, r) in regions.iter().enumerate() {
+        let support = by_region[index];
+        if let Some(support) = support.filter(|_| smooth_only[index]) {
+            out.push(alone_contact(&support, &n));
+            continue;
+        }
         let g = r.centroid;
         let point_j = g - n * height(&g);
         // I's surface straight below g along −n: continuous in the pose, where the closest
@@ -184,7 +226,7 @@ pub(crate) fn mesh_plane(
             a.lift_to_surface(tri, &on_facet)
         };
         let loop_area = r.vector_area.norm();
-        out.push(LocalContact {
+        let facets = LocalContact {
             point_i,
             point_j,
             normal: n,
@@ -194,6 +236,11 @@ pub(crate) fn mesh_plane(
             } else {
                 r.down_area
             },
+        };
+        out.push(match support {
+            Some(support) => blended(&facets, &support, &n),
+            None => facets,
         });
     }
+    out.extend(alone.iter().map(|s| alone_contact(s, &n)));
 }

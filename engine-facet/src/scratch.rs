@@ -141,6 +141,8 @@ pub(crate) struct Scratch {
     pub nodes: Vec<RegionNode>,
     pub node_hits: Vec<u32>,
     pub queue: Vec<u32>,
+    /// Curved triangles whose smooth surface may reach below a plane (`crate::plane_support`).
+    pub curved: Vec<u32>,
     /// The inside flood's takings: `(seed node, triangle)`, or `(seed node, patch | PATCH_BIT)`
     /// for a whole patch (see [`crate::inside_flood`]).
     pub taken: Vec<(u32, u32)>,

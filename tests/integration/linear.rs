@@ -352,8 +352,8 @@ fn the_multipliers_of_the_operating_point_are_solved_for_not_read() {
 }
 
 #[test]
-fn the_faceted_ball_has_the_exact_vertical_mode_and_rocks_on_its_facets() {
-    let (m, k, e, c, radius, inertia) = (1.0, 1e6, 1.5, 50.0, 0.1, 0.004);
+fn the_faceted_ball_has_the_exact_balls_modes() {
+    let (m, k, e, c) = (1.0, 1e6, 1.5, 50.0);
     let loaded = crate::inline("linear_ball_facet.adm", &ball(0.099));
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
     let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
@@ -388,22 +388,14 @@ fn the_faceted_ball_has_the_exact_vertical_mode_and_rocks_on_its_facets() {
         relative(vertical[0].real, -c / (2.0 * m)) < 1e-9,
         "{values:?}"
     );
-    // Sliding (x, y) and spinning about the normal stay free.
-    let free = values
+    // Sliding, spinning and tilting stay free, as for the exact ball: the facets' contact
+    // with the plane lies on the line from the sphere's centre along the normal (the smooth
+    // surface's support point, engine-facet's plane_support), so tilting the ball moves no
+    // force off its centre. A polyhedron resting on a vertex would rock instead.
+    let largest_free = values[..10]
         .iter()
-        .filter(|s| s.magnitude() < 1e-6 * omega)
-        .count();
-    assert_eq!(free, 6, "{values:?}");
-    // Tilting moves the facets' contact off the line through the CM: the faceted ball rocks
-    // like a body on a tip (a real pair ±s), never faster than the point contact at the full
-    // radius, s² = m·g·r/J.
-    let rocking = &values[6..10];
-    for s in rocking {
-        assert_eq!(s.imaginary, 0.0, "{values:?}");
-        assert!(
-            s.magnitude() <= (m * G * radius / inertia).sqrt(),
-            "{values:?}"
-        );
-    }
-    println!("faceted ball: rocking {rocking:?}");
+        .map(|s| s.magnitude())
+        .fold(0.0, f64::max);
+    println!("faceted ball: largest free-mode |s| {largest_free:e} (vertical {omega})");
+    assert!(largest_free < 1e-6 * omega, "{values:?}");
 }

@@ -70,6 +70,43 @@ pub fn imbalance(system: &MultibodySystem, r: &DVector<f64>) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The imbalance that round-off alone leaves at `y`: a position known to `ε·max(|r|, L)`
+/// (translation) and `ε` (rotation, radians) moves each force row by up to
+/// `Σ_j |K_ij|·s_j·ε`, with `K` the static `jacobian` and `s_j` those scales. A stiff contact
+/// carrying a large load (`K ≈ e·F/δ` for a penetration `δ` far below the part's distance from
+/// the origin) leaves an imbalance many orders above `ε·F` that no iteration can remove.
+/// Returns `64·ε·max_i Σ_j |K_ij|·s_j` over the force rows (torque rows over `L`, as
+/// [`imbalance`]); the factor covers the residual's own sums.
+pub fn roundoff_imbalance(
+    system: &MultibodySystem,
+    y: &DVector<f64>,
+    jacobian: &DMatrix<f64>,
+) -> f64 {
+    let layout = *system.layout();
+    let length = system.length_scale();
+    let scales: Vec<f64> = system
+        .moving_parts()
+        .flat_map(|part| {
+            let r = MultibodySystem::vector_at(y, layout.position_offset(part)).norm();
+            let translation = r.max(length);
+            [translation, translation, translation, 1.0, 1.0, 1.0]
+        })
+        .collect();
+    let rows = scales.len();
+    (0..rows)
+        .map(|i| {
+            let sum: f64 = scales
+                .iter()
+                .enumerate()
+                .map(|(j, s)| jacobian[(i, j)].abs() * s)
+                .sum();
+            if i % 6 < 3 { sum } else { sum / length }
+        })
+        .fold(0.0, f64::max)
+        * 64.0
+        * f64::EPSILON
+}
+
 /// The static Jacobian `∂[dynamic rows; Φ]/∂[δr, δθ′, λ]` at `y` (velocities zero), with
 /// `stability` times the mass and damping matrices added to the position columns of the
 /// dynamic rows: `K + s·(M + C)` in place of the stiffness `K`.
@@ -236,6 +273,7 @@ pub fn solve(
         cause,
     };
     let mut last_correction = f64::INFINITY;
+    let mut last_jacobian: Option<DMatrix<f64>> = None;
     let mut iterations = 0;
     loop {
         let r = static_residual(system, t, y)
@@ -244,7 +282,12 @@ pub fn solve(
         if !now.is_finite() {
             return Err(fail(iterations, now, "the residual is not finite".into()));
         }
-        if last_correction <= settings.error && now <= settings.imbalance {
+        let tolerance = settings.imbalance.max(
+            last_jacobian
+                .as_ref()
+                .map_or(0.0, |j| roundoff_imbalance(system, y, j)),
+        );
+        if last_correction <= settings.error && now <= tolerance {
             return Ok(NewtonReport {
                 iterations,
                 imbalance: now,
@@ -263,6 +306,7 @@ pub fn solve(
         let jacobian = static_jacobian(system, t, y, settings.stability)
             .map_err(|e| fail(iterations, now, e.to_string()))?;
         let step = jacobian
+            .clone()
             .lu()
             .solve(&(-&r))
             .filter(|s| s.iter().all(|x| x.is_finite()))
@@ -280,6 +324,7 @@ pub fn solve(
         };
         iterations += 1;
         last_correction = apply_step(system, y, &step, settings.tlimit, settings.alimit);
+        last_jacobian = Some(jacobian);
         if guard_onsets {
             let acting = acting_elements(system, t, y, false)
                 .map_err(|e| fail(iterations, f64::INFINITY, e.to_string()))?;

@@ -1,0 +1,200 @@
+//! A tessellated smooth body against a half-space: the contact its true surface makes, where
+//! the facets can say what that is.
+//!
+//! A polyhedron on a plane touches at a vertex, an edge or a face, and the line through the
+//! facets' intersection centroid misses the smooth body's centre by up to a facet's size: a
+//! faceted ball spins up at every bounce, rocks over its vertices as it rolls, and rests
+//! wherever a face is level. The facets of a tessellated primitive carry the true normals at
+//! their corners, and with them the smooth surface they stand for ([`crate::smooth_patch`]):
+//!
+//! - the **support point** `q`: on the triangle whose corner normals' cone holds `−n`, the
+//!   point where the Phong normal field is `−n`, lifted onto the curved PN triangle (for a
+//!   sphere on the line from its centre along `−n`, exactly);
+//! - the **depth** `δ_s = −h(q)`, `h` the height above the plane (continuous in the pose: the
+//!   triangles' cones tile the directions, and the PN patches meet along shared edges);
+//! - the **area** of the cap the osculating quadric cuts at that depth, `A = 2π·δ_s/√(κ₁κ₂)`,
+//!   with the principal curvatures of the shape operator the corner normals imply.
+//!
+//! That local answer is the ray rule's (SPEC §4) where the surface is a sphere about the
+//! support point: the cap is then symmetric about the normal through `q`. It is taken where
+//! the shape operator is umbilic (`(κ₂ − κ₁)/κ₂ ≤ 1e-6`; a tessellated sphere's corner normals
+//! give `S = I/R` to round-off) and the cap small beside the curvature radius
+//! (`x = κ₂·√(2δ_s/κ₁) ≤ ½`), and blended with the facets' own contact (`plane_contact`) by
+//! smoothsteps down to nothing at a spread of 1e-3 or `x ≥ 1`: depths linearly, points
+//! weighted by each answer's share of the depth, so the blend is continuous where the facets'
+//! region appears. Elsewhere — flat faces, cylinders' sides (corner normals in a plane),
+//! saddles, concave parts, and smooth surfaces off an umbilic, whose cap centroid leaves the
+//! support point's normal at third order (an ellipsoid's lies on the diameter through `q`),
+//! which the facets resolve as the tolerance rises and a local quadric does not — the facets'
+//! contact stands. A support point is joined to the facets' region with the nearest triangle
+//! (within two edge lengths); where none is, it makes a contact of its own (the smooth
+//! surface touches before the facets do).
+//!
+//! Accuracy: for a sphere the point lies on the line from the centre (the force has no arm
+//! about it, as for the true sphere), the depth is the PN patch's (its deviation from the
+//! sphere is `O(h⁴/R³)`, far below the chord deviation `O(h²/R)`) and the area
+//! `2πRδ` against the exact `π(2Rδ − δ²)`.
+
+use crate::contact_region::LocalContact;
+use crate::facet_mesh::FacetMesh;
+use crate::smooth_patch::{pn_control_points, pn_point, principal_curvatures, support};
+use contact_core::Vector3;
+
+/// The smooth surface's lowest point below a plane, as found on one triangle.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Support {
+    /// The point on the PN patch.
+    q: Vector3,
+    /// Its depth below the plane (> 0).
+    depth: f64,
+    /// The weight of this local answer against the facets' contact, in [0, 1].
+    pub weight: f64,
+    /// The quadric cap's area at that depth.
+    area: f64,
+}
+
+/// The smooth answer's weight for a cap whose longest semi-axis is `x` curvature radii:
+/// 1 up to ½, 0 from 1, a smoothstep between.
+fn blend_weight(x: f64) -> f64 {
+    if x.is_nan() || x >= 1.0 {
+        return 0.0;
+    }
+    if x <= 0.5 {
+        return 1.0;
+    }
+    let s = (1.0 - x) / 0.5;
+    s * s * (3.0 - 2.0 * s)
+}
+
+/// The smooth answer's weight for a spread `(κ₂ − κ₁)/κ₂` of the principal curvatures: 1 up
+/// to 1e-6 (a sphere's facets give `S = I/R` to round-off), 0 from 1e-3, a smoothstep in
+/// the logarithm between. Off an umbilic the cap's centroid leaves the support point's normal
+/// at third order (an ellipsoid's lies on the diameter through the support point), which the
+/// facets resolve and the local quadric does not.
+fn umbilic_weight(spread: f64) -> f64 {
+    if spread.is_nan() || spread >= 1e-3 {
+        return 0.0;
+    }
+    if spread <= 1e-6 {
+        return 1.0;
+    }
+    let s = (-3.0 - spread.log10()) / 3.0;
+    s * s * (3.0 - 2.0 * s)
+}
+
+/// The support point on triangle `t` of `a` against the plane of unit normal `n` (A's
+/// frame), `height` the signed height above it; `None` where the triangle holds none or it is
+/// above the plane.
+fn support_on(
+    a: &FacetMesh,
+    t: u32,
+    n: &Vector3,
+    height: &impl Fn(&Vector3) -> f64,
+) -> Option<Support> {
+    let normals = a.corner_normals[t as usize];
+    let bary = support(&normals, &a.face_normals[t as usize], &(-n))?;
+    let corners = a.corners(t);
+    let q = pn_point(&pn_control_points(&corners, &normals), bary);
+    let depth = -height(&q);
+    if depth.is_nan() || depth <= 0.0 {
+        return None;
+    }
+    let (k1, k2) = principal_curvatures(&corners, &normals, n)?;
+    if k1.is_nan() || k1 <= 0.0 {
+        return None;
+    }
+    let x = k2 * (2.0 * depth / k1).sqrt();
+    let weight = blend_weight(x) * umbilic_weight((k2 - k1) / k2);
+    if weight == 0.0 {
+        return None;
+    }
+    Some(Support {
+        q,
+        depth,
+        weight,
+        area: 2.0 * std::f64::consts::PI * depth / (k1 * k2).sqrt(),
+    })
+}
+
+/// The smooth surface's support points below the plane, each joined to the facets' region
+/// it belongs to: `by_region[r]` for region `r` (`None` where it has none, or two: the local
+/// answer does not hold there), and `alone` for those with no region near them (the smooth
+/// surface touches before the facets do). `candidates` are the curved triangles whose PN
+/// patch may reach below the plane; `region_tris` lists `(triangle, region)` of the facets'
+/// regions. A region whose support has weight 1 needs no facet sums.
+pub(crate) fn supports_by_region(
+    a: &FacetMesh,
+    n: &Vector3,
+    height: &impl Fn(&Vector3) -> f64,
+    candidates: &[u32],
+    region_tris: &[(u32, u32)],
+    by_region: &mut [Option<Support>],
+    alone: &mut Vec<Support>,
+) {
+    let mut found: Vec<Support> = Vec::new();
+    for &t in candidates {
+        let Some(s) = support_on(a, t, n, height) else {
+            continue;
+        };
+        // A support on a shared edge or corner is found on each triangle there.
+        if found
+            .iter()
+            .all(|f| (f.q - s.q).norm() > 1e-9 * a.size.max(f64::MIN_POSITIVE))
+        {
+            found.push(s);
+        }
+    }
+    let reach = 2.0 * a.longest_edge;
+    let mut twice = vec![false; by_region.len()];
+    for s in found {
+        let nearest = region_tris
+            .iter()
+            .map(|&(tri, _)| {
+                let c = a.corners(tri);
+                ((c[0] + c[1] + c[2]) / 3.0 - s.q).norm()
+            })
+            .zip(region_tris)
+            .filter(|(d, _)| *d <= reach)
+            .min_by(|x, y| x.0.total_cmp(&y.0))
+            .map(|(_, &(_, region))| region as usize);
+        match nearest {
+            Some(r) if by_region[r].is_some() || twice[r] => {
+                by_region[r] = None;
+                twice[r] = true;
+            }
+            Some(r) => by_region[r] = Some(s),
+            None => alone.push(s),
+        }
+    }
+}
+
+/// The contact of a support point with no facets' region: the smooth answer scaled by its
+/// weight, so it meets the blend where the facets' region appears.
+pub(crate) fn alone_contact(s: &Support, n: &Vector3) -> LocalContact {
+    LocalContact {
+        point_i: s.q,
+        point_j: s.q + n * (s.weight * s.depth),
+        normal: *n,
+        penetration: s.weight * s.depth,
+        area: s.weight * s.area,
+    }
+}
+
+/// The facets' contact `facets` blended with the support `s` by its weight: depths and areas
+/// linearly, points weighted by each answer's share of the depth.
+pub(crate) fn blended(facets: &LocalContact, s: &Support, n: &Vector3) -> LocalContact {
+    let (ws, wf) = (s.weight * s.depth, (1.0 - s.weight) * facets.penetration);
+    let depth = ws + wf;
+    if depth.is_nan() || depth <= 0.0 {
+        return *facets;
+    }
+    let point_i = (s.q * ws + facets.point_i * wf) / depth;
+    let point_j = ((s.q + n * s.depth) * ws + facets.point_j * wf) / depth;
+    LocalContact {
+        point_i,
+        point_j,
+        normal: facets.normal,
+        penetration: depth,
+        area: s.weight * s.area + (1.0 - s.weight) * facets.area,
+    }
+}
