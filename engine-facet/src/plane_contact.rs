@@ -50,6 +50,10 @@ pub(crate) fn mesh_plane(
             || ys.iter().all(|&u| u < y0)
             || ys.iter().all(|&u| u > y1)
     };
+    // How far the smooth surface the curved facets stand for reaches beyond them: the PN
+    // patches' reach, doubled to cover the sphere `plane_support` fits (its sag over a facet
+    // and the patch's differ by the patch's error, far below either).
+    let beyond_facets = 2.0 * a.pn_reach;
     s.nodes.clear();
     s.slots[0].reset(a.triangles.len());
     let mut below: Vec<u32> = std::mem::take(&mut s.queue);
@@ -61,7 +65,7 @@ pub(crate) fn mesh_plane(
             let reach: f64 = (0..3)
                 .map(|i| obb.half_extents[i] * n.dot(&obb.axes.column(i)).abs())
                 .sum();
-            height(&obb.center) - reach <= a.pn_reach
+            height(&obb.center) - reach <= beyond_facets
         },
         |t| below.push(t),
     );
@@ -79,7 +83,7 @@ pub(crate) fn mesh_plane(
             let crossing = c.iter().any(|v| height(v) > 0.0);
             new_node(s, 0, t, crossing);
         }
-        if lowest <= a.pn_reach && a.is_curved(t) {
+        if lowest <= beyond_facets && a.is_curved(t) {
             curved.push(t);
         }
     }

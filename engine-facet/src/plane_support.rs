@@ -7,13 +7,14 @@
 //! wherever a face is level. The facets of a tessellated primitive carry the true normals at
 //! their corners, and with them the smooth surface they stand for ([`crate::smooth_patch`]):
 //!
-//! - the **support point** `q`: on the triangle whose corner normals' cone holds `−n`, the
-//!   point where the Phong normal field is `−n`, lifted onto the curved PN triangle (for a
-//!   sphere on the line from its centre along `−n`, exactly);
-//! - the **depth** `δ_s = −h(q)`, `h` the height above the plane (continuous in the pose: the
-//!   triangles' cones tile the directions, and the PN patches meet along shared edges);
-//! - the **area** of the cap the osculating quadric cuts at that depth, `A = 2π·δ_s/√(κ₁κ₂)`,
-//!   with the principal curvatures of the shape operator the corner normals imply.
+//! - the **support triangle and weights**: the triangle whose corner normals' cone holds
+//!   `−n`, and the barycentric weights `β` where its Phong normal field is `−n` (the triangles'
+//!   cones tile the directions, so `β` moves continuously from one triangle to the next);
+//! - the **implied sphere**: radius `1/κ̄` from the mean of the principal curvatures the corner
+//!   normals imply, centre `c = Σ β_i·(p_i − n_i/κ̄)`; the **support point** `q = c − n/κ̄`, its
+//!   **depth** `δ_s = −h(q)` (`h` the height above the plane) and the cap's **area**
+//!   `π·δ_s·(2/κ̄ − δ_s)`. A tessellated sphere's corners and normals imply the sphere itself,
+//!   so for it these are the exact engine's answers, independent of the facets.
 //!
 //! That local answer is the ray rule's (SPEC §4) where the surface is a sphere about the
 //! support point: the cap is then symmetric about the normal through `q`. It is taken where
@@ -31,13 +32,14 @@
 //! surface touches before the facets do).
 //!
 //! Accuracy: for a sphere the point lies on the line from the centre (the force has no arm
-//! about it, as for the true sphere), the depth is the PN patch's (its deviation from the
-//! sphere is `O(h⁴/R³)`, far below the chord deviation `O(h²/R)`) and the area
-//! `2πRδ` against the exact `π(2Rδ − δ²)`.
+//! about it, as for the true sphere) and the depth and area are the sphere's to round-off. Off
+//! a sphere the curvature is taken per triangle, so near an umbilic of another surface the
+//! answer steps by the curvature's change across one facet where the support point crosses an
+//! edge (weighted down to nothing by a spread of 1e-3).
 
 use crate::contact_region::LocalContact;
 use crate::facet_mesh::FacetMesh;
-use crate::smooth_patch::{pn_control_points, pn_point, principal_curvatures, support};
+use crate::smooth_patch::{principal_curvatures, support};
 use contact_core::Vector3;
 
 /// The smooth surface's lowest point below a plane, as found on one triangle.
@@ -94,13 +96,20 @@ fn support_on(
     let normals = a.corner_normals[t as usize];
     let bary = support(&normals, &a.face_normals[t as usize], &(-n))?;
     let corners = a.corners(t);
-    let q = pn_point(&pn_control_points(&corners, &normals), bary);
-    let depth = -height(&q);
-    if depth.is_nan() || depth <= 0.0 {
-        return None;
-    }
     let (k1, k2) = principal_curvatures(&corners, &normals, n)?;
     if k1.is_nan() || k1 <= 0.0 {
+        return None;
+    }
+    // The sphere the corners and normals imply (mean curvature κ̄): its centre, each corner
+    // moved 1/κ̄ inward along its normal, taken at the support point's weights; its lowest point
+    // lies 1/κ̄ from there along −n. A tessellated sphere's own, exactly.
+    let radius = 2.0 / (k1 + k2);
+    let centre = (0..3)
+        .map(|i| (corners[i] - normals[i] * radius) * bary[i])
+        .sum::<Vector3>();
+    let q = centre - n * radius;
+    let depth = -height(&q);
+    if depth.is_nan() || depth <= 0.0 {
         return None;
     }
     let x = k2 * (2.0 * depth / k1).sqrt();
@@ -112,15 +121,15 @@ fn support_on(
         q,
         depth,
         weight,
-        area: 2.0 * std::f64::consts::PI * depth / (k1 * k2).sqrt(),
+        area: std::f64::consts::PI * depth * (2.0 * radius - depth),
     })
 }
 
 /// The smooth surface's support points below the plane, each joined to the facets' region
 /// it belongs to: `by_region[r]` for region `r` (`None` where it has none, or two: the local
 /// answer does not hold there), and `alone` for those with no region near them (the smooth
-/// surface touches before the facets do). `candidates` are the curved triangles whose PN
-/// patch may reach below the plane; `region_tris` lists `(triangle, region)` of the facets'
+/// surface touches before the facets do). `candidates` are the curved triangles whose smooth
+/// surface may reach below the plane; `region_tris` lists `(triangle, region)` of the facets'
 /// regions. A region whose support has weight 1 needs no facet sums.
 pub(crate) fn supports_by_region(
     a: &FacetMesh,

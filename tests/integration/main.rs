@@ -9,6 +9,7 @@ mod examples;
 mod expressions;
 mod extremes;
 mod faceted_ball;
+mod faceted_motion;
 mod fuzz_seeds;
 mod geneva;
 mod kinematics;
