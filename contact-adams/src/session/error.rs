@@ -5,6 +5,7 @@ use super::report::RunReport;
 use crate::dataset::DatasetError;
 use crate::engine_choice::EnvironmentError;
 use crate::run::lower::LowerError;
+use crate::run::plan::PlanError;
 use contact_solver::EvaluationError;
 use contact_solver::kinematics::KinematicsError;
 use contact_solver::linear::LinearError;
@@ -33,12 +34,12 @@ pub enum RunError {
         /// Why the pool was not built.
         source: rayon::ThreadPoolBuildError,
     },
-    /// The command file's analyses could not be planned (the planner's message).
-    #[error("{message}")]
-    Plan {
-        /// What is wrong, with the command's location.
-        message: String,
-    },
+    /// The command file's analyses could not be planned.
+    #[error(transparent)]
+    Plan(#[from] PlanError),
+    /// The plan has no analysis to run.
+    #[error("the command file runs no analysis")]
+    NoAnalysis,
     /// The model could not be lowered onto the solver for its first analysis.
     #[error(transparent)]
     Lower(#[from] LowerError),

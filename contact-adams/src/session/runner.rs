@@ -8,7 +8,7 @@ use super::{RunLayout, RunOptions, RunSink};
 use crate::engine_choice::{self, Overrides};
 use crate::model::{MeshFile, Model};
 use crate::run::lower::{LowerError, LoweredModel, lower};
-use crate::run::plan::{AnalysisStep, PlanOverrides, plan_analyses};
+use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
 use contact_core::{GeometryEngine, GeometryInstance, WorkCounters};
 use contact_solver::contact_force::Analysis;
 use contact_solver::kinematics::initial_degrees_of_freedom;
@@ -49,9 +49,7 @@ pub fn run_model(
     };
     let steps = plan(model, options, &lowering, sink)?;
     let Some(first) = steps.first() else {
-        return Err(RunError::Plan {
-            message: "the command file runs no analysis".into(),
-        });
+        return Err(RunError::NoAnalysis);
     };
     let first_analysis = solver_analysis(first);
     let mut current = (first_analysis, lowering.lower(first_analysis)?);
@@ -157,10 +155,10 @@ impl Lowering<'_> {
 
     /// The model's degrees of freedom at time `t` (SIMULATE/TRANSIENT chooses its analysis by
     /// them, which the lowered multibody system knows).
-    fn degrees_of_freedom(&self, t: f64) -> Result<usize, String> {
-        let lowered = lower(self.model, self.engine, Analysis::Quasistatic, &read_mesh)
-            .map_err(|e| e.to_string())?;
-        initial_degrees_of_freedom(&lowered.system, t).map_err(|e| e.to_string())
+    fn degrees_of_freedom(&self, t: f64) -> Result<usize, DegreesOfFreedomError> {
+        let lowered =
+            lower(self.model, self.engine, Analysis::Quasistatic, &read_mesh).map_err(Box::new)?;
+        Ok(initial_degrees_of_freedom(&lowered.system, t)?)
     }
 }
 
@@ -189,8 +187,7 @@ fn plan(
         dtout: options.dtout,
         steps: options.steps,
     };
-    let (steps, notes) = plan_analyses(model, overrides, &mut |t| lowering.degrees_of_freedom(t))
-        .map_err(|message| RunError::Plan { message })?;
+    let (steps, notes) = plan_analyses(model, overrides, &mut |t| lowering.degrees_of_freedom(t))?;
     for note in notes {
         sink.note(&note).map_err(RunError::Output)?;
     }
