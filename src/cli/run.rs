@@ -83,7 +83,17 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         },
         Err(e) => Err(e),
     };
-    let files = sink.files;
+    print_outcome(result, &sink.files, out, err)
+}
+
+/// Prints how the run went (the summary lines, where the results are, or the error); returns
+/// the exit code.
+fn print_outcome(
+    result: Result<RunReport, RunError>,
+    files: &ResultFiles,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<u8> {
     match result {
         Ok(report) => {
             print_lines(&report, out)?;

@@ -52,7 +52,7 @@ pub fn run_model(
         return Err(RunError::NoAnalysis);
     };
     let first_analysis = solver_analysis(first);
-    let mut current = (first_analysis, lowering.lower(first_analysis)?);
+    let current = (first_analysis, lowering.lower(first_analysis)?);
     let contacts: Vec<String> = model
         .contacts
         .iter()
@@ -64,22 +64,54 @@ pub fn run_model(
         analyses: &steps,
     })
     .map_err(RunError::Output)?;
+    let (start, end) = span_of(&steps);
+    let mut report = RunReport {
+        model: source.to_path_buf(),
+        selection,
+        threads,
+        analyses: Vec::new(),
+        failure: None,
+        start,
+        end,
+        wall: Duration::ZERO,
+        prepare: Duration::ZERO,
+        dynamics: DynamicsTotals::default(),
+        output_frames: 0,
+        engine_work: WorkCounters::default(),
+    };
     let started = Instant::now();
+    run_analyses(&steps, &mut lowering, current, sink, &mut report);
+    report.wall = started.elapsed();
+    report.prepare = lowering.prepare;
+    sink.finish(&report).map_err(RunError::Output)?;
+    if report.completed() {
+        Ok(report)
+    } else {
+        Err(RunError::Stopped(Box::new(report)))
+    }
+}
+
+/// Runs `steps` in order from `current` (the model lowered for the first), lowering it again
+/// when the analysis mode changes; records each analysis, the totals and the first failure in
+/// `report`.
+fn run_analyses(
+    steps: &[AnalysisStep],
+    lowering: &mut Lowering<'_>,
+    mut current: (Analysis, LoweredModel),
+    sink: &mut dyn RunSink,
+    report: &mut RunReport,
+) {
     let mut filter = FrameFilter::default();
-    let mut work = WorkCounters::default();
-    let mut dynamics = DynamicsTotals::default();
-    let mut analyses = Vec::new();
-    let mut failure = None;
-    for step in &steps {
+    for step in steps {
         let analysis = solver_analysis(step);
         if analysis != current.0 {
             for c in &current.1.contacts {
-                work += c.work();
+                report.engine_work += c.work();
             }
             match lowering.lower(analysis) {
                 Ok(l) => current = (analysis, l),
                 Err(e) => {
-                    failure = Some(RunFailure::Lower(e));
+                    report.failure = Some(RunFailure::Lower(e));
                     break;
                 }
             }
@@ -92,14 +124,14 @@ pub fn run_model(
         if let Some(parts) = &filter.carried {
             lowered.system.start_from(parts);
         }
-        let report = run_analysis(step, lowered, &mut filter, sink);
-        if let Some(AnalysisOutcome::Dynamics(summary)) = &report.outcome {
-            dynamics.add(summary);
+        let analysis_report = run_analysis(step, lowered, &mut filter, sink);
+        if let Some(AnalysisOutcome::Dynamics(summary)) = &analysis_report.outcome {
+            report.dynamics.add(summary);
         }
-        let error = report.error.clone();
-        analyses.push(report);
+        let error = analysis_report.error.clone();
+        report.analyses.push(analysis_report);
         if let Some(error) = error {
-            failure = Some(RunFailure::Analysis {
+            report.failure = Some(RunFailure::Analysis {
                 analysis: step.name(),
                 error,
             });
@@ -107,29 +139,9 @@ pub fn run_model(
         }
     }
     for c in &current.1.contacts {
-        work += c.work();
+        report.engine_work += c.work();
     }
-    let (start, end) = span_of(&steps);
-    let report = RunReport {
-        model: source.to_path_buf(),
-        selection,
-        threads,
-        analyses,
-        failure,
-        start,
-        end,
-        wall: started.elapsed(),
-        prepare: lowering.prepare,
-        dynamics,
-        output_frames: filter.frames,
-        engine_work: work,
-    };
-    sink.finish(&report).map_err(RunError::Output)?;
-    if report.completed() {
-        Ok(report)
-    } else {
-        Err(RunError::Stopped(Box::new(report)))
-    }
+    report.output_frames = filter.frames;
 }
 
 /// The model lowered for one analysis mode at a time, on one engine.
