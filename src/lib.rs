@@ -36,7 +36,9 @@ pub mod geneva;
 pub mod scenes;
 pub mod tradeoff;
 
-pub use contact_adams::{dataset, engine_choice, expr, model, run, svg_plot, user_routines};
+pub use contact_adams::{
+    dataset, engine_choice, expr, model, run, session, svg_plot, user_routines,
+};
 pub use contact_solver as solver;
 
 /// The README's code blocks, compiled and run as doctests.

@@ -10,6 +10,8 @@
 //! - [`user_routines`] — NORMAL_ROUTINE / FRICTION_ROUTINE laws, registered in code or loaded
 //!   from shared libraries;
 //! - [`run`] — a model lowered onto the solver, and its results written;
+//! - [`session`] — the entry point that runs a dataset's analyses and streams their results
+//!   to a sink the caller implements (the file writer of `contact run` is one);
 //! - [`svg_plot`] — the SVG line plots a run (and the trade report) writes.
 //!
 //! ```
@@ -36,5 +38,6 @@ pub mod engine_choice;
 pub mod expr;
 pub mod model;
 pub mod run;
+pub mod session;
 pub mod svg_plot;
 pub mod user_routines;

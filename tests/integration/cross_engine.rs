@@ -9,12 +9,13 @@
 use contact::dataset;
 use contact::model::{Model, Shape};
 use contact::run::lower::{LoweredModel, lower};
+use contact::session::{ResultFiles, RunOptions, run_files};
 use contact::solver::bdf::IntegratorSettings;
 use contact::solver::contact_force::{Analysis, ContactReport};
 use contact::solver::frame::compute_frame;
 use contact::solver::simulate::Frame;
 use contact::solver::simulate::{DynamicsSettings, simulate};
-use contact_core::{FacetingTolerance, GeometryEngine};
+use contact_core::{FacetingTolerance, GeometryEngine, GeometryLibrary};
 use engine_facet::FacetEngine;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -339,26 +340,28 @@ fn the_cam_follower_lifts_as_the_exact_one_within_the_chord_deviation() {
     }
 }
 
-/// `contact run` of the box_rest example (statics, then 0.5 s of dynamics) with `engine`:
-/// the rows of parts.csv and contacts.csv (numbers only, the first columns dropped).
-fn box_rest_cli(engine: &str) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
-    let out = std::env::temp_dir().join(format!("contact-cross-{engine}-{}", std::process::id()));
+/// The box_rest example (statics, then 0.5 s of dynamics) run with `engine`, its results
+/// written as `contact run` writes them: the rows of parts.csv and contacts.csv (numbers only,
+/// the first columns dropped).
+fn box_rest_run(engine: GeometryLibrary) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+    let out = std::env::temp_dir().join(format!(
+        "contact-cross-{}-{}",
+        engine.name(),
+        std::process::id()
+    ));
     std::fs::remove_dir_all(&out).ok();
-    let args = contact::cli::run::RunArgs {
-        model: example("box_rest/box_rest.adm"),
-        commands: Some(example("box_rest/box_rest.acf")),
-        engine: Some(engine.to_string()),
-        faceting_tolerance: Some(DEFAULT_FT),
-        end: None,
-        dtout: None,
-        steps: None,
-        out: Some(out.clone()),
-        threads: None,
-        quiet: true,
+    let options = RunOptions {
+        engine: Some(engine),
+        faceting_tolerance: Some(FacetingTolerance::new(DEFAULT_FT).unwrap()),
+        ..RunOptions::default()
     };
-    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
-    let code = contact::cli::run::run(&args, &mut stdout, &mut stderr).unwrap();
-    assert_eq!(code, 0, "{}", String::from_utf8_lossy(&stderr));
+    run_files(
+        &example("box_rest/box_rest.adm"),
+        Some(&example("box_rest/box_rest.acf")),
+        &options,
+        &mut ResultFiles::new(&out),
+    )
+    .unwrap();
     let rows = |file: &str, skip: usize| -> Vec<Vec<f64>> {
         std::fs::read_to_string(out.join(file))
             .unwrap()
@@ -386,8 +389,8 @@ fn the_box_rest_example_rests_as_the_exact_one() {
     // box's height deficit, so it agrees within 2·ERROR too. The dynamics then start at rest
     // in equilibrium and stay there in both.
     let (error, imbalance) = (1e-10, 1e-9);
-    let (exact_parts, exact_contacts) = box_rest_cli("exact");
-    let (facet_parts, facet_contacts) = box_rest_cli("faceted");
+    let (exact_parts, exact_contacts) = box_rest_run(GeometryLibrary::Exact);
+    let (facet_parts, facet_contacts) = box_rest_run(GeometryLibrary::Faceted);
     assert_eq!(
         exact_parts.len(),
         51,

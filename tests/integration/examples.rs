@@ -3,6 +3,7 @@
 use crate::ball_drop::{RADIUS, reference_apexes};
 use contact::dataset;
 use contact::run::lower::lower;
+use contact::session::{ResultFiles, RunOptions, run_model};
 use contact::solver::bdf::IntegratorSettings;
 use contact::solver::contact_force::Analysis;
 use contact::solver::simulate::{DynamicsSettings, simulate};
@@ -325,27 +326,18 @@ fn one_and_two_threads_give_identical_runs() {
     );
     let loaded = dataset::read_str(&more, example("ball/three_balls.adm"), None);
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    // `contact run --threads 1` and `--threads 2` write identical result files.
+    // A run with 1 and with 2 threads writes identical result files.
     let dir = std::env::temp_dir().join(format!("contact-threads-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let model = dir.join("three_balls.adm");
-    std::fs::write(&model, &more).unwrap();
     let files = |threads: usize| {
         let out = dir.join(format!("out{threads}"));
-        let args = contact::cli::run::RunArgs {
-            model: model.clone(),
-            commands: None,
-            engine: None,
-            faceting_tolerance: None,
+        let options = RunOptions {
             end: Some(0.8),
             dtout: Some(0.01),
-            steps: None,
-            out: Some(out.clone()),
             threads: Some(threads),
-            quiet: true,
+            ..RunOptions::default()
         };
-        let code = contact::cli::run::run(&args, &mut Vec::new(), &mut Vec::new()).unwrap();
-        assert_eq!(code, 0);
+        let model = example("ball/three_balls.adm");
+        run_model(&loaded.model, &model, &options, &mut ResultFiles::new(&out)).unwrap();
         ["parts.csv", "contacts.csv", "frames.jsonl"].map(|f| std::fs::read(out.join(f)).unwrap())
     };
     assert_eq!(
@@ -353,6 +345,7 @@ fn one_and_two_threads_give_identical_runs() {
         files(2),
         "result files differ between 1 and 2 threads"
     );
+    std::fs::remove_dir_all(&dir).ok();
     let run = |threads: usize| {
         let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in this model".to_string());
         let mut lowered = lower(

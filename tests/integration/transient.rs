@@ -178,7 +178,7 @@ fn transient_counts_degrees_of_freedom_by_rank_so_redundant_constraints_still_gi
             Path::new("plan.acf"),
         )),
     );
-    let mut dof = |t: f64| initial_degrees_of_freedom(&model.system, t).map_err(|e| e.to_string());
+    let mut dof = |t: f64| Ok(initial_degrees_of_freedom(&model.system, t)?);
     let (steps, notes) = plan_analyses(&loaded.model, PlanOverrides::default(), &mut dof).unwrap();
     assert!(
         matches!(steps[..], [AnalysisStep::Kinematics { .. }]),

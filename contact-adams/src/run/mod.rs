@@ -8,5 +8,4 @@ pub mod measures;
 pub mod motion_level;
 pub mod output;
 pub mod plan;
-pub mod progress;
 pub mod sforce;

@@ -18,11 +18,15 @@
 //!   file the initial state ([`contact_solver::linear`]). It ends a span of SIMULATEs.
 //! - Without SIMULATE commands: dynamics from 0 to `--end`.
 
+use crate::dataset::Origin;
 use crate::model::{
     Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
 };
+use crate::run::lower::LowerError;
+use contact_core::InvalidArgument;
 use contact_solver::bdf::{Corrector, IntegratorSettings};
 use contact_solver::linear::LinearSettings;
+use contact_solver::mbs::MbsError;
 use contact_solver::statics::StaticsSettings;
 
 /// Why a SIMULATE/TRANSIENT ran as kinematics or as dynamics.
@@ -153,6 +157,48 @@ struct Span {
     transient: Option<TransientChoice>,
 }
 
+/// Why a run's analyses could not be planned.
+#[derive(Debug, thiserror::Error)]
+pub enum PlanError {
+    /// INTEGRATOR/CORRECTOR names a corrector the solver does not have.
+    #[error("INTEGRATOR/CORRECTOR = {corrector} is not supported (ORIGINAL or MODIFIED)")]
+    Corrector {
+        /// The name given.
+        corrector: String,
+    },
+    /// An INTEGRATOR setting is out of range.
+    #[error("INTEGRATOR: {0}")]
+    Integrator(InvalidArgument),
+    /// A SIMULATE/TRANSIENT's degrees of freedom could not be counted.
+    #[error("{origin}: SIMULATE/TRANSIENT: {source}")]
+    Transient {
+        /// The command.
+        origin: Origin,
+        /// Why.
+        source: DegreesOfFreedomError,
+    },
+    /// A timed SIMULATE has neither END nor DURATION.
+    #[error("{origin}: SIMULATE needs END or DURATION")]
+    NoSpan {
+        /// The command.
+        origin: Origin,
+    },
+    /// No command file (or one without analyses) and no end time given.
+    #[error("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")]
+    NoEnd,
+}
+
+/// Why a model's degrees of freedom could not be counted (for a SIMULATE/TRANSIENT).
+#[derive(Debug, thiserror::Error)]
+pub enum DegreesOfFreedomError {
+    /// The model could not be lowered onto the solver.
+    #[error(transparent)]
+    Lower(#[from] Box<LowerError>),
+    /// Its configuration could not be assembled.
+    #[error(transparent)]
+    Assembly(#[from] MbsError),
+}
+
 /// The analyses of `model`'s command file, in order, with notes on anything interpreted.
 ///
 /// `degrees_of_freedom(t)` gives the model's degrees of freedom at its configuration assembled
@@ -160,8 +206,8 @@ struct Span {
 pub fn plan_analyses(
     model: &Model,
     overrides: PlanOverrides,
-    degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, String>,
-) -> Result<(Vec<AnalysisStep>, Vec<String>), String> {
+    degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, DegreesOfFreedomError>,
+) -> Result<(Vec<AnalysisStep>, Vec<String>), PlanError> {
     let mut notes = Vec::new();
     let mut integrator = convert_integrator(&model.integrator)?;
     let mut equilibrium = model.equilibrium.clone();
@@ -182,8 +228,12 @@ pub fn plan_analyses(
                     ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
                     ModelAnalysis::Transient => {
                         let choice = TransientChoice {
-                            degrees_of_freedom: degrees_of_freedom(time)
-                                .map_err(|e| format!("{origin}: SIMULATE/TRANSIENT: {e}"))?,
+                            degrees_of_freedom: degrees_of_freedom(time).map_err(|source| {
+                                PlanError::Transient {
+                                    origin: origin.clone(),
+                                    source,
+                                }
+                            })?,
                         };
                         notes.push(format!("{origin}: {choice}"));
                         transient = Some(choice);
@@ -213,7 +263,11 @@ pub fn plan_analyses(
                 let stop = match when {
                     Some(SimulationSpan::End(t)) => *t,
                     Some(SimulationSpan::Duration(d)) => time + d,
-                    None => return Err(format!("{origin}: SIMULATE needs END or DURATION")),
+                    None => {
+                        return Err(PlanError::NoSpan {
+                            origin: origin.clone(),
+                        });
+                    }
                 };
                 match &mut span {
                     Some(current) if current.analysis == timed => {
@@ -258,9 +312,7 @@ pub fn plan_analyses(
     match span.take() {
         Some(done) => steps.push(finish(done, overrides, &mut notes, true)),
         None if steps.is_empty() => {
-            let end = overrides
-                .end
-                .ok_or("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")?;
+            let end = overrides.end.ok_or(PlanError::NoEnd)?;
             let done = Span {
                 analysis: ModelAnalysis::Dynamics,
                 start: 0.0,
@@ -339,14 +391,14 @@ fn convert_equilibrium(s: &EquilibriumSettings, integrator: IntegratorSettings) 
 /// The solver's INTEGRATOR settings.
 pub fn convert_integrator(
     s: &crate::model::IntegratorSettings,
-) -> Result<IntegratorSettings, String> {
+) -> Result<IntegratorSettings, PlanError> {
     let corrector = match s.corrector.as_deref() {
         None | Some("MODIFIED") => Corrector::Modified,
         Some("ORIGINAL") | Some("FULL") => Corrector::Full,
         Some(other) => {
-            return Err(format!(
-                "INTEGRATOR/CORRECTOR = {other} is not supported (ORIGINAL or MODIFIED)"
-            ));
+            return Err(PlanError::Corrector {
+                corrector: other.to_string(),
+            });
         }
     };
     let settings = IntegratorSettings {
@@ -358,9 +410,7 @@ pub fn convert_integrator(
         maxit: s.maxit as usize,
         corrector,
     };
-    settings
-        .validate()
-        .map_err(|e| format!("INTEGRATOR: {e}"))?;
+    settings.validate().map_err(PlanError::Integrator)?;
     Ok(settings)
 }
 
@@ -387,7 +437,7 @@ mod tests {
             Some((acf, Path::new("plan.acf"))),
         );
         assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-        let mut asked = |_: f64| dof.ok_or_else(|| "not asked for".to_string());
+        let mut asked = |_: f64| Ok(dof.expect("the plan must not ask for the degrees of freedom"));
         plan_analyses(&loaded.model, overrides, &mut asked).unwrap()
     }
 

@@ -1,0 +1,87 @@
+//! [`ResultFiles`]: the sink that writes a run's results into a directory, as `contact run`
+//! does ([`output`](crate::run::output), [`eigenvalues`](crate::run::eigenvalues)).
+
+use super::report::RunReport;
+use super::{RunLayout, RunSink};
+use crate::run::eigenvalues::EigenvalueFiles;
+use crate::run::output::ResultWriter;
+use contact_solver::linear::Linearization;
+use contact_solver::simulate::Frame;
+use std::path::{Path, PathBuf};
+
+/// Writes a run's frames, eigenvalues, plots and `summary.json` into a directory (created with
+/// its parents when the run starts).
+#[derive(Debug)]
+pub struct ResultFiles {
+    dir: PathBuf,
+    writer: Option<ResultWriter>,
+    eigenvalues: EigenvalueFiles,
+    write_error: Option<std::io::Error>,
+    finished: Vec<PathBuf>,
+}
+
+impl ResultFiles {
+    /// A sink writing into `dir`; nothing is created before the run starts.
+    pub fn new(dir: impl Into<PathBuf>) -> Self {
+        Self {
+            dir: dir.into(),
+            writer: None,
+            eigenvalues: EigenvalueFiles::default(),
+            write_error: None,
+            finished: Vec::new(),
+        }
+    }
+
+    /// The directory written to.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// Whether any LINEAR analysis wrote `eigenvalues.csv` and `eigenvalues.json`.
+    pub fn has_eigenvalues(&self) -> bool {
+        !self.eigenvalues.is_empty()
+    }
+
+    /// The error that stopped writing a frame, if one did.
+    pub fn write_error(&self) -> Option<&std::io::Error> {
+        self.write_error.as_ref()
+    }
+
+    /// The files written when the run finished (the plots and `summary.json`).
+    pub fn finished_files(&self) -> &[PathBuf] {
+        &self.finished
+    }
+}
+
+impl RunSink for ResultFiles {
+    fn start(&mut self, layout: &RunLayout<'_>) -> std::io::Result<()> {
+        self.writer = Some(ResultWriter::create(
+            &self.dir,
+            layout.parts.to_vec(),
+            layout.contacts.to_vec(),
+        )?);
+        Ok(())
+    }
+
+    fn frame(&mut self, frame: &Frame) -> std::io::Result<()> {
+        let Some(writer) = &mut self.writer else {
+            return Err(std::io::Error::other("a frame before the run started"));
+        };
+        writer.write(frame).inspect_err(|e| {
+            self.write_error = Some(std::io::Error::new(e.kind(), e.to_string()));
+        })
+    }
+
+    fn eigenvalues(&mut self, linear: &Linearization, damping: bool) -> std::io::Result<()> {
+        self.eigenvalues
+            .record(&self.dir, linear, damping)
+            .map(|_| ())
+    }
+
+    fn finish(&mut self, report: &RunReport) -> std::io::Result<()> {
+        if let Some(writer) = &mut self.writer {
+            self.finished = writer.finish(&report.to_json())?;
+        }
+        Ok(())
+    }
+}

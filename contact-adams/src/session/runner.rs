@@ -1,0 +1,231 @@
+//! [`run_model`]: the engine chosen, the analyses planned, the model lowered, the analyses run
+//! in order.
+
+use super::analysis::{FrameFilter, run_analysis};
+use super::error::{RunError, RunFailure};
+use super::report::{AnalysisOutcome, DynamicsTotals, RunReport};
+use super::{RunLayout, RunOptions, RunSink};
+use crate::engine_choice::{self, Overrides};
+use crate::model::{MeshFile, Model};
+use crate::run::lower::{LowerError, LoweredModel, lower};
+use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
+use contact_core::{GeometryEngine, GeometryInstance, WorkCounters};
+use contact_solver::contact_force::Analysis;
+use contact_solver::kinematics::initial_degrees_of_freedom;
+use contact_solver::parallel::Parallelism;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// Runs `model`'s analyses (read from `source`, which the report names) with `options`,
+/// delivering its results to `sink` (see the [module docs](super)).
+pub fn run_model(
+    model: &Model,
+    source: &Path,
+    options: &RunOptions,
+    sink: &mut dyn RunSink,
+) -> Result<RunReport, RunError> {
+    let overrides = Overrides {
+        library: options.engine,
+        faceting_tolerance: options.faceting_tolerance,
+    };
+    let selection = engine_choice::resolve(
+        &overrides,
+        &|k| std::env::var(k).ok(),
+        Some(&model.preferences),
+    )?;
+    sink.engine(&selection).map_err(RunError::Output)?;
+    let threads = options
+        .threads
+        .or(model.preferences.threads.map(|n| n.get()))
+        .unwrap_or(1);
+    let parallelism = Parallelism::with_threads(threads)
+        .map_err(|source| RunError::Threads { threads, source })?;
+    let engine = engine_choice::build_engine(selection.library, selection.faceting_tolerance);
+    let mut lowering = Lowering {
+        model,
+        engine: engine.as_ref(),
+        parallelism,
+        prepare: Duration::ZERO,
+    };
+    let steps = plan(model, options, &lowering, sink)?;
+    let Some(first) = steps.first() else {
+        return Err(RunError::NoAnalysis);
+    };
+    let first_analysis = solver_analysis(first);
+    let current = (first_analysis, lowering.lower(first_analysis)?);
+    let contacts: Vec<String> = model
+        .contacts
+        .iter()
+        .map(|c| format!("CONTACT/{}", c.id))
+        .collect();
+    sink.start(&RunLayout {
+        parts: &current.1.parts,
+        contacts: &contacts,
+        analyses: &steps,
+    })
+    .map_err(RunError::Output)?;
+    let (start, end) = span_of(&steps);
+    let mut report = RunReport {
+        model: source.to_path_buf(),
+        selection,
+        threads,
+        analyses: Vec::new(),
+        failure: None,
+        start,
+        end,
+        wall: Duration::ZERO,
+        prepare: Duration::ZERO,
+        dynamics: DynamicsTotals::default(),
+        output_frames: 0,
+        engine_work: WorkCounters::default(),
+    };
+    let started = Instant::now();
+    run_analyses(&steps, &mut lowering, current, sink, &mut report);
+    report.wall = started.elapsed();
+    report.prepare = lowering.prepare;
+    sink.finish(&report).map_err(RunError::Output)?;
+    if report.completed() {
+        Ok(report)
+    } else {
+        Err(RunError::Stopped(Box::new(report)))
+    }
+}
+
+/// Runs `steps` in order from `current` (the model lowered for the first), lowering it again
+/// when the analysis mode changes; records each analysis, the totals and the first failure in
+/// `report`.
+fn run_analyses(
+    steps: &[AnalysisStep],
+    lowering: &mut Lowering<'_>,
+    mut current: (Analysis, LoweredModel),
+    sink: &mut dyn RunSink,
+    report: &mut RunReport,
+) {
+    let mut filter = FrameFilter::default();
+    for step in steps {
+        let analysis = solver_analysis(step);
+        if analysis != current.0 {
+            for c in &current.1.contacts {
+                report.engine_work += c.work();
+            }
+            match lowering.lower(analysis) {
+                Ok(l) => current = (analysis, l),
+                Err(e) => {
+                    report.failure = Some(RunFailure::Lower(e));
+                    break;
+                }
+            }
+        }
+        let lowered = &mut current.1;
+        filter.skip_repeat = matches!(
+            step,
+            AnalysisStep::Dynamics { .. } | AnalysisStep::Kinematics { .. }
+        );
+        if let Some(parts) = &filter.carried {
+            lowered.system.start_from(parts);
+        }
+        let analysis_report = run_analysis(step, lowered, &mut filter, sink);
+        if let Some(AnalysisOutcome::Dynamics(summary)) = &analysis_report.outcome {
+            report.dynamics.add(summary);
+        }
+        let error = analysis_report.error.clone();
+        report.analyses.push(analysis_report);
+        if let Some(error) = error {
+            report.failure = Some(RunFailure::Analysis {
+                analysis: step.name(),
+                error,
+            });
+            break;
+        }
+    }
+    for c in &current.1.contacts {
+        report.engine_work += c.work();
+    }
+    report.output_frames = filter.frames;
+}
+
+/// The model lowered for one analysis mode at a time, on one engine.
+struct Lowering<'a> {
+    model: &'a Model,
+    engine: &'a dyn GeometryEngine,
+    parallelism: Parallelism,
+    /// Wall time spent lowering so far.
+    prepare: Duration,
+}
+
+impl Lowering<'_> {
+    /// The model lowered for `analysis` (friction that acts in dynamics only needs the model
+    /// lowered for the analysis at hand; the state passes from one lowering to the next
+    /// through the parts' states).
+    fn lower(&mut self, analysis: Analysis) -> Result<LoweredModel, LowerError> {
+        let started = Instant::now();
+        let mut lowered = lower(self.model, self.engine, analysis, &read_mesh)?;
+        lowered.system.set_parallelism(self.parallelism.clone());
+        self.prepare += started.elapsed();
+        Ok(lowered)
+    }
+
+    /// The model's degrees of freedom at time `t` (SIMULATE/TRANSIENT chooses its analysis by
+    /// them, which the lowered multibody system knows).
+    fn degrees_of_freedom(&self, t: f64) -> Result<usize, DegreesOfFreedomError> {
+        let lowered =
+            lower(self.model, self.engine, Analysis::Quasistatic, &read_mesh).map_err(Box::new)?;
+        Ok(initial_degrees_of_freedom(&lowered.system, t)?)
+    }
+}
+
+/// A mesh file (STL) as a geometry on its part.
+fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
+    let stl =
+        engine_facet::mesh_file::read_mesh_file(&file.path, false).map_err(|e| e.to_string())?;
+    let mut instance =
+        GeometryInstance::new(contact_core::Geometry::Mesh(std::sync::Arc::new(stl.mesh)))
+            .at(file.pose_part_geometry)
+            .labeled(file.label.clone());
+    instance.flip_normal = file.flip_normal;
+    instance.faceting_tolerance = file.faceting_tolerance;
+    Ok(instance)
+}
+
+/// The analyses of the run, its notes delivered to `sink`.
+fn plan(
+    model: &Model,
+    options: &RunOptions,
+    lowering: &Lowering<'_>,
+    sink: &mut dyn RunSink,
+) -> Result<Vec<AnalysisStep>, RunError> {
+    let overrides = PlanOverrides {
+        end: options.end,
+        dtout: options.dtout,
+        steps: options.steps,
+    };
+    let (steps, notes) = plan_analyses(model, overrides, &mut |t| lowering.degrees_of_freedom(t))?;
+    for note in notes {
+        sink.note(&note).map_err(RunError::Output)?;
+    }
+    Ok(steps)
+}
+
+/// The contact analysis mode a step's model is lowered for (LINEAR linearizes the equations
+/// of motion, where DYNAMICS_ONLY friction acts).
+fn solver_analysis(step: &AnalysisStep) -> Analysis {
+    match step {
+        AnalysisStep::Dynamics { .. } | AnalysisStep::Linear { .. } => Analysis::Dynamics,
+        _ => Analysis::Quasistatic,
+    }
+}
+
+/// The first and last time of the run.
+fn span_of(steps: &[AnalysisStep]) -> (f64, f64) {
+    let times = |step: &AnalysisStep| match *step {
+        AnalysisStep::Dynamics { start, end, .. } | AnalysisStep::Kinematics { start, end, .. } => {
+            (start, end)
+        }
+        AnalysisStep::Statics { t, .. }
+        | AnalysisStep::InitialConditions { t }
+        | AnalysisStep::Linear { t, .. } => (t, t),
+    };
+    let start = steps.first().map_or(0.0, |s| times(s).0);
+    let end = steps.iter().map(|s| times(s).1).fold(start, f64::max);
+    (start, end)
+}
