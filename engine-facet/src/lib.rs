@@ -30,7 +30,6 @@
 //!   arc or curve against an arc, curve or line, one contact per overlap region) on polylines,
 //!   with the polyline's true-normal field (exact normals for circles and arcs) and the
 //!   chords lifted onto Hermite arcs through the true tangents.
-//! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for side-by-side comparisons.
 //!
 //! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)
 //! Worst case over four mesh orientations; depth error relative to the exact depth, normal error in
@@ -86,7 +85,6 @@ pub mod mesh_file;
 pub mod obb;
 pub mod obb_tree;
 pub mod obj;
-pub mod parry_adapter;
 pub mod patches;
 pub mod planar;
 mod plane_contact;

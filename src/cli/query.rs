@@ -10,13 +10,13 @@
 //! commas (the quaternion is normalised; a zero quaternion is an error); blank lines and lines
 //! starting with `#` are skipped.
 
+use crate::peer::{ParryError, ParryPeer};
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
 use contact_core::{
     Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, InvalidArgument,
     Isometry3, PrepareError, QueryError, UnitQuaternion, Vector3, WorkCounters,
 };
 use engine_facet::mesh_file::{MeshFileError, read_mesh_file};
-use engine_facet::parry_adapter::{ParryError, ParryPeer};
 use engine_facet::stl::read_stl;
 use engine_facet::{FacetEngine, Shape};
 use std::io::Write;
