@@ -21,6 +21,7 @@
 //! - [`ContactKinematics`]: penetration rate, slip and spin of a contact from the two bodies'
 //!   velocities ([`BodyMotion`]), as the solver computes them.
 //! - [`ContactArgs`] → [`ContactParams`]: every CONTACT argument with its range and default;
+//!   the laws' named parameters ([`laws::ImpactParams`], [`laws::CoulombParams`], …);
 //!   [`Preferences`]; [`Units`]; [`estimate_small_part`].
 //! - [`nalgebra`]: the math library of every type here, re-exported.
 //!
