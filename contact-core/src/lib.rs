@@ -22,7 +22,10 @@
 //!   velocities ([`BodyMotion`]), as the solver computes them.
 //! - [`ContactArgs`] → [`ContactParams`]: every CONTACT argument with its range and default;
 //!   the laws' named parameters ([`laws::ImpactParams`], [`laws::CoulombParams`], …);
-//!   [`Preferences`]; [`Units`]; [`estimate_small_part`].
+//!   [`Preferences`] ([`GeometryLibrary::parse`] reads an engine's name); [`Units`];
+//!   [`estimate_small_part`].
+//! - [`mesh_file`]: STL and OBJ files read, welded and checked into mesh geometry — the one
+//!   input this crate reads.
 //! - [`nalgebra`]: the math library of every type here, re-exported.
 //!
 //! ## Notation
@@ -66,6 +69,7 @@ pub mod geometry;
 mod instance;
 mod kinematics;
 pub mod laws;
+pub mod mesh_file;
 mod params;
 mod preferences;
 mod units;
