@@ -8,7 +8,7 @@
 use contact::solver::bdf::reference::{Andrews, Robertson};
 use contact::solver::bdf::{Bdf, IntegratorSettings, IntegratorStats};
 use contact::solver::{DaeSystem, EvaluationError, VariableKind};
-use contact_core::laws::ImpactLaw;
+use contact_core::laws::{ImpactLaw, ImpactParams};
 use criterion::{BenchmarkId, Criterion};
 use nalgebra::{DMatrix, DVector};
 use std::time::Duration;
@@ -108,7 +108,13 @@ impl DaeSystem for Ball {
 /// the stats and the apex heights (from dense output).
 fn drop_ball(error: f64) -> (IntegratorStats, Vec<f64>) {
     let mut ball = Ball {
-        law: ImpactLaw::new(1e6, 1.0, 10.0, 1e-4).unwrap(),
+        law: ImpactLaw::from_params(ImpactParams {
+            stiffness: 1e6,
+            exponent: 1.0,
+            damping: 10.0,
+            max_penetration: 1e-4,
+        })
+        .unwrap(),
     };
     let settings = IntegratorSettings {
         error,

@@ -19,6 +19,7 @@
     reason = "criterion_group! generates an undocumented public function"
 )]
 
+use contact::peer::primitives::{self, PeerShape};
 use contact_core::geometry::{
     Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus, TriangleMesh,
 };
@@ -28,7 +29,6 @@ use contact_core::{
 use contact_core::{Point2, Point3};
 use criterion::{Criterion, criterion_group, criterion_main};
 use engine_exact::ExactEngine;
-use engine_exact::parry_adapter::{self, PeerShape};
 use std::f64::consts::FRAC_PI_2;
 use std::hint::black_box;
 use std::time::Duration;
@@ -544,7 +544,7 @@ fn bench_pairs(c: &mut Criterion) {
         let peers = peer_shape(&case.i).zip(peer_shape(&case.j));
         let peer = peers
             .as_ref()
-            .and_then(|(a, b)| parry_adapter::contact(a, &case.pose_i, b, &case.pose_j));
+            .and_then(|(a, b)| primitives::contact(a, &case.pose_i, b, &case.pose_j));
         // Timed only where parry answers the pair.
         let peers = peers.filter(|_| peer.is_some());
         let reference = case.depth.map_or(
@@ -582,7 +582,7 @@ fn bench_pairs(c: &mut Criterion) {
         if let Some((a, b)) = &peers {
             group.bench_function("parry", |bench| {
                 bench.iter(|| {
-                    parry_adapter::contact(a, black_box(&case.pose_i), b, black_box(&case.pose_j))
+                    primitives::contact(a, black_box(&case.pose_i), b, black_box(&case.pose_j))
                 })
             });
         }

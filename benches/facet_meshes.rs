@@ -8,6 +8,7 @@
     reason = "criterion_group! generates an undocumented pub fn"
 )]
 
+use contact::peer::ParryPeer;
 use contact_core::{
     FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3, UnitQuaternion,
     Vector3, WorkCounters,
@@ -15,7 +16,6 @@ use contact_core::{
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use engine_facet::FacetEngine;
 use engine_facet::facet_mesh::FacetMesh;
-use engine_facet::parry_adapter::ParryPeer;
 use engine_facet::tessellate::tessellate;
 use std::hint::black_box;
 use std::time::Duration;

@@ -14,6 +14,7 @@
 //!
 //! - [`geneva`] — the Geneva example's meshes, generated;
 //! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
+//! - [`peer`] — parry beside our engines, for comparison only (every parry call of the workspace);
 //! - [`tradeoff`] — the accuracy-against-speed measurement and engine selection;
 //! - [`cli`] — the `contact` command-line subcommands.
 //!
@@ -33,6 +34,7 @@
 
 pub mod cli;
 pub mod geneva;
+pub mod peer;
 pub mod scenes;
 pub mod tradeoff;
 

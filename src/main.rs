@@ -131,7 +131,7 @@ fn main() -> ExitCode {
                 plot,
             };
             let mut progress = |label: &str| eprintln!("measuring {label}");
-            let parry = contact::tradeoff::ParryPeerEngine;
+            let parry = contact::peer::ParryPeerEngine;
             let peers: Vec<&dyn contact_core::GeometryEngine> = if peer.is_some() {
                 vec![&parry]
             } else {

@@ -154,7 +154,30 @@ fn first<T>(over: Option<T>, env: Option<T>, dataset: Option<T>, default: T) -> 
         .unwrap_or((default, Source::Default))
 }
 
-/// Builds the engine for a library and model-wide tolerance.
+/// The engine named `name` at the model-wide faceting `tolerance` (used by the faceted engine
+/// only): `exact` or `faceted`, or an Adams `PREFERENCES/CONTACT_GEOMETRY_LIBRARY` value
+/// (PARASOLID → exact; DEFAULT_LIBRARY, RAPID → faceted), any case, as
+/// [`GeometryLibrary::parse`] reads them; then [`build_engine`]. An unknown name is an error
+/// listing the accepted ones.
+///
+/// ```
+/// use contact_adams::engine_choice::engine_by_name;
+/// use contact_core::FacetingTolerance;
+///
+/// let engine = engine_by_name("PARASOLID", FacetingTolerance::DEFAULT)?;
+/// assert_eq!(engine.name(), "exact");
+/// assert!(engine_by_name("ACIS", FacetingTolerance::DEFAULT).is_err());
+/// # Ok::<(), contact_core::InvalidArgument>(())
+/// ```
+pub fn engine_by_name(
+    name: &str,
+    tolerance: FacetingTolerance,
+) -> Result<Box<dyn GeometryEngine>, InvalidArgument> {
+    Ok(build_engine(GeometryLibrary::parse(name)?, tolerance))
+}
+
+/// Builds the engine for a library and model-wide tolerance: the one place that names both
+/// engines' types.
 pub fn build_engine(
     library: GeometryLibrary,
     tolerance: FacetingTolerance,

@@ -18,8 +18,15 @@
 //! - [`Contact`]: points on each body, the normal from J into I, penetration, area.
 //! - [`laws`]: STEP/STEP5, IMPACT, POISSON, the augmented-Lagrangian update, Coulomb μ(v), friction
 //!   force and torque, each with its partial derivatives.
+//! - [`ContactKinematics`]: penetration rate, slip and spin of a contact from the two bodies'
+//!   velocities ([`BodyMotion`]), as the solver computes them.
 //! - [`ContactArgs`] → [`ContactParams`]: every CONTACT argument with its range and default;
-//!   [`Preferences`]; [`Units`]; [`estimate_small_part`].
+//!   the laws' named parameters ([`laws::ImpactParams`], [`laws::CoulombParams`], …);
+//!   [`Preferences`] ([`GeometryLibrary::parse`] reads an engine's name); [`Units`];
+//!   [`estimate_small_part`].
+//! - [`mesh_file`]: STL and OBJ files read, welded and checked into mesh geometry — the one
+//!   input this crate reads.
+//! - [`nalgebra`]: the math library of every type here, re-exported.
 //!
 //! ## Notation
 //! Names say the frame (after Drake's monogram notation): `pose_world_part` or `X_WP` is frame
@@ -60,7 +67,9 @@ mod error;
 mod estimate;
 pub mod geometry;
 mod instance;
+mod kinematics;
 pub mod laws;
+pub mod mesh_file;
 mod params;
 mod preferences;
 mod units;
@@ -74,12 +83,19 @@ pub use error::InvalidArgument;
 pub use estimate::{SmallPartEstimate, estimate_small_part};
 pub use geometry::{Geometry, GeometryKind};
 pub use instance::GeometryInstance;
+pub use kinematics::{BodyMotion, ContactKinematics};
 pub use params::{
     ContactArgs, ContactParams, ContactType, FrictionModel, FrictionSwitch, NormalModel,
     ParamError, ParamWarning, UserRoutine,
 };
 pub use preferences::{FacetingTolerance, GeometryLibrary, Preferences};
 pub use units::{Dimension, Units, scale_stiffness};
+
+/// The nalgebra every type of this crate is built on (0.34), re-exported so an embedder names
+/// the same version without a dependency of its own: [`Isometry3`], [`Vector3`], … are its
+/// types. If you also use parry, nalgebra 0.34 pairs with parry3d-f64 0.25 (the last parry
+/// whose math types are nalgebra's; parry 0.26 moved to glam).
+pub use nalgebra;
 
 /// A 3-D point (f64).
 pub type Point3 = nalgebra::Point3<f64>;

@@ -38,6 +38,23 @@ impl GeometryLibrary {
     }
 }
 
+impl std::str::FromStr for GeometryLibrary {
+    type Err = InvalidArgument;
+
+    /// As [`GeometryLibrary::parse`]: `"parasolid".parse::<GeometryLibrary>()`.
+    fn from_str(value: &str) -> Result<Self, Self::Err> {
+        Self::parse(value)
+    }
+}
+
+impl std::fmt::Display for GeometryLibrary {
+    /// The name reports print ([`GeometryLibrary::name`]), which [`GeometryLibrary::parse`]
+    /// reads back.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// The faceting tolerance FT (ours, SPEC §7): dimensionless; a geometry with bounding-box
 /// diagonal `L` is faceted so that no chord deviates from the true surface by more than `L/FT`.
 /// Higher is finer. Finite and > 0; the default is Adams' 300.0028.
@@ -105,6 +122,11 @@ mod tests {
             "{e}"
         );
         assert_eq!(GeometryLibrary::default(), GeometryLibrary::Faceted);
+        // FromStr and Display round-trip through the short names.
+        for library in [GeometryLibrary::Exact, GeometryLibrary::Faceted] {
+            assert_eq!(library.to_string().parse::<GeometryLibrary>(), Ok(library));
+        }
+        assert_eq!(" exact ".parse(), Ok(GeometryLibrary::Exact));
     }
 
     #[test]

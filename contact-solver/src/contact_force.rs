@@ -4,6 +4,8 @@
 //! (SPEC §4) the force acts at the midpoint `p` of the two surface points:
 //! - the relative velocity of I's material point at `p` against J's, `v = v_I(p) − v_J(p)`;
 //!   the penetration rate is `δ̇ = −n·v` (positive while approaching, `n` from J into I);
+//!   these rates, the slip and the spin below come from contact-core's
+//!   [`ContactKinematics`], so an embedder using it gets these numbers;
 //! - the normal force `Fn(δ, δ̇) ≥ 0` from IMPACT or POISSON, pushing I along `n`;
 //! - with friction, the slip `v_t = v − (n·v)·n` gives `F_t = μ(|v_t|)·Fn·v̂_t` (μ signed, so it
 //!   opposes the slip) and the relative spin `ω_n = (ω_I − ω_J)·n` gives the torque
@@ -29,8 +31,8 @@ use crate::contact_plane::PlanarGuard;
 use crate::dae::EvaluationError;
 use crate::mbs::{ForceElement, Load, PartId, StateView};
 use contact_core::{
-    Contact, ContactParams, FrictionModel, InvalidArgument, NormalModel, PreparedPair, Vector3,
-    WorkCounters,
+    Contact, ContactKinematics, ContactParams, FrictionModel, InvalidArgument, NormalModel,
+    PreparedPair, Vector3, WorkCounters,
     laws::{
         NormalForce, UserContact, UserFrictionLaw, UserNormalLaw, checked_friction,
         checked_normal_force,
@@ -256,13 +258,15 @@ impl ContactForce {
             _ => None,
         };
         let mut out = Vec::with_capacity(contacts.len());
+        let (motion_i, motion_j) = (si.motion(), sj.motion());
         for (index, contact) in contacts.into_iter().enumerate() {
-            let p = contact.midpoint_w().coords;
             let n = contact.normal_w;
-            let v = si.point_velocity_w(&p) - sj.point_velocity_w(&p);
-            let rate = -n.dot(&v);
-            let slip = v - n * n.dot(&v);
-            let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
+            let ContactKinematics {
+                penetration_rate: rate,
+                slip_velocity_w: slip,
+                spin,
+                ..
+            } = ContactKinematics::compute(&contact, &motion_i, &motion_j);
             let mut user = UserContact {
                 time: t,
                 index,
@@ -506,3 +510,6 @@ impl std::fmt::Debug for UserLaws {
             .finish()
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -237,9 +237,15 @@ impl Multipliers {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use contact_core::laws::PoissonParams;
 
     fn multipliers(restitution: f64) -> Multipliers {
-        let law = PoissonLaw::new(1e6, restitution, 1e-3).unwrap();
+        let law = PoissonLaw::from_params(PoissonParams {
+            penalty: 1e6,
+            restitution,
+            transition_velocity: 1e-3,
+        })
+        .unwrap();
         Multipliers::new(law, AugmentedLagrangian::new(1e6).unwrap(), 0.1).unwrap()
     }
 

@@ -67,7 +67,6 @@
 //! - [`pairs`]: 3-D pair families, one file each; [`polyhedron`]: exact convex clipping.
 //! - [`planar`]: 2-D pairs, computed in J's plane.
 //! - [`quadrature`]: Gauss–Legendre rules for the pairs without a short closed form.
-//! - [`parry_adapter`]: every parry call, for the side-by-side benches only.
 #![cfg_attr(
     not(test),
     warn(clippy::unwrap_used, clippy::expect_used, clippy::panic)
@@ -76,7 +75,6 @@
 pub mod dispatch;
 mod kernel;
 pub mod pairs;
-pub mod parry_adapter;
 pub mod planar;
 pub mod polyhedron;
 mod prepared;

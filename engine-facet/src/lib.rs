@@ -18,8 +18,8 @@
 //!
 //! Pipeline and modules:
 //! - [`tessellate`]: primitives → closed meshes (FT → segment counts documented there);
-//!   2-D shapes → polylines. [`stl`], [`obj`]: reading and checking STL and OBJ files
-//!   ([`mesh_file`] picks by extension).
+//!   2-D shapes → polylines. Mesh files (STL, OBJ) are read and checked by
+//!   [`contact_core::mesh_file`], re-exported here as [`mesh_file`], [`stl`] and [`obj`].
 //! - [`obb`], [`obb_tree`]: boxes, the 15-axis separating-axis test, trees and their descent.
 //! - [`triangle_pair`]: the triangle–triangle test with its crossing segment.
 //! - [`contact_region`]: crossings → regions → contacts (the method and its error bound);
@@ -30,7 +30,6 @@
 //!   arc or curve against an arc, curve or line, one contact per overlap region) on polylines,
 //!   with the polyline's true-normal field (exact normals for circles and arcs) and the
 //!   chords lifted onto Hermite arcs through the true tangents.
-//! - [`parry_adapter`]: parry's trimesh contact on the same meshes, for side-by-side comparisons.
 //!
 //! ## Accuracy (the characterisation table, `tests/facet/convergence.rs`)
 //! Worst case over four mesh orientations; depth error relative to the exact depth, normal error in
@@ -82,11 +81,8 @@ mod crossings;
 mod engine;
 pub mod facet_mesh;
 mod inside_flood;
-pub mod mesh_file;
 pub mod obb;
 pub mod obb_tree;
-pub mod obj;
-pub mod parry_adapter;
 pub mod patches;
 pub mod planar;
 mod plane_contact;
@@ -94,10 +90,10 @@ mod plane_support;
 mod prepared;
 mod scratch;
 mod smooth_patch;
-pub mod stl;
 pub mod surface_sums;
 pub mod tessellate;
 pub mod triangle_pair;
 
+pub use contact_core::mesh_file::{self, obj, stl};
 pub use engine::FacetEngine;
 pub use prepared::{PreparedFacetPair, PreparedGeometry, Shape};

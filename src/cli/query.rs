@@ -10,14 +10,14 @@
 //! commas (the quaternion is normalised; a zero quaternion is an error); blank lines and lines
 //! starting with `#` are skipped.
 
+use crate::peer::{ParryError, ParryPeer};
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
+use contact_core::mesh_file::stl::read_stl;
+use contact_core::mesh_file::{MeshFileError, read_mesh_file};
 use contact_core::{
-    Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, InvalidArgument,
-    Isometry3, PrepareError, QueryError, UnitQuaternion, Vector3, WorkCounters,
+    Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, GeometryLibrary,
+    InvalidArgument, Isometry3, PrepareError, QueryError, UnitQuaternion, Vector3, WorkCounters,
 };
-use engine_facet::mesh_file::{MeshFileError, read_mesh_file};
-use engine_facet::parry_adapter::{ParryError, ParryPeer};
-use engine_facet::stl::read_stl;
 use engine_facet::{FacetEngine, Shape};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -160,7 +160,7 @@ pub fn parse_geometry(
         _ if rest.is_empty() => {
             // `.obj` by its extension; anything else is read as STL, whatever its name.
             let path = Path::new(spec);
-            let read = if engine_facet::mesh_file::is_mesh_file(path) {
+            let read = if contact_core::mesh_file::is_mesh_file(path) {
                 read_mesh_file(path, accept_open)
             } else {
                 read_stl(path, accept_open).map_err(MeshFileError::from)
@@ -232,10 +232,11 @@ fn make_engine(
     name: EngineName,
     tolerance: FacetingTolerance,
 ) -> Result<Box<dyn GeometryEngine>, QueryCliError> {
-    match name {
-        EngineName::Faceted => Ok(Box::new(FacetEngine::new(tolerance))),
-        EngineName::Exact => Ok(Box::new(engine_exact::ExactEngine)),
-    }
+    let library = match name {
+        EngineName::Faceted => GeometryLibrary::Faceted,
+        EngineName::Exact => GeometryLibrary::Exact,
+    };
+    Ok(crate::engine_choice::build_engine(library, tolerance))
 }
 
 fn median(samples: &mut [f64]) -> f64 {

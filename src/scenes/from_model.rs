@@ -26,7 +26,6 @@
 use super::{POSES_PER_SPECIAL_DEPTH, Scene, ScenePose, SplitMix64, relative_depths, support};
 use crate::model::{ContactDimension, ContactElement, ContactGeometry, MeshFile, Model};
 use contact_core::{Geometry, GeometryInstance, Isometry3, UnitQuaternion, Vector3};
-use std::sync::Arc;
 
 /// Largest tilt of I in the perturbed poses, radians.
 const MAX_TILT: f64 = 5.0 * std::f64::consts::PI / 180.0;
@@ -167,11 +166,11 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
     Ok(scene)
 }
 
-/// Reads an STL file into a geometry placed on its part.
+/// Reads an STL or OBJ file into a geometry placed on its part.
 fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let stl =
-        engine_facet::mesh_file::read_mesh_file(&file.path, false).map_err(|e| e.to_string())?;
-    let mut instance = GeometryInstance::new(Geometry::Mesh(Arc::new(stl.mesh)))
+    let geometry =
+        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+    let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());
     instance.flip_normal = file.flip_normal;

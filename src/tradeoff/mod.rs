@@ -33,7 +33,6 @@ mod band;
 mod compare;
 mod for_model;
 mod measure;
-mod parry_peer;
 mod report;
 mod select;
 mod sweep;
@@ -44,7 +43,6 @@ pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
 };
-pub use parry_peer::ParryPeerEngine;
 pub use report::{csv, json, plot, table};
 pub use select::{
     Choice, ModelChoice, NoRecommendation, Recommendation, meets, recommend, select, select_model,

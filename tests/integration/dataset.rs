@@ -453,7 +453,7 @@ CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT\nEND\n"
         let ContactGeometry::MeshFile(mesh) = &loaded.model.contacts[0].j_geometries[0].1 else {
             panic!("not a mesh file")
         };
-        let read = engine_facet::mesh_file::read_mesh_file(&mesh.path, false).unwrap();
+        let read = contact_core::mesh_file::read_mesh_file(&mesh.path, false).unwrap();
         let ball = GeometryInstance::new(Geometry::sphere(0.2).unwrap());
         let solid = GeometryInstance::new(Geometry::Mesh(std::sync::Arc::new(read.mesh.clone())));
         let pair = engine_facet::FacetEngine::default()

@@ -150,7 +150,14 @@ fn below_the_friction_angle_the_block_creeps_only_at_the_continuous_laws_speed()
         },
     )
     .unwrap();
-    let friction = contact_core::laws::CoulombFriction::new(0.3, 0.25, 0.01, 0.02).unwrap();
+    let friction =
+        contact_core::laws::CoulombFriction::from_params(contact_core::laws::CoulombParams {
+            mu_static: 0.3,
+            mu_dynamic: 0.25,
+            stiction_velocity: 0.01,
+            friction_velocity: 0.02,
+        })
+        .unwrap();
     let (mut lo, mut hi) = (0.0, 0.01);
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);

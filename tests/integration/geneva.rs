@@ -82,7 +82,8 @@ fn run(
     let loaded = dataset::read(&example(&format!("{name}/{name}.adm")), None).unwrap();
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
     let meshes = |file: &contact::model::MeshFile| -> Result<GeometryInstance, String> {
-        let stl = engine_facet::stl::read_stl(&file.path, false).map_err(|e| e.to_string())?;
+        let stl =
+            contact_core::mesh_file::stl::read_stl(&file.path, false).map_err(|e| e.to_string())?;
         Ok(
             GeometryInstance::new(contact_core::Geometry::Mesh(std::sync::Arc::new(stl.mesh)))
                 .at(file.pose_part_geometry)
@@ -204,7 +205,7 @@ fn the_committed_meshes_are_what_the_generator_writes() {
             "{name} differs from the generator's output: run `cargo run --example geneva_meshes`"
         );
         // Closed, as the faceted engine needs for inside tests.
-        engine_facet::stl::read_stl(&dir.join(name), false).unwrap();
+        contact_core::mesh_file::stl::read_stl(&dir.join(name), false).unwrap();
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -289,7 +290,7 @@ fn a_locking_disc_pressed_into_its_arc_penetrates_by_the_crescents_thickness() {
             .iter()
             .map(|t| t.map(contact_core::Point3::from))
             .collect();
-        let (vertices, faces) = engine_facet::stl::weld(&corners);
+        let (vertices, faces) = contact_core::mesh_file::stl::weld(&corners);
         GeometryInstance::new(Geometry::Mesh(std::sync::Arc::new(
             contact_core::geometry::TriangleMesh::new(vertices, faces).unwrap(),
         )))

@@ -40,7 +40,7 @@ fn exact_matches_its_references_and_every_faceted_error_falls_at_every_step_of_t
         .filter(|n| !n.starts_with("mesh_sphere_100k"))
         .map(|n| scenes::scene(n).unwrap())
         .collect();
-    let parry = engine_exact::parry_adapter::ParryEngine;
+    let parry = contact::peer::ParryEngine;
     let report = tradeoff::run(
         &chosen,
         &sweep(&tradeoff::DEFAULT_TOLERANCES),

@@ -176,12 +176,11 @@ impl Lowering<'_> {
 
 /// A mesh file (STL) as a geometry on its part.
 fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let stl =
-        engine_facet::mesh_file::read_mesh_file(&file.path, false).map_err(|e| e.to_string())?;
-    let mut instance =
-        GeometryInstance::new(contact_core::Geometry::Mesh(std::sync::Arc::new(stl.mesh)))
-            .at(file.pose_part_geometry)
-            .labeled(file.label.clone());
+    let geometry =
+        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+    let mut instance = GeometryInstance::new(geometry)
+        .at(file.pose_part_geometry)
+        .labeled(file.label.clone());
     instance.flip_normal = file.flip_normal;
     instance.faceting_tolerance = file.faceting_tolerance;
     Ok(instance)

@@ -4,6 +4,34 @@ use super::step::{Smooth, Step};
 use crate::error::{InvalidArgument, positive};
 use crate::{Matrix3, Vector3};
 
+/// The Coulomb friction parameters by name, for [`CoulombFriction::from_params`]: two
+/// coefficients and two velocities that a positional call could swap without a compiler error.
+///
+/// ```
+/// use contact_core::laws::{CoulombFriction, CoulombParams};
+///
+/// let friction = CoulombFriction::from_params(CoulombParams {
+///     mu_static: 0.3,
+///     mu_dynamic: 0.1,
+///     stiction_velocity: 0.1,
+///     friction_velocity: 1.0,
+/// })?;
+/// // Sliding fast: the dynamic coefficient, opposing the slip.
+/// assert_eq!(friction.mu(2.0).value, -0.1);
+/// # Ok::<(), contact_core::InvalidArgument>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoulombParams {
+    /// MU_STATIC μs > 0.
+    pub mu_static: f64,
+    /// MU_DYNAMIC μd in (0, μs].
+    pub mu_dynamic: f64,
+    /// STICTION_TRANSITION_VELOCITY vs > 0.
+    pub stiction_velocity: f64,
+    /// FRICTION_TRANSITION_VELOCITY vd > vs.
+    pub friction_velocity: f64,
+}
+
 /// Adams' Coulomb friction: MU_STATIC μs, MU_DYNAMIC μd, STICTION_TRANSITION_VELOCITY vs,
 /// FRICTION_TRANSITION_VELOCITY vd, with `0 < μd ≤ μs` and `0 < vs < vd`.
 ///
@@ -49,7 +77,29 @@ pub struct FrictionTorque {
 }
 
 impl CoulombFriction {
-    /// Validates the four arguments (see the type's docs for the ranges).
+    /// Coulomb friction from named parameters, validated as [`Self::new`] validates them.
+    pub fn from_params(params: CoulombParams) -> Result<Self, InvalidArgument> {
+        Self::new(
+            params.mu_static,
+            params.mu_dynamic,
+            params.stiction_velocity,
+            params.friction_velocity,
+        )
+    }
+
+    /// The parameters by name.
+    pub fn params(&self) -> CoulombParams {
+        CoulombParams {
+            mu_static: self.mu_static,
+            mu_dynamic: self.mu_dynamic,
+            stiction_velocity: self.stiction_velocity,
+            friction_velocity: self.friction_velocity,
+        }
+    }
+
+    /// Validates the four arguments, in the order MU_STATIC, MU_DYNAMIC,
+    /// STICTION_TRANSITION_VELOCITY, FRICTION_TRANSITION_VELOCITY (see the type's docs for the
+    /// ranges; [`Self::from_params`] names them).
     pub fn new(
         mu_static: f64,
         mu_dynamic: f64,

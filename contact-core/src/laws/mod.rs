@@ -13,8 +13,10 @@ mod normal;
 mod step;
 mod user;
 
-pub use friction::{CoulombFriction, FrictionForce, FrictionTorque};
-pub use normal::{AugmentedLagrangian, ImpactLaw, NormalForce, PoissonLaw};
+pub use friction::{CoulombFriction, CoulombParams, FrictionForce, FrictionTorque};
+pub use normal::{
+    AugmentedLagrangian, ImpactLaw, ImpactParams, NormalForce, PoissonLaw, PoissonParams,
+};
 pub use step::{Smooth, Step, step, step5};
 pub use user::{
     USER_ABI_VERSION, UserContact, UserContactAbi, UserFriction, UserFrictionLaw, UserLawError,

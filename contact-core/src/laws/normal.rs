@@ -23,6 +23,33 @@ impl NormalForce {
     };
 }
 
+/// The IMPACT parameters by name, for [`ImpactLaw::from_params`]: four numbers of different
+/// dimensions that a positional call could swap without a compiler error.
+///
+/// ```
+/// use contact_core::laws::{ImpactLaw, ImpactParams};
+///
+/// let law = ImpactLaw::from_params(ImpactParams {
+///     stiffness: 1e5,
+///     exponent: 2.2,
+///     damping: 10.0,
+///     max_penetration: 0.1,
+/// })?;
+/// assert_eq!(law.dmax(), 0.1);
+/// # Ok::<(), contact_core::InvalidArgument>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactParams {
+    /// STIFFNESS k > 0 (force / length^e).
+    pub stiffness: f64,
+    /// EXPONENT e > 0 (Adams advises e ≥ 1.5).
+    pub exponent: f64,
+    /// DAMPING c > 0 (force / velocity), reached at `max_penetration`.
+    pub damping: f64,
+    /// DMAX > 0: the penetration at which the damping reaches `c` (length).
+    pub max_penetration: f64,
+}
+
 /// The IMPACT law (Adams CONTACT/IMPACT):
 ///
 /// `Fn = max(0, k·δ^e + STEP(δ, 0, 0, dmax, c)·δ̇)` for δ > 0, else 0.
@@ -41,7 +68,30 @@ pub struct ImpactLaw {
 }
 
 impl ImpactLaw {
-    /// IMPACT with STIFFNESS `k` > 0, EXPONENT `e` > 0, DAMPING `c` > 0 and DMAX > 0.
+    /// IMPACT from named parameters, validated as [`Self::new`] validates them: each must be
+    /// finite and > 0, and the error names the first that is not, with its value.
+    pub fn from_params(params: ImpactParams) -> Result<Self, InvalidArgument> {
+        Self::new(
+            params.stiffness,
+            params.exponent,
+            params.damping,
+            params.max_penetration,
+        )
+    }
+
+    /// The law's parameters by name.
+    pub fn params(&self) -> ImpactParams {
+        ImpactParams {
+            stiffness: self.stiffness,
+            exponent: self.exponent,
+            damping: self.damping,
+            max_penetration: self.dmax,
+        }
+    }
+
+    /// IMPACT with STIFFNESS `k` > 0, EXPONENT `e` > 0, DAMPING `c` > 0 and DMAX > 0, in that
+    /// order (positional, as the CONTACT statement lists them; [`Self::from_params`] names
+    /// them).
     pub fn new(
         stiffness: f64,
         exponent: f64,
@@ -99,6 +149,17 @@ impl ImpactLaw {
     }
 }
 
+/// The POISSON parameters by name, for [`PoissonLaw::from_params`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PoissonParams {
+    /// PENALTY p > 0 (force / length).
+    pub penalty: f64,
+    /// RESTITUTION_COEFFICIENT ε in [0, 1].
+    pub restitution: f64,
+    /// The transition velocity `v_t` > 0 of the compression/restitution blend (velocity).
+    pub transition_velocity: f64,
+}
+
 /// The POISSON law. **Ours**: Adams does not publish its formula (SPEC §5).
 ///
 /// A penalty spring stiff `p` while the bodies approach and `ε²·p` while they separate,
@@ -119,6 +180,24 @@ pub struct PoissonLaw {
 }
 
 impl PoissonLaw {
+    /// POISSON from named parameters, validated as [`Self::new`] validates them.
+    pub fn from_params(params: PoissonParams) -> Result<Self, InvalidArgument> {
+        Self::new(
+            params.penalty,
+            params.restitution,
+            params.transition_velocity,
+        )
+    }
+
+    /// The law's parameters by name.
+    pub fn params(&self) -> PoissonParams {
+        PoissonParams {
+            penalty: self.penalty,
+            restitution: self.restitution,
+            transition_velocity: self.transition_velocity,
+        }
+    }
+
     /// POISSON with PENALTY `p` > 0, RESTITUTION_COEFFICIENT ε in [0, 1] and the transition
     /// velocity `v_t` > 0 of the compression/restitution blend.
     pub fn new(

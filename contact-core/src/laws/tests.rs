@@ -79,7 +79,49 @@ fn step_rejects_an_empty_interval() {
 }
 
 fn impact() -> ImpactLaw {
-    ImpactLaw::new(1e5, 2.2, 10.0, 0.1).unwrap()
+    ImpactLaw::from_params(ImpactParams {
+        stiffness: 1e5,
+        exponent: 2.2,
+        damping: 10.0,
+        max_penetration: 0.1,
+    })
+    .unwrap()
+}
+
+/// The named parameters build the same law as the positional ones, give it back, and are
+/// validated the same way: the error names the argument and its value.
+#[test]
+fn named_parameters_are_the_positional_ones_by_name() {
+    let law = impact();
+    assert_eq!(law, ImpactLaw::new(1e5, 2.2, 10.0, 0.1).unwrap());
+    assert_eq!(ImpactLaw::from_params(law.params()).unwrap(), law);
+    let e = ImpactLaw::from_params(ImpactParams {
+        max_penetration: -0.1,
+        ..law.params()
+    })
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "DMAX = -0.1 is out of range: must be finite and > 0"
+    );
+    let p = poisson(0.5);
+    assert_eq!(p, PoissonLaw::new(1e6, 0.5, 1.0).unwrap());
+    assert_eq!(PoissonLaw::from_params(p.params()).unwrap(), p);
+    let c = coulomb();
+    assert_eq!(c, CoulombFriction::new(0.3, 0.1, 0.1, 1.0).unwrap());
+    assert_eq!(CoulombFriction::from_params(c.params()).unwrap(), c);
+    // The two velocities exchanged: refused, naming the one out of order.
+    let e = CoulombFriction::from_params(CoulombParams {
+        stiction_velocity: 1.0,
+        friction_velocity: 0.1,
+        ..c.params()
+    })
+    .unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("FRICTION_TRANSITION_VELOCITY = 0.1 is out of range"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -148,7 +190,12 @@ fn impact_partials_agree_with_central_differences() {
 }
 
 fn poisson(e: f64) -> PoissonLaw {
-    PoissonLaw::new(1e6, e, 1.0).unwrap()
+    PoissonLaw::from_params(PoissonParams {
+        penalty: 1e6,
+        restitution: e,
+        transition_velocity: 1.0,
+    })
+    .unwrap()
 }
 
 #[test]
@@ -225,7 +272,13 @@ fn augmented_lagrangian_accumulates_and_never_pulls() {
 }
 
 fn coulomb() -> CoulombFriction {
-    CoulombFriction::new(0.3, 0.1, 0.1, 1.0).unwrap()
+    CoulombFriction::from_params(CoulombParams {
+        mu_static: 0.3,
+        mu_dynamic: 0.1,
+        stiction_velocity: 0.1,
+        friction_velocity: 1.0,
+    })
+    .unwrap()
 }
 
 #[test]

@@ -7,7 +7,10 @@
 //! ([`GeometryInstance`](crate::GeometryInstance)), not here.
 
 use crate::error::InvalidArgument;
-use crate::laws::{AugmentedLagrangian, CoulombFriction, ImpactLaw, PoissonLaw};
+use crate::laws::{
+    AugmentedLagrangian, CoulombFriction, CoulombParams, ImpactLaw, ImpactParams, PoissonLaw,
+    PoissonParams,
+};
 use crate::units::{Dimension, Units};
 use thiserror::Error;
 
@@ -369,9 +372,12 @@ impl ContactArgs {
                 Dimension::DAMPING,
             );
             let dmax = or_default(self.dmax, "DMAX", defaults::DMAX, Dimension::LENGTH);
-            return Ok(NormalModel::Impact(ImpactLaw::new(
-                stiffness, exponent, damping, dmax,
-            )?));
+            return Ok(NormalModel::Impact(ImpactLaw::from_params(ImpactParams {
+                stiffness,
+                exponent,
+                damping,
+                max_penetration: dmax,
+            })?));
         }
         if self.poisson {
             let penalty = self.penalty.ok_or(ParamError::Missing {
@@ -388,7 +394,11 @@ impl ContactArgs {
                 defaults::POISSON_TRANSITION_VELOCITY,
                 Dimension::VELOCITY,
             );
-            let law = PoissonLaw::new(penalty, restitution, vt)?;
+            let law = PoissonLaw::from_params(PoissonParams {
+                penalty,
+                restitution,
+                transition_velocity: vt,
+            })?;
             let augmented_lagrangian = if self.augmented_lagrangian {
                 Some(AugmentedLagrangian::new(penalty)?)
             } else {
@@ -460,7 +470,12 @@ impl ContactArgs {
             defaults::FRICTION_VELOCITY,
             Dimension::VELOCITY,
         );
-        let coulomb = CoulombFriction::new(mu_static, mu_dynamic, vs, vd)?;
+        let coulomb = CoulombFriction::from_params(CoulombParams {
+            mu_static,
+            mu_dynamic,
+            stiction_velocity: vs,
+            friction_velocity: vd,
+        })?;
         Ok(match switch {
             FrictionSwitch::On => FrictionModel::On(coulomb),
             FrictionSwitch::DynamicsOnly => FrictionModel::DynamicsOnly(coulomb),

@@ -38,6 +38,16 @@ impl PartState {
         angular_velocity_w: Vector3::new(0.0, 0.0, 0.0),
     };
 
+    /// The part's pose and velocities as contact-core's [`BodyMotion`](contact_core::BodyMotion),
+    /// for [`ContactKinematics`](contact_core::ContactKinematics).
+    pub fn motion(&self) -> contact_core::BodyMotion {
+        contact_core::BodyMotion {
+            pose_w: self.pose_w,
+            velocity_w: self.velocity_w,
+            angular_velocity_w: self.angular_velocity_w,
+        }
+    }
+
     /// The velocity of a material point of the part at world position `point_w`:
     /// `u + ω × (p − r)`.
     pub fn point_velocity_w(&self, point_w: &Vector3<f64>) -> Vector3<f64> {

@@ -1,8 +1,8 @@
 //! OBJ input: a quad-faced box, written with every corner form, reads back as a closed solid of
 //! the box's volume; defects are errors naming the file (and line).
 
-use engine_facet::mesh_file::{MeshFileError, read_mesh_file};
-use engine_facet::obj::ObjError;
+use contact_core::mesh_file::obj::ObjError;
+use contact_core::mesh_file::{MeshFileError, read_mesh_file};
 use std::path::PathBuf;
 
 fn temp(name: &str, text: &str) -> PathBuf {

@@ -1,7 +1,7 @@
 //! STL input: ascii and binary round trips, welding, and defects reported with the file name.
 
 use contact_core::Point3;
-use engine_facet::stl::{StlError, read_stl};
+use contact_core::mesh_file::stl::{StlError, read_stl};
 use std::io::Write;
 use std::path::PathBuf;
 

@@ -1,6 +1,5 @@
-//! Every parry call of the exact engine, in one module: parry's `contact` query on the same
-//! pairs, for the side-by-side benches and accuracy comparisons. The engine's own answers
-//! never go through here.
+//! parry's `contact` query on the exact engine's primitive pairs, for the side-by-side benches
+//! and accuracy comparisons. The exact engine's own answers never go through here.
 //!
 //! parry has no ellipsoid and no frustum, so only spheres, boxes, cylinders, cones (a frustum
 //! with one radius zero) and unbounded planes are mapped; a box is a parry `Cuboid` centred on
@@ -128,7 +127,7 @@ impl PeerShape {
 /// `contact_support_map_halfspace` hands its `pos12` to `contact_halfspace_support_map`
 /// without inverting it, so a support map *followed by* a half-space gets a wrong depth
 /// (a ball 0.9 above the ground reports 1.9 instead of 0.1; [`contact_in_given_order`] shows
-/// it, and the test `parry_adapter::tests` pins it so an upgrade that fixes it is noticed).
+/// it, and the test in this module pins it so an upgrade that fixes it is noticed).
 pub fn contact(
     a: &PeerShape,
     pose_a: &Isometry3,

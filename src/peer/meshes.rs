@@ -1,11 +1,10 @@
-//! Every parry call of this crate, in one place: parry's trimesh–trimesh contact manifolds on
-//! the same meshes and poses, so `contact query --peer parry` and the benches can time the
+//! parry's trimesh–trimesh contact manifolds on the faceted engine's meshes and poses, so `contact query --peer parry` and the benches can time the
 //! library people use today beside ours. parry returns per-triangle contact points (no regions,
 //! no volume-based depths): `contact query` compares its timing and point count, and the trade
 //! report its deepest point ([`ParryPeer::deepest`]) as a depth and normal.
 
-use crate::facet_mesh::FacetMesh;
 use contact_core::{Isometry3, Point3, Vector3};
+use engine_facet::facet_mesh::FacetMesh;
 use parry3d_f64::query::{
     ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher,
 };

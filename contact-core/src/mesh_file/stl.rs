@@ -3,12 +3,12 @@
 //! STL stores every triangle with its own three f32 corners. Corners closer than
 //! [`WELD_RELATIVE`] × the bounding-box diagonal are merged into one vertex (grid hashing with a
 //! cell of that size, checking the 27 neighbouring cells), then
-//! [`TriangleMesh::new`](contact_core::geometry::TriangleMesh::new) checks the mesh is closed,
+//! [`TriangleMesh::new`](crate::geometry::TriangleMesh::new) checks the mesh is closed,
 //! 2-manifold, consistently and outward oriented and free of zero-area facets (a facet whose
 //! corners weld together has zero area). Errors name the file.
 
-use contact_core::Point3;
-use contact_core::geometry::{MeshError, TriangleMesh};
+use crate::Point3;
+use crate::geometry::{MeshError, TriangleMesh};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use thiserror::Error;

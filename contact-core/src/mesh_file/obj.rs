@@ -5,12 +5,12 @@
 //! `v/vt/vn`, with 1-based or negative (relative) indices. Texture coordinates, normals,
 //! groups, objects, smoothing and materials are not geometry and are skipped; points (`p`),
 //! lines (`l`) and free-form curves and surfaces cannot bound a solid and are errors. The
-//! corners are then welded as STL corners are ([`crate::stl::solid_from_corners`]), so a file that repeats a
+//! corners are then welded as STL corners are ([`super::stl::solid_from_corners`]), so a file that repeats a
 //! vertex is read as one solid, and the mesh is checked to bound a solid. Errors name the file, and the line where there is one.
 
-use crate::stl::{StlMesh, solid_from_corners};
-use contact_core::Point3;
-use contact_core::geometry::MeshError;
+use super::stl::{StlMesh, solid_from_corners};
+use crate::Point3;
+use crate::geometry::MeshError;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 

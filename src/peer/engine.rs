@@ -1,6 +1,6 @@
-//! parry as one peer of the trade: its `contact` query on primitive pairs (the exact engine's
-//! adapter) and its trimesh–trimesh contact manifolds on mesh pairs (the faceted engine's
-//! adapter), behind one [`GeometryEngine`] named `parry`, so the report puts parry's time and
+//! parry as one peer of the trade: its `contact` query on primitive pairs
+//! ([`super::primitives`]) and its trimesh–trimesh contact manifolds on mesh pairs
+//! ([`super::meshes`]), behind one [`GeometryEngine`] named `parry`, so the report puts parry's time and
 //! errors beside ours on the same meshes and poses.
 //!
 //! On a mesh pair parry returns contact points per triangle pair, not per intersection region:
@@ -8,12 +8,11 @@
 //! normal, its two points) and no area. Its depth and normal errors against the reference are
 //! therefore those of a deepest-point answer, and are reported as they are.
 
+use super::{ParryEngine, ParryError, ParryPeer};
 use contact_core::{
     Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, PrepareError, PreparedPair,
     PreparedStats, QueryError, Side, Unsupported, WorkCounters,
 };
-use engine_exact::parry_adapter::ParryEngine;
-use engine_facet::parry_adapter::ParryPeer;
 use engine_facet::{FacetEngine, Shape};
 use std::sync::Mutex;
 
@@ -65,15 +64,14 @@ impl GeometryEngine for ParryPeerEngine {
             for (gj, b) in j.iter().enumerate() {
                 let mb = mesh(b, Side::J)?;
                 triangles += ma.triangles.len() + mb.triangles.len();
-                let refused =
-                    |e: engine_facet::parry_adapter::ParryError| PrepareError::InvalidArgument {
-                        label: b.label.clone(),
-                        source: contact_core::InvalidArgument::with_text(
-                            "mesh",
-                            "refused by parry",
-                            e.to_string(),
-                        ),
-                    };
+                let refused = |e: ParryError| PrepareError::InvalidArgument {
+                    label: b.label.clone(),
+                    source: contact_core::InvalidArgument::with_text(
+                        "mesh",
+                        "refused by parry",
+                        e.to_string(),
+                    ),
+                };
                 let mut peer = ParryPeer::new(&ma, &mb).map_err(refused)?;
                 // parry's only query error is an unsupported shape pair, which depends on the
                 // shape types alone: one probe here proves every later query is answered.
