@@ -222,11 +222,7 @@ pub fn simulate_with_progress(
             })
             .fold(f64::INFINITY, f64::min);
         if onset.is_finite() {
-            let retry = (onset + ONSET_MARGIN * (t - onset))
-                .clamp(t_before + ONSET_MARGIN * (t - t_before), t);
-            // A step too short to split in floating point (a sliver left before a stop time
-            // or a retry target) keeps its onset: the contact starts within that sliver.
-            if retry > t_before && retry < t {
+            if let Some(retry) = retry_time(onset, t_before, t) {
                 // State kept per accepted step goes back with the step, before the retry.
                 for c in contacts {
                     c.rolled_back();
@@ -275,6 +271,18 @@ pub fn simulate_with_progress(
     Ok(summary)
 }
 
+/// Where a step `[t_before, t]` in which a contact appeared is retried to end, given the
+/// estimated onset `onset = t − δ/δ̇`: just after the onset, `onset + ONSET_MARGIN·(t − onset)`,
+/// clamped to `[t_before + ONSET_MARGIN·(t − t_before), t]` (an onset estimated before the step
+/// or after its end). `None` when no time strictly inside the step is representable (a sliver
+/// of a few ulps left before a stop time or a retry target): the contact then starts within
+/// that sliver, and the step is kept.
+pub fn retry_time(onset: f64, t_before: f64, t: f64) -> Option<f64> {
+    let retry =
+        (onset + ONSET_MARGIN * (t - onset)).clamp(t_before + ONSET_MARGIN * (t - t_before), t);
+    (retry > t_before && retry < t).then_some(retry)
+}
+
 /// The run's error for an integrator failure after the accepted time `t_before`: a fatal
 /// evaluation stops the run with the element's own diagnosis.
 fn integrator_failure(t_before: f64, source: IntegratorError) -> SimulationError {
@@ -284,5 +292,34 @@ fn integrator_failure(t_before: f64, source: IntegratorError) -> SimulationError
             t: t_before,
             source,
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::retry_time;
+
+    #[test]
+    fn a_retry_ends_inside_the_step_or_not_at_all() {
+        // An onset inside the step: just after it.
+        let r = retry_time(0.5, 0.0, 1.0).unwrap();
+        assert!((r - 0.525).abs() < 1e-15);
+        // Before the step (t_c ≤ t_before) or at its end: clamped inside it.
+        assert_eq!(retry_time(-3.0, 0.0, 1.0), Some(0.05));
+        assert_eq!(retry_time(1.0, 0.0, 1.0), None);
+        // A step of one ulp (the run that stopped at t = 0.6389867355375749 with "retry
+        // target out of range"): no time inside it, so no retry.
+        let t_before = 0.6389867355375749_f64;
+        let t = f64::from_bits(t_before.to_bits() + 1);
+        assert_eq!(retry_time(t_before - 1e-9, t_before, t), None);
+        // A few ulps: a time strictly inside, or none.
+        for ulps in 2..8 {
+            let t = f64::from_bits(t_before.to_bits() + ulps);
+            let retry = retry_time(t_before - 1e-12, t_before, t);
+            assert!(
+                retry.is_none_or(|r| r > t_before && r < t),
+                "{ulps}: {retry:?}"
+            );
+        }
     }
 }

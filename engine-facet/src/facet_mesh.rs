@@ -49,6 +49,11 @@ pub struct FacetMesh {
     /// How far any curved PN triangle reaches beyond its flat facet (0 for flat facets):
     /// every point of the smooth surface lies within it of the facets.
     pub pn_reach: f64,
+    /// The sphere the mesh stands for, `(centre, radius)`, when every corner lies on it with
+    /// its normal along the radius (`|p − c − R·n| ≤ 1e-9·R` at every corner of every
+    /// triangle): a tessellated sphere, whose contact with a plane is the sphere's
+    /// ([`crate::plane_support`]).
+    pub implied_sphere: Option<(Point3, f64)>,
 }
 
 impl FacetMesh {
@@ -136,6 +141,8 @@ impl FacetMesh {
             .filter(|(_, n)| n[0] != n[1] || n[1] != n[2])
             .map(|(t, n)| pn_reach(&t.map(|v| vertices[v as usize].coords), n))
             .fold(0.0, f64::max);
+        let implied_sphere =
+            implied_sphere(closed, &centroid, &vertices, &triangles, &corner_normals);
         Self {
             vertices,
             triangles,
@@ -151,6 +158,7 @@ impl FacetMesh {
             longest_edge,
             closed,
             pn_reach,
+            implied_sphere,
         }
     }
 
@@ -455,6 +463,29 @@ impl FacetMesh {
         let [n1, n2, n3] = self.corner_normals[t as usize];
         n1 != n2 || n2 != n3
     }
+}
+
+/// The sphere a closed mesh's corners and corner normals lie on, if they all do: centre the
+/// volume centroid, radius the mean corner distance from it, every corner within `1e-9·R` of
+/// `c + R·n` for its own normal `n`.
+fn implied_sphere(
+    closed: bool,
+    centroid: &Point3,
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    corner_normals: &[[Vector3; 3]],
+) -> Option<(Point3, f64)> {
+    if !closed || triangles.is_empty() {
+        return None;
+    }
+    let radius =
+        vertices.iter().map(|v| (v - centroid).norm()).sum::<f64>() / vertices.len() as f64;
+    let on_sphere = triangles.iter().zip(corner_normals).all(|(t, normals)| {
+        t.iter()
+            .zip(normals)
+            .all(|(&v, n)| (vertices[v as usize] - centroid - n * radius).norm() <= 1e-9 * radius)
+    });
+    (on_sphere && radius > 0.0).then_some((*centroid, radius))
 }
 
 /// Permutes the per-triangle arrays to the new numbering (`old_of_new[k]` is the old index of

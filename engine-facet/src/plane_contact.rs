@@ -19,7 +19,7 @@
 
 use crate::contact_region::{LocalContact, add_polygon, clip, label_regions, new_node, union};
 use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
-use crate::plane_support::{Support, alone_contact, blended, supports_by_region};
+use crate::plane_support::{Support, alone_contact, blended, sphere_on_plane, supports_by_region};
 use crate::scratch::{RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -38,6 +38,12 @@ pub(crate) fn mesh_plane(
     let origin = pose_a_plane.translation.vector;
     let n = rot.column(2).into_owned();
     let height = |v: &Vector3| n.dot(&(v - origin));
+    if plane.is_unbounded()
+        && let Some(found) = sphere_on_plane(a, &n, &height)
+    {
+        out.extend(found);
+        return;
+    }
     let [x0, x1] = plane.x_range();
     let [y0, y1] = plane.y_range();
     let bounded = !plane.is_unbounded();

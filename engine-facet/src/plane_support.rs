@@ -55,6 +55,35 @@ pub(crate) struct Support {
     area: f64,
 }
 
+/// A tessellated sphere (`FacetMesh::implied_sphere`) against an unbounded plane, without a
+/// search of its triangles: what [`supports_by_region`] finds on any of them, since every
+/// triangle implies the same sphere (centre `c`, radius `R`). `Some(None)`: no contact (the
+/// facets are inscribed in the sphere, so they cannot reach below the plane where it does
+/// not); `Some(Some(contact))` while the local answer holds whole (`δ ≤ R/8`, `x ≤ ½`);
+/// `None` deeper, where the facets' contact is blended in by the general path.
+pub(crate) fn sphere_on_plane(
+    a: &FacetMesh,
+    n: &Vector3,
+    height: &impl Fn(&Vector3) -> f64,
+) -> Option<Option<LocalContact>> {
+    let (centre, radius) = a.implied_sphere?;
+    let depth = radius - height(&centre.coords);
+    if depth.is_nan() || depth <= 0.0 {
+        return Some(None);
+    }
+    if blend_weight((2.0 * depth / radius).sqrt()) < 1.0 {
+        return None;
+    }
+    let q = centre.coords - n * radius;
+    Some(Some(LocalContact {
+        point_i: q,
+        point_j: q + n * depth,
+        normal: *n,
+        penetration: depth,
+        area: std::f64::consts::PI * depth * (2.0 * radius - depth),
+    }))
+}
+
 /// The smooth answer's weight for a cap whose longest semi-axis is `x` curvature radii:
 /// 1 up to ½, 0 from 1, a smoothstep between.
 fn blend_weight(x: f64) -> f64 {
@@ -205,5 +234,74 @@ pub(crate) fn blended(facets: &LocalContact, s: &Support, n: &Vector3) -> LocalC
         normal: facets.normal,
         penetration: depth,
         area: s.weight * s.area + (1.0 - s.weight) * facets.area,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::contact_region::LocalContact;
+    use crate::facet_mesh::FacetMesh;
+    use crate::plane_contact::mesh_plane;
+    use crate::scratch::Scratch;
+    use crate::tessellate::tessellate;
+    use contact_core::geometry::{Ellipsoid, Plane};
+    use contact_core::{FacetingTolerance, Geometry, Isometry3, Vector3, WorkCounters};
+
+    fn mesh(a: f64, b: f64, c: f64, ft: f64) -> FacetMesh {
+        let geometry = Geometry::Ellipsoid(Ellipsoid::new(a, b, c).unwrap());
+        let t = tessellate(&geometry, FacetingTolerance::new(ft).unwrap()).unwrap();
+        FacetMesh::build(t, true)
+    }
+
+    fn contacts(m: &FacetMesh, pose_a_plane: &Isometry3) -> Vec<LocalContact> {
+        let mut out = Vec::new();
+        let (mut s, mut work) = (Scratch::default(), WorkCounters::default());
+        mesh_plane(
+            m,
+            &Plane::unbounded(),
+            pose_a_plane,
+            &mut s,
+            &mut work,
+            &mut out,
+        );
+        out
+    }
+
+    #[test]
+    fn a_tessellated_sphere_is_known_and_its_shortcut_is_the_search() {
+        assert!(mesh(1.0, 0.6, 0.4, 300.0).implied_sphere.is_none());
+        for ft in [30.0, 300.0028, 3000.0] {
+            let sphere = mesh(0.5, 0.5, 0.5, ft);
+            let (centre, radius) = sphere.implied_sphere.expect("a tessellated sphere");
+            assert!(centre.coords.norm() < 1e-12 && (radius - 0.5).abs() < 1e-12);
+            let mut searched = sphere.clone();
+            searched.implied_sphere = None;
+            let mut compared = 0;
+            for k in 0..200 {
+                // Planes at generic tilts, 0 to 0.06 deep (within R/8), in the mesh frame.
+                let t = k as f64;
+                let axis = Vector3::new((0.37 * t).sin(), (0.71 * t).cos(), 0.5).normalize();
+                let rotation = contact_core::UnitQuaternion::from_axis_angle(
+                    &nalgebra::Unit::new_normalize(axis),
+                    2.1 * t,
+                );
+                let n = rotation * Vector3::z();
+                let depth = 0.06 * (k % 20) as f64 / 19.0 - 0.003;
+                let origin = -n * (0.5 - depth);
+                let pose = Isometry3::from_parts(origin.into(), rotation);
+                let (short, long) = (contacts(&sphere, &pose), contacts(&searched, &pose));
+                assert_eq!(short.len(), usize::from(depth > 0.0), "{k}");
+                assert_eq!(long.len(), short.len(), "{k}: {long:?}");
+                for (s, l) in short.iter().zip(&long) {
+                    assert!((s.penetration - depth).abs() < 1e-12, "{k}: {s:?}");
+                    assert!((s.penetration - l.penetration).abs() < 1e-12, "{k}");
+                    assert!((s.point_i - l.point_i).norm() < 1e-12, "{k}");
+                    assert!((s.point_j - l.point_j).norm() < 1e-12, "{k}");
+                    assert!((s.area - l.area).abs() < 1e-12, "{k}");
+                    compared += 1;
+                }
+            }
+            assert!(compared > 150, "{compared}");
+        }
     }
 }

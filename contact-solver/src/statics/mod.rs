@@ -11,8 +11,9 @@
 //!   with the Jacobian of the integrator's Newton matrix taken at `c = 0` (solver-notes §2.3),
 //!   each part's increment clamped to TLIMIT (translation) and ALIMIT (rotation), STABILITY
 //!   times the mass and damping matrices added to the stiffness matrix, converged when the
-//!   last relative correction is within ERROR and the force imbalance within IMBALANCE (or
-//!   within the round-off the stiffness leaves, [`newton::roundoff_imbalance`]), at
+//!   last relative correction is within ERROR and the force imbalance within IMBALANCE, or
+//!   the imbalance within the round-off the stiffness leaves
+//!   ([`newton::roundoff_imbalance`], where no step can lower it further), at
 //!   most MAXIT iterations. A step after which a force element
 //!   acts that did not act before (a contact coming into contact: Adams' contact-force
 //!   sensing) ends the static method, since the Jacobian had no stiffness for it.
