@@ -56,10 +56,14 @@ pub(crate) fn mesh_plane(
             || ys.iter().all(|&u| u < y0)
             || ys.iter().all(|&u| u > y1)
     };
-    // How far the smooth surface the curved facets stand for reaches beyond them: the PN
-    // patches' reach, doubled to cover the sphere `plane_support` fits (its sag over a facet
-    // and the patch's differ by the patch's error, far below either).
-    let beyond_facets = 2.0 * a.pn_reach;
+    // How far the sphere a tessellated sphere's facets stand for reaches beyond them: the PN
+    // patches' reach, doubled (the sphere's sag over a facet and the patch's differ by the
+    // patch's error, far below either). Other meshes keep their facets' contact.
+    let beyond_facets = if a.implied_sphere.is_some() {
+        2.0 * a.pn_reach
+    } else {
+        0.0
+    };
     s.nodes.clear();
     s.slots[0].reset(a.triangles.len());
     let mut below: Vec<u32> = std::mem::take(&mut s.queue);
@@ -89,7 +93,7 @@ pub(crate) fn mesh_plane(
             let crossing = c.iter().any(|v| height(v) > 0.0);
             new_node(s, 0, t, crossing);
         }
-        if lowest <= beyond_facets && a.is_curved(t) {
+        if a.implied_sphere.is_some() && lowest <= beyond_facets && a.is_curved(t) {
             curved.push(t);
         }
     }

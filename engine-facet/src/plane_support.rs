@@ -16,26 +16,23 @@
 //!   `π·δ_s·(2/κ̄ − δ_s)`. A tessellated sphere's corners and normals imply the sphere itself,
 //!   so for it these are the exact engine's answers, independent of the facets.
 //!
-//! That local answer is the ray rule's (SPEC §4) where the surface is a sphere about the
-//! support point: the cap is then symmetric about the normal through `q`. It is taken where
-//! the shape operator is umbilic (`(κ₂ − κ₁)/κ₂ ≤ 1e-6`; a tessellated sphere's corner normals
-//! give `S = I/R` to round-off) and the cap small beside the curvature radius
-//! (`x = κ₂·√(2δ_s/κ₁) ≤ ½`), and blended with the facets' own contact (`plane_contact`) by
-//! smoothsteps down to nothing at a spread of 1e-3 or `x ≥ 1`: depths linearly, points
-//! weighted by each answer's share of the depth, so the blend is continuous where the facets'
-//! region appears. Elsewhere — flat faces, cylinders' sides (corner normals in a plane),
-//! saddles, concave parts, and smooth surfaces off an umbilic, whose cap centroid leaves the
-//! support point's normal at third order (an ellipsoid's lies on the diameter through `q`),
-//! which the facets resolve as the tolerance rises and a local quadric does not — the facets'
-//! contact stands. A support point is joined to the facets' region with the nearest triangle
-//! (within two edge lengths); where none is, it makes a contact of its own (the smooth
-//! surface touches before the facets do).
+//! That answer is the ray rule's (SPEC §4) for a sphere: the cap is symmetric about the normal
+//! through `q`. It is taken for meshes that are tessellated spheres (every corner on one sphere
+//! with its normal along the radius, [`FacetMesh::implied_sphere`]) while the cap is small
+//! beside the radius (`x = κ₂·√(2δ_s/κ₁) ≤ ½`, with the shape operator's principal curvatures;
+//! for a sphere `x = √(2δ_s/R)`), where [`sphere_on_plane`] gives it without a search; deeper it
+//! is blended with the facets' own contact (`plane_contact`) by a smoothstep down to nothing at
+//! `x ≥ 1` (and at a curvature spread of 1e-3, which a sphere's facets never show): depths
+//! linearly, points weighted by each answer's share of the depth, so the blend is continuous.
+//! Other meshes keep the facets' contact: off a sphere the cap's centroid leaves the support
+//! point's normal at third order (an ellipsoid's lies on the diameter through `q`), which the
+//! facets resolve as the tolerance rises and a local quadric does not, and the curvature taken
+//! per triangle would step where the support point crosses an edge. A support point is joined
+//! to the facets' region with the nearest triangle (within two edge lengths); where none is, it
+//! makes a contact of its own (the sphere touches before its inscribed facets do).
 //!
 //! Accuracy: for a sphere the point lies on the line from the centre (the force has no arm
-//! about it, as for the true sphere) and the depth and area are the sphere's to round-off. Off
-//! a sphere the curvature is taken per triangle, so near an umbilic of another surface the
-//! answer steps by the curvature's change across one facet where the support point crosses an
-//! edge (weighted down to nothing by a spread of 1e-3).
+//! about it, as for the true sphere) and the depth and area are the sphere's to round-off.
 
 use crate::contact_region::LocalContact;
 use crate::facet_mesh::FacetMesh;
