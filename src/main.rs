@@ -27,9 +27,14 @@ enum Command {
     Query(cli::query::QueryArgs),
     /// The accuracy-against-speed sweep over the reference scenes, or over a dataset's contacts.
     Tradeoff {
-        /// A dataset (.adm): its contacts are the scenes, at poses around its initial
-        /// configuration, against the exact engine.
+        /// A dataset (.adm): its contacts are the scenes, at the poses where they touch in a
+        /// reference run of the model, against the exact engine.
         model: Option<PathBuf>,
+        /// The dataset's command file (default: the `.acf` beside it, if any).
+        commands: Option<PathBuf>,
+        /// End the dataset's reference run here (overrides the command file's last END).
+        #[arg(long)]
+        end: Option<f64>,
         /// Scene names (default: the whole suite; `contact scenes` lists them), or contact
         /// names (`CONTACT/3`) with a dataset.
         #[arg(long = "scene")]
@@ -113,6 +118,8 @@ fn main() -> ExitCode {
         },
         Command::Tradeoff {
             model,
+            commands,
+            end,
             scenes,
             tolerances,
             rounds,
@@ -123,6 +130,8 @@ fn main() -> ExitCode {
         } => {
             let args = cli::tradeoff::TradeoffArgs {
                 model,
+                commands,
+                end,
                 scenes,
                 tolerances,
                 rounds,

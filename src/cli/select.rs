@@ -1,19 +1,27 @@
-//! `contact select MODEL.adm --max-depth-error E`: measures the model's own contacts over the
-//! faceting-tolerance sweep and recommends, per contact and for the model, the fastest engine
-//! and tolerance whose depth error meets the target, with the measured rows as evidence.
+//! `contact select MODEL.adm --max-depth-error E`: runs the model once (the reference run),
+//! measures its contacts at the poses where they touched over the faceting-tolerance sweep and
+//! recommends, per contact and for the model, the fastest engine and tolerance whose depth
+//! error meets the target, with the measured rows as evidence.
 
 use crate::dataset;
-use crate::tradeoff::{self, EngineFactory, Sweep, Timing};
-use contact_core::FacetingTolerance;
+use crate::model::Model;
+use crate::tradeoff::{self, EngineFactory, RunRecord, Sweep, Timing};
+use contact_core::{FacetingTolerance, GeometryLibrary};
 use serde_json::json;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The arguments of `contact select`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
 pub struct SelectArgs {
     /// The Adams dataset (.adm).
     pub model: PathBuf,
+    /// Its command file (.acf); default: the file beside the dataset with its name and the
+    /// extension `.acf`, if there is one.
+    pub commands: Option<PathBuf>,
+    /// End the runs here (overrides the command file's last END; needed without one).
+    #[arg(long)]
+    pub end: Option<f64>,
     /// The accuracy target: the largest depth error allowed over a contact's poses, as a
     /// fraction of the contact's size (its smallest half-extent; 0.01 = 1%).
     #[arg(long)]
@@ -38,8 +46,8 @@ pub fn run(
     err: &mut dyn Write,
     progress: &mut dyn FnMut(&str),
 ) -> std::io::Result<u8> {
-    let model = match dataset::load(&args.model, None) {
-        Ok((model, _warnings)) => model,
+    let model = match load_with_commands(&args.model, args.commands.as_deref()) {
+        Ok(model) => model,
         Err(e) => {
             writeln!(err, "error: {e}")?;
             return Ok(1);
@@ -66,8 +74,13 @@ pub fn run(
             ..sweep.timing
         };
     }
+    let Some(reference) = reference_run(&model, &args.model, &sweep, engines, args.end, err)?
+    else {
+        return Ok(1);
+    };
     let selection = match tradeoff::select_for_model(
         &model,
+        &reference,
         &sweep,
         engines,
         &[],
@@ -89,7 +102,9 @@ pub fn run(
             "model": args.model.display().to_string(),
             "max_depth_error": args.max_depth_error,
             "depth_error_relative_to": "each contact's size: the smallest half-extent of its bounded geometries",
+            "reference_run": selection.reference_run,
             "contacts": selection.contacts,
+            "untouched": selection.untouched,
             "recommendation": recommendation,
             "no_recommendation": failure,
             "records": selection.report.records,
@@ -101,6 +116,13 @@ pub fn run(
         }
     }
     out.write_all(tradeoff::table(&selection.report.records).as_bytes())?;
+    for c in &selection.untouched {
+        writeln!(
+            out,
+            "{c}: no contact in the reference run ({}): not measured",
+            selection.reference_run
+        )?;
+    }
     writeln!(
         out,
         "\ntarget: depth error <= {:e} of each contact's size",
@@ -132,6 +154,36 @@ pub fn run(
         Err(e) => {
             writeln!(err, "error: {e}")?;
             Ok(1)
+        }
+    }
+}
+
+/// Reads `adm` with `commands`, or with the command file beside it (same name, `.acf`) when
+/// none is given and that file exists.
+pub fn load_with_commands(
+    adm: &Path,
+    commands: Option<&Path>,
+) -> Result<Model, dataset::DatasetError> {
+    let beside = adm.with_extension("acf");
+    let commands = commands.or_else(|| beside.is_file().then_some(beside.as_path()));
+    dataset::load(adm, commands).map(|(model, _warnings)| model)
+}
+
+/// The reference run of `model` for `sweep` (said on `err` and `None` when it fails).
+pub fn reference_run(
+    model: &Model,
+    source: &Path,
+    sweep: &Sweep,
+    engines: EngineFactory<'_>,
+    end: Option<f64>,
+    err: &mut dyn Write,
+) -> std::io::Result<Option<RunRecord>> {
+    let exact = engines(GeometryLibrary::Exact, FacetingTolerance::DEFAULT);
+    match tradeoff::record_reference(model, source, exact.as_ref(), &sweep.tolerances, end) {
+        Ok(record) => Ok(Some(record)),
+        Err(e) => {
+            writeln!(err, "error: {e}")?;
+            Ok(None)
         }
     }
 }

@@ -26,13 +26,15 @@
 //! [`RESOLVED_BANDS`] bands ([`resolved_depth`]); the record states that depth and how many
 //! contacts it kept, and the depth error still counts every contact.
 //!
-//! A dataset's contacts become scenes of their own ([`crate::scenes::from_model`]); the
-//! recommendation for a model is [`select_for_model`].
+//! A dataset's contacts become scenes of their own, at the poses where they touch in a
+//! reference run of the model ([`record_reference`], [`crate::scenes::from_run`]); the
+//! per-query recommendation for a model is [`select_for_model`].
 
 mod band;
 mod compare;
 mod for_model;
 mod measure;
+mod reference_run;
 mod report;
 mod select;
 mod sweep;
@@ -42,6 +44,9 @@ pub use compare::{PoseErrors, compare};
 pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
+};
+pub use reference_run::{
+    RecordError, RunRecord, Setting, TouchingPose, record_reference, record_run, reference_setting,
 };
 pub use report::{csv, json, plot, table};
 pub use select::{
