@@ -207,10 +207,13 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
         model: dir.join("model.adm"),
         commands: None,
         end: Some(0.2),
-        max_depth_error: 0.01,
+        max_depth_error: Some(0.01),
+        max_run_error: None,
         tolerances: vec![100.0],
         rounds: Some(1),
         json: Some(json.clone()),
+        csv: None,
+        plot: None,
     };
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code =
@@ -219,7 +222,7 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     assert_eq!(code, 0, "{text}{}", String::from_utf8_lossy(&err));
     let doc: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
-    let rows = doc["records"].as_array().unwrap();
+    let rows = doc["per_query"]["records"].as_array().unwrap();
     assert_eq!(rows.len(), 2);
     // The faster of the exact row and the faceted one (if it meets the target), as printed.
     let row = |engine: &str| rows.iter().find(|r| r["engine"] == engine).unwrap();
@@ -233,7 +236,7 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     };
     assert!(text.contains(&format!("model: {expected} (")), "{text}");
     assert_eq!(
-        doc["recommendation"]["model"]["engine"],
+        doc["per_query"]["recommendation"]["model"]["engine"],
         expected.split(' ').next().unwrap()
     );
 }
@@ -307,10 +310,13 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
         model: dir.join("model.adm"),
         commands: None,
         end: Some(0.05),
-        max_depth_error: 0.01,
+        max_depth_error: Some(0.01),
+        max_run_error: None,
         tolerances: vec![100.0],
         rounds: Some(1),
         json: None,
+        csv: None,
+        plot: None,
     };
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code =
@@ -326,7 +332,7 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
     assert!(String::from_utf8(out).unwrap().contains("CONTACT/7"));
     // A target that is not a positive number is refused before anything is measured.
     let bad = contact::cli::select::SelectArgs {
-        max_depth_error: -1.0,
+        max_depth_error: Some(-1.0),
         ..args
     };
     let mut err = Vec::new();
@@ -371,10 +377,13 @@ fn a_contact_that_never_touches_in_the_reference_run_is_reported_as_such() {
         model: dir.join("model.adm"),
         commands: None,
         end: Some(0.05),
-        max_depth_error: 0.01,
+        max_depth_error: Some(0.01),
+        max_run_error: None,
         tolerances: vec![100.0],
         rounds: Some(1),
         json: None,
+        csv: None,
+        plot: None,
     };
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code =
