@@ -15,9 +15,9 @@
 //!   (the force's magnitude integrated over the output frames by the trapezoidal rule), each
 //!   with its error relative to the reference's (none when the reference's is 0); its onsets
 //!   (a frame touching after one that did not) and releases, counted, and the largest time
-//!   difference between the candidate's k-th onset (release) and the reference's k-th, over
-//!   the pairs both have. Onsets and releases are seen at output frames, so their times are
-//!   resolved to the output step;
+//!   from a reference onset (release) to the candidate's nearest one (so an extra or a
+//!   missing event shifts no other pairing; the counts show it). Onsets and releases are seen
+//!   at output frames, so their times are resolved to the output step;
 //! - the wall time per simulated second (the analyses' wall time, one thread; the model's
 //!   lowering and engine preparation are reported apart).
 //!
@@ -50,13 +50,14 @@ pub struct ContactRunErrors {
     pub onsets: usize,
     /// Onsets in the reference run.
     pub reference_onsets: usize,
-    /// The largest `|t − t_ref|` over the onsets both runs have (k-th with k-th), seconds.
+    /// The largest time from a reference onset to this run's nearest onset, seconds; `None`
+    /// when either run has none.
     pub onset_time_error: Option<f64>,
     /// Releases in this run.
     pub releases: usize,
     /// Releases in the reference run.
     pub reference_releases: usize,
-    /// The largest `|t − t_ref|` over the releases both runs have, seconds.
+    /// The largest time from a reference release to this run's nearest release, seconds.
     pub release_time_error: Option<f64>,
 }
 
@@ -309,8 +310,14 @@ fn contact_errors(
 ) -> ContactRunErrors {
     let (r, c) = (history(reference, k), history(candidate, k));
     let relative = |x: f64, x_ref: f64| (x_ref > 0.0).then(|| (x - x_ref).abs() / x_ref);
-    let paired =
-        |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| (x - y).abs()).reduce(f64::max);
+    // Each reference event to the candidate's nearest event of the same kind: an extra or a
+    // missing event then shifts no other pairing.
+    let paired = |candidate: &[f64], reference: &[f64]| {
+        reference
+            .iter()
+            .filter_map(|t_ref| candidate.iter().map(|t| (t - t_ref).abs()).reduce(f64::min))
+            .reduce(f64::max)
+    };
     ContactRunErrors {
         contact: name.to_string(),
         peak_force: c.peak,
