@@ -440,3 +440,7 @@ pub fn select_run(rows: &[RunRow], max_run_error: f64) -> Result<RunChoice, NoRu
             .min_by(f64::total_cmp),
     })
 }
+
+#[cfg(test)]
+#[path = "whole_run_tests.rs"]
+mod tests;

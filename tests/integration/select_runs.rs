@@ -206,3 +206,86 @@ fn ball_keeps_the_exact_recommendation_and_its_faceted_runs_agree_to_round_off()
     assert_eq!(bounce.onsets, bounce.reference_onsets);
     assert!(bounce.peak_force_error.unwrap() < 1e-9, "{bounce:?}");
 }
+
+#[test]
+fn select_and_tradeoff_commands_write_the_run_trade_and_measure_at_the_run_poses() {
+    let dir = std::env::temp_dir().join(format!("contact-select-runs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let args = contact::cli::select::SelectArgs {
+        model: example("cam_follower"),
+        commands: None,
+        end: Some(0.3),
+        max_depth_error: None,
+        max_run_error: Some(1e-2),
+        tolerances: vec![100.0, 1000.0],
+        rounds: Some(1),
+        json: Some(dir.join("select.json")),
+        csv: Some(dir.join("runs.csv")),
+        plot: Some(dir.join("runs.svg")),
+    };
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let code =
+        contact::cli::select::run(&args, &build_engine, &mut out, &mut err, &mut |_| {}).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert_eq!(code, 0, "{text}{}", String::from_utf8_lossy(&err));
+    assert!(text.contains("whole runs against the exact run"), "{text}");
+    assert!(text.contains("model (whole runs): "), "{text}");
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("select.json")).unwrap()).unwrap();
+    assert_eq!(doc["reference_run"]["engine"], "exact");
+    assert!(doc.get("per_query").is_none());
+    let rows = doc["runs"]["trade"]["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    for row in rows {
+        for field in [
+            "engine",
+            "faceting_tolerance",
+            "reference",
+            "failure",
+            "frames_compared",
+            "position_error",
+            "orientation_error_deg",
+            "wall_ms_per_simulated_s",
+            "prepare_ms",
+            "contacts",
+        ] {
+            assert!(row.get(field).is_some(), "{field} missing: {row}");
+        }
+    }
+    assert!(doc["runs"]["recommendation"]["engine"].is_string());
+    let csv = std::fs::read_to_string(dir.join("runs.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 3, "{csv}");
+    assert!(
+        std::fs::read_to_string(dir.join("runs.svg"))
+            .unwrap()
+            .starts_with("<svg")
+    );
+    // No target at all is refused before anything runs.
+    let none = contact::cli::select::SelectArgs {
+        max_run_error: None,
+        ..args
+    };
+    let mut err = Vec::new();
+    let code =
+        contact::cli::select::run(&none, &build_engine, &mut Vec::new(), &mut err, &mut |_| {})
+            .unwrap();
+    assert_eq!(code, 1);
+    assert!(String::from_utf8(err).unwrap().contains("--max-run-error"));
+    // `contact tradeoff MODEL.adm` measures at the reference run's poses too.
+    let args = contact::cli::tradeoff::TradeoffArgs {
+        model: Some(example("geneva_primitives")),
+        end: Some(0.6),
+        tolerances: vec![300.0028],
+        rounds: Some(1),
+        ..Default::default()
+    };
+    let mut out = Vec::new();
+    let report =
+        contact::cli::tradeoff::run(&args, &build_engine, &[], &mut out, &mut |_| {}).unwrap();
+    let faceted = report
+        .records
+        .iter()
+        .find(|r| r.engine == "faceted")
+        .unwrap();
+    assert!(faceted.depth_error.unwrap() > 1e-3, "{faceted:?}");
+}
