@@ -59,7 +59,8 @@ enum Command {
         peer: Option<String>,
     },
     /// Recommend the fastest engine and faceting tolerance meeting an accuracy target on a
-    /// dataset's own contacts (exit 1 naming the contact when none does).
+    /// dataset's own motion: whole runs against a reference run (--max-run-error) and
+    /// per-query depth errors at the run's poses (--max-depth-error); exit 1 when none does.
     Select(cli::select::SelectArgs),
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {

@@ -133,6 +133,16 @@ pub enum RunTradeError {
     /// The model has no size to measure errors against.
     #[error("the model has no extent: no moving part and no bounded contact geometry")]
     NoSize,
+    /// No contact touched in the reference run: the candidates' runs could differ only in
+    /// round-off, which is no evidence for any engine or tolerance.
+    #[error(
+        "no contact in the reference run ({run}): the runs cannot tell the engines apart, so \
+         nothing can be recommended (run longer, or start the parts closer)"
+    )]
+    NothingTouched {
+        /// The reference run's setting, described.
+        run: String,
+    },
 }
 
 /// The model's size and each moving part's contact radius, from the model's contact geometry
@@ -337,7 +347,8 @@ fn contact_errors(
 /// reference run is the exact engine's (it then answers every contact), and the faceted
 /// engine at each of `tolerances` — up to `end` when given, and holds each to `reference`
 /// (a run of that model, [`super::record_reference`]). The reference's own row reuses its
-/// record. `progress` hears each candidate before it runs.
+/// record. `progress` hears each candidate before it runs. A reference run in which no
+/// contact touched is [`RunTradeError::NothingTouched`]: nothing is run.
 pub fn trade_runs(
     model: &Model,
     source: &Path,
@@ -346,6 +357,11 @@ pub fn trade_runs(
     end: Option<f64>,
     progress: &mut dyn FnMut(&str),
 ) -> Result<RunTrade, RunTradeError> {
+    if reference.touching.iter().all(Vec::is_empty) {
+        return Err(RunTradeError::NothingTouched {
+            run: reference.setting.describe(),
+        });
+    }
     let scale = model_scale(model, reference)?;
     let mut candidates = Vec::new();
     if reference.setting.engine == GeometryLibrary::Exact {

@@ -401,4 +401,20 @@ fn a_contact_that_never_touches_in_the_reference_run_is_reported_as_such() {
         err.contains("no contact in the reference run (exact)"),
         "{err}"
     );
+    // Whole runs without a contact cannot tell the engines apart: refused as well.
+    let runs = contact::cli::select::SelectArgs {
+        max_depth_error: None,
+        max_run_error: Some(0.01),
+        ..args
+    };
+    let mut err = Vec::new();
+    let code =
+        contact::cli::select::run(&runs, &build_engine, &mut Vec::new(), &mut err, &mut |_| {})
+            .unwrap();
+    let err = String::from_utf8(err).unwrap();
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("no contact in the reference run (exact)"),
+        "{err}"
+    );
 }
