@@ -27,9 +27,14 @@ enum Command {
     Query(cli::query::QueryArgs),
     /// The accuracy-against-speed sweep over the reference scenes, or over a dataset's contacts.
     Tradeoff {
-        /// A dataset (.adm): its contacts are the scenes, at poses around its initial
-        /// configuration, against the exact engine.
+        /// A dataset (.adm): its contacts are the scenes, at the poses where they touch in a
+        /// reference run of the model, against the exact engine.
         model: Option<PathBuf>,
+        /// The dataset's command file (default: the `.acf` beside it, if any).
+        commands: Option<PathBuf>,
+        /// End the dataset's reference run here (overrides the command file's last END).
+        #[arg(long)]
+        end: Option<f64>,
         /// Scene names (default: the whole suite; `contact scenes` lists them), or contact
         /// names (`CONTACT/3`) with a dataset.
         #[arg(long = "scene")]
@@ -54,7 +59,8 @@ enum Command {
         peer: Option<String>,
     },
     /// Recommend the fastest engine and faceting tolerance meeting an accuracy target on a
-    /// dataset's own contacts (exit 1 naming the contact when none does).
+    /// dataset's own motion: whole runs against a reference run (--max-run-error) and
+    /// per-query depth errors at the run's poses (--max-depth-error); exit 1 when none does.
     Select(cli::select::SelectArgs),
     /// List the reference scenes; with --answers, print their closed-form contacts as CSV.
     Scenes {
@@ -113,6 +119,8 @@ fn main() -> ExitCode {
         },
         Command::Tradeoff {
             model,
+            commands,
+            end,
             scenes,
             tolerances,
             rounds,
@@ -123,6 +131,8 @@ fn main() -> ExitCode {
         } => {
             let args = cli::tradeoff::TradeoffArgs {
                 model,
+                commands,
+                end,
                 scenes,
                 tolerances,
                 rounds,

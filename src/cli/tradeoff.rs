@@ -1,9 +1,10 @@
 //! `contact tradeoff [MODEL.adm]`: the accuracy-against-speed sweep over the scene suite, or
-//! over a dataset's own contacts (one scene per CONTACT, see [`crate::scenes::from_model`]).
+//! over a dataset's own contacts (one scene per CONTACT that touched in a reference run of the
+//! model, at the poses where it touched: see [`crate::scenes::from_run`]).
 
 use crate::scenes::{self, Scene};
 use crate::tradeoff::{self, EngineFactory, Sweep, Timing, TradeReport};
-use contact_core::{FacetingTolerance, GeometryEngine};
+use contact_core::{FacetingTolerance, GeometryEngine, GeometryLibrary};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -12,6 +13,10 @@ use std::path::PathBuf;
 pub struct TradeoffArgs {
     /// A dataset whose contacts are the scenes (`None`: the reference suite).
     pub model: Option<PathBuf>,
+    /// The dataset's command file (default: the `.acf` beside it, if any).
+    pub commands: Option<PathBuf>,
+    /// End the reference run here (overrides the command file's last END).
+    pub end: Option<f64>,
     /// Scene names (empty: the whole suite, or every contact of the model).
     pub scenes: Vec<String>,
     /// Faceting tolerances (empty: the default sweep).
@@ -47,6 +52,9 @@ pub enum TradeoffError {
     /// A measurement failed.
     #[error(transparent)]
     Measure(#[from] tradeoff::TradeError),
+    /// The reference run of the model failed.
+    #[error(transparent)]
+    Reference(#[from] tradeoff::RecordError),
     /// Writing an output failed.
     #[error("cannot write {path}: {source}")]
     Write {
@@ -69,27 +77,6 @@ pub fn run(
     out: &mut dyn Write,
     progress: &mut dyn FnMut(&str),
 ) -> Result<TradeReport, TradeoffError> {
-    let chosen: Vec<Scene> = if let Some(path) = &args.model {
-        let (model, _warnings) = crate::dataset::load(path, None)?;
-        let all = scenes::from_model(&model)?;
-        if let Some(unknown) = args
-            .scenes
-            .iter()
-            .find(|n| !all.iter().any(|s| s.name == **n))
-        {
-            return Err(TradeoffError::UnknownContact(unknown.clone()));
-        }
-        all.into_iter()
-            .filter(|s| args.scenes.is_empty() || args.scenes.iter().any(|n| *n == s.name))
-            .collect()
-    } else if args.scenes.is_empty() {
-        scenes::suite()
-    } else {
-        args.scenes
-            .iter()
-            .map(|n| scenes::scene(n).ok_or_else(|| TradeoffError::UnknownScene(n.clone())))
-            .collect::<Result<_, _>>()?
-    };
     let mut sweep = Sweep::default();
     if !args.tolerances.is_empty() {
         sweep.tolerances = args
@@ -98,6 +85,42 @@ pub fn run(
             .map(|&t| FacetingTolerance::new(t))
             .collect::<Result<_, _>>()?;
     }
+    let mut untouched = Vec::new();
+    let chosen: Vec<Scene> = if let Some(path) = &args.model {
+        let model = super::select::load_with_commands(path, args.commands.as_deref())?;
+        let named = |name: &str| args.scenes.is_empty() || args.scenes.iter().any(|n| n == name);
+        if let Some(unknown) = args.scenes.iter().find(|n| {
+            !model
+                .contacts
+                .iter()
+                .any(|c| format!("CONTACT/{}", c.id) == **n)
+        }) {
+            return Err(TradeoffError::UnknownContact(unknown.clone()));
+        }
+        let exact = engines(GeometryLibrary::Exact, FacetingTolerance::DEFAULT);
+        let reference =
+            tradeoff::record_reference(&model, path, exact.as_ref(), &sweep.tolerances, args.end)?;
+        let run = scenes::from_run(&model, &reference, scenes::RUN_POSES_PER_CONTACT)?;
+        untouched = run
+            .untouched
+            .into_iter()
+            .filter(|n| named(n))
+            .map(|n| {
+                format!(
+                    "{n}: no contact in the reference run ({})",
+                    reference.setting.describe()
+                )
+            })
+            .collect();
+        run.scenes.into_iter().filter(|s| named(&s.name)).collect()
+    } else if args.scenes.is_empty() {
+        scenes::suite()
+    } else {
+        args.scenes
+            .iter()
+            .map(|n| scenes::scene(n).ok_or_else(|| TradeoffError::UnknownScene(n.clone())))
+            .collect::<Result<_, _>>()?
+    };
     if let Some(rounds) = args.rounds {
         sweep.timing = Timing {
             rounds: rounds.max(1),
@@ -127,6 +150,9 @@ pub fn run(
     };
     out.write_all(tradeoff::table(&report.records).as_bytes())
         .map_err(stdout_error)?;
+    for line in &untouched {
+        writeln!(out, "{line}").map_err(stdout_error)?;
+    }
     for s in &report.skipped {
         writeln!(
             out,

@@ -1,6 +1,8 @@
 //! Scenes from a dataset: each CONTACT of a [`Model`] becomes a scene of its own I and J
-//! geometry lists, so `contact tradeoff MODEL.adm` and `contact select` measure the pairs the
-//! model will really query.
+//! geometry lists, placed at a family of poses around the initial configuration. `contact
+//! tradeoff MODEL.adm` and `contact select` take the geometry and the contact's size from
+//! here and the poses from a run of the model ([`super::from_run`]): the family below only
+//! reaches the poses the approach direction passes through.
 //!
 //! # The pose family of a contact
 //! - Pose 0 is the model's initial configuration (both parts at their initial world poses).

@@ -9,11 +9,13 @@
 
 mod closed_form;
 mod from_model;
+mod from_run;
 mod rng;
 mod support;
 
 pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
 pub use from_model::{ModelSceneError, from_model};
+pub use from_run::{RUN_POSES_PER_CONTACT, RunScenes, SPREAD_TILT_DEG, from_run};
 pub use rng::SplitMix64;
 pub use support::{support, support_point};
 

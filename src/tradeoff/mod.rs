@@ -26,16 +26,25 @@
 //! [`RESOLVED_BANDS`] bands ([`resolved_depth`]); the record states that depth and how many
 //! contacts it kept, and the depth error still counts every contact.
 //!
-//! A dataset's contacts become scenes of their own ([`crate::scenes::from_model`]); the
-//! recommendation for a model is [`select_for_model`].
+//! A dataset's contacts become scenes of their own, at the poses where they touch in a
+//! reference run of the model ([`record_reference`], [`crate::scenes::from_run`]); the
+//! per-query recommendation for a model is [`select_for_model`].
+//!
+//! The trade on whole runs ([`trade_runs`]) runs the model with every candidate and holds each
+//! run to the reference run: part positions and orientations over time, each contact's peak
+//! force, impulse, onsets and releases, and the wall time per simulated second;
+//! [`select_run`] picks the fastest candidate within a run-error target.
 
 mod band;
 mod compare;
 mod for_model;
 mod measure;
+mod reference_run;
 mod report;
+mod run_report;
 mod select;
 mod sweep;
+mod whole_run;
 
 pub use band::{RESOLVED_BANDS, faceting_band, resolved_depth};
 pub use compare::{PoseErrors, compare};
@@ -43,8 +52,16 @@ pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
 };
+pub use reference_run::{
+    RecordError, RunRecord, Setting, TouchingPose, record_reference, record_run, reference_setting,
+};
 pub use report::{csv, json, plot, table};
+pub use run_report::{run_csv, run_plot, run_table};
 pub use select::{
     Choice, ModelChoice, NoRecommendation, Recommendation, meets, recommend, select, select_model,
 };
 pub use sweep::{DEFAULT_TOLERANCES, EngineFactory, Skipped, Sweep, TradeReport, run};
+pub use whole_run::{
+    ContactRunErrors, ModelScale, NoRunRecommendation, RunChoice, RunRow, RunTrade, RunTradeError,
+    compare_runs, model_scale, select_run, trade_runs,
+};

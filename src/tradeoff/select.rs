@@ -165,6 +165,15 @@ pub enum NoRecommendation {
         /// Each contact's own choice, as `contact: engine FT`.
         choices: Vec<String>,
     },
+    /// No contact of the model touched in the reference run: nothing was measured.
+    #[error(
+        "no contact in the reference run ({run}): no contact was measured, so nothing can be \
+         recommended (run longer, or start the parts closer)"
+    )]
+    NothingTouched {
+        /// The reference run's setting, described.
+        run: String,
+    },
 }
 
 /// The recommendation for `contacts` from measured rows: [`select`] per contact, then

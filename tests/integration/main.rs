@@ -19,6 +19,7 @@ mod malformed;
 mod out_of_plane;
 mod scenes_cli;
 mod select;
+mod select_runs;
 mod session;
 mod statics;
 mod statics_augmented;

@@ -51,10 +51,12 @@ fn write_sphere_stl(path: &Path, r: f64, n: u32) {
     std::fs::write(path, text).unwrap();
 }
 
-/// A ball of radius 1 on a moving part above the ground's geometry `ground_graphics`.
+/// A ball of radius 1 on a moving part above the ground's geometry `ground_graphics`, under
+/// gravity along −z.
 fn ball_over(ground_graphics: &str, height: f64) -> String {
     format!(
         "ball over the ground\n\
+         ACCGRAV/ KGRAV = -9.81\n\
          PART/1, GROUND\n\
          MARKER/10, PART = 1\n\
          PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
@@ -71,6 +73,27 @@ fn load(dir: &Path, adm: &str) -> contact::model::Model {
     let path = dir.join("model.adm");
     std::fs::write(&path, adm).unwrap();
     contact::dataset::load(&path, None).unwrap().0
+}
+
+/// The model's reference run over `tolerances`, `end` seconds long.
+fn reference(
+    dir: &Path,
+    model: &contact::model::Model,
+    tolerances: &[f64],
+    end: f64,
+) -> tradeoff::RunRecord {
+    let exact = build_engine(
+        contact_core::GeometryLibrary::Exact,
+        FacetingTolerance::DEFAULT,
+    );
+    tradeoff::record_reference(
+        model,
+        &dir.join("model.adm"),
+        exact.as_ref(),
+        &sweep(tolerances).tolerances,
+        Some(end),
+    )
+    .unwrap()
 }
 
 /// The smallest tolerance among the faceted rows of `contact` meeting the target, read
@@ -121,10 +144,15 @@ fn setting(engine: &str, tolerance: Option<f64>) -> (String, Option<f64>) {
 
 #[test]
 fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
+    // The ball starts 5 mm into the plane and settles on it (k·δ² = m·g at δ ≈ 0.0099).
     let dir = scratch("plane");
-    let model = load(&dir, &ball_over("GRAPHICS/2, PLANE, RM = 10", 1.5));
+    let model = load(&dir, &ball_over("GRAPHICS/2, PLANE, RM = 10", 0.995));
+    let run = reference(&dir, &model, &[100.0, 300.0028], 0.2);
+    assert_eq!(run.setting, tradeoff::Setting::EXACT);
+    assert!(run.touching[0].len() > 10, "{:?}", run.times);
     let selection = tradeoff::select_for_model(
         &model,
+        &run,
         &sweep(&[100.0, 300.0028]),
         &build_engine,
         &[],
@@ -133,13 +161,15 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     )
     .unwrap();
     assert_eq!(selection.contacts, ["CONTACT/1"]);
-    // The contact's poses: the initial one (1.5 − 1 = 0.5 above the plane), then the family
-    // placed by support functions, which for a ball on a plane is exactly r − d (the closed
-    // form, independent of the engine).
-    let scene = &contact::scenes::from_model(&model).unwrap()[0];
+    assert!(selection.untouched.is_empty());
+    // The contact's poses: the run's touching frames, each at the run's depth, which for a
+    // ball on a plane is exactly r − d (the closed form, independent of the engine), then the
+    // spread around them.
+    let scene = &contact::scenes::from_run(&model, &run, 50).unwrap().scenes[0];
     assert_eq!(scene.scale, 1.0);
-    assert!((scene.poses[0].nominal_depth + 0.5).abs() < 1e-12);
-    for pose in &scene.poses {
+    let sampled = run.touching[0].len().min(50);
+    assert_eq!(scene.poses.len(), 2 * sampled);
+    for pose in &scene.poses[..sampled] {
         let ball = (pose.pose_world_i * scene.i[0].pose_part_geometry)
             .translation
             .vector;
@@ -149,9 +179,13 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
         );
     }
     let records = &selection.report.records;
-    // The initial pose (separated) plus one pose per nominal depth of the suite.
-    let poses = 1 + contact::scenes::POSES;
-    assert!(records.iter().all(|r| r.poses == poses), "{records:?}");
+    assert!(
+        records.iter().all(|r| r.poses == 2 * sampled),
+        "{records:?}"
+    );
+    // Every pose touches: the exact engine resolves a contact at each.
+    let exact = records.iter().find(|r| r.engine == "exact").unwrap();
+    assert_eq!(exact.resolved_contacts, 2 * sampled, "{exact:?}");
     let exact = records.iter().find(|r| r.engine == "exact").unwrap();
     assert_eq!(exact.reference, tradeoff::ReferenceSource::ExactEngine);
     assert!(records.iter().all(|r| r.depth_error.is_some()));
@@ -171,10 +205,15 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     let json = dir.join("select.json");
     let args = contact::cli::select::SelectArgs {
         model: dir.join("model.adm"),
-        max_depth_error: 0.01,
+        commands: None,
+        end: Some(0.2),
+        max_depth_error: Some(0.01),
+        max_run_error: None,
         tolerances: vec![100.0],
         rounds: Some(1),
         json: Some(json.clone()),
+        csv: None,
+        plot: None,
     };
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code =
@@ -183,7 +222,7 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     assert_eq!(code, 0, "{text}{}", String::from_utf8_lossy(&err));
     let doc: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(json).unwrap()).unwrap();
-    let rows = doc["records"].as_array().unwrap();
+    let rows = doc["per_query"]["records"].as_array().unwrap();
     assert_eq!(rows.len(), 2);
     // The faster of the exact row and the faceted one (if it meets the target), as printed.
     let row = |engine: &str| rows.iter().find(|r| r["engine"] == engine).unwrap();
@@ -197,7 +236,7 @@ fn select_recommends_from_the_measured_rows_for_a_sphere_on_a_plane() {
     };
     assert!(text.contains(&format!("model: {expected} (")), "{text}");
     assert_eq!(
-        doc["recommendation"]["model"]["engine"],
+        doc["per_query"]["recommendation"]["model"]["engine"],
         expected.split(' ').next().unwrap()
     );
 }
@@ -212,11 +251,13 @@ fn select_recommends_from_the_measured_rows_for_a_ball_on_a_large_mesh() {
     write_sphere_stl(&dir.join("big.stl"), 5.0, 200);
     let model = load(
         &dir,
-        &ball_over("GRAPHICS/2, EXTERNAL, RM = 10, FILE = big.stl", 6.5),
+        &ball_over("GRAPHICS/2, EXTERNAL, RM = 10, FILE = big.stl", 5.995),
     );
     let target = 0.01;
+    let run = reference(&dir, &model, &[300.0028, 100.0], 0.1);
     let selection = tradeoff::select_for_model(
         &model,
+        &run,
         &sweep(&[300.0028, 100.0]),
         &build_engine,
         &[],
@@ -248,8 +289,9 @@ fn select_recommends_from_the_measured_rows_for_a_ball_on_a_large_mesh() {
 
 #[test]
 fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
-    // Two STL spheres: the exact engine does not answer mesh against mesh, so no row has a
-    // reference and no setting can be shown to meet any target.
+    // Two STL spheres 0.1 into each other: the exact engine does not answer mesh against mesh,
+    // so the reference run is the faceted one, no row has a reference and no setting can be
+    // shown to meet any target.
     let dir = scratch("none");
     write_sphere_stl(&dir.join("a.stl"), 1.0, 24);
     write_sphere_stl(&dir.join("b.stl"), 2.0, 24);
@@ -257,7 +299,7 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
          PART/1, GROUND\n\
          MARKER/10, PART = 1\n\
          PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
-         MARKER/20, PART = 2, QP = 0, 0, 3.5\n\
+         MARKER/20, PART = 2, QP = 0, 0, 2.9\n\
          GRAPHICS/1, EXTERNAL, RM = 20, FILE = a.stl\n\
          GRAPHICS/2, EXTERNAL, RM = 10, FILE = b.stl\n\
          CONTACT/7, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E5, EXPONENT = 2, DAMPING = 10\
@@ -266,10 +308,15 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
     load(&dir, adm);
     let args = contact::cli::select::SelectArgs {
         model: dir.join("model.adm"),
-        max_depth_error: 0.01,
+        commands: None,
+        end: Some(0.05),
+        max_depth_error: Some(0.01),
+        max_run_error: None,
         tolerances: vec![100.0],
         rounds: Some(1),
         json: None,
+        csv: None,
+        plot: None,
     };
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code =
@@ -285,7 +332,7 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
     assert!(String::from_utf8(out).unwrap().contains("CONTACT/7"));
     // A target that is not a positive number is refused before anything is measured.
     let bad = contact::cli::select::SelectArgs {
-        max_depth_error: -1.0,
+        max_depth_error: Some(-1.0),
         ..args
     };
     let mut err = Vec::new();
@@ -297,5 +344,77 @@ fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
         String::from_utf8(err)
             .unwrap()
             .contains("--max-depth-error")
+    );
+}
+
+#[test]
+fn a_contact_that_never_touches_in_the_reference_run_is_reported_as_such() {
+    // A ball 0.5 above a plane without gravity: it never moves, so the contact never touches
+    // and nothing is measured, never an error of 0.
+    let dir = scratch("untouched");
+    let adm = ball_over("GRAPHICS/2, PLANE, RM = 10", 1.5).replace("ACCGRAV/ KGRAV = -9.81\n", "");
+    let model = load(&dir, &adm);
+    let run = reference(&dir, &model, &[100.0], 0.05);
+    assert!(run.touching[0].is_empty());
+    let selection = tradeoff::select_for_model(
+        &model,
+        &run,
+        &sweep(&[100.0]),
+        &build_engine,
+        &[],
+        0.01,
+        &mut |_| {},
+    )
+    .unwrap();
+    assert!(selection.contacts.is_empty());
+    assert_eq!(selection.untouched, ["CONTACT/1"]);
+    assert!(selection.report.records.is_empty());
+    assert!(matches!(
+        selection.recommendation,
+        Err(tradeoff::NoRecommendation::NothingTouched { .. })
+    ));
+    let args = contact::cli::select::SelectArgs {
+        model: dir.join("model.adm"),
+        commands: None,
+        end: Some(0.05),
+        max_depth_error: Some(0.01),
+        max_run_error: None,
+        tolerances: vec![100.0],
+        rounds: Some(1),
+        json: None,
+        csv: None,
+        plot: None,
+    };
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let code =
+        contact::cli::select::run(&args, &build_engine, &mut out, &mut err, &mut |_| {}).unwrap();
+    let (out, err) = (
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    );
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.contains("CONTACT/1: no contact in the reference run (exact): not measured"),
+        "{out}"
+    );
+    assert!(
+        err.contains("no contact in the reference run (exact)"),
+        "{err}"
+    );
+    // Whole runs without a contact cannot tell the engines apart: refused as well.
+    let runs = contact::cli::select::SelectArgs {
+        max_depth_error: None,
+        max_run_error: Some(0.01),
+        ..args
+    };
+    let mut err = Vec::new();
+    let code =
+        contact::cli::select::run(&runs, &build_engine, &mut Vec::new(), &mut err, &mut |_| {})
+            .unwrap();
+    let err = String::from_utf8(err).unwrap();
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("no contact in the reference run (exact)"),
+        "{err}"
     );
 }
