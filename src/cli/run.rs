@@ -15,6 +15,7 @@ use crate::session::{
     run_model,
 };
 use crate::solver::linear::Linearization;
+use crate::solver::parallel::MAX_THREADS;
 use crate::solver::simulate::{Frame, Progress};
 use contact_core::{FacetingTolerance, GeometryLibrary};
 use std::io::Write;
@@ -72,15 +73,16 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         quiet: args.quiet,
         progress: None,
     };
-    // The dataset is read (and its diagnostics printed) before the flags are checked.
+    // The flags are checked first: nothing is read or written when one is out of range.
+    let options = match options(args) {
+        Ok(options) => options,
+        Err(message) => {
+            writeln!(sink.err, "error: {message}")?;
+            return Ok(1);
+        }
+    };
     let result = match load(&args.model, args.commands.as_deref(), &mut sink) {
-        Ok(loaded) => match options(args) {
-            Ok(options) => run_model(&loaded.model, &args.model, &options, &mut sink),
-            Err(message) => {
-                writeln!(sink.err, "error: {message}")?;
-                return Ok(1);
-            }
-        },
+        Ok(loaded) => run_model(&loaded.model, &args.model, &options, &mut sink),
         Err(e) => Err(e),
     };
     print_outcome(result, &sink.files, out, err)
@@ -115,12 +117,16 @@ fn print_outcome(
             if let Some(w) = files.write_error() {
                 writeln!(err, "error: writing results: {w}")?;
             }
-            writeln!(
-                err,
-                "results up to the failure are in {} ({} files)",
-                files.dir().display(),
-                files.finished_files().len() + 3
-            )?;
+            if files.started() {
+                writeln!(
+                    err,
+                    "results up to the failure are in {} ({} files)",
+                    files.dir().display(),
+                    files.finished_files().len() + 3
+                )?;
+            } else {
+                writeln!(err, "no results were written")?;
+            }
             Ok(1)
         }
         Err(RunError::Output(e)) => Err(e),
@@ -208,9 +214,33 @@ impl RunSink for CliSink<'_> {
     }
 }
 
-/// The flags as [`RunOptions`]; an engine name or tolerance out of range is refused naming
-/// the flag.
+/// The flags as [`RunOptions`]; a value out of range is refused naming the flag and its
+/// range: `--end` finite, `--dtout` finite and > 0, `--steps` >= 1, `--threads` in
+/// [1, [`MAX_THREADS`]], `--faceting-tolerance` > 0, `--engine` a known library. (That the
+/// end comes after the start, and the bound on output frames, are checked by the plan.)
 fn options(args: &RunArgs) -> Result<RunOptions, String> {
+    if let Some(end) = args.end
+        && !end.is_finite()
+    {
+        return Err(format!("--end {end:?} is out of range: must be finite"));
+    }
+    if let Some(dtout) = args.dtout
+        && !(dtout.is_finite() && dtout > 0.0)
+    {
+        return Err(format!(
+            "--dtout {dtout:?} is out of range: must be finite and > 0"
+        ));
+    }
+    if args.steps == Some(0) {
+        return Err("--steps 0 is out of range: must be >= 1".into());
+    }
+    if let Some(threads) = args.threads
+        && !(1..=MAX_THREADS).contains(&threads)
+    {
+        return Err(format!(
+            "--threads {threads} is out of range: must be in [1, {MAX_THREADS}]"
+        ));
+    }
     let engine = args
         .engine
         .as_deref()

@@ -16,7 +16,7 @@
 //! watched sees its files grow while it runs. Frames are serialized straight from the states,
 //! without building JSON values.
 
-use crate::svg_plot::{Plot, Scale, Series};
+use crate::svg_plot::{DecimatedSeries, Plot, Scale, Series};
 use contact_solver::mbs::PartId;
 use contact_solver::simulate::Frame;
 use serde::Serialize;
@@ -71,8 +71,8 @@ pub struct ResultWriter {
     frames: BufWriter<File>,
     part_ids: Vec<(PartId, u32)>,
     contact_names: Vec<String>,
-    force_series: Vec<Vec<(f64, f64)>>,
-    depth_series: Vec<Vec<(f64, f64)>>,
+    force_series: Vec<DecimatedSeries>,
+    depth_series: Vec<DecimatedSeries>,
     parts_line: Vec<PartLine>,
     last_flush: Instant,
 }
@@ -101,8 +101,8 @@ impl ResultWriter {
             frames: open("frames.jsonl")?,
             part_ids,
             contact_names,
-            force_series: vec![Vec::new(); n],
-            depth_series: vec![Vec::new(); n],
+            force_series: vec![DecimatedSeries::new(); n],
+            depth_series: vec![DecimatedSeries::new(); n],
             parts_line: Vec::new(),
             last_flush: Instant::now(),
         })
@@ -212,13 +212,13 @@ impl ResultWriter {
     /// Writes the plots and `summary.json` (call after the run, whether it succeeded or not).
     pub fn finish(&mut self, summary: &serde_json::Value) -> std::io::Result<Vec<PathBuf>> {
         self.flush()?;
-        let series = |data: &[Vec<(f64, f64)>]| -> Vec<Series> {
+        let series = |data: &[DecimatedSeries]| -> Vec<Series> {
             self.contact_names
                 .iter()
                 .zip(data)
                 .map(|(name, points)| Series {
                     name: name.clone(),
-                    points: points.clone(),
+                    points: points.points(),
                     line: true,
                 })
                 .collect()

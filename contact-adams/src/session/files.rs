@@ -42,6 +42,12 @@ impl ResultFiles {
         !self.eigenvalues.is_empty()
     }
 
+    /// Whether the run started: the streamed files (`parts.csv`, `contacts.csv`,
+    /// `frames.jsonl`) were created. A run refused before its first analysis writes nothing.
+    pub fn started(&self) -> bool {
+        self.writer.is_some()
+    }
+
     /// The error that stopped writing a frame, if one did.
     pub fn write_error(&self) -> Option<&std::io::Error> {
         self.write_error.as_ref()

@@ -16,6 +16,16 @@ use thiserror::Error;
 /// Corners within this fraction of the mesh's bounding-box diagonal are one vertex.
 pub const WELD_RELATIVE: f64 = 1e-7;
 
+/// The most triangles an STL file may hold (about 1.5 GB of corners while it is welded). A
+/// binary file's count is read from its header and checked before anything is allocated; an
+/// ASCII file is refused when its triangles pass the bound.
+pub const MAX_TRIANGLES: u64 = 20_000_000;
+
+/// A binary STL: an 80-byte header, a little-endian `u32` triangle count, 50 bytes a triangle.
+const BINARY_HEADER: u64 = 84;
+/// Bytes per triangle in a binary STL (normal, three corners, attribute count).
+const BINARY_TRIANGLE: u64 = 50;
+
 /// Why an STL file could not be used.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum StlError {
@@ -26,6 +36,43 @@ pub enum StlError {
         path: PathBuf,
         /// The reader's message.
         message: String,
+    },
+    /// Not a regular file (a directory, a device such as `/dev/zero`, a pipe).
+    #[error("STL file '{path}': not a regular file")]
+    NotAFile {
+        /// The file.
+        path: PathBuf,
+    },
+    /// More triangles than [`MAX_TRIANGLES`].
+    #[error("STL file '{path}': {triangles} triangles, more than the bound of {MAX_TRIANGLES}")]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// Its triangle count (a binary file's header, or an ASCII file's triangles so far).
+        triangles: u64,
+    },
+    /// A binary STL whose size does not match the triangle count in its header.
+    #[error(
+        "STL file '{path}': not a valid STL: it does not start with 'solid' (ASCII), and as binary STL its header gives {triangles} triangles ({} bytes) but the file has {size} bytes (cut short, or not an STL file)",
+        BINARY_HEADER + BINARY_TRIANGLE * triangles
+    )]
+    BinarySize {
+        /// The file.
+        path: PathBuf,
+        /// The count in the header.
+        triangles: u64,
+        /// The file's size in bytes.
+        size: u64,
+    },
+    /// Too short to be an STL file.
+    #[error(
+        "STL file '{path}': not a valid STL: {size} bytes, shorter than a binary STL's {BINARY_HEADER}-byte header, and it does not start with 'solid' (ASCII)"
+    )]
+    TooShort {
+        /// The file.
+        path: PathBuf,
+        /// The file's size in bytes.
+        size: u64,
     },
     /// The triangles do not bound a solid (open, non-manifold, inconsistently oriented, inside
     /// out, zero-area facets, too few triangles).
@@ -55,10 +102,17 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
         message,
     };
     let mut file = std::fs::File::open(path).map_err(|e| read_error(e.to_string()))?;
+    check_size(path, &mut file)?;
     let reader = stl_io::create_stl_reader(&mut file).map_err(|e| read_error(e.to_string()))?;
     let mut corners: Vec<[Point3; 3]> = Vec::new();
     for t in reader {
         let t = t.map_err(|e| read_error(e.to_string()))?;
+        if corners.len() as u64 >= MAX_TRIANGLES {
+            return Err(StlError::TooLarge {
+                path: path.to_path_buf(),
+                triangles: corners.len() as u64 + 1,
+            });
+        }
         corners.push(
             t.vertices
                 .map(|v| Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))),
@@ -68,6 +122,57 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
         path: path.to_path_buf(),
         source,
     })
+}
+
+/// Refuses, before anything is allocated, a file that is not a regular file, and a file that
+/// is not ASCII (`solid` first) whose size does not match its binary header's triangle count
+/// or whose count passes [`MAX_TRIANGLES`]. Leaves `file` at its start.
+fn check_size(path: &Path, file: &mut std::fs::File) -> Result<(), StlError> {
+    use std::io::{Read, Seek};
+    let read_error = |e: std::io::Error| StlError::Read {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    };
+    let metadata = file.metadata().map_err(read_error)?;
+    if !metadata.is_file() {
+        return Err(StlError::NotAFile {
+            path: path.to_path_buf(),
+        });
+    }
+    let size = metadata.len();
+    let mut head = Vec::with_capacity(BINARY_HEADER as usize);
+    file.by_ref()
+        .take(BINARY_HEADER)
+        .read_to_end(&mut head)
+        .map_err(read_error)?;
+    file.rewind().map_err(read_error)?;
+    let ascii = head.trim_ascii_start().starts_with(b"solid");
+    if head.len() < BINARY_HEADER as usize {
+        return if ascii {
+            Ok(())
+        } else {
+            Err(StlError::TooShort {
+                path: path.to_path_buf(),
+                size,
+            })
+        };
+    }
+    let triangles = u64::from(u32::from_le_bytes([head[80], head[81], head[82], head[83]]));
+    let binary_size = BINARY_HEADER + BINARY_TRIANGLE * triangles;
+    if binary_size == size && triangles > MAX_TRIANGLES {
+        return Err(StlError::TooLarge {
+            path: path.to_path_buf(),
+            triangles,
+        });
+    }
+    if binary_size != size && !ascii {
+        return Err(StlError::BinarySize {
+            path: path.to_path_buf(),
+            triangles,
+            size,
+        });
+    }
+    Ok(())
 }
 
 /// Welds triangle corners read from a mesh file and checks they bound a solid; with

@@ -240,7 +240,11 @@ impl MultibodySystem {
             .lu()
             .solve(&rhs)
             .filter(|s| s.iter().all(|x| x.is_finite()));
-        let solution = solution.ok_or(MbsError::SingularConstraints { time: t })?;
+        let solution = solution.ok_or(if m == 0 {
+            MbsError::AccelerationsNotFinite { time: t }
+        } else {
+            MbsError::SingularConstraints { time: t }
+        })?;
         Ok((
             solution.rows(0, n6).into_owned(),
             solution.rows(n6, m).into_owned(),
