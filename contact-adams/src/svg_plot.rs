@@ -43,7 +43,7 @@ pub struct DecimatedSeries {
 
 impl DecimatedSeries {
     /// The most buckets kept (each drawn as at most two points).
-    pub const MAX_BUCKETS: usize = 4096;
+    pub const MAX_BUCKETS: usize = 16_384;
 
     /// An empty series.
     pub fn new() -> Self {

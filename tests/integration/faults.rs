@@ -356,3 +356,19 @@ fn an_stl_file_is_checked_against_its_header_before_anything_is_allocated() {
         assert!(e.contains("not a regular file"), "{e}");
     }
 }
+
+#[test]
+fn an_output_directory_that_cannot_be_made_is_named_in_the_error() {
+    let dir = scratch("outdir");
+    let file = dir.join("a_file");
+    std::fs::write(&file, "x").unwrap();
+    let args = ball_args(&file.join("out"));
+    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
+    let error = contact::cli::run::run(&args, &mut stdout, &mut stderr).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains(&file.join("out").display().to_string()),
+        "{error}"
+    );
+}

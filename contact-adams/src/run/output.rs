@@ -84,8 +84,13 @@ impl ResultWriter {
         part_ids: Vec<(PartId, u32)>,
         contact_names: Vec<String>,
     ) -> std::io::Result<Self> {
-        std::fs::create_dir_all(dir)?;
-        let open = |name: &str| File::create(dir.join(name)).map(BufWriter::new);
+        std::fs::create_dir_all(dir).map_err(|e| naming(dir, e))?;
+        let open = |name: &str| {
+            let path = dir.join(name);
+            File::create(&path)
+                .map(BufWriter::new)
+                .map_err(|e| naming(&path, e))
+        };
         let mut parts_csv = open("parts.csv")?;
         writeln!(parts_csv, "time,part,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz")?;
         let mut contacts_csv = open("contacts.csv")?;
@@ -245,15 +250,24 @@ impl ResultWriter {
             ("penetration.svg", depth.to_svg()),
         ] {
             let path = self.dir.join(name);
-            std::fs::write(&path, text)?;
+            std::fs::write(&path, text).map_err(|e| naming(&path, e))?;
             written.push(path);
         }
+        // Written to a temporary file and renamed: a reader never sees half a summary.
         let path = self.dir.join("summary.json");
+        let partial = self.dir.join("summary.json.partial");
         std::fs::write(
-            &path,
+            &partial,
             serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?,
-        )?;
+        )
+        .map_err(|e| naming(&partial, e))?;
+        std::fs::rename(&partial, &path).map_err(|e| naming(&path, e))?;
         written.push(path);
         Ok(written)
     }
+}
+
+/// `error` with the path it concerns in its message (the system's message names none).
+fn naming(path: &Path, error: std::io::Error) -> std::io::Error {
+    std::io::Error::new(error.kind(), format!("{}: {error}", path.display()))
 }
