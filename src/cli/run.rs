@@ -20,6 +20,8 @@ use crate::solver::simulate::{Frame, Progress};
 use contact_core::{FacetingTolerance, GeometryLibrary};
 use std::io::Write;
 use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 /// The arguments of `contact run`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
@@ -67,7 +69,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         )
     });
     let mut sink = CliSink {
-        files: ResultFiles::new(dir),
+        files: ResultFiles::new(dir).interrupted_by(interrupt_flag(&mut *err)?),
         out: &mut *out,
         err: &mut *err,
         quiet: args.quiet,
@@ -86,6 +88,26 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         Err(e) => Err(e),
     };
     print_outcome(result, &sink.files, out, err)
+}
+
+/// A flag set by SIGINT or SIGTERM: the run ends at the current frame with its results
+/// written whole. A second signal while the flag is set ends the process at once (exit code
+/// 130), for a run that does not reach its next frame.
+fn interrupt_flag(err: &mut dyn Write) -> std::io::Result<Arc<AtomicBool>> {
+    let flag = Arc::new(AtomicBool::new(false));
+    for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        // The shutdown is registered first: it acts only when an earlier signal set the flag.
+        let registered =
+            signal_hook::flag::register_conditional_shutdown(signal, 130, flag.clone())
+                .and_then(|_| signal_hook::flag::register(signal, flag.clone()));
+        if let Err(e) = registered {
+            writeln!(
+                err,
+                "note: signal {signal} cannot be caught ({e}): it ends the run without its summary"
+            )?;
+        }
+    }
+    Ok(flag)
 }
 
 /// Prints how the run went (the summary lines, where the results are, or the error); returns

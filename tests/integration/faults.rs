@@ -372,3 +372,33 @@ fn an_output_directory_that_cannot_be_made_is_named_in_the_error() {
         "{error}"
     );
 }
+
+#[test]
+fn an_interrupted_run_ends_at_its_frame_with_whole_records_and_says_so() {
+    use std::sync::Arc;
+    use std::sync::atomic::AtomicBool;
+    // The flag SIGINT/SIGTERM set in `contact run`, set before the run: it ends at its first
+    // frame, with that frame written whole and the summary saying "interrupted".
+    let dir = scratch("interrupt").join("out");
+    let mut files =
+        contact::session::ResultFiles::new(&dir).interrupted_by(Arc::new(AtomicBool::new(true)));
+    let options = contact::session::RunOptions {
+        end: Some(0.1),
+        ..Default::default()
+    };
+    let error = contact::session::run_files(&example("ball/ball.adm"), None, &options, &mut files)
+        .unwrap_err();
+    let contact::session::RunError::Stopped(report) = error else {
+        panic!("{error}")
+    };
+    assert!(report.interrupted());
+    assert_eq!(report.output_frames, 1);
+    let parts = std::fs::read_to_string(dir.join("parts.csv")).unwrap();
+    assert_eq!(parts.lines().count(), 2, "{parts}");
+    assert!(parts.ends_with('\n'));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "interrupted");
+    assert_eq!(summary["analyses"][0]["status"], "interrupted");
+    assert!(!dir.join("summary.json.partial").exists());
+}
