@@ -135,11 +135,18 @@ fn print_outcome(
         }
         Err(RunError::Stopped(report)) => {
             print_lines(&report, out)?;
+            let frames = report.output_frames;
             writeln!(err, "error: {}", RunError::Stopped(report))?;
             if let Some(w) = files.write_error() {
                 writeln!(err, "error: writing results: {w}")?;
             }
-            if files.started() {
+            if files.started() && frames == 0 {
+                writeln!(
+                    err,
+                    "no frame was computed: {} holds the files' headers and summary.json",
+                    files.dir().display()
+                )?;
+            } else if files.started() {
                 writeln!(
                     err,
                     "results up to the failure are in {} ({} files)",

@@ -402,3 +402,26 @@ fn an_interrupted_run_ends_at_its_frame_with_whole_records_and_says_so() {
     assert_eq!(summary["analyses"][0]["status"], "interrupted");
     assert!(!dir.join("summary.json.partial").exists());
 }
+
+#[test]
+fn a_mass_at_the_floating_point_limit_is_diagnosed_as_such() {
+    // No joint: the message must not blame redundant joints, nor claim results it has not.
+    let dir = scratch("huge-mass");
+    let adm = dir.join("m.adm");
+    std::fs::write(
+        &adm,
+        "t\nUNITS/ SYSTEM = MKS\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1E308, CM = 2, IP = 1, 1, 1\nMARKER/2, PART = 2\nACCGRAV/ KGRAV = -9.81\nEND\n",
+    )
+    .unwrap();
+    let mut args = ball_args(&dir.join("out"));
+    args.model = adm;
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1);
+    assert!(
+        stderr
+            .contains("the accelerations at t = 0 are not finite (the model has no joint or JPRIM"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("duplicated joints"), "{stderr}");
+    assert!(stderr.contains("no frame was computed"), "{stderr}");
+}

@@ -96,6 +96,9 @@ pub enum MbsError {
         /// The time of the initial conditions.
         time: f64,
     },
+    /// The system has no moving part (only ground): no analysis has anything to solve.
+    #[error("the model has no moving part: nothing to simulate")]
+    NoMovingPart,
     /// With no constraint, the equations of motion `M v̇ = Q − ω′×Jω′` gave accelerations that
     /// are not finite: a MASS or inertia so large or small (1E308, 1E-308) that the
     /// products overflow, or forces that do.
