@@ -281,6 +281,14 @@ fn check_refuses_what_run_refuses() {
         "{}",
         found[0]
     );
+    // The ASCII file's bad line is named.
+    assert!(
+        found[0]
+            .to_string()
+            .contains("(line 4: 'vertex 0 0 oops': expected 3 numbers after 'vertex')"),
+        "{}",
+        found[0]
+    );
     // Without a command file, only the INTEGRATOR settings are planned at check.
     assert!(check_run_settings(&loaded.model, &dir.join("mesh.adm")).is_empty());
 }

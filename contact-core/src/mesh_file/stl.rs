@@ -103,10 +103,13 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
     };
     let mut file = std::fs::File::open(path).map_err(|e| read_error(e.to_string()))?;
     check_size(path, &mut file)?;
-    let reader = stl_io::create_stl_reader(&mut file).map_err(|e| read_error(e.to_string()))?;
+    // stl_io's messages name no line ("invalid float literal"): an ASCII file's first
+    // malformed line is found and named.
+    let located = |e: std::io::Error| read_error(with_ascii_line(path, e.to_string()));
+    let reader = stl_io::create_stl_reader(&mut file).map_err(located)?;
     let mut corners: Vec<[Point3; 3]> = Vec::new();
     for t in reader {
-        let t = t.map_err(|e| read_error(e.to_string()))?;
+        let t = t.map_err(located)?;
         if corners.len() as u64 >= MAX_TRIANGLES {
             return Err(StlError::TooLarge {
                 path: path.to_path_buf(),
@@ -122,6 +125,46 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
         path: path.to_path_buf(),
         source,
     })
+}
+
+/// `message` with the first line of an ASCII STL file that is not valid ASCII STL, when there
+/// is one (`line 5: 'vertex 0 0 oops': expected 3 numbers after 'vertex'`).
+fn with_ascii_line(path: &Path, message: String) -> String {
+    // Files past 256 MiB are not read a second time just to locate the line.
+    if std::fs::metadata(path).is_ok_and(|m| m.len() > 1 << 28) {
+        return message;
+    }
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return message;
+    };
+    if !text.trim_start().starts_with("solid") {
+        return message;
+    }
+    for (index, line) in text.lines().enumerate() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let numbers = |after: usize| {
+            words.len() == after + 3 && words[after..].iter().all(|w| w.parse::<f32>().is_ok())
+        };
+        let problem = match words.as_slice() {
+            [] | ["endloop"] | ["endfacet"] | ["outer", "loop"] => None,
+            ["solid", ..] | ["endsolid", ..] => None,
+            ["vertex", ..] if numbers(1) => None,
+            ["vertex", ..] => Some("expected 3 numbers after 'vertex'"),
+            ["facet", "normal", ..] if numbers(2) => None,
+            ["facet", ..] => Some("expected 'facet normal' and 3 numbers"),
+            _ => Some(
+                "not an ASCII STL keyword (solid, facet normal, outer loop, vertex, endloop, endfacet, endsolid)",
+            ),
+        };
+        if let Some(problem) = problem {
+            return format!(
+                "{message} (line {}: '{}': {problem})",
+                index + 1,
+                line.trim()
+            );
+        }
+    }
+    message
 }
 
 /// Refuses, before anything is allocated, a file that is not a regular file, and a file that
