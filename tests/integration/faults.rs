@@ -132,10 +132,10 @@ fn an_option_out_of_range_is_refused_before_any_file_is_touched() {
         }),
         ("--dtout NaN is out of range", |a| a.dtout = Some(f64::NAN)),
         (
-            "--end = 0.0 is out of range: the end must be finite and after the start time 0.0",
+            "--end 0.0 is out of range: the end must be finite and after the start time 0.0",
             |a| a.end = Some(0.0),
         ),
-        ("--end = -1.0 is out of range", |a| a.end = Some(-1.0)),
+        ("--end -1.0 is out of range", |a| a.end = Some(-1.0)),
         ("--end NaN is out of range: must be finite", |a| {
             a.end = Some(f64::NAN)
         }),

@@ -199,7 +199,7 @@ pub enum PlanError {
     #[error("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")]
     NoEnd,
     /// A timed analysis's end is not finite or not after its start.
-    #[error("{}{by} = {end:?} is out of range: the end must be finite and after the start time {start:?}", at(.origin))]
+    #[error("{}{} is out of range: the end must be finite and after the start time {start:?}", at(.origin), setting(by, *end))]
     Span {
         /// The SIMULATE command (none without a command file).
         origin: Option<Origin>,
@@ -275,6 +275,15 @@ fn frames_remedy(by: &str, span: f64) -> String {
             "raise {by} to at least {:?}",
             span / MAX_OUTPUT_FRAMES as f64
         )
+    }
+}
+
+/// A setting as written: `--end 2.0` for a flag, `END = 2.0` for a command's argument.
+fn setting(by: &str, value: f64) -> String {
+    if by.starts_with("--") {
+        format!("{by} {value:?}")
+    } else {
+        format!("{by} = {value:?}")
     }
 }
 
