@@ -526,6 +526,19 @@ pub struct Model {
 }
 
 impl Model {
+    /// Whether the model has a part besides ground: every analysis needs one. A dataset cut
+    /// short, or a file whose lines end in CR only (read as one title line,
+    /// [`Model::lines_end_in_cr_only`]), has none.
+    pub fn has_moving_part(&self) -> bool {
+        self.parts.values().any(|p| !p.ground)
+    }
+
+    /// Whether the title holds a carriage return: the file's lines end in CR only (classic
+    /// Mac OS), so the whole file was read as its title line.
+    pub fn lines_end_in_cr_only(&self) -> bool {
+        self.title.contains('\r')
+    }
+
     /// The ground part's id, if the model has one.
     pub fn ground(&self) -> Option<u32> {
         self.parts.values().find(|p| p.ground).map(|p| p.id)

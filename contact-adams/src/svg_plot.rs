@@ -25,6 +25,89 @@ pub struct Series {
     pub line: bool,
 }
 
+/// A series of `(x, y)` points collected one at a time in memory bounded whatever their
+/// number: up to [`DecimatedSeries::MAX_BUCKETS`] points are kept as given; past that the points
+/// are grouped into buckets of consecutive points (the bucket size doubling each time the
+/// bound is reached) and each bucket keeps its lowest and highest point, in x order — so a
+/// plot of a million output steps keeps every peak and trough in at most `2 × MAX_BUCKETS`
+/// points, and a plot of a short run is unchanged.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DecimatedSeries {
+    /// Closed buckets: their lowest and highest points in x order (equal for one point).
+    buckets: Vec<[(f64, f64); 2]>,
+    /// The bucket being filled, and how many points it holds.
+    open: Option<([(f64, f64); 2], usize)>,
+    /// Points per bucket (a power of two).
+    stride: usize,
+}
+
+impl DecimatedSeries {
+    /// The most buckets kept (each drawn as at most two points).
+    pub const MAX_BUCKETS: usize = 16_384;
+
+    /// An empty series.
+    pub fn new() -> Self {
+        Self {
+            buckets: Vec::new(),
+            open: None,
+            stride: 1,
+        }
+    }
+
+    /// Adds the next point (x increasing).
+    pub fn push(&mut self, point: (f64, f64)) {
+        let stride = self.stride.max(1);
+        let (extremes, count) = match self.open.take() {
+            None => ([point, point], 1),
+            Some((extremes, count)) => (merge(extremes, [point, point]), count + 1),
+        };
+        if count < stride {
+            self.open = Some((extremes, count));
+            return;
+        }
+        self.buckets.push(extremes);
+        if self.buckets.len() >= Self::MAX_BUCKETS {
+            self.buckets = self
+                .buckets
+                .chunks(2)
+                .map(|pair| pair.iter().copied().reduce(merge).unwrap_or(pair[0]))
+                .collect();
+            self.stride = stride * 2;
+        }
+    }
+
+    /// The points to draw, in x order.
+    pub fn points(&self) -> Vec<(f64, f64)> {
+        let mut out: Vec<(f64, f64)> = Vec::with_capacity(2 * self.buckets.len() + 2);
+        for [a, b] in self.buckets.iter().chain(self.open.iter().map(|(e, _)| e)) {
+            out.push(*a);
+            if b != a {
+                out.push(*b);
+            }
+        }
+        out
+    }
+}
+
+/// The lowest and highest of two buckets' extremes, in x order (the earlier point wins a tie).
+fn merge(a: [(f64, f64); 2], b: [(f64, f64); 2]) -> [(f64, f64); 2] {
+    let all = [a[0], a[1], b[0], b[1]];
+    let low = all
+        .iter()
+        .copied()
+        .reduce(|m, p| if p.1 < m.1 { p } else { m });
+    let high = all
+        .iter()
+        .copied()
+        .reduce(|m, p| if p.1 > m.1 { p } else { m });
+    let (low, high) = (low.unwrap_or(a[0]), high.unwrap_or(a[0]));
+    if low.0 <= high.0 {
+        [low, high]
+    } else {
+        [high, low]
+    }
+}
+
 /// A plot: title, axis labels and scales, series.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plot {
@@ -290,6 +373,37 @@ mod tests {
         // 3 + 1 drawable points (0 is not drawable on a log axis) + 2 legend markers.
         assert_eq!(svg.matches("<circle").count(), 6);
         assert!(svg.contains(">a<") && svg.contains(">b<"));
+    }
+
+    #[test]
+    fn a_decimated_series_keeps_short_series_and_bounds_long_ones_with_their_extremes() {
+        let mut short = DecimatedSeries::new();
+        let points: Vec<(f64, f64)> = (0..1000).map(|k| (k as f64, (k % 7) as f64)).collect();
+        for p in &points {
+            short.push(*p);
+        }
+        assert_eq!(short.points(), points);
+
+        let mut long = DecimatedSeries::new();
+        for k in 0..1_000_000u32 {
+            let x = f64::from(k);
+            let y = if k == 777_777 {
+                1e9
+            } else if k == 3 {
+                -1e9
+            } else {
+                x.sin()
+            };
+            long.push((x, y));
+        }
+        let kept = long.points();
+        assert!(
+            kept.len() <= 2 * DecimatedSeries::MAX_BUCKETS + 2,
+            "{}",
+            kept.len()
+        );
+        assert!(kept.windows(2).all(|w| w[0].0 < w[1].0));
+        assert!(kept.contains(&(777_777.0, 1e9)) && kept.contains(&(3.0, -1e9)));
     }
 
     #[test]

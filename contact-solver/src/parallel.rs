@@ -13,6 +13,11 @@ pub struct Parallelism {
     pool: Option<Arc<rayon::ThreadPool>>,
 }
 
+/// The most worker threads a run may ask for. Each thread reserves its own stack, so a count
+/// far beyond the machine's cores (`NTHREADS = 1E6`) fails to start rather than running
+/// faster; callers refuse a larger count before building the pool.
+pub const MAX_THREADS: usize = 1024;
+
 impl Parallelism {
     /// Serial evaluation.
     pub fn serial() -> Self {

@@ -25,6 +25,15 @@ use std::sync::Arc;
 /// factor), large enough that the retried step does not end before the contact exists.
 pub const ONSET_MARGIN: f64 = 0.05;
 
+/// The progress guard's window: every this many accepted steps, the time reached is compared
+/// with the time at the start of the window.
+pub const STALL_WINDOW: u64 = 10_000;
+
+/// The progress guard's threshold: a window of [`STALL_WINDOW`] accepted steps that advances
+/// time by less than this fraction of the span stops the run with
+/// [`SimulationError::NoProgress`] (at that rate the run would need more than 1e9 steps).
+pub const STALL_FRACTION: f64 = 1e-5;
+
 /// What to run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DynamicsSettings {
@@ -111,6 +120,20 @@ pub enum SimulationError {
         t: f64,
         /// The failure.
         source: EvaluationError,
+    },
+    /// Time stopped advancing: the last [`STALL_WINDOW`] accepted steps advanced time by less
+    /// than [`STALL_FRACTION`] of the span, so the run would not end in a bounded time.
+    #[error(
+        "at t = {t:?}: the run is not advancing: the last {STALL_WINDOW} steps advanced time by {advanced:?} in all, less than {STALL_FRACTION:e} of the span {span:?} (mean step {:?}); the model is too stiff for its steps (an extreme STICTION_TRANSITION_VELOCITY, STIFFNESS or DAMPING) or HMAX is too small: soften it, loosen ERROR, or raise HMAX",
+        advanced / STALL_WINDOW as f64
+    )]
+    NoProgress {
+        /// The last accepted time.
+        t: f64,
+        /// Time advanced over the window.
+        advanced: f64,
+        /// The run's span (`end − start`).
+        span: f64,
     },
     /// The output sink failed.
     #[error("writing results at t = {t:?}: {source}")]
@@ -201,6 +224,7 @@ pub fn simulate_with_progress(
     // frequent output does not shorten the steps.
     bdf.set_stop_time(Some(end))
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
+    let (mut window_start, mut window_steps) = (start, 0u64);
     while next_output <= outputs {
         let t_before = bdf.t();
         let mut t = bdf
@@ -243,6 +267,18 @@ pub fn simulate_with_progress(
                 summary.largest_entry_penetration = summary.largest_entry_penetration.max(entry);
             }
             active[k] = !now.is_empty();
+        }
+        window_steps += 1;
+        if window_steps == STALL_WINDOW {
+            let advanced = t - window_start;
+            if advanced < STALL_FRACTION * (end - start) {
+                return Err(SimulationError::NoProgress {
+                    t,
+                    advanced,
+                    span: end - start,
+                });
+            }
+            (window_start, window_steps) = (t, 0);
         }
         let stats = bdf.stats();
         progress(&Progress {

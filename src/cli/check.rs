@@ -88,6 +88,55 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
     out
 }
 
+/// What `contact run` refuses in the command file's plan before it starts (an INTEGRATOR
+/// setting out of range, a span that is empty, an output step that is not positive, more
+/// output frames than the bound, an HMAX too small for its span), as errors at the command.
+/// A model without a command file is planned at `run` time from `--end`, so only its
+/// INTEGRATOR settings are checked here.
+pub fn check_run_settings(model: &Model, dataset: &std::path::Path) -> Vec<Diagnostic> {
+    use crate::run::plan::{PlanError, PlanOverrides, plan_analyses};
+    // The degrees of freedom only choose kinematics or dynamics for a SIMULATE/TRANSIENT;
+    // planning it as dynamics checks the stricter settings.
+    match plan_analyses(model, PlanOverrides::default(), &mut |_| Ok(1)) {
+        Ok(_) | Err(PlanError::NoEnd) => Vec::new(),
+        Err(e) => {
+            let origin = e.origin().cloned().unwrap_or_else(|| dataset::Origin {
+                file: std::sync::Arc::from(dataset),
+                loc: dataset::Loc::new(1, 1),
+            });
+            let message = e.to_string();
+            let message = message
+                .strip_prefix(&format!("{origin}: "))
+                .map_or(message.clone(), str::to_string);
+            vec![Diagnostic::error(origin, message)]
+        }
+    }
+}
+
+/// Every STL/OBJ file a CONTACT uses, read as `contact run` reads it: an unreadable or
+/// malformed mesh is an error at the CONTACT (each file reported once).
+pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
+    let mut seen = std::collections::BTreeSet::new();
+    let mut out = Vec::new();
+    for c in &model.contacts {
+        for (_, g) in c.i_geometries.iter().chain(&c.j_geometries) {
+            let ContactGeometry::MeshFile(file) = g else {
+                continue;
+            };
+            if !seen.insert(file.path.clone()) {
+                continue;
+            }
+            if let Err(e) = contact_core::mesh_file::read_mesh_geometry(&file.path) {
+                out.push(Diagnostic::error(
+                    c.origin.clone(),
+                    format!("CONTACT/{}: {}: {e}", c.id, file.label),
+                ));
+            }
+        }
+    }
+    out
+}
+
 fn kind_names(list: &[(u32, ContactGeometry)]) -> String {
     let mut names: Vec<&str> = list
         .iter()
@@ -232,12 +281,37 @@ pub fn run_with(
             )
         }
     };
+    if !model.has_moving_part() && !diagnostics.iter().any(Diagnostic::is_error) {
+        let origin = model.parts.values().next().map_or_else(
+            || dataset::Origin {
+                file: Arc::from(args.model.as_path()),
+                loc: dataset::Loc::new(1, 1),
+            },
+            |p| p.origin.clone(),
+        );
+        diagnostics.push(Diagnostic::error(
+            origin,
+            crate::session::no_moving_part(model.lines_end_in_cr_only()),
+        ));
+    }
+    diagnostics.extend(check_run_settings(&model, &args.model));
+    diagnostics.extend(check_mesh_files(&model));
+    let environment = crate::engine_choice::resolve(
+        &crate::engine_choice::Overrides::default(),
+        &|k| std::env::var(k).ok(),
+        Some(&model.preferences),
+    )
+    .err();
     // Dataset first, then the command file; each in line and column order.
     diagnostics.sort_by_key(|d| (d.origin.file.as_ref() != args.model.as_path(), d.origin.loc));
     write!(out, "{}", summary(&model, &engine_line))?;
-    let errors = diagnostics.iter().filter(|d| d.is_error()).count();
+    let mut errors = diagnostics.iter().filter(|d| d.is_error()).count();
     for d in &diagnostics {
         writeln!(out, "{d}")?;
+    }
+    if let Some(e) = environment {
+        writeln!(out, "error: {e}")?;
+        errors += 1;
     }
     writeln!(
         out,

@@ -15,10 +15,13 @@ use crate::session::{
     run_model,
 };
 use crate::solver::linear::Linearization;
+use crate::solver::parallel::MAX_THREADS;
 use crate::solver::simulate::{Frame, Progress};
 use contact_core::{FacetingTolerance, GeometryLibrary};
 use std::io::Write;
 use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 /// The arguments of `contact run`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
@@ -66,24 +69,45 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> std::io:
         )
     });
     let mut sink = CliSink {
-        files: ResultFiles::new(dir),
+        files: ResultFiles::new(dir).interrupted_by(interrupt_flag(&mut *err)?),
         out: &mut *out,
         err: &mut *err,
         quiet: args.quiet,
         progress: None,
     };
-    // The dataset is read (and its diagnostics printed) before the flags are checked.
+    // The flags are checked first: nothing is read or written when one is out of range.
+    let options = match options(args) {
+        Ok(options) => options,
+        Err(message) => {
+            writeln!(sink.err, "error: {message}")?;
+            return Ok(1);
+        }
+    };
     let result = match load(&args.model, args.commands.as_deref(), &mut sink) {
-        Ok(loaded) => match options(args) {
-            Ok(options) => run_model(&loaded.model, &args.model, &options, &mut sink),
-            Err(message) => {
-                writeln!(sink.err, "error: {message}")?;
-                return Ok(1);
-            }
-        },
+        Ok(loaded) => run_model(&loaded.model, &args.model, &options, &mut sink),
         Err(e) => Err(e),
     };
     print_outcome(result, &sink.files, out, err)
+}
+
+/// A flag set by SIGINT or SIGTERM: the run ends at the current frame with its results
+/// written whole. A second signal while the flag is set ends the process at once (exit code
+/// 130), for a run that does not reach its next frame.
+fn interrupt_flag(err: &mut dyn Write) -> std::io::Result<Arc<AtomicBool>> {
+    let flag = Arc::new(AtomicBool::new(false));
+    for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        // The shutdown is registered first: it acts only when an earlier signal set the flag.
+        let registered =
+            signal_hook::flag::register_conditional_shutdown(signal, 130, flag.clone())
+                .and_then(|_| signal_hook::flag::register(signal, flag.clone()));
+        if let Err(e) = registered {
+            writeln!(
+                err,
+                "note: signal {signal} cannot be caught ({e}): it ends the run without its summary"
+            )?;
+        }
+    }
+    Ok(flag)
 }
 
 /// Prints how the run went (the summary lines, where the results are, or the error); returns
@@ -111,16 +135,27 @@ fn print_outcome(
         }
         Err(RunError::Stopped(report)) => {
             print_lines(&report, out)?;
+            let frames = report.output_frames;
             writeln!(err, "error: {}", RunError::Stopped(report))?;
             if let Some(w) = files.write_error() {
                 writeln!(err, "error: writing results: {w}")?;
             }
-            writeln!(
-                err,
-                "results up to the failure are in {} ({} files)",
-                files.dir().display(),
-                files.finished_files().len() + 3
-            )?;
+            if files.started() && frames == 0 {
+                writeln!(
+                    err,
+                    "no frame was computed: {} holds the files' headers and summary.json",
+                    files.dir().display()
+                )?;
+            } else if files.started() {
+                writeln!(
+                    err,
+                    "results up to the failure are in {} ({} files)",
+                    files.dir().display(),
+                    files.finished_files().len() + 3
+                )?;
+            } else {
+                writeln!(err, "no results were written")?;
+            }
             Ok(1)
         }
         Err(RunError::Output(e)) => Err(e),
@@ -208,9 +243,33 @@ impl RunSink for CliSink<'_> {
     }
 }
 
-/// The flags as [`RunOptions`]; an engine name or tolerance out of range is refused naming
-/// the flag.
+/// The flags as [`RunOptions`]; a value out of range is refused naming the flag and its
+/// range: `--end` finite, `--dtout` finite and > 0, `--steps` >= 1, `--threads` in
+/// [1, [`MAX_THREADS`]], `--faceting-tolerance` > 0, `--engine` a known library. (That the
+/// end comes after the start, and the bound on output frames, are checked by the plan.)
 fn options(args: &RunArgs) -> Result<RunOptions, String> {
+    if let Some(end) = args.end
+        && !end.is_finite()
+    {
+        return Err(format!("--end {end:?} is out of range: must be finite"));
+    }
+    if let Some(dtout) = args.dtout
+        && !(dtout.is_finite() && dtout > 0.0)
+    {
+        return Err(format!(
+            "--dtout {dtout:?} is out of range: must be finite and > 0"
+        ));
+    }
+    if args.steps == Some(0) {
+        return Err("--steps 0 is out of range: must be >= 1".into());
+    }
+    if let Some(threads) = args.threads
+        && !(1..=MAX_THREADS).contains(&threads)
+    {
+        return Err(format!(
+            "--threads {threads} is out of range: must be in [1, {MAX_THREADS}]"
+        ));
+    }
     let engine = args
         .engine
         .as_deref()

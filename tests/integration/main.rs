@@ -10,6 +10,7 @@ mod expressions;
 mod extremes;
 mod faceted_ball;
 mod faceted_motion;
+mod faults;
 mod fuzz_seeds;
 mod geneva;
 mod kinematics;

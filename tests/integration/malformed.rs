@@ -90,6 +90,23 @@ const CASES: &[Case] = &[
         errors: &["data/bad.adm:7:8: error: MARKER/0: the id must be a positive integer"],
     },
     Case {
+        name: "huge_id",
+        body: "MARKER/4294967296, PART = 1\n",
+        with_shapes: false,
+        errors: &[
+            "data/bad.adm:7:8: error: MARKER/4294967296: the id is too large: the largest allowed is 4294967295",
+        ],
+    },
+    Case {
+        name: "inertia_not_of_a_body",
+        body: "PART/3, MASS = 1, CM = 3, IP = 1, 0.001, 0.001\nMARKER/3, PART = 3\n",
+        with_shapes: false,
+        errors: &[
+            "data/bad.adm:7:32: error: PART/3: IP is not the inertia of a rigid body: its principal moments are 1.0, 0.001, 0.001, and each must be >= 0 and at most the sum of the other two",
+            "data/bad.adm:8:18: error: MARKER/3: PART/3 is not defined",
+        ],
+    },
+    Case {
         name: "undefined_marker",
         body: "JOINT/1, REVOLUTE, I = 2, J = 9\n",
         with_shapes: false,

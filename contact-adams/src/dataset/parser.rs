@@ -331,10 +331,23 @@ fn parse_statement(
             ));
         }
         let id = parse_id(&id_text).ok_or_else(|| {
-            problem(
-                id_loc,
-                format!("{}/{id_text}: the id must be a positive integer", spec.name),
-            )
+            let digits = id_text.chars().all(|c| c.is_ascii_digit());
+            let nonzero = id_text.trim_start_matches('0').len();
+            if digits && nonzero > 0 {
+                problem(
+                    id_loc,
+                    format!(
+                        "{}/{id_text}: the id is too large: the largest allowed is {}",
+                        spec.name,
+                        u32::MAX
+                    ),
+                )
+            } else {
+                problem(
+                    id_loc,
+                    format!("{}/{id_text}: the id must be a positive integer", spec.name),
+                )
+            }
         })?;
         statement.id = Some((id, id_loc));
     }

@@ -61,6 +61,15 @@ pub enum EvalError {
     /// The context cannot supply a value (a measure without a model state).
     #[error("{0} needs the model state, which this context does not have")]
     NeedsState(&'static str),
+    /// VARVAL nested deeper than any chain of distinct VARIABLEs: they read each other in a
+    /// cycle (`contact check` reports the cycle).
+    #[error(
+        "VARVAL({id}): VARIABLE/{id} reads itself through a cycle of VARVALs, so it has no value"
+    )]
+    VariableCycle {
+        /// The VARIABLE read when the nesting bound was hit.
+        id: u32,
+    },
     /// USER(…) names constants for a user routine; it has no value of its own.
     #[error("USER(…) cannot be evaluated: it passes constants to a user routine")]
     User,

@@ -112,9 +112,7 @@ impl Context for StateContext<'_> {
             "VARVAL of a VARIABLE the model does not define",
         ))?;
         if self.depth >= MAX_VARIABLE_DEPTH {
-            return Err(EvalError::NeedsState(
-                "VARVAL (the variables refer to each other in a cycle)",
-            ));
+            return Err(EvalError::VariableCycle { id });
         }
         function.eval(&StateContext {
             depth: self.depth + 1,

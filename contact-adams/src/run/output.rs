@@ -16,7 +16,7 @@
 //! watched sees its files grow while it runs. Frames are serialized straight from the states,
 //! without building JSON values.
 
-use crate::svg_plot::{Plot, Scale, Series};
+use crate::svg_plot::{DecimatedSeries, Plot, Scale, Series};
 use contact_solver::mbs::PartId;
 use contact_solver::simulate::Frame;
 use serde::Serialize;
@@ -71,8 +71,8 @@ pub struct ResultWriter {
     frames: BufWriter<File>,
     part_ids: Vec<(PartId, u32)>,
     contact_names: Vec<String>,
-    force_series: Vec<Vec<(f64, f64)>>,
-    depth_series: Vec<Vec<(f64, f64)>>,
+    force_series: Vec<DecimatedSeries>,
+    depth_series: Vec<DecimatedSeries>,
     parts_line: Vec<PartLine>,
     last_flush: Instant,
 }
@@ -84,8 +84,13 @@ impl ResultWriter {
         part_ids: Vec<(PartId, u32)>,
         contact_names: Vec<String>,
     ) -> std::io::Result<Self> {
-        std::fs::create_dir_all(dir)?;
-        let open = |name: &str| File::create(dir.join(name)).map(BufWriter::new);
+        std::fs::create_dir_all(dir).map_err(|e| naming(dir, e))?;
+        let open = |name: &str| {
+            let path = dir.join(name);
+            File::create(&path)
+                .map(BufWriter::new)
+                .map_err(|e| naming(&path, e))
+        };
         let mut parts_csv = open("parts.csv")?;
         writeln!(parts_csv, "time,part,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz")?;
         let mut contacts_csv = open("contacts.csv")?;
@@ -101,8 +106,8 @@ impl ResultWriter {
             frames: open("frames.jsonl")?,
             part_ids,
             contact_names,
-            force_series: vec![Vec::new(); n],
-            depth_series: vec![Vec::new(); n],
+            force_series: vec![DecimatedSeries::new(); n],
+            depth_series: vec![DecimatedSeries::new(); n],
             parts_line: Vec::new(),
             last_flush: Instant::now(),
         })
@@ -212,13 +217,13 @@ impl ResultWriter {
     /// Writes the plots and `summary.json` (call after the run, whether it succeeded or not).
     pub fn finish(&mut self, summary: &serde_json::Value) -> std::io::Result<Vec<PathBuf>> {
         self.flush()?;
-        let series = |data: &[Vec<(f64, f64)>]| -> Vec<Series> {
+        let series = |data: &[DecimatedSeries]| -> Vec<Series> {
             self.contact_names
                 .iter()
                 .zip(data)
                 .map(|(name, points)| Series {
                     name: name.clone(),
-                    points: points.clone(),
+                    points: points.points(),
                     line: true,
                 })
                 .collect()
@@ -245,15 +250,24 @@ impl ResultWriter {
             ("penetration.svg", depth.to_svg()),
         ] {
             let path = self.dir.join(name);
-            std::fs::write(&path, text)?;
+            std::fs::write(&path, text).map_err(|e| naming(&path, e))?;
             written.push(path);
         }
+        // Written to a temporary file and renamed: a reader never sees half a summary.
         let path = self.dir.join("summary.json");
+        let partial = self.dir.join("summary.json.partial");
         std::fs::write(
-            &path,
+            &partial,
             serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?,
-        )?;
+        )
+        .map_err(|e| naming(&partial, e))?;
+        std::fs::rename(&partial, &path).map_err(|e| naming(&path, e))?;
         written.push(path);
         Ok(written)
     }
+}
+
+/// `error` with the path it concerns in its message (the system's message names none).
+fn naming(path: &Path, error: std::io::Error) -> std::io::Error {
+    std::io::Error::new(error.kind(), format!("{}: {error}", path.display()))
 }

@@ -147,8 +147,20 @@ pub struct PlanOverrides {
     pub steps: Option<u32>,
 }
 
+/// The most output frames one timed analysis may write (about 1 GB of `parts.csv`,
+/// `contacts.csv` and `frames.jsonl` for a small model). A span whose `span / output step`
+/// exceeds it is refused before any file is opened; raise DTOUT (or lower STEPS).
+pub const MAX_OUTPUT_FRAMES: u64 = 1_000_000;
+
+/// The smallest INTEGRATOR/HMAX allowed, as a fraction of the span it integrates: below it the
+/// run needs more than 1e10 steps (and below `f64::EPSILON` of the span a step does not
+/// advance time at all).
+pub const MIN_HMAX_FRACTION: f64 = 1e-10;
+
 /// A timed span being collected from consecutive SIMULATEs.
 struct Span {
+    /// The SIMULATE that started it (none without a command file).
+    origin: Option<Origin>,
     analysis: ModelAnalysis,
     start: f64,
     end: f64,
@@ -186,6 +198,100 @@ pub enum PlanError {
     /// No command file (or one without analyses) and no end time given.
     #[error("no END: give --end (or a command file with SIMULATE/DYNAMICS, END = …)")]
     NoEnd,
+    /// A timed analysis's end is not finite or not after its start.
+    #[error("{}{} is out of range: the end must be finite and after the start time {start:?}", at(.origin), setting(by, *end))]
+    Span {
+        /// The SIMULATE command (none without a command file).
+        origin: Option<Origin>,
+        /// What set the end: `END`, `DURATION` or `--end`.
+        by: &'static str,
+        /// Start time.
+        start: f64,
+        /// End time.
+        end: f64,
+    },
+    /// A timed analysis's output step is not finite and positive.
+    #[error("{}{by} gives an output step of {output_step:?}: it must be finite and > 0", at(.origin))]
+    OutputStep {
+        /// The SIMULATE command (none without a command file).
+        origin: Option<Origin>,
+        /// What set the output step: `DTOUT`, `STEPS`, `--dtout` or `--steps`.
+        by: &'static str,
+        /// The output step.
+        output_step: f64,
+    },
+    /// A timed analysis would write more than [`MAX_OUTPUT_FRAMES`] frames.
+    #[error(
+        "{}{by}: a span of {span:?} at an output step of {output_step:?} makes {frames:.3e} output frames, more than the bound of {MAX_OUTPUT_FRAMES} per analysis: {}",
+        at(.origin), frames_remedy(by, *span)
+    )]
+    TooManyFrames {
+        /// The SIMULATE command (none without a command file).
+        origin: Option<Origin>,
+        /// What set the output step: `DTOUT`, `STEPS`, `--dtout` or `--steps`.
+        by: &'static str,
+        /// `end − start`.
+        span: f64,
+        /// The output step.
+        output_step: f64,
+        /// `span / output_step`.
+        frames: f64,
+    },
+    /// INTEGRATOR/HMAX is too small for the span to be integrated in a bounded number of steps.
+    #[error(
+        "{}INTEGRATOR/HMAX = {hmax:?} over a span of {span:?} needs more than 1e10 steps: HMAX must be >= {:?} (the span × {MIN_HMAX_FRACTION:e})",
+        at(.origin), span * MIN_HMAX_FRACTION
+    )]
+    HmaxTooSmall {
+        /// The SIMULATE command (none without a command file).
+        origin: Option<Origin>,
+        /// HMAX.
+        hmax: f64,
+        /// `end − start`.
+        span: f64,
+    },
+}
+
+impl PlanError {
+    /// The command the error is about, when it has one.
+    pub fn origin(&self) -> Option<&Origin> {
+        match self {
+            Self::Transient { origin, .. } | Self::NoSpan { origin } => Some(origin),
+            Self::Span { origin, .. }
+            | Self::OutputStep { origin, .. }
+            | Self::TooManyFrames { origin, .. }
+            | Self::HmaxTooSmall { origin, .. } => origin.as_ref(),
+            Self::Corrector { .. } | Self::Integrator(_) | Self::NoEnd => None,
+        }
+    }
+}
+
+/// How to bring a span's output frames within [`MAX_OUTPUT_FRAMES`], for the setting `by`.
+fn frames_remedy(by: &str, span: f64) -> String {
+    if by.eq_ignore_ascii_case("steps") || by == "--steps" {
+        format!("lower {by} to at most {MAX_OUTPUT_FRAMES}")
+    } else {
+        format!(
+            "raise {by} to at least {:?}",
+            span / MAX_OUTPUT_FRAMES as f64
+        )
+    }
+}
+
+/// A setting as written: `--end 2.0` for a flag, `END = 2.0` for a command's argument.
+fn setting(by: &str, value: f64) -> String {
+    if by.starts_with("--") {
+        format!("{by} {value:?}")
+    } else {
+        format!("{by} = {value:?}")
+    }
+}
+
+/// `"file:line:col: "` for a located error, else nothing.
+fn at(origin: &Option<Origin>) -> String {
+    origin
+        .as_ref()
+        .map_or_else(String::new, |o| format!("{o}: "))
 }
 
 /// Why a model's degrees of freedom could not be counted (for a SIMULATE/TRANSIENT).
@@ -248,7 +354,7 @@ pub fn plan_analyses(
                 };
                 let Some(timed) = timed else {
                     if let Some(done) = span.take() {
-                        steps.push(finish(done, overrides, &mut notes, false));
+                        steps.push(finish(done, overrides, &mut notes, false)?);
                     }
                     steps.push(if *analysis == ModelAnalysis::Statics {
                         AnalysisStep::Statics {
@@ -280,9 +386,10 @@ pub fn plan_analyses(
                     }
                     _ => {
                         if let Some(done) = span.take() {
-                            steps.push(finish(done, overrides, &mut notes, false));
+                            steps.push(finish(done, overrides, &mut notes, false)?);
                         }
                         span = Some(Span {
+                            origin: Some(origin.clone()),
                             analysis: timed,
                             start: time,
                             end: stop,
@@ -296,7 +403,7 @@ pub fn plan_analyses(
             }
             Command::Linear { damping } => {
                 if let Some(done) = span.take() {
-                    steps.push(finish(done, overrides, &mut notes, false));
+                    steps.push(finish(done, overrides, &mut notes, false)?);
                 }
                 steps.push(AnalysisStep::Linear {
                     t: time,
@@ -310,10 +417,11 @@ pub fn plan_analyses(
         }
     }
     match span.take() {
-        Some(done) => steps.push(finish(done, overrides, &mut notes, true)),
+        Some(done) => steps.push(finish(done, overrides, &mut notes, true)?),
         None if steps.is_empty() => {
             let end = overrides.end.ok_or(PlanError::NoEnd)?;
             let done = Span {
+                origin: None,
                 analysis: ModelAnalysis::Dynamics,
                 start: 0.0,
                 end,
@@ -321,7 +429,7 @@ pub fn plan_analyses(
                 integrator,
                 transient: None,
             };
-            steps.push(finish(done, overrides, &mut notes, true));
+            steps.push(finish(done, overrides, &mut notes, true)?);
         }
         None => {
             if overrides.end.is_some() {
@@ -334,30 +442,75 @@ pub fn plan_analyses(
     Ok((steps, notes))
 }
 
-/// The step of a finished span; `last` when `--end` may override its END.
+/// The step of a finished span; `last` when `--end` may override its END. Refuses a span
+/// that is empty or not finite, an output step that is not positive, more than
+/// [`MAX_OUTPUT_FRAMES`] frames, and a dynamics HMAX below [`MIN_HMAX_FRACTION`] of the span,
+/// all before any result file is opened.
 fn finish(
     span: Span,
     overrides: PlanOverrides,
     notes: &mut Vec<String>,
     last: bool,
-) -> AnalysisStep {
-    let end = if last {
-        overrides.end.unwrap_or(span.end)
-    } else {
-        span.end
+) -> Result<AnalysisStep, PlanError> {
+    let (end, end_by) = match overrides.end {
+        Some(end) if last => (end, "--end"),
+        _ => (
+            span.end,
+            if span.origin.is_some() {
+                "END"
+            } else {
+                "--end"
+            },
+        ),
     };
+    if !(span.start.is_finite() && end.is_finite() && end > span.start) {
+        return Err(PlanError::Span {
+            origin: span.origin,
+            by: end_by,
+            start: span.start,
+            end,
+        });
+    }
     let duration = end - span.start;
-    let output_step = match (overrides.dtout, overrides.steps, span.output) {
-        (Some(dt), _, _) => dt,
-        (None, Some(n), _) => duration / f64::from(n.max(1)),
-        (None, None, Some(OutputSteps::Interval(dt))) => dt,
-        (None, None, Some(OutputSteps::Steps(n))) => duration / f64::from(n.max(1)),
+    let (output_step, by) = match (overrides.dtout, overrides.steps, span.output) {
+        (Some(dt), _, _) => (dt, "--dtout"),
+        (None, Some(n), _) => (duration / f64::from(n), "--steps"),
+        (None, None, Some(OutputSteps::Interval(dt))) => (dt, "DTOUT"),
+        (None, None, Some(OutputSteps::Steps(n))) => (duration / f64::from(n), "STEPS"),
         (None, None, None) => {
             notes.push("no DTOUT or STEPS: writing 100 output steps".into());
-            duration / 100.0
+            (duration / 100.0, "the default of 100 steps")
         }
     };
-    match span.analysis {
+    if !(output_step.is_finite() && output_step > 0.0) {
+        return Err(PlanError::OutputStep {
+            origin: span.origin,
+            by,
+            output_step,
+        });
+    }
+    let frames = duration / output_step;
+    // Both finite and positive: `frames` is a number or +inf (an overflow), never NaN.
+    if frames > MAX_OUTPUT_FRAMES as f64 {
+        return Err(PlanError::TooManyFrames {
+            origin: span.origin,
+            by,
+            span: duration,
+            output_step,
+            frames,
+        });
+    }
+    if span.analysis != ModelAnalysis::Kinematics
+        && let Some(hmax) = span.integrator.hmax
+        && hmax < duration * MIN_HMAX_FRACTION
+    {
+        return Err(PlanError::HmaxTooSmall {
+            origin: span.origin,
+            hmax,
+            span: duration,
+        });
+    }
+    Ok(match span.analysis {
         ModelAnalysis::Kinematics => AnalysisStep::Kinematics {
             start: span.start,
             end,
@@ -371,7 +524,7 @@ fn finish(
             integrator: span.integrator,
             transient: span.transient,
         },
-    }
+    })
 }
 
 /// The solver's EQUILIBRIUM settings.

@@ -10,6 +10,7 @@ use contact_solver::EvaluationError;
 use contact_solver::kinematics::KinematicsError;
 use contact_solver::linear::LinearError;
 use contact_solver::mbs::MbsError;
+use contact_solver::parallel::MAX_THREADS;
 use contact_solver::simulate::SimulationError;
 use contact_solver::statics::StaticsError;
 use std::sync::Arc;
@@ -23,14 +24,30 @@ pub enum RunError {
     /// The dataset has errors (delivered to [`RunSink::diagnostics`](super::RunSink::diagnostics)).
     #[error("the model has errors: nothing was run")]
     ModelErrors,
+    /// The model has no moving part (only ground): every analysis needs one.
+    #[error("{}", no_moving_part(*.cr_only))]
+    NoMovingPart {
+        /// The file's lines end in CR only, so it was read as one title line.
+        cr_only: bool,
+    },
     /// An environment variable choosing the engine is out of range.
     #[error(transparent)]
     Environment(#[from] EnvironmentError),
+    /// The thread count is out of range.
+    #[error("{by} = {threads} is out of range: must be in [1, {MAX_THREADS}]")]
+    ThreadCount {
+        /// The thread count asked for.
+        threads: usize,
+        /// Where it came from: `--threads` or `PREFERENCES/NTHREADS`.
+        by: &'static str,
+    },
     /// The thread pool could not be built.
-    #[error("--threads {threads}: {source}")]
+    #[error("{by} = {threads}: the thread pool could not be built: {source}")]
     Threads {
         /// The thread count asked for.
         threads: usize,
+        /// Where it came from: `--threads` or `PREFERENCES/NTHREADS`.
+        by: &'static str,
         /// Why the pool was not built.
         source: rayon::ThreadPoolBuildError,
     },
@@ -50,6 +67,19 @@ pub enum RunError {
     /// An analysis failed and the run stopped; the report says what ran (its `failure` is set).
     #[error("the run stopped: {}", stopped_by(.0))]
     Stopped(Box<RunReport>),
+}
+
+/// The message for a model with no moving part; `cr_only` adds why a file can look empty.
+pub fn no_moving_part(cr_only: bool) -> String {
+    let mut message = String::from(
+        "the model has no moving part: nothing to simulate (add a PART with MASS, CM and IP)",
+    );
+    if cr_only {
+        message.push_str(
+            "; the file's lines end in CR only (classic Mac OS), so it was read as one title line: save it with LF or CRLF line endings",
+        );
+    }
+    message
 }
 
 /// The failure in a stopped run's report (empty if the report has none).

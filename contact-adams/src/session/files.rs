@@ -8,6 +8,8 @@ use crate::run::output::ResultWriter;
 use contact_solver::linear::Linearization;
 use contact_solver::simulate::Frame;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Writes a run's frames, eigenvalues, plots and `summary.json` into a directory (created with
 /// its parents when the run starts).
@@ -18,6 +20,7 @@ pub struct ResultFiles {
     eigenvalues: EigenvalueFiles,
     write_error: Option<std::io::Error>,
     finished: Vec<PathBuf>,
+    interrupt: Option<Arc<AtomicBool>>,
 }
 
 impl ResultFiles {
@@ -29,7 +32,17 @@ impl ResultFiles {
             eigenvalues: EigenvalueFiles::default(),
             write_error: None,
             finished: Vec::new(),
+            interrupt: None,
         }
+    }
+
+    /// Ends the run at the current frame once `flag` is set (`contact run` sets it on SIGINT
+    /// and SIGTERM): the frame is written whole, the next is refused with
+    /// [`std::io::ErrorKind::Interrupted`], and the plots and `summary.json` (status
+    /// `"interrupted"`) are written as after any stop.
+    pub fn interrupted_by(mut self, flag: Arc<AtomicBool>) -> Self {
+        self.interrupt = Some(flag);
+        self
     }
 
     /// The directory written to.
@@ -40,6 +53,12 @@ impl ResultFiles {
     /// Whether any LINEAR analysis wrote `eigenvalues.csv` and `eigenvalues.json`.
     pub fn has_eigenvalues(&self) -> bool {
         !self.eigenvalues.is_empty()
+    }
+
+    /// Whether the run started: the streamed files (`parts.csv`, `contacts.csv`,
+    /// `frames.jsonl`) were created. A run refused before its first analysis writes nothing.
+    pub fn started(&self) -> bool {
+        self.writer.is_some()
     }
 
     /// The error that stopped writing a frame, if one did.
@@ -69,7 +88,18 @@ impl RunSink for ResultFiles {
         };
         writer.write(frame).inspect_err(|e| {
             self.write_error = Some(std::io::Error::new(e.kind(), e.to_string()));
-        })
+        })?;
+        if self
+            .interrupt
+            .as_ref()
+            .is_some_and(|flag| flag.load(Ordering::Relaxed))
+        {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::Interrupted,
+                "interrupted (SIGINT or SIGTERM): the run ended at this frame",
+            ));
+        }
+        Ok(())
     }
 
     fn eigenvalues(&mut self, linear: &Linearization, damping: bool) -> std::io::Result<()> {

@@ -61,7 +61,7 @@ mod files;
 mod report;
 mod runner;
 
-pub use error::{AnalysisError, RunError, RunFailure};
+pub use error::{AnalysisError, RunError, RunFailure, no_moving_part};
 pub use files::ResultFiles;
 pub use report::{AnalysisOutcome, AnalysisReport, DynamicsTotals, RunReport};
 pub use runner::run_model;

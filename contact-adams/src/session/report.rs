@@ -6,14 +6,25 @@ use crate::engine_choice::EngineSelection;
 use crate::run::eigenvalues;
 use crate::run::plan::AnalysisStep;
 use contact_core::{GeometryLibrary, WorkCounters};
-use contact_solver::kinematics::KinematicsSummary;
+use contact_solver::kinematics::{KinematicsError, KinematicsSummary};
 use contact_solver::linear::Linearization;
-use contact_solver::simulate::RunSummary;
+use contact_solver::simulate::{RunSummary, SimulationError};
 use contact_solver::statics::Equilibrium;
 use serde_json::{Value, json};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
+
+/// Whether `error` is the sink refusing a frame with [`std::io::ErrorKind::Interrupted`].
+fn is_interruption(error: &AnalysisError) -> bool {
+    let io = match error {
+        AnalysisError::Output(e)
+        | AnalysisError::Dynamics(SimulationError::Output { source: e, .. })
+        | AnalysisError::Kinematics(KinematicsError::Output { source: e, .. }) => e,
+        _ => return false,
+    };
+    io.kind() == std::io::ErrorKind::Interrupted
+}
 
 /// What a completed analysis computed.
 #[derive(Debug, Clone, PartialEq)]
@@ -143,6 +154,7 @@ impl AnalysisReport {
             }
             let status = match &self.error {
                 None => "completed".to_string(),
+                Some(e) if is_interruption(e) => "interrupted".to_string(),
                 Some(e) => format!("failed: {e}"),
             };
             fields.insert("status".into(), json!(status));
@@ -216,6 +228,13 @@ pub struct RunReport {
 }
 
 impl RunReport {
+    /// Whether the run was interrupted: the sink refused a frame with
+    /// [`std::io::ErrorKind::Interrupted`] (as [`ResultFiles`](super::ResultFiles) does once its
+    /// interrupt flag is set, by SIGINT or SIGTERM in `contact run`).
+    pub fn interrupted(&self) -> bool {
+        matches!(&self.failure, Some(RunFailure::Analysis { error, .. }) if is_interruption(error))
+    }
+
     /// Whether every analysis completed.
     pub fn completed(&self) -> bool {
         self.failure.is_none()
@@ -228,6 +247,7 @@ impl RunReport {
         let (wall, simulated) = (self.wall.as_secs_f64(), self.end - self.start);
         let status = match &self.failure {
             None => "completed".to_string(),
+            Some(_) if self.interrupted() => "interrupted".to_string(),
             Some(e) => format!("failed: {e}"),
         };
         let selection = &self.selection;

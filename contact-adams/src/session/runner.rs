@@ -12,7 +12,7 @@ use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_
 use contact_core::{GeometryEngine, GeometryInstance, WorkCounters};
 use contact_solver::contact_force::Analysis;
 use contact_solver::kinematics::initial_degrees_of_freedom;
-use contact_solver::parallel::Parallelism;
+use contact_solver::parallel::{MAX_THREADS, Parallelism};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -24,6 +24,11 @@ pub fn run_model(
     options: &RunOptions,
     sink: &mut dyn RunSink,
 ) -> Result<RunReport, RunError> {
+    if !model.has_moving_part() {
+        return Err(RunError::NoMovingPart {
+            cr_only: model.lines_end_in_cr_only(),
+        });
+    }
     let overrides = Overrides {
         library: options.engine,
         faceting_tolerance: options.faceting_tolerance,
@@ -34,12 +39,19 @@ pub fn run_model(
         Some(&model.preferences),
     )?;
     sink.engine(&selection).map_err(RunError::Output)?;
-    let threads = options
-        .threads
-        .or(model.preferences.threads.map(|n| n.get()))
-        .unwrap_or(1);
-    let parallelism = Parallelism::with_threads(threads)
-        .map_err(|source| RunError::Threads { threads, source })?;
+    let (threads, by) = match (options.threads, model.preferences.threads) {
+        (Some(n), _) => (n, "--threads"),
+        (None, Some(n)) => (n.get(), "PREFERENCES/NTHREADS"),
+        (None, None) => (1, "the default"),
+    };
+    if !(1..=MAX_THREADS).contains(&threads) {
+        return Err(RunError::ThreadCount { threads, by });
+    }
+    let parallelism = Parallelism::with_threads(threads).map_err(|source| RunError::Threads {
+        threads,
+        by,
+        source,
+    })?;
     let engine = engine_choice::build_engine(selection.library, selection.faceting_tolerance);
     let mut lowering = Lowering {
         model,

@@ -51,6 +51,13 @@ const SKIPPED: [&str; 9] = ["vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib",
 /// Reads an OBJ file. With `accept_open`, a mesh that is not closed is accepted with a warning;
 /// every other defect is an error.
 pub fn read_obj(path: &Path, accept_open: bool) -> Result<StlMesh, ObjError> {
+    // A device such as /dev/zero would be read without end.
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file()) {
+        return Err(ObjError::Read {
+            path: path.to_path_buf(),
+            message: "not a regular file".into(),
+        });
+    }
     let text = std::fs::read_to_string(path).map_err(|e| ObjError::Read {
         path: path.to_path_buf(),
         message: e.to_string(),

@@ -16,6 +16,16 @@ use thiserror::Error;
 /// Corners within this fraction of the mesh's bounding-box diagonal are one vertex.
 pub const WELD_RELATIVE: f64 = 1e-7;
 
+/// The most triangles an STL file may hold (about 1.5 GB of corners while it is welded). A
+/// binary file's count is read from its header and checked before anything is allocated; an
+/// ASCII file is refused when its triangles pass the bound.
+pub const MAX_TRIANGLES: u64 = 20_000_000;
+
+/// A binary STL: an 80-byte header, a little-endian `u32` triangle count, 50 bytes a triangle.
+const BINARY_HEADER: u64 = 84;
+/// Bytes per triangle in a binary STL (normal, three corners, attribute count).
+const BINARY_TRIANGLE: u64 = 50;
+
 /// Why an STL file could not be used.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum StlError {
@@ -26,6 +36,43 @@ pub enum StlError {
         path: PathBuf,
         /// The reader's message.
         message: String,
+    },
+    /// Not a regular file (a directory, a device such as `/dev/zero`, a pipe).
+    #[error("STL file '{path}': not a regular file")]
+    NotAFile {
+        /// The file.
+        path: PathBuf,
+    },
+    /// More triangles than [`MAX_TRIANGLES`].
+    #[error("STL file '{path}': {triangles} triangles, more than the bound of {MAX_TRIANGLES}")]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// Its triangle count (a binary file's header, or an ASCII file's triangles so far).
+        triangles: u64,
+    },
+    /// A binary STL whose size does not match the triangle count in its header.
+    #[error(
+        "STL file '{path}': not a valid STL: it does not start with 'solid' (ASCII), and as binary STL its header gives {triangles} triangles ({} bytes) but the file has {size} bytes (cut short, or not an STL file)",
+        BINARY_HEADER + BINARY_TRIANGLE * triangles
+    )]
+    BinarySize {
+        /// The file.
+        path: PathBuf,
+        /// The count in the header.
+        triangles: u64,
+        /// The file's size in bytes.
+        size: u64,
+    },
+    /// Too short to be an STL file.
+    #[error(
+        "STL file '{path}': not a valid STL: {size} bytes, shorter than a binary STL's {BINARY_HEADER}-byte header, and it does not start with 'solid' (ASCII)"
+    )]
+    TooShort {
+        /// The file.
+        path: PathBuf,
+        /// The file's size in bytes.
+        size: u64,
     },
     /// The triangles do not bound a solid (open, non-manifold, inconsistently oriented, inside
     /// out, zero-area facets, too few triangles).
@@ -55,10 +102,20 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
         message,
     };
     let mut file = std::fs::File::open(path).map_err(|e| read_error(e.to_string()))?;
-    let reader = stl_io::create_stl_reader(&mut file).map_err(|e| read_error(e.to_string()))?;
+    check_size(path, &mut file)?;
+    // stl_io's messages name no line ("invalid float literal"): an ASCII file's first
+    // malformed line is found and named.
+    let located = |e: std::io::Error| read_error(with_ascii_line(path, e.to_string()));
+    let reader = stl_io::create_stl_reader(&mut file).map_err(located)?;
     let mut corners: Vec<[Point3; 3]> = Vec::new();
     for t in reader {
-        let t = t.map_err(|e| read_error(e.to_string()))?;
+        let t = t.map_err(located)?;
+        if corners.len() as u64 >= MAX_TRIANGLES {
+            return Err(StlError::TooLarge {
+                path: path.to_path_buf(),
+                triangles: corners.len() as u64 + 1,
+            });
+        }
         corners.push(
             t.vertices
                 .map(|v| Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))),
@@ -68,6 +125,97 @@ pub fn read_stl(path: &Path, accept_open: bool) -> Result<StlMesh, StlError> {
         path: path.to_path_buf(),
         source,
     })
+}
+
+/// `message` with the first line of an ASCII STL file that is not valid ASCII STL, when there
+/// is one (`line 5: 'vertex 0 0 oops': expected 3 numbers after 'vertex'`).
+fn with_ascii_line(path: &Path, message: String) -> String {
+    // Files past 256 MiB are not read a second time just to locate the line.
+    if std::fs::metadata(path).is_ok_and(|m| m.len() > 1 << 28) {
+        return message;
+    }
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return message;
+    };
+    if !text.trim_start().starts_with("solid") {
+        return message;
+    }
+    for (index, line) in text.lines().enumerate() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let numbers = |after: usize| {
+            words.len() == after + 3 && words[after..].iter().all(|w| w.parse::<f32>().is_ok())
+        };
+        let problem = match words.as_slice() {
+            [] | ["endloop"] | ["endfacet"] | ["outer", "loop"] => None,
+            ["solid", ..] | ["endsolid", ..] => None,
+            ["vertex", ..] if numbers(1) => None,
+            ["vertex", ..] => Some("expected 3 numbers after 'vertex'"),
+            ["facet", "normal", ..] if numbers(2) => None,
+            ["facet", ..] => Some("expected 'facet normal' and 3 numbers"),
+            _ => Some(
+                "not an ASCII STL keyword (solid, facet normal, outer loop, vertex, endloop, endfacet, endsolid)",
+            ),
+        };
+        if let Some(problem) = problem {
+            return format!(
+                "{message} (line {}: '{}': {problem})",
+                index + 1,
+                line.trim()
+            );
+        }
+    }
+    message
+}
+
+/// Refuses, before anything is allocated, a file that is not a regular file, and a file that
+/// is not ASCII (`solid` first) whose size does not match its binary header's triangle count
+/// or whose count passes [`MAX_TRIANGLES`]. Leaves `file` at its start.
+fn check_size(path: &Path, file: &mut std::fs::File) -> Result<(), StlError> {
+    use std::io::{Read, Seek};
+    let read_error = |e: std::io::Error| StlError::Read {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    };
+    let metadata = file.metadata().map_err(read_error)?;
+    if !metadata.is_file() {
+        return Err(StlError::NotAFile {
+            path: path.to_path_buf(),
+        });
+    }
+    let size = metadata.len();
+    let mut head = Vec::with_capacity(BINARY_HEADER as usize);
+    file.by_ref()
+        .take(BINARY_HEADER)
+        .read_to_end(&mut head)
+        .map_err(read_error)?;
+    file.rewind().map_err(read_error)?;
+    let ascii = head.trim_ascii_start().starts_with(b"solid");
+    if head.len() < BINARY_HEADER as usize {
+        return if ascii {
+            Ok(())
+        } else {
+            Err(StlError::TooShort {
+                path: path.to_path_buf(),
+                size,
+            })
+        };
+    }
+    let triangles = u64::from(u32::from_le_bytes([head[80], head[81], head[82], head[83]]));
+    let binary_size = BINARY_HEADER + BINARY_TRIANGLE * triangles;
+    if binary_size == size && triangles > MAX_TRIANGLES {
+        return Err(StlError::TooLarge {
+            path: path.to_path_buf(),
+            triangles,
+        });
+    }
+    if binary_size != size && !ascii {
+        return Err(StlError::BinarySize {
+            path: path.to_path_buf(),
+            triangles,
+            size,
+        });
+    }
+    Ok(())
 }
 
 /// Welds triangle corners read from a mesh file and checks they bound a solid; with

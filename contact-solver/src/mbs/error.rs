@@ -96,6 +96,21 @@ pub enum MbsError {
         /// The time of the initial conditions.
         time: f64,
     },
+    /// The system has no moving part (only ground): no analysis has anything to solve.
+    #[error("the model has no moving part: nothing to simulate")]
+    NoMovingPart,
+    /// With no constraint, the equations of motion `M v̇ = Q − ω′×Jω′` gave accelerations that
+    /// are not finite: a MASS or inertia so large or small (1E308, 1E-308) that the
+    /// products overflow, or forces that do.
+    #[error(
+        "the accelerations at t = {time} are not finite (the model has no joint or JPRIM, so \
+         the mass matrix alone was solved): check the parts' MASS and IP and the forces for \
+         values near the floating-point limits (such as 1E308)"
+    )]
+    AccelerationsNotFinite {
+        /// The time of the initial conditions.
+        time: f64,
+    },
     /// An element could not be evaluated at the initial state.
     #[error(transparent)]
     Evaluation(#[from] EvaluationError),

@@ -78,6 +78,10 @@ impl MultibodySystem {
     /// Moves the positions in `y` onto `Φ(q, t) = 0` by the smallest correction; returns the
     /// iterations used.
     pub fn assemble(&self, t: f64, y: &mut DVector<f64>) -> Result<usize, MbsError> {
+        // Every analysis starts here; with only ground there is nothing to assemble or solve.
+        if self.parts.is_empty() {
+            return Err(MbsError::NoMovingPart);
+        }
         let mut iterations = 0;
         while iterations < MAX_ASSEMBLY_ITERATIONS {
             let states = self.part_states(y)?;
@@ -240,7 +244,11 @@ impl MultibodySystem {
             .lu()
             .solve(&rhs)
             .filter(|s| s.iter().all(|x| x.is_finite()));
-        let solution = solution.ok_or(MbsError::SingularConstraints { time: t })?;
+        let solution = solution.ok_or(if m == 0 {
+            MbsError::AccelerationsNotFinite { time: t }
+        } else {
+            MbsError::SingularConstraints { time: t }
+        })?;
         Ok((
             solution.rows(0, n6).into_owned(),
             solution.rows(n6, m).into_owned(),

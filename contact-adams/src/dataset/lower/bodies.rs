@@ -8,6 +8,7 @@ use crate::model::{Marker, Model, Part};
 use contact_core::{
     FacetingTolerance, GeometryLibrary, Isometry3, Matrix3, UnitQuaternion, Units, Vector3,
 };
+use contact_solver::parallel::MAX_THREADS;
 use nalgebra::Translation3;
 use std::num::NonZeroUsize;
 
@@ -260,6 +261,12 @@ pub(crate) fn apply_preferences(low: &mut Lowering, model: &mut Model, st: &Stat
     }
     if let Some(Some(n)) = low.ok(r.count_value("NTHREADS")) {
         match NonZeroUsize::new(n as usize) {
+            Some(n) if n.get() > MAX_THREADS => low.error(Problem::new(
+                r.loc_of("NTHREADS"),
+                format!(
+                    "PREFERENCES: NTHREADS = {n} is out of range: must be in [1, {MAX_THREADS}]"
+                ),
+            )),
             Some(n) => model.preferences.threads = Some(n),
             None => low.error(Problem::new(
                 r.loc_of("NTHREADS"),
@@ -312,6 +319,9 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
             }
         }
     }
+    if !ground && mass > 0.0 {
+        check_principal_moments(&r, id, &inertia)?;
+    }
     let qg = r
         .vector("QG")?
         .map(Vector3::from)
@@ -330,6 +340,34 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
         velocity_w: Vector3::new(v("VX")?, v("VY")?, v("VZ")?),
         angular_velocity_w: Vector3::new(v("WX")?, v("WY")?, v("WZ")?),
     })
+}
+
+/// A rigid body's principal moments of inertia are non-negative and satisfy the triangle
+/// inequality (each at most the sum of the other two: `I₁ + I₂ − I₃ = 2∫z² dm ≥ 0`); a tensor
+/// that breaks it (IP = 1, 0.001, 0.001) describes no body and makes the dynamics meaningless.
+/// A relative tolerance of 1e-9 of the largest moment allows rounded inputs (a thin rod's
+/// 0, I, I).
+fn check_principal_moments(r: &Reader<'_>, id: u32, inertia: &Matrix3) -> Result<(), Problem> {
+    let moments = inertia.symmetric_eigen().eigenvalues;
+    let largest = moments.amax();
+    let tolerance = 1e-9 * largest;
+    let (a, b, c) = (moments[0], moments[1], moments[2]);
+    let physical = [a, b, c].iter().all(|m| *m >= -tolerance)
+        && a <= b + c + tolerance
+        && b <= a + c + tolerance
+        && c <= a + b + tolerance;
+    if physical || !largest.is_finite() {
+        return Ok(());
+    }
+    let mut sorted = [a, b, c];
+    sorted.sort_by(f64::total_cmp);
+    Err(Problem::new(
+        r.loc_of("IP"),
+        format!(
+            "PART/{id}: IP is not the inertia of a rigid body: its principal moments are {:?}, {:?}, {:?}, and each must be >= 0 and at most the sum of the other two",
+            sorted[2], sorted[1], sorted[0]
+        ),
+    ))
 }
 
 /// REULER, or ZP/XP-style points (`zp`, `xp` argument names), relative to `origin`.

@@ -386,7 +386,50 @@ pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: 
             lowered.push(v);
         }
     }
+    report_variable_cycles(low, &lowered);
     model.variables = lowered;
+}
+
+/// VARIABLEs whose FUNCTIONs read each other through VARVAL in a cycle have no value: each
+/// cycle is an error at the VARIABLE with the smallest id in it, naming the cycle
+/// (`VARIABLE/1 → VARIABLE/2 → VARIABLE/1`).
+fn report_variable_cycles(low: &mut Lowering, variables: &[Variable]) {
+    let reads: std::collections::BTreeMap<u32, Vec<u32>> = variables
+        .iter()
+        .map(|v| (v.id, v.function.variable_ids()))
+        .collect();
+    let mut reported = std::collections::BTreeSet::new();
+    for v in variables {
+        // Depth-first from v, looking for a path back to v.
+        let mut stack = vec![(v.id, vec![v.id])];
+        let mut visited = std::collections::BTreeSet::new();
+        while let Some((at, path)) = stack.pop() {
+            for &next in reads.get(&at).map_or(&[][..], Vec::as_slice) {
+                if next == v.id {
+                    let smallest = path.iter().min().copied().unwrap_or(v.id);
+                    if smallest == v.id && reported.insert(v.id) {
+                        let names: Vec<String> = path
+                            .iter()
+                            .chain([&v.id])
+                            .map(|id| format!("VARIABLE/{id}"))
+                            .collect();
+                        low.error(Problem::new(
+                            v.origin.loc,
+                            format!(
+                                "VARIABLE/{}: FUNCTION: the variables read each other in a cycle ({}): none has a value",
+                                v.id,
+                                names.join(" → ")
+                            ),
+                        ));
+                    }
+                } else if visited.insert(next) {
+                    let mut longer = path.clone();
+                    longer.push(next);
+                    stack.push((next, longer));
+                }
+            }
+        }
+    }
 }
 
 /// REQUEST statements, kept for output; an unsupported function inside is a warning (the
@@ -475,6 +518,15 @@ pub(crate) fn integrator(low: &mut Lowering, st: &Statement) -> Option<Integrato
             ..IntegratorSettings::default()
         };
         if let Some(e) = positive(&r, "ERROR")? {
+            // The solver's range (contact_solver::bdf::IntegratorSettings::validate).
+            if e >= 1.0 {
+                return Err(Problem::new(
+                    r.loc_of("ERROR"),
+                    format!(
+                        "INTEGRATOR: ERROR = {e:?} is out of range: must be finite and in (0, 1)"
+                    ),
+                ));
+            }
             s.error = e;
         }
         s.hmax = positive(&r, "HMAX")?;

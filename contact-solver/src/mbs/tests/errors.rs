@@ -273,3 +273,36 @@ fn unnormalized_orientation_is_renormalized_and_zero_is_rejected() {
         "PART/3: ORIENTATION (quaternion norm) = 0.0 is out of range: must be finite and > 0"
     );
 }
+
+#[test]
+fn a_system_with_only_ground_is_an_error_in_every_analysis_not_a_panic() {
+    let builder = MultibodyBuilder::new(Vector3::new(0.0, 0.0, -9.81));
+    let mut system = builder.build().unwrap();
+    assert_eq!(
+        system.compute_initial_state(0.0).unwrap_err(),
+        MbsError::NoMovingPart
+    );
+    let settings = crate::simulate::DynamicsSettings {
+        start: 0.0,
+        end: 1.0,
+        output_step: 0.1,
+        integrator: crate::bdf::IntegratorSettings::default(),
+    };
+    let error =
+        crate::simulate::simulate(&mut system, &[], &settings, &mut |_| Ok(())).unwrap_err();
+    assert!(
+        matches!(
+            error,
+            crate::simulate::SimulationError::Initial(MbsError::NoMovingPart)
+        ),
+        "{error}"
+    );
+    let y = system.initial_y.clone();
+    let statics = crate::statics::solve_statics(
+        &mut system,
+        0.0,
+        &y,
+        &crate::statics::StaticsSettings::default(),
+    );
+    assert!(statics.is_err());
+}

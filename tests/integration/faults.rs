@@ -1,0 +1,435 @@
+//! Bad input and faults: nothing panics, hangs, fills the disk or loses a result. A model with
+//! no moving part, options out of range, output without bound, and settings that would never
+//! finish are refused before any result file is opened, with the value, its source and the
+//! bound; `contact check` refuses what `contact run` refuses.
+
+use crate::{data_dir, errors, inline};
+use contact::cli::check::{CheckArgs, check_mesh_files, check_run_settings};
+use contact::cli::run::RunArgs;
+use contact::dataset::read_str;
+use std::path::{Path, PathBuf};
+
+fn example(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples")
+        .join(path)
+}
+
+/// A scratch directory for one test, empty.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("contact-faults-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn ball_args(out: &Path) -> RunArgs {
+    RunArgs {
+        model: example("ball/ball.adm"),
+        commands: None,
+        engine: None,
+        faceting_tolerance: None,
+        end: Some(0.01),
+        dtout: None,
+        steps: None,
+        out: Some(out.to_path_buf()),
+        threads: None,
+        quiet: true,
+    }
+}
+
+/// Runs `contact run`; the exit code, stdout and stderr.
+fn run(args: &RunArgs) -> (u8, String, String) {
+    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
+    let code = contact::cli::run::run(args, &mut stdout, &mut stderr).unwrap();
+    (
+        code,
+        String::from_utf8(stdout).unwrap(),
+        String::from_utf8(stderr).unwrap(),
+    )
+}
+
+/// Runs `contact check`; the exit code and the report.
+fn check(model: PathBuf, commands: Option<PathBuf>) -> (i32, String) {
+    let args = CheckArgs {
+        model,
+        commands,
+        engine: None,
+    };
+    let mut out = Vec::new();
+    let code = contact::cli::check::run(&args, &mut out).unwrap();
+    (code, String::from_utf8(out).unwrap())
+}
+
+#[test]
+fn a_model_without_a_moving_part_is_an_error_at_check_and_run() {
+    let dir = scratch("ground");
+    let cases = [
+        (
+            "ground.adm",
+            "t\nUNITS/ SYSTEM = MKS\nPART/1, GROUND\nMARKER/1, PART = 1\nEND\n",
+            "ground.adm:3:1: error: the model has no moving part: nothing to simulate (add a PART with MASS, CM and IP)",
+        ),
+        // A dataset cut short after its title.
+        (
+            "short.adm",
+            "t\nUNITS/ SYSTEM = MKS\n",
+            "short.adm:1:1: error: the model has no moving part: nothing to simulate (add a PART with MASS, CM and IP)",
+        ),
+        // Lines ending in CR only: one title line, and the message says why.
+        (
+            "cr.adm",
+            "t\rUNITS/ SYSTEM = MKS\rPART/1, GROUND\rPART/2, MASS = 1, CM = 2, IP = 1, 1, 1\rMARKER/2, PART = 2\rEND\r",
+            "cr.adm:1:1: error: the model has no moving part: nothing to simulate (add a PART with MASS, CM and IP); the file's lines end in CR only (classic Mac OS), so it was read as one title line: save it with LF or CRLF line endings",
+        ),
+    ];
+    for (name, text, want) in cases {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let (code, report) = check(path.clone(), None);
+        assert_eq!(code, 1, "{report}");
+        assert!(report.contains(want), "{report}");
+        let mut args = ball_args(&dir.join("out"));
+        args.model = path;
+        let (code, _, stderr) = run(&args);
+        assert_eq!(code, 1, "{stderr}");
+        let message = want.split_once("error: ").unwrap().1;
+        assert!(stderr.contains(message), "{stderr}");
+        assert!(!dir.join("out").exists());
+    }
+
+    // The library entry point refuses such a model too, before anything is written.
+    let loaded = read_str(cases[0].1, data_dir().join("ground.adm"), None);
+    let mut files = contact::session::ResultFiles::new(dir.join("lib"));
+    let options = contact::session::RunOptions {
+        end: Some(1.0),
+        ..Default::default()
+    };
+    let error = contact::session::run_model(&loaded.model, Path::new("g"), &options, &mut files)
+        .unwrap_err();
+    assert!(
+        matches!(
+            error,
+            contact::session::RunError::NoMovingPart { cr_only: false }
+        ),
+        "{error}"
+    );
+    assert!(!files.started());
+}
+
+/// Sets one flag of `contact run`.
+type SetFlag = fn(&mut RunArgs);
+
+#[test]
+fn an_option_out_of_range_is_refused_before_any_file_is_touched() {
+    let out = scratch("options").join("out");
+    let (code, _, stderr) = run(&ball_args(&out));
+    assert_eq!(code, 0, "{stderr}");
+    let parts = std::fs::read(out.join("parts.csv")).unwrap();
+    let cases: [(&str, SetFlag); 10] = [
+        ("--dtout 0.0 is out of range: must be finite and > 0", |a| {
+            a.dtout = Some(0.0)
+        }),
+        ("--dtout NaN is out of range", |a| a.dtout = Some(f64::NAN)),
+        (
+            "--end 0.0 is out of range: the end must be finite and after the start time 0.0",
+            |a| a.end = Some(0.0),
+        ),
+        ("--end -1.0 is out of range", |a| a.end = Some(-1.0)),
+        ("--end NaN is out of range: must be finite", |a| {
+            a.end = Some(f64::NAN)
+        }),
+        ("--steps 0 is out of range: must be >= 1", |a| {
+            a.steps = Some(0)
+        }),
+        ("--threads 0 is out of range: must be in [1, 1024]", |a| {
+            a.threads = Some(0)
+        }),
+        (
+            "--threads 1000000 is out of range: must be in [1, 1024]",
+            |a| a.threads = Some(1_000_000),
+        ),
+        ("--faceting-tolerance", |a| {
+            a.faceting_tolerance = Some(-1.0)
+        }),
+        ("--engine", |a| a.engine = Some("nonesuch".into())),
+    ];
+    for (message, set) in cases {
+        let mut args = ball_args(&out);
+        set(&mut args);
+        let (code, _, stderr) = run(&args);
+        assert_eq!(code, 1, "{message}");
+        assert!(stderr.contains(message), "want {message:?} in {stderr}");
+        assert!(!stderr.contains("results up to"), "{stderr}");
+        assert_eq!(
+            std::fs::read(out.join("parts.csv")).unwrap(),
+            parts,
+            "{message}"
+        );
+    }
+}
+
+#[test]
+fn output_without_bound_is_refused_with_the_bound_and_the_remedy() {
+    let out = scratch("frames").join("out");
+    let mut args = ball_args(&out);
+    args.end = Some(1.0);
+    args.dtout = Some(1e-300);
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1);
+    assert!(
+        stderr.contains(
+            "error: --dtout: a span of 1.0 at an output step of 1e-300 makes 1.000e300 output frames, more than the bound of 1000000 per analysis: raise --dtout to at least 1e-6"
+        ),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("results up to"), "{stderr}");
+    assert!(!out.exists());
+    args.dtout = None;
+    args.steps = Some(20_000_000);
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1);
+    assert!(
+        stderr.contains("lower --steps to at most 1000000"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+
+    // The same from a command file, located, and reported by `contact check`.
+    let dir = scratch("frames-acf");
+    let (adm, acf) = (dir.join("ball.adm"), dir.join("big.acf"));
+    std::fs::copy(example("ball/ball.adm"), &adm).unwrap();
+    std::fs::write(
+        &acf,
+        "ball\nbig\nSIMULATE/DYNAMICS, DURATION = 1E308, DTOUT = 0.1\nSTOP\n",
+    )
+    .unwrap();
+    let (code, report) = check(adm, Some(acf));
+    assert_eq!(code, 1, "{report}");
+    assert!(
+        report.contains("big.acf:3:1: error: DTOUT: a span of 1e308 at an output step of 0.1 makes inf output frames, more than the bound of 1000000 per analysis: raise DTOUT to at least 1e302"),
+        "{report}"
+    );
+}
+
+#[test]
+fn an_hmax_too_small_for_its_span_is_refused_at_check_and_run() {
+    let dir = scratch("hmax");
+    let (adm, acf) = (dir.join("ball.adm"), dir.join("hmax.acf"));
+    std::fs::copy(example("ball/ball.adm"), &adm).unwrap();
+    std::fs::write(
+        &acf,
+        "ball\nhmax\nINTEGRATOR/ HMAX = 1E-300\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSTOP\n",
+    )
+    .unwrap();
+    let want = "hmax.acf:4:1: error: INTEGRATOR/HMAX = 1e-300 over a span of 1.0 needs more than 1e10 steps: HMAX must be >= 1e-10 (the span × 1e-10)";
+    let (code, report) = check(adm.clone(), Some(acf.clone()));
+    assert_eq!(code, 1, "{report}");
+    assert!(report.contains(want), "{report}");
+    let mut args = ball_args(&dir.join("out"));
+    args.model = adm;
+    args.end = None;
+    args.commands = Some(acf);
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1);
+    assert!(stderr.contains("INTEGRATOR/HMAX = 1e-300"), "{stderr}");
+    assert!(!dir.join("out").exists());
+}
+
+#[test]
+fn check_refuses_what_run_refuses() {
+    // INTEGRATOR/ERROR outside (0, 1), a physically impossible inertia, a VARVAL cycle and
+    // NTHREADS beyond the bound: errors with their locations.
+    let text = "t\nUNITS/ SYSTEM = MKS\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1, CM = 2, IP = 1, 0.001, 0.001\nMARKER/2, PART = 2\nVARIABLE/1, FUNCTION = VARVAL(2) + 1\nVARIABLE/2, FUNCTION = 2 * VARVAL(1)\nINTEGRATOR/ ERROR = 2\nPREFERENCES/ NTHREADS = 1000000\nEND\n";
+    assert_eq!(
+        errors(&inline("bad.adm", text)),
+        [
+            "data/bad.adm:10:25: error: PREFERENCES: NTHREADS = 1000000 is out of range: must be in [1, 1024]",
+            "data/bad.adm:5:32: error: PART/2: IP is not the inertia of a rigid body: its principal moments are 1.0, 0.001, 0.001, and each must be >= 0 and at most the sum of the other two",
+            "data/bad.adm:6:18: error: MARKER/2: PART/2 is not defined",
+            "data/bad.adm:7:1: error: VARIABLE/1: FUNCTION: the variables read each other in a cycle (VARIABLE/1 → VARIABLE/2 → VARIABLE/1): none has a value",
+            "data/bad.adm:9:21: error: INTEGRATOR: ERROR = 2.0 is out of range: must be finite and in (0, 1)",
+        ]
+    );
+    // A thin rod (0, I, I) is a rigid body.
+    let rod = text
+        .replace("IP = 1, 0.001, 0.001", "IP = 0, 1, 1")
+        .replace(
+            "VARIABLE/2, FUNCTION = 2 * VARVAL(1)\n",
+            "VARIABLE/2, FUNCTION = 2\n",
+        )
+        .replace("ERROR = 2", "ERROR = 0.01")
+        .replace("NTHREADS = 1000000", "NTHREADS = 2");
+    assert_eq!(errors(&inline("rod.adm", &rod)), Vec::<String>::new());
+
+    // A mesh file that does not parse is an error at the CONTACT that uses it.
+    let dir = scratch("mesh");
+    std::fs::write(
+        dir.join("bad.stl"),
+        "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 oops\n",
+    )
+    .unwrap();
+    let adm = "t\nUNITS/ SYSTEM = MKS\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1, CM = 2, IP = 1, 1, 1\nMARKER/2, PART = 2\nGRAPHICS/1, PLANE, RM = 1\nGRAPHICS/2, EXTERNAL, RM = 2, FILE = bad.stl\nCONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT, STIFFNESS = 1e5, DAMPING = 10, DMAX = 0.001, EXPONENT = 1.5\nEND\n";
+    let loaded = read_str(adm, dir.join("mesh.adm"), None);
+    assert_eq!(errors(&loaded), Vec::<String>::new());
+    let found = check_mesh_files(&loaded.model);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(
+        found[0]
+            .to_string()
+            .contains("mesh.adm:9:1: error: CONTACT/1: GRAPHICS/2: STL file"),
+        "{}",
+        found[0]
+    );
+    // The ASCII file's bad line is named.
+    assert!(
+        found[0]
+            .to_string()
+            .contains("(line 4: 'vertex 0 0 oops': expected 3 numbers after 'vertex')"),
+        "{}",
+        found[0]
+    );
+    // Without a command file, only the INTEGRATOR settings are planned at check.
+    assert!(check_run_settings(&loaded.model, &dir.join("mesh.adm")).is_empty());
+}
+
+#[test]
+fn a_run_whose_time_stops_advancing_stops_with_a_diagnosis_and_keeps_its_frames() {
+    // STICTION_TRANSITION_VELOCITY = 1E-300 makes the friction law's slope μN/v_s overflow:
+    // Newton fails every other step and the steps shrink to 1e-10 of the span. The progress
+    // guard stops the run instead of spinning for 1e10 steps.
+    let dir = scratch("stall");
+    let adm = std::fs::read_to_string(example("incline/incline.adm"))
+        .unwrap()
+        .replace(
+            "STICTION_TRANSITION_VELOCITY = 0.01",
+            "STICTION_TRANSITION_VELOCITY = 1E-300",
+        );
+    std::fs::write(dir.join("incline.adm"), adm).unwrap();
+    std::fs::copy(example("incline/incline.acf"), dir.join("incline.acf")).unwrap();
+    let mut args = ball_args(&dir.join("out"));
+    args.model = dir.join("incline.adm");
+    args.commands = Some(dir.join("incline.acf"));
+    args.end = None;
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stderr.contains("the run is not advancing: the last 10000 steps advanced time by"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("results up to the failure are in"),
+        "{stderr}"
+    );
+    let parts = std::fs::read_to_string(dir.join("out").join("parts.csv")).unwrap();
+    assert!(parts.lines().count() >= 2, "{parts}");
+    let summary = std::fs::read_to_string(dir.join("out").join("summary.json")).unwrap();
+    assert!(summary.contains("not advancing"), "{summary}");
+}
+
+#[test]
+fn an_stl_file_is_checked_against_its_header_before_anything_is_allocated() {
+    use contact_core::mesh_file::read_mesh_geometry;
+    let dir = scratch("stl");
+    // A binary header claiming 4e9 triangles in a file of 84 bytes.
+    let mut header = vec![0u8; 80];
+    header.extend_from_slice(&u32::MAX.to_le_bytes());
+    std::fs::write(dir.join("liar.stl"), &header).unwrap();
+    let e = read_mesh_geometry(&dir.join("liar.stl"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("as binary STL its header gives 4294967295 triangles (214748364834 bytes) but the file has 84 bytes"),
+        "{e}"
+    );
+    std::fs::write(dir.join("short.stl"), b"abc").unwrap();
+    let e = read_mesh_geometry(&dir.join("short.stl"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("3 bytes, shorter than a binary STL's 84-byte header"),
+        "{e}"
+    );
+    // A device is not read at all (it would never end).
+    if Path::new("/dev/zero").exists() {
+        std::os::unix::fs::symlink("/dev/zero", dir.join("zero.stl")).unwrap();
+        let e = read_mesh_geometry(&dir.join("zero.stl"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("not a regular file"), "{e}");
+        std::os::unix::fs::symlink("/dev/zero", dir.join("zero.obj")).unwrap();
+        let e = read_mesh_geometry(&dir.join("zero.obj"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("not a regular file"), "{e}");
+    }
+}
+
+#[test]
+fn an_output_directory_that_cannot_be_made_is_named_in_the_error() {
+    let dir = scratch("outdir");
+    let file = dir.join("a_file");
+    std::fs::write(&file, "x").unwrap();
+    let args = ball_args(&file.join("out"));
+    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
+    let error = contact::cli::run::run(&args, &mut stdout, &mut stderr).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains(&file.join("out").display().to_string()),
+        "{error}"
+    );
+}
+
+#[test]
+fn an_interrupted_run_ends_at_its_frame_with_whole_records_and_says_so() {
+    use std::sync::Arc;
+    use std::sync::atomic::AtomicBool;
+    // The flag SIGINT/SIGTERM set in `contact run`, set before the run: it ends at its first
+    // frame, with that frame written whole and the summary saying "interrupted".
+    let dir = scratch("interrupt").join("out");
+    let mut files =
+        contact::session::ResultFiles::new(&dir).interrupted_by(Arc::new(AtomicBool::new(true)));
+    let options = contact::session::RunOptions {
+        end: Some(0.1),
+        ..Default::default()
+    };
+    let error = contact::session::run_files(&example("ball/ball.adm"), None, &options, &mut files)
+        .unwrap_err();
+    let contact::session::RunError::Stopped(report) = error else {
+        panic!("{error}")
+    };
+    assert!(report.interrupted());
+    assert_eq!(report.output_frames, 1);
+    let parts = std::fs::read_to_string(dir.join("parts.csv")).unwrap();
+    assert_eq!(parts.lines().count(), 2, "{parts}");
+    assert!(parts.ends_with('\n'));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "interrupted");
+    assert_eq!(summary["analyses"][0]["status"], "interrupted");
+    assert!(!dir.join("summary.json.partial").exists());
+}
+
+#[test]
+fn a_mass_at_the_floating_point_limit_is_diagnosed_as_such() {
+    // No joint: the message must not blame redundant joints, nor claim results it has not.
+    let dir = scratch("huge-mass");
+    let adm = dir.join("m.adm");
+    std::fs::write(
+        &adm,
+        "t\nUNITS/ SYSTEM = MKS\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1E308, CM = 2, IP = 1, 1, 1\nMARKER/2, PART = 2\nACCGRAV/ KGRAV = -9.81\nEND\n",
+    )
+    .unwrap();
+    let mut args = ball_args(&dir.join("out"));
+    args.model = adm;
+    let (code, _, stderr) = run(&args);
+    assert_eq!(code, 1);
+    assert!(
+        stderr
+            .contains("the accelerations at t = 0 are not finite (the model has no joint or JPRIM"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("duplicated joints"), "{stderr}");
+    assert!(stderr.contains("no frame was computed"), "{stderr}");
+}
