@@ -193,7 +193,7 @@ mod tests {
             let boxed = local_box(&plane, side, &pose_plane, &centre, radius).and_then(
                 |(cuboid, pose_box)| {
                     let solid = crate::pairs::sphere_solid::Solid::Box(cuboid);
-                    crate::pairs::sphere_solid::contact(radius, &pose, &solid, &pose_box)
+                    crate::pairs::sphere_solid::contact(radius, &pose, &solid, &pose_box, &mut work)
                 },
             );
             one(
