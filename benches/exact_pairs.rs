@@ -219,13 +219,23 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+        // Over a face, the cap clear of its edges: the closed-form fast path, δ = r − d.
+        Case {
+            name: "sphere_box_face",
+            i: Geometry::sphere(0.5).unwrap(),
+            j: cube(1.0),
+            pose_i: Isometry3::translation(0.2, 0.1, 1.3),
+            pose_j: Isometry3::identity(),
+            depth: Some(0.2),
+        },
+        // At an edge: the general slicing (the ball as an ellipsoid of equal semi-axes).
         Case {
             name: "sphere_box_edge",
             i: Geometry::sphere(0.5).unwrap(),
             j: cube(1.0),
             pose_i: Isometry3::translation(1.2, 1.1, 0.3),
             pose_j: Isometry3::identity(),
-            depth: Some(0.5 - (0.04f64 + 0.01).sqrt()),
+            depth: None,
         },
         Case {
             name: "sphere_cylinder_side",
@@ -234,6 +244,28 @@ fn cases() -> Vec<Case> {
             pose_i: Isometry3::translation(1.3, 0.0, 1.0),
             pose_j: Isometry3::identity(),
             depth: Some(0.2),
+        },
+        // A frustum's slanted side and a torus' tube: the general slicings (the torus pose is
+        // the reproduction, δ = 0.201397 by SPEC §4).
+        Case {
+            name: "sphere_frustum_side",
+            i: Geometry::sphere(0.3).unwrap(),
+            j: Geometry::Frustum(Frustum::new(1.0, 0.5, 2.0).unwrap()),
+            pose_i: Isometry3::translation(0.9, 0.0, 1.0),
+            pose_j: Isometry3::identity(),
+            depth: None,
+        },
+        Case {
+            name: "sphere_torus",
+            i: Geometry::sphere(0.6).unwrap(),
+            j: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
+            pose_i: Isometry3::translation(
+                -0.8905746147450594,
+                -0.12550109474163762,
+                -0.6910480248729591,
+            ),
+            pose_j: Isometry3::identity(),
+            depth: None,
         },
         Case {
             name: "cylinder_plane_tilted",

@@ -9,8 +9,8 @@
 //! | --- | --- | --- |
 //! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
 //! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
-//! | sphere–box, –cylinder, –frustum, –torus | closed form (signed distance), [`crate::pairs::sphere_solid`] | none |
-//! | sphere–plane (bounded) | the sphere–box closed form on the prism cut to a box about the sphere, [`crate::pairs::bounded_plane`] | plane |
+//! | sphere–box, –cylinder, –frustum, –torus | closed form where the ball meets one face, one cap or a cylinder's side alone (the region symmetric about the normal through the centre); elsewhere (edges, rims, corners, a frustum's side, every torus pose) the general ellipsoid slicings with equal semi-axes, one contact per region, [`crate::pairs::sphere_solid`] | none |
+//! | sphere–plane (bounded) | the sphere–box pair on the prism cut to a box about the sphere, [`crate::pairs::bounded_plane`] | plane |
 //! | sphere–mesh (closed) | closed form (signed distance; the side from the nearest face or edge pseudo-normal, the winding number at a corner), [`crate::pairs::sphere_mesh`] | none |
 //! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
 //! | ellipsoid–ellipsoid (general; sphere–ellipsoid included) | slicing along the line of centres: ellipse–ellipse section overlaps in closed form (crossings: a quartic's roots, Newton-polished), adaptive quadrature between the intersection's lowest and highest slice (pencil duality, which also proves them apart), to 1e-13 of the volume, [`crate::pairs::ellipsoid_ellipsoid`] | none |

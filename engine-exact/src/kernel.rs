@@ -71,7 +71,7 @@ pub(crate) enum Kernel {
         plane: Plane,
         side: f64,
     },
-    /// Sphere `a` against a box, cylinder, frustum or torus `b`.
+    /// Sphere `a` against a box, cylinder, frustum or torus `b`: one contact per region.
     SphereSolid {
         radius: f64,
         solid: pairs::sphere_solid::Solid,
@@ -362,12 +362,13 @@ impl Kernel {
                 pairs::bounded_plane::local_box(plane, side, pose_b, &centre, radius).and_then(
                     |(cuboid, pose_box)| {
                         let solid = pairs::sphere_solid::Solid::Box(cuboid);
-                        pairs::sphere_solid::contact(radius, pose_a, &solid, &pose_box)
+                        pairs::sphere_solid::contact(radius, pose_a, &solid, &pose_box, work)
                     },
                 )
             }
             Self::SphereSolid { radius, ref solid } => {
-                pairs::sphere_solid::contact(radius, pose_a, solid, pose_b)
+                pairs::sphere_solid::contacts(radius, pose_a, solid, pose_b, work, emit);
+                None
             }
             Self::SphereMesh { radius, ref mesh } => {
                 pairs::sphere_mesh::contact(radius, pose_a, mesh, pose_b, work)

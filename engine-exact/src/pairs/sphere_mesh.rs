@@ -14,8 +14,11 @@
 //! - Signed distance `s = ±|c − q|`, outward normal `n = (c − q)/|c − q|` outside and
 //!   `(q − c)/|q − c|` inside (the face normal of the nearest triangle when `c` lies on it).
 //! - Contact iff `s < r`: δ = `r − s`, points `c − r·n` and `q`, area `π(r² − s²)` outside,
-//!   `π r²` inside — as for the primitive solids ([`super::sphere_solid`]), whose remarks on
-//!   edges, corners and a single contact per pair apply here too.
+//!   `π r²` inside: the closest-point answer, which the primitive solids keep only as a fast
+//!   path where it is SPEC §4's ([`super::sphere_solid`]). Here it is used everywhere, so at
+//!   a mesh's edges and corners (where the region is not symmetric about the normal through
+//!   the centre) it departs from the centroid definition, and one contact per pair is
+//!   returned.
 
 use super::mesh_plane::PreparedMesh;
 use crate::kernel::PairContact;

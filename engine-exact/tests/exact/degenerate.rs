@@ -354,6 +354,13 @@ fn a_sphere_centred_inside_a_mesh_is_pushed_out_through_the_nearest_face() {
     );
     let exact_box = instance(Geometry::Cuboid(Cuboid::centered(h.x, h.y, h.z).unwrap()));
     let b = one(&sphere(0.5), &exact_box, &at(0.7, 0.1, -0.2), &id);
+    // The area estimates differ by convention with the centre inside: the mesh's `π r²`, the
+    // box's `|S| = π(r² − 0.3²)` (see `engine_exact::pairs::sphere_solid`).
+    assert!(
+        (b.area - std::f64::consts::PI * (0.25 - 0.09)).abs() < 1e-14,
+        "{b:?}"
+    );
+    let b = contact_core::Contact { area: c.area, ..b };
     crate::common::assert_close(&c, &b, 3.0, 9.0, 1e-14, "mesh vs box");
     // Far away: no contact; the winding number is 0 there.
     assert!(query(&sphere(0.5), &mesh, &at(5.0, 0.0, 0.0), &id).is_empty());
@@ -395,16 +402,41 @@ fn a_sphere_about_a_box_shaped_mesh_agrees_with_the_box_inside_and_out() {
         let got = query(&sphere(r), &mesh, &pose, &id);
         let want = query(&sphere(r), &exact_box, &pose, &id);
         assert_eq!(got.len(), want.len(), "{c:?} {r}");
-        if let (Some(a), Some(b)) = (got.first(), want.first()) {
-            crate::common::assert_close(a, b, 1.4, 2.0, 1e-13, "sphere about a box mesh");
+        // The mesh pair answers by the closest point everywhere; the box pair only where that
+        // is SPEC §4's answer: the ball cut by one face alone (its region clear of the other
+        // faces). There the two agree but for the area estimate with the centre inside (the
+        // mesh's `π r²`, the box's `|S| = π(r² − d²)`).
+        let (mut d, mut axis, mut sign) = (f64::NEG_INFINITY, 0, 1.0);
+        for k in 0..3 {
+            for s in [1.0, -1.0] {
+                if s * c[k] - h[k] > d {
+                    (d, axis, sign) = (s * c[k] - h[k], k, s);
+                }
+            }
+        }
+        let reach = if d >= 0.0 {
+            ((r - d) * (r + d)).sqrt()
+        } else {
+            r
+        };
+        let one_face = d.abs() < r
+            && h[axis] + sign * c[axis] >= r
+            && (0..3).all(|k| k == axis || c[k].abs() + reach <= h[k]);
+        if let (Some(a), Some(b), true) = (got.first(), want.first(), one_face) {
+            let b = contact_core::Contact {
+                area: if d < 0.0 { a.area } else { b.area },
+                ..*b
+            };
+            crate::common::assert_close(a, &b, 1.4, 2.0, 1e-13, "sphere about a box mesh");
             contacts += 1;
         }
         inside += usize::from((0..3).all(|k| c[k].abs() < h[k]));
         on_edges += usize::from(snapped >= 2);
     }
-    // Every branch is taken often: inside, near edges or corners, and in contact.
+    // Every branch is taken often: inside, near edges or corners, and in contact on one face
+    // (544 with this seed).
     assert!(
-        inside > 300 && on_edges > 300 && contacts > 1000,
+        inside > 300 && on_edges > 300 && contacts > 400,
         "{inside} {on_edges} {contacts}"
     );
 }

@@ -34,6 +34,9 @@
 //!   branches, invariants; [`torus_pair_oracles`]: those oracles;
 //! - [`voxel_oracle`]: grid-cell meshes and their closed-form contact with aligned boxes;
 //! - [`model_check`]: what `supports`/`prepare` accept and refuse;
+//! - [`sphere_solid`]: sphere–box, –cylinder, –frustum and –torus at edges, rims, corners,
+//!   centres inside, a frustum's side and a torus' tube, against a brute-force sampling of
+//!   the intersection; the torus reproduction;
 //! - [`regressions`]: bugs found, with their reproducers.
 
 mod bounded_plane;
@@ -59,6 +62,7 @@ mod revolved_oracles;
 mod revolved_pairs;
 mod revolved_torus;
 mod sliced_oracles;
+mod sphere_solid;
 mod spherical_reference;
 mod torus_oracles;
 mod torus_pair_oracles;

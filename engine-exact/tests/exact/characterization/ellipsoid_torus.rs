@@ -56,7 +56,7 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             rng,
             CLOSED_SAMPLES,
             "sphere as ellipsoid ↔ closed form",
-            "r(1, 1, 1 + 2⁻⁴⁰) ∈ [0.1, 0.45] vs sphere_solid on a torus' outer or inner equator, R = 2, ρ = 0.5",
+            "r(1, 1, 1 + 2⁻⁴⁰) ∈ [0.1, 0.45] vs the sphere pair on a torus' outer or inner equator (the closest point there, by symmetry), R = 2, ρ = 0.5",
             "sliced quadrature",
             |rng| {
                 let r = rng.uniform(0.1, 0.45);

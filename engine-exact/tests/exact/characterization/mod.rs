@@ -22,6 +22,7 @@ mod revolved_pair;
 mod revolved_torus;
 mod sliced;
 mod solids;
+mod sphere_solid;
 
 pub(super) const SAMPLES: usize = 200;
 /// Curve rows are fewer: the oracle's evaluator allocates per call and runs unoptimized.
@@ -115,6 +116,7 @@ fn characterization_table() {
     rows.extend(ellipsoid_torus::rows(&mut rng));
     rows.extend(revolved_pair::rows(&mut rng));
     rows.extend(revolved_torus::rows(&mut rng));
+    rows.extend(sphere_solid::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
