@@ -52,7 +52,7 @@ pub struct FacetMesh {
     /// The sphere the mesh stands for, `(centre, radius)`, when every corner lies on it with
     /// its normal along the radius (`|p − c − R·n| ≤ 1e-9·R` at every corner of every
     /// triangle): a tessellated sphere, whose contact with a plane is the sphere's
-    /// ([`crate::plane_support`]).
+    /// (engine-facet's plane contact: `plane_support`).
     pub implied_sphere: Option<(Point3, f64)>,
 }
 

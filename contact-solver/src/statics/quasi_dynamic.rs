@@ -12,7 +12,9 @@
 //! - **Settling**: the dynamics run in windows of `T`; at the end of a window where every
 //!   part's speed is below `SETTLED_SPEED` (relative: `|u|·T/L`, `|ω|·T`), Newton starts from
 //!   the positions reached (velocities zeroed). Its success ends the method; its failure lets
-//!   the dynamics run on. After `MAX_WINDOWS` windows the method fails with a diagnosis.
+//!   the dynamics run on. After `MAX_WINDOWS` windows, or `MAX_DAMPED_STEPS` steps in all (a
+//!   contact whose force steps from facet to facet can hold the steps short for ever), the
+//!   method fails with a diagnosis.
 //! - **Augmented-Lagrangian contacts** settle on the multipliers they have: the inner update
 //!   of the dynamics is off (at rest it chatters — an approach adds `p·δ`, a separation drops
 //!   the multiplier from the force — and the settling crawls), and the statics augments the
@@ -29,6 +31,10 @@ use nalgebra::{DMatrix, DVector, Matrix3};
 pub const SETTLED_SPEED: f64 = 1e-3;
 /// The most windows of `T` the damped dynamics run.
 pub const MAX_WINDOWS: usize = 200;
+/// The most steps the damped dynamics take over all windows: a settling body takes a few
+/// thousand (a ball or an ellipsoid dropped onto a plane: 4,000–5,000); one that never settles
+/// would otherwise run for hours.
+pub const MAX_DAMPED_STEPS: u64 = 100_000;
 
 /// Mass-proportional damping on every moving part.
 #[derive(Debug)]
@@ -279,6 +285,21 @@ fn damped_dynamics(
                 let mut last = bdf.y().clone();
                 zero_velocities(frozen.system, &mut last);
                 return Err((last, format!("the damped dynamics failed: {e}"), iterations));
+            }
+            if bdf.stats().steps >= MAX_DAMPED_STEPS {
+                let mut last = bdf.y().clone();
+                let speed = frozen.system.relative_speed(&last, scale);
+                zero_velocities(frozen.system, &mut last);
+                let cause = format!(
+                    "the damped dynamics took {MAX_DAMPED_STEPS} steps and reached {:e} of \
+                     {MAX_WINDOWS} windows of T = {scale:e} (last step {:e}, relative speed \
+                     {speed:e}): the parts do not settle, as where a contact's force steps from \
+                     facet to facet (a faceted body resting on a vertex or an edge); try a \
+                     finer faceting tolerance, the exact engine, or more contact damping",
+                    bdf.t() / scale,
+                    bdf.t() - bdf.t_previous(),
+                );
+                return Err((last, cause, iterations));
             }
         }
         if frozen.system.relative_speed(bdf.y(), scale) > SETTLED_SPEED {
