@@ -17,6 +17,7 @@ mod kinematics;
 mod linear;
 mod linear_cli;
 mod malformed;
+mod mutations;
 mod out_of_plane;
 mod scenes_cli;
 mod select;
