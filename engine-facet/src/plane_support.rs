@@ -22,7 +22,7 @@
 //! beside the radius (`x = κ₂·√(2δ_s/κ₁) ≤ ½`, with the shape operator's principal curvatures;
 //! for a sphere `x = √(2δ_s/R)`), where [`sphere_on_plane`] gives it without a search; deeper it
 //! is blended with the facets' own contact (`plane_contact`) by a smoothstep down to nothing at
-//! `x ≥ 1` (and at a curvature spread of 1e-3, which a sphere's facets never show): depths
+//! `x ≥ 1`: depths
 //! linearly, points weighted by each answer's share of the depth, so the blend is continuous.
 //! Other meshes keep the facets' contact: off a sphere the cap's centroid leaves the support
 //! point's normal at third order (an ellipsoid's lies on the diameter through `q`), which the
@@ -94,22 +94,6 @@ fn blend_weight(x: f64) -> f64 {
     s * s * (3.0 - 2.0 * s)
 }
 
-/// The smooth answer's weight for a spread `(κ₂ − κ₁)/κ₂` of the principal curvatures: 1 up
-/// to 1e-6 (a sphere's facets give `S = I/R` to round-off), 0 from 1e-3, a smoothstep in
-/// the logarithm between. Off an umbilic the cap's centroid leaves the support point's normal
-/// at third order (an ellipsoid's lies on the diameter through the support point), which the
-/// facets resolve and the local quadric does not.
-fn umbilic_weight(spread: f64) -> f64 {
-    if spread.is_nan() || spread >= 1e-3 {
-        return 0.0;
-    }
-    if spread <= 1e-6 {
-        return 1.0;
-    }
-    let s = (-3.0 - spread.log10()) / 3.0;
-    s * s * (3.0 - 2.0 * s)
-}
-
 /// The support point on triangle `t` of `a` against the plane of unit normal `n` (A's
 /// frame), `height` the signed height above it; `None` where the triangle holds none or it is
 /// above the plane.
@@ -139,7 +123,7 @@ fn support_on(
         return None;
     }
     let x = k2 * (2.0 * depth / k1).sqrt();
-    let weight = blend_weight(x) * umbilic_weight((k2 - k1) / k2);
+    let weight = blend_weight(x);
     if weight == 0.0 {
         return None;
     }
