@@ -5,42 +5,45 @@
 //! There is no wildcard arm: a new geometry kind in `contact-core` is a compile error here.
 //!
 //! ## What is built (the model check's table)
-//! | pair | method | flips |
-//! | --- | --- | --- |
-//! | sphere–plane (unbounded) | closed form, [`crate::pairs::sphere_plane`] | plane |
-//! | ellipsoid–plane (unbounded) | closed form (affine cap), [`crate::pairs::ellipsoid_plane`] | plane |
-//! | sphere–box, –cylinder, –frustum, –torus | closed form where the ball meets one face, one cap or a cylinder's side alone (the region symmetric about the normal through the centre); elsewhere (edges, rims, corners, a frustum's side, every torus pose) the general ellipsoid slicings with equal semi-axes, one contact per region, [`crate::pairs::sphere_solid`] | none |
-//! | sphere–plane (bounded) | the sphere–box pair on the prism cut to a box about the sphere, [`crate::pairs::bounded_plane`] | plane |
-//! | sphere–mesh (closed) | closed form (signed distance; the side from the nearest face or edge pseudo-normal, the winding number at a corner), [`crate::pairs::sphere_mesh`] | none |
-//! | sphere–sphere | closed form, [`crate::pairs::sphere_sphere`] | one sphere (a cavity) |
-//! | ellipsoid–ellipsoid (general; sphere–ellipsoid included) | slicing along the line of centres: ellipse–ellipse section overlaps in closed form (crossings: a quartic's roots, Newton-polished), adaptive quadrature between the intersection's lowest and highest slice (pencil duality, which also proves them apart), to 1e-13 of the volume, [`crate::pairs::ellipsoid_ellipsoid`] | none |
-//! | ellipsoid–box (general) | slicing along the box's `z`: disc–rectangle section overlaps in closed form, quadrature cut at closed-form events (side tangencies, edge piercings), [`crate::pairs::ellipsoid_box`] | none |
-//! | ellipsoid–cylinder (general) | slicing along the axis: ellipse–disc section overlaps in closed form, quadrature between the pencil's extent clipped to the caps, [`crate::pairs::ellipsoid_cylinder`] | none |
-//! | ellipsoid–frustum (general; cones included) | slicing across the frustum's axis: ellipse–disc section overlaps in closed form (the disc's radius linear in the height), quadrature between the intersection's lowest and highest slice (the zeros of the convex gap between the section and the disc, bisected), `crate::pairs::ellipsoid_frustum` | none |
-//! | ellipsoid–torus (general) | slicing across the torus' axis: the ellipse's overlaps with the annulus' two circles in closed form, quadrature in the tube's angle between each region's lowest and highest slice (the meridian sections' pencil extent); one contact per region (regions by azimuth, each integrated inside its wedge by Green's integrals about the axis), `crate::pairs::ellipsoid_torus` | none |
-//! | cylinder–plane (unbounded) | quadrature of closed-form chords, to round-off, [`crate::pairs::cylinder_plane`] | plane |
-//! | frustum–plane, torus–plane (unbounded) | quadrature of closed-form sections over the azimuth, converged to 1e-13, [`crate::pairs::revolved_plane`] | plane |
-//! | mesh–plane (unbounded) | exact clipping of the closed mesh, one contact per region, [`crate::pairs::mesh_plane`] | plane |
-//! | box–mesh (closed) | exact polyhedral intersection: the triangles clipped to the box, the box's surface inside the mesh by its edges' piercings and its faces' cuts, one contact per region (holes in a face's caps joined by ray), `crate::pairs::mesh_box` | mesh (a cavity: the triangles inside out) |
-//! | cylinder–mesh, frustum–mesh, torus–mesh (closed) | slicing across the solid's axis: the mesh's section segments against the disc (a torus' annulus), chords and arcs summed per part in closed form, quadrature cut at the mesh's vertex heights, the circle's tangencies to the section lines and the edges' piercings of the lateral surface; one contact per region (parts labelled per piece, holes joined by ray), `crate::pairs::mesh_revolved`; a cylinder against a mesh of components apart from one another (48 triangles each at most): each component by the divergence theorem in closed form, its caps from its section, sliced unless its pieces are shown to be one region, `crate::pairs::cylinder_polyhedron` | none |
-//! | ellipsoid–mesh (general, closed) | the mesh mapped by the inverse semi-axes against the unit sphere, sliced as the torus of no major radius; moments mapped back (volume by `abc`, centroid by the semi-axes, area vectors by the cofactor), `crate::pairs::mesh_revolved` | none |
-//! | mesh–plane (bounded) | the box–mesh intersection on the plane's prism cut to a box about the mesh, `crate::pairs::mesh_box` | plane |
-//! | box–plane (bounded or not) | exact convex clipping, [`crate::pairs::box_plane`]; an unbounded plane in closed form from the corner heights, [`crate::pairs::box_half_space`] | plane |
-//! | box–box | exact convex clipping, [`crate::pairs::box_box`]; one box flipped (a box-shaped cavity): the box–mesh intersection with the cavity's walls turned inside out | one box |
-//! | cylinder–cylinder (parallel, crossed, skew) | axes at least 1e-3 rad apart: the divergence theorem over the lateral surfaces (as cylinder–frustum below); parallel and near-parallel axes: the lens closed form or slicing perpendicular to both axes, adaptive quadrature of exact polygon sections, converged to 1e-13, [`crate::pairs::cylinder_solid`] (also the grazing slivers the divergence theorem declines); containment and identical cylinders take the nearest-face normal | none |
-//! | cylinder–box | the same slicing, perpendicular to the axis and away from the box's faces, [`crate::pairs::cylinder_solid`] | none |
-//! | cylinder–plane (bounded) | the same slicing against the plane's prism, [`crate::pairs::cylinder_solid`] | plane |
-//! | cylinder–frustum, frustum–frustum (cones included) | axes at least 1e-3 rad apart: the divergence theorem, volume and moments as fluxes through the two lateral surfaces (fields along the axes' common perpendicular, parallel to every cap), azimuthal integrals of closed-form generator intervals cut at closed-form events, converged to 1e-13, `a`'s caps by the polar slices below; where no cap can meet the intersection (the other solid wholly on one side of each cap's plane, or the cap's disc outside its widest cylinder), one surface alone (fields along a cylinder's axis, or radial from a cone's apex, tangent to the other); grazing slivers, and axes within 1e-3 of parallel: slicing across `a`'s axis, each slice in polar coordinates about it: the ray along each azimuth meets `b` in closed form (a quadratic and two planes), the `φ` integral cut at the rays tangent to `b`'s section, through its corners and at `a`'s circle crossing `b`'s surface, the `t` integral at `b`'s rims' extremes and piercings and at the crossings' count changes, converged to 1e-11 (2e-11 against the cylinder pair on equal radii, 1e-15 on coaxial stacks); containment and identical solids take the nearest-face normal, `crate::pairs::revolved_pair` | none |
-//! | cylinder–torus, frustum–torus (cones included) | slicing across the torus' axis, each slice in polar coordinates about it: the ray along each azimuth meets `b` in closed form (a quadratic and two planes), clipped to the annulus `R ± s`; the `φ` integral cut at the rays tangent to `b`'s section, through its rims and where either of the annulus' circles crosses `b`'s surface or a cap plane, the outer integral in the tube's angle at `b`'s rims' extreme heights, a coaxial `b`'s radius meeting `R ± s` (closed form) and the crossings' count changes (sampled, bisected: the circles' tangencies, `b`'s rims piercing the tube); one contact per region (regions by azimuth: the meridian gap `min max(h_b, h_tube)` over the tube's disc by nested golden sections; each region integrated inside its wedge), converged to 1e-11; measured 1.2e-15 (depth) / 4.5e-16 (normal) / 4.3e-15 (points) against the coaxial meridian closed form, 5.1e-14 / 1.9e-12 / 7.1e-13 against the divergence theorem across the tube, 9.3e-16 / 3.6e-15 / 3.9e-15 on two regions through the hole (closed form over the rod's disc); degenerate branches: touching and gaps no contact, grazing an equator at 1e-7 keeps δ to 1e-9, a flat cap on the tube's parabolic top circle (a curved strip whose centroid lies off it: the closest points), containment either way (the nearest face's normal), a coaxial rod filling the hole symmetrically (vanishing area vector: the torus' normal nearest the centroid, `+x` radial on the axis), `crate::pairs::revolved_torus` | none |
-//! | box–frustum, box–torus | slicing across the solid's axis: disc (annulus) ∩ convex polygon sections in closed form, quadrature cut at closed-form events (corner heights, tangencies, edge piercings; a torus in the angle of `t = ρ sin θ`), one contact per region (a torus' regions by azimuth), `crate::pairs::box_revolved` | none |
-//! | frustum–plane, torus–plane (bounded) | the box–frustum/torus slicing on the plane's prism cut to a box about the solid, `crate::pairs::box_revolved` | plane |
-//! | ellipsoid–plane (bounded, general) | the ellipsoid–box slicing on the plane's prism cut to a box about the ellipsoid, [`crate::pairs::ellipsoid_box`] | plane |
-//! | point–line, circle–line (unbounded) | closed form, [`crate::planar::point_line`] | line |
-//! | circle–line (bounded) | closed form: the disc cut by the line's half-strip (segment and polygon moments, the overlap pairs' normal), [`crate::planar::circle_bounded_line`] | line |
-//! | point–circle, circle–circle | closed form, [`crate::planar::circles`] | circle (a hole) |
-//! | point–arc, circle–arc | closed form, [`crate::planar::arc`] | arc |
-//! | point–curve, circle–curve | closest point, Newton to 1e-13 of the curve's size, [`crate::planar::point_curve`] | curve |
-//! | arc–arc, arc–curve, arc–line, curve–curve, curve–line | overlap regions: crossings by subdivision + Newton to round-off, Green's theorem per region, `planar::overlap` | all |
+//!
+//! One row per pair: its method in a few words, the kernel module (under `pairs`, or
+//! `planar`) whose doc gives the formulas and ranges, and which side may be flipped. The
+//! methods in full, with their measured agreement, are in `docs/exact-engine.md`.
+//!
+//! | pair                                      | method                                           | module                      | flips                 |
+//! | ----------------------------------------- | ------------------------------------------------ | --------------------------- | --------------------- |
+//! | sphere–plane                              | closed form                                      | sphere_plane                | plane                 |
+//! | sphere–plane (bounded)                    | closed form, or sphere–box on the plane's prism  | sphere_bounded_plane        | plane                 |
+//! | sphere–box, –cylinder, –frustum, –torus   | closed form on one face; else ellipsoid slicing  | sphere_solid                | none                  |
+//! | sphere–mesh                               | signed distance to the mesh                      | sphere_mesh                 | none                  |
+//! | sphere–sphere                             | closed form                                      | sphere_sphere               | one sphere (a cavity) |
+//! | ellipsoid–plane                           | closed form (affine cap)                         | ellipsoid_plane             | plane                 |
+//! | ellipsoid–plane (bounded)                 | closed form, or ellipsoid–box on the prism       | ellipsoid_bounded_plane     | plane                 |
+//! | ellipsoid–ellipsoid                       | slicing along the line of centres                | ellipsoid_ellipsoid         | none                  |
+//! | ellipsoid–box                             | slicing along the box's z                        | ellipsoid_box               | none                  |
+//! | ellipsoid–cylinder                        | slicing along the axis                           | ellipsoid_cylinder          | none                  |
+//! | ellipsoid–frustum                         | slicing across the axis                          | ellipsoid_frustum           | none                  |
+//! | ellipsoid–torus                           | slicing across the axis, per region              | ellipsoid_torus             | none                  |
+//! | ellipsoid–mesh                            | the mesh mapped to the unit sphere, sliced       | ellipsoid_mesh              | none                  |
+//! | cylinder–plane                            | quadrature of closed-form chords                 | cylinder_plane              | plane                 |
+//! | cylinder–cylinder, –box, –plane (bounded) | divergence theorem or slicing                    | cylinder_sliced             | plane                 |
+//! | cylinder/frustum–frustum                  | divergence theorem or polar slicing              | revolved_pair               | none                  |
+//! | cylinder/frustum–torus                    | polar slicing across the torus' axis, per region | revolved_torus              | none                  |
+//! | frustum/torus–plane                       | quadrature over the azimuth                      | revolved_plane              | plane                 |
+//! | frustum/torus–plane (bounded)             | closed form, or box–solid on the prism           | revolved_bounded_plane      | plane                 |
+//! | cylinder/frustum/torus–mesh               | slicing across the axis, per region              | revolved_mesh               | none                  |
+//! | box–plane (bounded or not)                | convex clipping; half-space in closed form       | box_plane                   | plane                 |
+//! | box–box                                   | convex clipping; a cavity as box–mesh            | box_box                     | one box               |
+//! | box–frustum, box–torus                    | slicing across the axis, per region              | box_revolved                | none                  |
+//! | box–mesh                                  | polyhedral intersection, per region              | box_mesh                    | mesh (a cavity)       |
+//! | mesh–plane                                | clipping, per region                             | mesh_plane                  | plane                 |
+//! | mesh–plane (bounded)                      | clipping, or box–mesh on the prism               | mesh_bounded_plane          | plane                 |
+//! | point–line, circle–line                   | closed form                                      | planar::point_line          | line                  |
+//! | circle–line (bounded)                     | the disc cut by the half-strip                   | planar::circle_bounded_line | line                  |
+//! | point–circle, circle–circle               | closed form                                      | planar::circles             | circle (a hole)       |
+//! | point–arc, circle–arc                     | closed form                                      | planar::arc                 | arc                   |
+//! | point–curve, circle–curve                 | closest point (Newton)                           | planar::point_curve         | curve                 |
+//! | arc/curve/line overlaps                   | crossings + Green's theorem per region           | planar::overlap             | all                   |
 //!
 //! The general ellipsoid pairs' degenerate branches (each tested): one solid inside the
 //! other (the area vector vanishes: the normal is the line of centres, or the nearest face's
@@ -54,8 +57,8 @@
 
 use crate::ExactEngine;
 use crate::kernel::Kernel;
-use crate::pairs::cylinder_solid::Other;
-use crate::pairs::mesh_box::box_mesh;
+use crate::pairs::box_mesh::box_mesh;
+use crate::pairs::cylinder_sliced::SlicedSolid;
 use crate::pairs::mesh_plane::PreparedMesh;
 use crate::pairs::sphere_solid::Solid;
 use crate::planar::boundary::Chain;
@@ -233,7 +236,7 @@ pub(crate) fn select(
                     flip_a,
                     Kernel::CylinderSliced {
                         cylinder: *cylinder,
-                        other: Other::Plane {
+                        other: SlicedSolid::Plane {
                             plane: *p,
                             side: side(flip_b),
                         },
@@ -336,8 +339,8 @@ pub(crate) fn select(
         }
         (G::Cylinder(cylinder), G::Cylinder(_) | G::Cuboid(_)) => {
             let other = match b {
-                G::Cuboid(c) => Other::Box(*c),
-                G::Cylinder(c) => Other::Cylinder(*c),
+                G::Cuboid(c) => SlicedSolid::Box(*c),
+                G::Cylinder(c) => SlicedSolid::Cylinder(*c),
                 // Only cylinders and boxes reach here (the arm's patterns).
                 G::Ellipsoid(_)
                 | G::Frustum(_)

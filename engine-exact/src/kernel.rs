@@ -110,7 +110,7 @@ pub(crate) enum Kernel {
     /// cylinder, or a box with an axis along `a`'s, in closed form).
     CylinderSliced {
         cylinder: Cylinder,
-        other: pairs::cylinder_solid::Other,
+        other: pairs::cylinder_sliced::SlicedSolid,
     },
     /// Cylinder or frustum `a` against a frustum `b`, sliced across `a`'s axis and
     /// integrated in polar coordinates about it.
@@ -257,23 +257,21 @@ impl Kernel {
                 ref cuboid,
                 ref mesh,
             } => {
-                pairs::mesh_box::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
+                pairs::box_mesh::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
                 None
             }
             Self::RevolvedMesh {
                 ref solid,
                 ref mesh,
             } => {
-                pairs::mesh_revolved::contacts(solid, pose_a, mesh, pose_b, work, emit);
+                pairs::revolved_mesh::contacts(solid, pose_a, mesh, pose_b, work, emit);
                 None
             }
             Self::EllipsoidMesh {
                 ref semi_axes,
                 ref mesh,
             } => {
-                pairs::mesh_revolved::ellipsoid_contacts(
-                    semi_axes, pose_a, mesh, pose_b, work, emit,
-                );
+                pairs::ellipsoid_mesh::contacts(semi_axes, pose_a, mesh, pose_b, work, emit);
                 None
             }
             Self::EllipsoidTorus {
@@ -295,9 +293,7 @@ impl Kernel {
                 ref plane,
                 side,
             } => {
-                pairs::mesh_box::bounded_plane_contacts(
-                    mesh, pose_a, plane, side, pose_b, work, emit,
-                );
+                pairs::mesh_bounded_plane::contacts(mesh, pose_a, plane, side, pose_b, work, emit);
                 None
             }
             Self::BoxRevolved {
@@ -312,7 +308,7 @@ impl Kernel {
                 ref plane,
                 side,
             } => {
-                pairs::box_revolved::bounded_plane_contacts(
+                pairs::revolved_bounded_plane::contacts(
                     solid, pose_a, plane, side, pose_b, work, emit,
                 );
                 None
@@ -321,24 +317,9 @@ impl Kernel {
                 semi_axes,
                 ref plane,
                 side,
-            } => {
-                let centre = contact_core::Point3::from(pose_a.translation.vector);
-                // With its centre on the plane's free side (beyond, the half-space's area
-                // estimate is the central section, the prism's the section itself).
-                let free_side = pose_b.inverse_transform_point(&centre).z * side > 0.0;
-                if free_side
-                    && pairs::bounded_plane::well_inside(plane, pose_b, &centre, semi_axes.max())
-                {
-                    pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
-                } else {
-                    pairs::bounded_plane::local_box(plane, side, pose_b, &centre, semi_axes.max())
-                        .and_then(|(cuboid, pose_box)| {
-                            pairs::ellipsoid_box::contact(
-                                &semi_axes, pose_a, &cuboid, &pose_box, work,
-                            )
-                        })
-                }
-            }
+            } => pairs::ellipsoid_bounded_plane::contact(
+                &semi_axes, pose_a, plane, side, pose_b, work,
+            ),
             Self::SpherePlane { radius, side } => {
                 pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
             }
@@ -346,26 +327,7 @@ impl Kernel {
                 radius,
                 ref plane,
                 side,
-            } => {
-                let centre = contact_core::Point3::from(pose_a.translation.vector);
-                // As the ellipsoid: the half-space's answer with the centre on the free side.
-                let free_side = pose_b.inverse_transform_point(&centre).z * side > 0.0;
-                if free_side && pairs::bounded_plane::well_inside(plane, pose_b, &centre, radius) {
-                    return {
-                        if let Some(c) = pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
-                        {
-                            emit(c);
-                        }
-                        Ok(())
-                    };
-                }
-                pairs::bounded_plane::local_box(plane, side, pose_b, &centre, radius).and_then(
-                    |(cuboid, pose_box)| {
-                        let solid = pairs::sphere_solid::Solid::Box(cuboid);
-                        pairs::sphere_solid::contact(radius, pose_a, &solid, &pose_box, work)
-                    },
-                )
-            }
+            } => pairs::sphere_bounded_plane::contact(radius, pose_a, plane, side, pose_b, work),
             Self::SphereSolid { radius, ref solid } => {
                 pairs::sphere_solid::contacts(radius, pose_a, solid, pose_b, work, emit);
                 None
@@ -404,7 +366,7 @@ impl Kernel {
             Self::CylinderSliced {
                 ref cylinder,
                 ref other,
-            } => pairs::cylinder_solid::contact(cylinder, pose_a, other, pose_b, work),
+            } => pairs::cylinder_sliced::contact(cylinder, pose_a, other, pose_b, work),
             Self::RevolvedPair { ref a, ref b } => {
                 pairs::revolved_pair::contact(a, pose_a, b, pose_b, work)
             }

@@ -1,13 +1,7 @@
 //! # engine-exact: analytic contact kinematics for `contact`
 //!
-//! `contact` computes compliant contact between rigid parts, as the Adams Solver CONTACT
-//! statement does: a contact's two sides are lists of geometries on two parts, a geometry
-//! engine answers where, how deep and which way they touch, and force laws turn that into
-//! forces. Two engines answer behind one trait: the *exact* engine (analytic, the reference)
-//! and the *faceted* engine (triangle meshes in OBB trees, whose error shrinks as the faceting
-//! tolerance rises while its cost grows: the trade `contact tradeoff` measures and
-//! `contact select` settles for a model). A CONTACT is prepared once; the prepared pair is then
-//! queried at any poses from any number of threads (`&self`, no locks).
+//! One of the two geometry engines behind [`contact_core::GeometryEngine`] (the crate doc of
+//! [`contact_core`] tells the whole); the other is the faceted engine, `engine-facet`.
 //!
 //! This crate is the exact engine. It plays the part Parasolid plays in Adams: it answers the
 //! contact question of SPEC §4 from the geometry itself, in closed form where one exists, and
@@ -17,7 +11,7 @@
 //! ## The contact it returns (SPEC §4)
 //! For each (I geometry, J geometry) pair whose solids overlap with positive volume (area in
 //! 2-D), one [`Contact`](contact_core::Contact) per connected intersection region:
-//! - `normal_w` (unit, from J into I) — per pair family, see [`pairs`] and [`planar`];
+//! - `normal_w` (unit, from J into I) — per pair family, see `pairs` and [`planar`];
 //! - the centroid `g` of the intersection volume; `point_i_w` and `point_j_w` are SPEC §4's
 //!   "closest points on the two surfaces to the centroid" taken along the normal: where the
 //!   line through `g` along `normal_w` leaves I (towards `−n`) and J (towards `+n`), as in the
@@ -64,7 +58,9 @@
 //!
 //! ## Modules
 //! - [`dispatch`]: geometry pair → kernel, in the canonical order of `GeometryKind`.
-//! - [`pairs`]: 3-D pair families, one file each; [`polyhedron`]: exact convex clipping.
+//! - `pairs` (private): the 3-D pair kernels, one module per kernel of the dispatch; `methods`
+//!   (private): what they share (slicing, sections, clipping); `polyhedron`: exact convex
+//!   clipping.
 //! - [`planar`]: 2-D pairs, computed in J's plane.
 //! - [`quadrature`]: Gauss–Legendre rules for the pairs without a short closed form.
 #![cfg_attr(
@@ -74,9 +70,10 @@
 
 pub mod dispatch;
 mod kernel;
-pub mod pairs;
+mod methods;
+pub(crate) mod pairs;
 pub mod planar;
-pub mod polyhedron;
+pub(crate) mod polyhedron;
 mod prepared;
 pub mod quadrature;
 mod ray_exit;

@@ -131,6 +131,7 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
     }
 
     /// Number of faces.
+    #[cfg(test)]
     pub fn face_count(&self) -> usize {
         self.len
     }
@@ -258,6 +259,7 @@ impl<const F: usize, const V: usize> ConvexPolyhedron<F, V> {
 
     /// The area of the polyhedron's shadow on a plane normal to the unit vector `direction`:
     /// `½ Σ |A_f · direction|` (a convex body's boundary covers its shadow twice).
+    #[cfg(test)]
     pub fn projected_area(&self, direction: &Vector3) -> f64 {
         0.5 * self.faces[..self.len]
             .iter()

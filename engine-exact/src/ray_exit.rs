@@ -11,7 +11,7 @@
 //! and returns the distance `t ≥ 0` to the exit, or `None` when `o` is outside the solid (a
 //! centroid outside a non-convex solid: the caller then falls back to the closest point).
 
-use crate::pairs::solid_distance::{Solid, signed_distance};
+use crate::methods::solid_distance::{Solid, signed_distance};
 use contact_core::geometry::{Cylinder, Frustum, Torus};
 use contact_core::{Isometry3, Point3, Vector3};
 

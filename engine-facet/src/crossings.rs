@@ -97,10 +97,8 @@ pub(crate) fn find_crossings(
 }
 
 /// Slots of the direct-mapped store of B leaves moved into A's frame (one query's; 6 KB). A B
-/// leaf meets two or three A leaves, mostly close together in the descent: with 16 slots, per
-/// query (callgrind, the bench's poses) 10k spheres 3.68M → 3.63M instructions, 100k 12.7M →
-/// 12.6M, and about 3% less time (interleaved runs); 64 slots gain 0.1% more, 4 slots half as
-/// much. Contacts unchanged bit for bit.
+/// leaf meets two or three A leaves, mostly close together in the descent; the contacts do
+/// not depend on the slot count (measurements: `docs/performance.md`).
 const MOVED_SLOTS: usize = 16;
 
 /// A leaf's triangles moved into A's frame, each with its plane's normal.

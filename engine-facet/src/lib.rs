@@ -1,13 +1,7 @@
 //! # engine-facet: the faceted geometry engine of `contact`
 //!
-//! `contact` computes compliant contact between rigid parts, as the Adams Solver CONTACT
-//! statement does: a contact's two sides are lists of geometries on two parts, a geometry
-//! engine answers where, how deep and which way they touch, and force laws turn that into
-//! forces. Two engines answer behind one trait: the *exact* engine (analytic, the reference)
-//! and the *faceted* engine (triangle meshes in OBB trees, whose error shrinks as the faceting
-//! tolerance rises while its cost grows: the trade `contact tradeoff` measures and
-//! `contact select` settles for a model). A CONTACT is prepared once; the prepared pair is then
-//! queried at any poses from any number of threads (`&self`, no locks).
+//! One of the two geometry engines behind [`contact_core::GeometryEngine`] (the crate doc of
+//! [`contact_core`] tells the whole); the other is the exact engine, `engine-exact`.
 //!
 //! This crate is the faceted engine, in the part RAPID plays in Adams: every geometry of a
 //! CONTACT becomes a triangle mesh (native primitives are tessellated at a faceting tolerance

@@ -16,9 +16,9 @@
 use crate::obb::{Obb, boxes_overlap_in_frame};
 use contact_core::{Matrix3, Point3, Vector3, WorkCounters};
 
-/// Triangles per leaf at most. Four rather than two: a third fewer box tests in a descent
-/// (23k to 16k at 100k triangles) and half the nodes, for more triangle pairs, which the contact
-/// search screens a leaf at a time without branches (at 100k: per-pose minimum 3.19 to 3.00 ms).
+/// Triangles per leaf at most: four rather than two gives a third fewer box tests in a descent
+/// and half the nodes, for more triangle pairs, which the contact search screens a leaf at a
+/// time without branches (measurements: `docs/performance.md`).
 pub const LEAF_TRIANGLES: usize = 4;
 
 /// A node of at most [`PATCH_FRAME_MAX_TRIANGLES`] triangles is boxed in its mean-normal frame
@@ -26,15 +26,9 @@ pub const LEAF_TRIANGLES: usize = 4;
 /// their normals agree to within some 45° on average.
 pub const COHERENT_NORMALS: f64 = 0.7;
 
-/// Nodes larger than this take principal axes even when their normals agree. Per query
-/// (callgrind, the bench's 8 overlapping poses; 64 other seeded poses in brackets), against
-/// principal axes down to 32 triangles and the parent's axes below: two 10k-triangle spheres
-/// 4.42M → 4.12M instructions (4.53M → 4.22M), box tests 4.8k → 4.0k; 100k spheres 15.3M →
-/// 14.4M (13.7M → 13.0M), box tests 16.1k → 14.1k; two tori 6.34M → 5.42M (5.22M → 4.47M),
-/// box tests 8.7k → 5.8k. With no limit the spheres gain less (10k: 4.38M against 4.08M
-/// with it, measured before regions took their own apexes; a large coherent patch is better
-/// served by its principal axes, whose longest one the split follows), and principal axes
-/// everywhere give 4.27M, 15.2M and 6.01M (against 4.08M, 14.2M and 5.36M).
+/// Nodes larger than this take principal axes even when their normals agree: a large coherent
+/// patch is better served by its principal axes, whose longest one the split follows
+/// (measurements: `docs/performance.md`).
 pub const PATCH_FRAME_MAX_TRIANGLES: usize = 128;
 
 /// One node: its box and either its right child (internal) or its triangle range (leaf).
@@ -221,11 +215,8 @@ impl ObbTree {
 
 /// A leaf's box: of the frames of its triangles (each its first edge, the in-plane
 /// perpendicular and its normal: flat boxes) and, when its facets face one way, its patch frame
-/// (see [`patch_frame`]), the one giving the box of least surface area. Per query (callgrind,
-/// the bench's poses; 64 other seeded poses in brackets), against the first triangle's frame
-/// alone: 10k spheres 4.12M → 3.88M instructions (4.21M → 3.96M), 100k 14.4M → 13.5M
-/// (13.0M → 12.2M), tori 5.41M → 5.03M (4.47M → 4.16M). Trying all three edges of each
-/// triangle gains 0.4% more for three times the fits.
+/// (see [`patch_frame`]), the one giving the box of least surface area (measurements:
+/// `docs/performance.md`).
 fn leaf_box(
     vertices: &[Point3],
     triangles: &[[u32; 3]],
@@ -266,9 +257,7 @@ fn leaf_box(
 }
 
 /// Of two boxes around the same points, the one of least surface area (the first on a tie).
-/// An internal node's box is the smaller of its own frame's and its parent's axes': per query
-/// (callgrind; 64 other seeded poses in brackets) 10k spheres 3.88M → 3.86M instructions
-/// (3.96M → 3.95M), 100k 13.5M → 13.3M (12.2M → 12.0M), tori 5.03M → 4.67M (4.16M → 3.87M).
+/// An internal node's box is the smaller of its own frame's and its parent's axes'.
 fn smaller_box(first: Obb, second: Obb) -> Obb {
     let surface = |o: &Obb| {
         let h = o.half_extents;

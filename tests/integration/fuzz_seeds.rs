@@ -29,13 +29,20 @@ fn every_seed_parses_and_lowers_without_panic() {
 
 /// The files of one corpus folder of the fuzz crate.
 fn corpus(name: &str) -> Vec<std::path::PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus").join(name);
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fuzz/corpus")
+        .join(name);
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())
         .collect();
     files.sort();
-    assert!(files.len() >= 3, "only {} seeds in {}", files.len(), dir.display());
+    assert!(
+        files.len() >= 3,
+        "only {} seeds in {}",
+        files.len(),
+        dir.display()
+    );
     files
 }
 
@@ -74,7 +81,11 @@ fn every_pose_seed_parses_or_is_refused_with_its_line() {
         let text = String::from_utf8_lossy(&bytes);
         if let Err((line, reason)) = parse_poses(&text) {
             let lines = text.split('\n').count();
-            assert!(line >= 1 && line <= lines, "{}: line {line}: {reason}", path.display());
+            assert!(
+                line >= 1 && line <= lines,
+                "{}: line {line}: {reason}",
+                path.display()
+            );
         }
     }
 }

@@ -3,14 +3,14 @@
 //! Box `a` is clipped by the six planes of box `b`, in `b`'s frame
 //! ([`crate::polyhedron`]); contact iff the intersection has positive volume (touching faces,
 //! edges or corners are not contacts). Normal, points, depth and area follow
-//! [`super::clipped`]: the area-weighted normal of `b`'s surface inside `a`; exchanging the
+//! [`crate::methods::clipped`]: the area-weighted normal of `b`'s surface inside `a`; exchanging the
 //! boxes gives `a`'s surface inside `b`, its exact negative in exact arithmetic (the
 //! intersection's closed surface sums to zero), so the pair is symmetric.
 //!
 //! A separating-axis test on the six face axes rejects most separated pairs before clipping.
 
-use super::clipped::{self, box_planes, unit_for};
 use crate::kernel::PairContact;
+use crate::methods::clipped::{self, box_planes, unit_for};
 use crate::polyhedron::{ConvexPolyhedron, MAX_FACE_VERTICES, MAX_FACES};
 use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};

@@ -2,7 +2,7 @@
 //!
 //! Slicing frame: the box's frame at its centre. Every slice of the box is the same rectangle,
 //! overlapped with the ellipsoid's section in closed form
-//! (`super::ellipsoid_sliced::disc_overlap`: a disc against a polygon after the map that
+//! (`crate::methods::ellipsoid_sliced::disc_overlap`: a disc against a polygon after the map that
 //! makes the section a circle). The quadrature is cut wherever the overlap's shape changes,
 //! all in closed form, so each piece is smooth (or has a square-root end, which the
 //! sine-mapped rule absorbs): the ends of the common `z` range, the heights where a section
@@ -11,19 +11,19 @@
 //! these cuts the overlap is empty throughout or nowhere. The box's `z` faces add their
 //! overlap with the ellipsoid's section at `z = ±h_z` to the unsigned surface.
 //!
-//! The contact follows [`super::volume_contact`]. When the area vector vanishes: with the
+//! The contact follows [`crate::methods::volume_contact`]. When the area vector vanishes: with the
 //! ellipsoid inside the box, the normal is the outward normal of the box's face nearest the
 //! centroid; with the box inside the ellipsoid, against the ellipsoid's level-surface normal
-//! at the centroid (`super::ellipsoid_sliced::inward_of_ellipsoid`).
+//! at the centroid (`crate::methods::ellipsoid_sliced::inward_of_ellipsoid`).
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_overlap::disc_polygon;
-use super::ellipsoid_sliced::{
+use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::disc_overlap::disc_polygon;
+use crate::methods::ellipsoid_sliced::{
     COMPONENTS, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
     inward_of_ellipsoid, quadratic_roots, shape_events, to_world,
 };
-use super::solid_distance::{Solid, signed_distance};
-use crate::kernel::PairContact;
+use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -129,7 +129,7 @@ pub(crate) fn contact(
     let inside_box = integrals.surface_b == 0.0;
     let moments = to_world(&integrals, &frame, unit);
     let g = moments.centroid;
-    super::volume_contact::contact(
+    crate::methods::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
         |g, d| surface_point_along_w(&Solid::Box(*cuboid), pose_b, g, d),

@@ -2,25 +2,25 @@
 //!
 //! Slicing frame: the cylinder's frame (axis `z`, from `0` to its length). Every slice of the
 //! cylinder is the same disc, overlapped with the ellipsoid's section in closed form
-//! (`super::ellipsoid_sliced::disc_overlap`: an ellipse against a circle, the crossings a
+//! (`crate::methods::ellipsoid_sliced::disc_overlap`: an ellipse against a circle, the crossings a
 //! quartic's roots). The slices are integrated between the lowest and highest `z` of the
 //! ellipsoid's intersection with the infinite cylinder (duality over the pencil of the two
-//! quadrics, `super::ellipsoid_sliced::extent`, which also proves them apart), clipped to
+//! quadrics, `crate::methods::ellipsoid_sliced::extent`, which also proves them apart), clipped to
 //! the caps. Where the sections become tangent inside that range the quadrature halves its
 //! pieces down to the kink. The caps add their overlap with the ellipsoid's section to the
 //! unsigned surface; the side's part inside the ellipsoid is `r·Δφ` per slice.
 //!
-//! The contact follows [`super::volume_contact`]. When the area vector vanishes: with the
+//! The contact follows [`crate::methods::volume_contact`]. When the area vector vanishes: with the
 //! ellipsoid inside the cylinder, the normal is the cylinder's outward normal at the surface
 //! point nearest the centroid; with the cylinder inside the ellipsoid, against the
 //! ellipsoid's level-surface normal at the centroid.
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_solid::{self, DiscSlices};
-use super::ellipsoid_sliced::extent::{Quadric, z_extent};
-use super::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
-use super::solid_distance::Solid;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::disc_solid::{self, DiscSlices};
+use crate::methods::ellipsoid_sliced::extent::{Quadric, z_extent};
+use crate::methods::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
+use crate::methods::solid_distance::Solid;
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Vector3, WorkCounters};
 use nalgebra::Matrix3;

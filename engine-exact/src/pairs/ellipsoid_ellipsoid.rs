@@ -2,25 +2,25 @@
 //!
 //! Slicing frame: origin at `b`'s centre, `z` along the line of centres (from `b` to `a`;
 //! `b`'s `+z` when the centres coincide). Each slice overlaps two ellipse sections in closed
-//! form (`super::ellipsoid_sliced::disc_overlap`: the crossings are a quartic's roots), and
+//! form (`crate::methods::ellipsoid_sliced::disc_overlap`: the crossings are a quartic's roots), and
 //! the slices are integrated between the intersection's lowest and highest `z`, found by
 //! duality over the pencil of the two quadrics
-//! (`super::ellipsoid_sliced::extent`); the pencil also proves the ellipsoids apart.
+//! (`crate::methods::ellipsoid_sliced::extent`); the pencil also proves the ellipsoids apart.
 //! Converged to 1e-13 of the volume (round-off away from kinks); where the sections become
 //! tangent inside that range the quadrature halves its pieces down to the kink.
 //!
-//! The contact follows [`super::volume_contact`]; when the area vector vanishes (one
+//! The contact follows [`crate::methods::volume_contact`]; when the area vector vanishes (one
 //! ellipsoid inside the other, or identical ones) the normal is the line of centres (from
 //! `b` to `a`), `b`'s `+z` for coincident centres.
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
-use super::ellipsoid_sliced::extent::{Quadric, z_extent};
-use super::ellipsoid_sliced::{
+use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
+use crate::methods::ellipsoid_sliced::extent::{Quadric, z_extent};
+use crate::methods::ellipsoid_sliced::{
     COMPONENTS, Section, SlicedEllipsoid, curved_area, ellipsoid_exit_w, ellipsoid_in, integrand,
     integrate, shape_events, to_world,
 };
-use crate::kernel::PairContact;
 use contact_core::{Isometry3, Vector3, WorkCounters};
 use nalgebra::{Matrix3, Rotation3, Translation3, UnitQuaternion};
 
@@ -55,7 +55,7 @@ pub(crate) fn contact(
         return None;
     }
     let moments = moments_along(semi_a, pose_a, semi_b, pose_b, &axis, unit, work)?;
-    super::volume_contact::contact(
+    crate::methods::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_a, pose_a, g, d),
         |g, d| ellipsoid_exit_w(semi_b, pose_b, g, d),
@@ -92,7 +92,7 @@ fn moments_along(
     axis: &Vector3,
     unit: f64,
     work: &mut WorkCounters,
-) -> Option<super::volume_contact::VolumeMoments> {
+) -> Option<crate::methods::volume_contact::VolumeMoments> {
     let frame = Isometry3::from_parts(
         Translation3::from(pose_b.translation.vector),
         frame_with_z(axis),

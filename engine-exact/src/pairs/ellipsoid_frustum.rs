@@ -3,43 +3,43 @@
 //! Slicing frame: the frustum's frame (axis `z`, bottom cap at `0`, top cap at its length
 //! `L`). The slice `z = t` cuts the frustum in the disc of radius `r(t) = r₀ + k t`,
 //! `k = (r₁ − r₀)/L`, overlapped with the ellipsoid's elliptic section in closed form
-//! (`super::ellipsoid_sliced::disc_overlap`: an ellipse against a circle, the crossings a
+//! (`crate::methods::ellipsoid_sliced::disc_overlap`: an ellipse against a circle, the crossings a
 //! quartic's roots), as in [`super::ellipsoid_cylinder`] with a radius that changes with `t`.
 //!
 //! ## The extent
 //! The slices are integrated between the lowest and highest `t` of the intersection. With
 //! `g(t)` the distance from the axis to the ellipsoid's section at `t`
-//! (`super::ellipsoid_sliced::distance`), the section meets the frustum's disc iff
+//! (`crate::methods::ellipsoid_sliced::distance`), the section meets the frustum's disc iff
 //! `f(t) = g(t) − r(t) < 0`. `g` is convex on the ellipsoid's range (the distance to a convex
 //! set, minimised over the slice: a partial minimum of a jointly convex function) and `r` is
 //! linear, so `f` is convex: its minimum over the ellipsoid's range clipped to `[0, L]`
 //! (golden section) is non-negative when the solids are apart or only touch, and otherwise the
 //! ends are the zeros of `f` on either side of it, bisected to round-off (or the range's ends
 //! where `f` is already negative there). Where the sections become tangent inside the range
-//! the overlap has a kink: [`super::ellipsoid_sliced::shape_events`] finds it by the change of the crossings' count.
+//! the overlap has a kink: [`crate::methods::ellipsoid_sliced::shape_events`] finds it by the change of the crossings' count.
 //!
 //! ## The integrals
 //! Volume, centroid and the area vector of the ellipsoid's surface inside the frustum as in
-//! [`super::ellipsoid_sliced`]. The unsigned area of the frustum's surface inside the
+//! [`crate::methods::ellipsoid_sliced`]. The unsigned area of the frustum's surface inside the
 //! ellipsoid: the lateral surface's `√(1 + k²)·r(t)·Δφ` per slice (`Δφ` the circle's angle
 //! inside the ellipsoid's section: the side's element is `√(1 + k²)·r dφ dt`), plus each cap's
 //! overlap with the ellipsoid's section at its height. A cone's apex (`r = 0` at a cap) is a
 //! disc of no radius: an empty overlap, a smooth end of the integrand.
 //!
 //! ## The contact
-//! By [`super::volume_contact`]. When the area vector vanishes: with the ellipsoid inside the
+//! By [`crate::methods::volume_contact`]. When the area vector vanishes: with the ellipsoid inside the
 //! frustum (none of the frustum's surface inside the ellipsoid), the normal is the frustum's
 //! outward normal at the surface point nearest the centroid; with the frustum inside the
 //! ellipsoid, against the ellipsoid's level-surface normal at the centroid; the area a quarter
 //! of the intersection's surface. Touching (the minimum of `f` not below zero) is no contact.
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_solid::{self, DiscSlices};
-use super::ellipsoid_sliced::distance::ellipse_distance;
-use super::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
-use super::sliced::golden_maximum;
-use super::solid_distance::Solid;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::disc_solid::{self, DiscSlices};
+use crate::methods::ellipsoid_sliced::distance::ellipse_distance;
+use crate::methods::ellipsoid_sliced::{SlicedEllipsoid, ellipsoid_in};
+use crate::methods::sliced::golden_maximum;
+use crate::methods::solid_distance::Solid;
 use contact_core::geometry::Frustum;
 use contact_core::{Isometry3, Vector2, Vector3, WorkCounters};
 

@@ -23,8 +23,8 @@
 //! per-region sums) live in a thread-local scratch that grows to the largest mesh seen and is
 //! then reused: no allocation once warm.
 
-use super::mesh_parts::{MeshPart, mesh_parts};
 use crate::kernel::PairContact;
+use crate::methods::mesh_parts::{MeshPart, mesh_parts};
 use contact_core::geometry::TriangleMesh;
 use contact_core::geometry::{closest_point_on_triangle, line_triangle};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};

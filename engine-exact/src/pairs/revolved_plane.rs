@@ -49,8 +49,8 @@
 //!   lies outside the solid (in a torus' hole) the point of the solid's surface closest to
 //!   `g`; δ is their distance.
 
-use super::solid_distance::Solid;
 use crate::kernel::PairContact;
+use crate::methods::solid_distance::Solid;
 use crate::quadrature;
 use crate::ray_exit::surface_point_along;
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
@@ -349,7 +349,7 @@ pub(crate) fn contact(
         Solid::Box(_) => return None,
     };
     // Working unit: lengths divided by a power of two near the solid's size.
-    let unit = super::clipped::unit_for(size);
+    let unit = crate::methods::clipped::unit_for(size);
     let profile = match profile {
         Profile::Frustum { r0, r1, len } => Profile::Frustum {
             r0: r0 / unit,

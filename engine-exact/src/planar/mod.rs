@@ -10,16 +10,16 @@
 //! The 2-D "area" of a contact is a length: the intersection region's extent across the
 //! normal.
 
-pub mod arc;
+pub(crate) mod arc;
 pub(crate) mod boundary;
-pub mod circle_bounded_line;
-pub mod circles;
+pub(crate) mod circle_bounded_line;
+pub(crate) mod circles;
 pub(crate) mod closest;
 pub(crate) mod crossings;
-pub mod curve_eval;
+pub(crate) mod curve_eval;
 pub(crate) mod overlap;
-pub mod point_curve;
-pub mod point_line;
+pub(crate) mod point_curve;
+pub(crate) mod point_line;
 
 use crate::kernel::PairError;
 use contact_core::{Isometry3, Point2, Point3, Vector2, Vector3};

@@ -19,8 +19,8 @@
 //! Nothing here needs the box but its convex meridian sections: [`region_wedges_of`] takes
 //! any `g` (an ellipsoid's, for the ellipsoid–torus pair).
 
-use super::super::section::Polygon;
-use crate::pairs::sliced::golden_maximum;
+use crate::methods::section::Polygon;
+use crate::methods::sliced::golden_maximum;
 use contact_core::{Vector2, Vector3};
 use std::f64::consts::TAU;
 

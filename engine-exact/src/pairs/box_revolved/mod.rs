@@ -1,13 +1,13 @@
 //! A box against a frustum (or cone) or a ring torus, and through the box a bounded PLANE
 //! against them: the intersection's moments by slicing perpendicular to the solid's axis,
-//! the contact from them by [`super::volume_contact`].
+//! the contact from them by [`crate::methods::volume_contact`].
 //!
 //! ## The slices
 //! In the revolved solid's frame (axis `z`, lengths divided by a power of two near the pair's
 //! size) the plane `z = t` cuts the box in a convex polygon `P(t)` (a square about the axis,
 //! larger than the solid's section, clipped by the box's six faces) and the solid in a disc
 //! of radius `r(t) = r₀ + k t` (frustum, `0 ≤ t ≤ L`) or the annulus `R − s ≤ |p| ≤ R + s`,
-//! `s = √(ρ² − t²)` (torus). [`super::disc_section`] gives the overlap of `P(t)` with a disc in
+//! `s = √(ρ² − t²)` (torus). [`crate::methods::disc_section`] gives the overlap of `P(t)` with a disc in
 //! closed form: area, first moments, the circle's arcs inside `P` (angle `A` and `∫ν dφ`) and
 //! each face's edge length inside; an annulus is the outer disc less the inner one.
 //!
@@ -17,7 +17,7 @@
 //!   `r ∫ν dφ − r′ r A e_z`; the torus' inner circle, whose outward normal is `−ν`, sweeps
 //!   `(−ν + r_i′ e_z) r_i dφ dt`. The frustum's caps add `∓e_z` times their overlap with `P` at
 //!   `t = 0, L`. The box's surface inside the solid closes the same region, so its area vector
-//!   is the opposite: `S_box = −S_solid`, which [`super::volume_contact`] takes as `S_a`.
+//!   is the opposite: `S_box = −S_solid`, which [`crate::methods::volume_contact`] takes as `S_a`.
 //! - Unsigned areas: the lateral surface's `√(1 + r′²) r A` per slice (`ρ/s` for the torus),
 //!   the box faces' edge lengths inside the section over `|g|` (the in-plane part of the unit
 //!   face normal: a face's area per slice and per unit of edge), and the flat faces parallel to
@@ -25,7 +25,7 @@
 //!
 //! A box face in the plane of a cap with the same outward normal (the box standing on the cap,
 //! or the cap on the box: their solids on one side) is shared: it counts as the box's surface
-//! (the first solid's, as in [`super::section`]), so the cap adds nothing. Faces within 1e-13
+//! (the first solid's, as in [`crate::methods::section`]), so the cap adds nothing. Faces within 1e-13
 //! of the slices' direction (working units) count as parallel, and heights within 1e-13 as
 //! coplanar.
 //!
@@ -55,17 +55,17 @@
 pub(crate) mod azimuth;
 pub(crate) mod events;
 
-use super::clipped::unit_for;
-use super::disc_section::{DiscSection, disc_section};
-use super::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
-use super::mesh_revolved::Profile;
-use super::section::Polygon;
-use super::solid_distance::{Solid, signed_distance};
-use super::volume_contact::{self, ENCLOSED, VolumeMoments};
+use super::revolved_mesh::Profile;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::disc_section::{DiscSection, disc_section};
+use crate::methods::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
+use crate::methods::section::Polygon;
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::MAX_PIECES;
 use crate::ray_exit::surface_point_along_w;
-use contact_core::geometry::{Cuboid, Plane};
+use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
 
 /// A face whose normal's in-plane part is at most this is parallel to the slices.
@@ -443,69 +443,4 @@ pub(crate) fn contacts(
             emit(c);
         }
     }
-}
-
-/// The contacts of the frustum or torus `solid` (`a`, at `pose_a`) with the bounded `plane`
-/// (`b`, at `pose_b`, flipped when `side < 0`): the unbounded plane's closed form when every
-/// edge is out of the solid's reach ([`super::bounded_plane::well_inside`]), otherwise
-/// [`prism_contacts`].
-pub(crate) fn bounded_plane_contacts(
-    solid: &Solid,
-    pose_a: &Isometry3,
-    plane: &Plane,
-    side: f64,
-    pose_b: &Isometry3,
-    work: &mut WorkCounters,
-    emit: &mut dyn FnMut(PairContact),
-) {
-    let Some((centre, reach)) = ball(solid, pose_a) else {
-        return;
-    };
-    if super::bounded_plane::well_inside(plane, pose_b, &centre, reach) {
-        if let Some(c) = super::revolved_plane::contact(solid, pose_a, pose_b, side, work) {
-            emit(c);
-        }
-        return;
-    }
-    prism_contacts(solid, pose_a, plane, side, pose_b, work, emit);
-}
-
-/// The same by the box pair on the plane's prism cut to a box about the solid
-/// ([`super::bounded_plane`]), swapped, wherever the edges are.
-pub(crate) fn prism_contacts(
-    solid: &Solid,
-    pose_a: &Isometry3,
-    plane: &Plane,
-    side: f64,
-    pose_b: &Isometry3,
-    work: &mut WorkCounters,
-    emit: &mut dyn FnMut(PairContact),
-) {
-    let Some((centre_w, reach)) = ball(solid, pose_a) else {
-        return;
-    };
-    let Some((cuboid, pose_box)) =
-        super::bounded_plane::local_box(plane, side, pose_b, &centre_w, reach)
-    else {
-        return;
-    };
-    contacts(&cuboid, &pose_box, solid, pose_a, work, &mut |c| {
-        emit(c.swapped())
-    });
-}
-
-/// A ball holding the frustum or torus `solid` at `pose`: its world centre (the middle of the
-/// axis; the torus' centre) and radius; `None` for a box or a cylinder.
-fn ball(solid: &Solid, pose: &Isometry3) -> Option<(Point3, f64)> {
-    let (centre, reach) = match *solid {
-        Solid::Frustum(f) => (
-            Point3::new(0.0, 0.0, 0.5 * f.length()),
-            f.bottom_radius()
-                .max(f.top_radius())
-                .hypot(0.5 * f.length()),
-        ),
-        Solid::Torus(t) => (Point3::origin(), t.major_radius() + t.minor_radius()),
-        Solid::Box(_) | Solid::Cylinder(_) => return None,
-    };
-    Some((pose * centre, reach))
 }

@@ -44,8 +44,8 @@
 //!   quarter of the cylinder's surface `π R (R + L)/2` (its mean projected area, as for
 //!   the box pairs).
 
-use super::solid_distance::Solid;
 use crate::kernel::PairContact;
+use crate::methods::solid_distance::Solid;
 use crate::quadrature;
 use crate::ray_exit::{cylinder_exit, surface_point_along};
 use contact_core::geometry::Cylinder;

@@ -12,12 +12,12 @@
 //!   `g(φ)` of [`crate::pairs::box_revolved::azimuth`], which finds the regions as arcs of
 //!   azimuth (one region per arc);
 //! - [`Meridians::z_span`], the lowest and highest `z` of ellipse ∩ disc, is the 2-D pencil
-//!   extent of [`crate::pairs::ellipsoid_sliced::extent`] (duality, to round-off), and a
+//!   extent of [`crate::methods::ellipsoid_sliced::extent`] (duality, to round-off), and a
 //!   region's slices run from the least `z_lo(φ)` to the greatest `z_hi(φ)` over its arc,
 //!   found by [`lowest_and_highest`].
 
-use super::super::ellipsoid_sliced::distance::ellipse_distance;
-use super::super::ellipsoid_sliced::extent::{Quadric, z_bound, z_extent};
+use crate::methods::ellipsoid_sliced::distance::ellipse_distance;
+use crate::methods::ellipsoid_sliced::extent::{Quadric, z_bound, z_extent};
 use contact_core::Vector3;
 use nalgebra::{Matrix2, Matrix3, Vector2};
 

@@ -5,10 +5,10 @@
 //! the pair's size) the plane `z = t`, `|t| < ρ`, cuts the torus in the annulus
 //! `R − s ≤ |p| ≤ R + s`, `s = √(ρ² − t²)`, and the ellipsoid in an ellipse. Its overlap with
 //! each of the annulus' circles is in closed form
-//! ([`super::ellipsoid_sliced::disc_overlap::disc_ellipse`], the crossings a quartic's roots),
+//! ([`crate::methods::ellipsoid_sliced::disc_overlap::disc_ellipse`], the crossings a quartic's roots),
 //! and the annulus' is the outer disc's less the inner one's (the inner disc lies in the
 //! outer): volume, centroid and the area vector of the ellipsoid's surface inside the torus
-//! by [`super::ellipsoid_sliced::integrand`] (linear in the overlap, the unsigned curved area
+//! by [`crate::methods::ellipsoid_sliced::integrand`] (linear in the overlap, the unsigned curved area
 //! included since the ellipse's arcs inside the inner disc lie among those inside the outer).
 //! The torus' own surface inside the ellipsoid, for the containment test and the area
 //! estimate: `(ρ/s)·ρ_c·Δφ` per unit of `t` on each circle of radius `ρ_c = R ± s` (the tube's
@@ -17,7 +17,7 @@
 //! The integration variable is that angle `ψ`: with `t = ρ sin ψ`, `s = ρ cos ψ` keeps its
 //! digits near `t = ±ρ`, and the torus' surface rate, singular per `dt`, is `ρ·ρ_c·Δφ` per `dψ`
 //! (as in [`super::box_revolved`]). Cuts: each region's lowest and highest slice and the
-//! slices where the sections turn tangent inside ([`super::ellipsoid_sliced::shape_events`],
+//! slices where the sections turn tangent inside ([`crate::methods::ellipsoid_sliced::shape_events`],
 //! on the outer and inner overlaps' crossing counts); [`crate::quadrature::Adaptive`] with the
 //! general ellipsoid pairs' floors between them.
 //!
@@ -36,7 +36,7 @@
 //! neighbour's wedge (one contact for the two); a region is never split.
 //!
 //! ## The contact
-//! By [`super::volume_contact::contact_of_region`]. A region of a torus need not be convex, but
+//! By [`crate::methods::volume_contact::contact_of_region`]. A region of a torus need not be convex, but
 //! one thinner than 1e-6 of the size is a lens about a tangency (the gap between the surfaces
 //! concave over a bounded footprint), so the convex pairs' test for unresolved lenses applies:
 //! a lens whose sections are round-off (1e-9 of the size between curved surfaces) is touching.
@@ -50,14 +50,14 @@ pub(crate) mod meridian;
 pub(crate) mod wedge;
 
 use super::box_revolved::azimuth::region_wedges_of;
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
-use super::ellipsoid_sliced::{
+use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
+use crate::methods::ellipsoid_sliced::{
     COMPONENTS, Section, SlicedEllipsoid, ellipsoid_exit_w, ellipsoid_in, integrand, integrate,
     inward_of_ellipsoid, shape_events, to_world,
 };
-use super::solid_distance::{Solid, signed_distance};
-use crate::kernel::PairContact;
+use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Torus;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -211,7 +211,7 @@ pub(crate) fn contacts(
         };
         let moments = to_world(&integrals, pose_b, unit);
         let g = moments.centroid;
-        let found = super::volume_contact::contact_of_region(
+        let found = crate::methods::volume_contact::contact_of_region(
             &moments,
             |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
             |g, d| surface_point_along_w(&solid, pose_b, g, d),
@@ -245,7 +245,7 @@ fn region(
     wedge: &Wedge,
     restricted: Option<&Wedge>,
     work: &mut WorkCounters,
-) -> Option<(super::ellipsoid_sliced::Integrals, bool)> {
+) -> Option<(crate::methods::ellipsoid_sliced::Integrals, bool)> {
     // The region's deepest azimuth, a seed where its meridian overlap is not empty.
     let seed = deepest_azimuth(meridians, wedge);
     let (lo, hi) = lowest_and_highest(meridians, wedge.start, wedge.end, seed)?;
@@ -296,7 +296,9 @@ fn deepest_azimuth(meridians: &Meridians, wedge: &Wedge) -> Option<f64> {
         if values[k] > prev || values[k] > next {
             continue;
         }
-        let phi = super::sliced::golden_maximum(at(k) - step, at(k) + step, |x| -meridians.gap(x));
+        let phi = crate::methods::sliced::golden_maximum(at(k) - step, at(k) + step, |x| {
+            -meridians.gap(x)
+        });
         let g = meridians.gap(phi).min(values[k]);
         if g < value {
             value = g;

@@ -1,7 +1,7 @@
 //! The part of a slice's overlap inside a wedge of azimuths about the torus' axis, one
 //! region's share when the torus meets the ellipsoid in several.
 //!
-//! The overlap of [`disc_ellipse`](super::super::ellipsoid_sliced::disc_overlap::disc_ellipse)
+//! The overlap of [`disc_ellipse`](crate::methods::ellipsoid_sliced::disc_overlap::disc_ellipse)
 //! is bounded by arcs of the unit circle (the ellipsoid's section, angle `θ`) and of the
 //! ellipse `q + K u(φ)` (a circle of radius `ρ_c` about the axis, mapped: `q` is the axis and
 //! `φ` the slice's azimuth). The wedge's two rays run through the axis, so in Green's
@@ -11,7 +11,7 @@
 //! `c + M u(θ)` crosses a ray's line (`cross(d, c + M u(θ)) = 0`, a linear trigonometric
 //! equation) and each piece kept when its middle lies inside.
 
-use super::super::ellipsoid_sliced::disc_overlap::{DiscOverlap, trig_product_integral};
+use crate::methods::ellipsoid_sliced::disc_overlap::{DiscOverlap, trig_product_integral};
 use nalgebra::{Matrix2, Vector2};
 use std::f64::consts::TAU;
 
@@ -122,8 +122,8 @@ pub(crate) fn restrict(
 
 #[cfg(test)]
 mod tests {
-    use super::super::super::ellipsoid_sliced::disc_overlap::disc_ellipse;
     use super::*;
+    use crate::methods::ellipsoid_sliced::disc_overlap::disc_ellipse;
     use std::f64::consts::PI;
 
     #[test]

@@ -10,7 +10,7 @@ use super::add_caps;
 use super::caps_clear::caps_clear;
 use super::lateral;
 use super::slice::{self, Pair, rim_axes};
-use crate::pairs::ellipsoid_sliced::COMPONENTS;
+use crate::methods::ellipsoid_sliced::COMPONENTS;
 use crate::quadrature::Adaptive;
 use contact_core::{Vector3, WorkCounters};
 

@@ -4,7 +4,7 @@
 use super::slice::Pair;
 use super::{Method, contact_by, quadric_of};
 use crate::kernel::PairContact;
-use crate::pairs::solid_distance::Solid;
+use crate::methods::solid_distance::Solid;
 use crate::test_rng::Rng;
 use contact_core::geometry::{Cylinder, Frustum};
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -130,7 +130,7 @@ fn the_divergence_theorem_agrees_with_the_slicing() {
 /// cylinder pair's polygon slicing perpendicular to both axes.
 #[test]
 fn crossed_cylinders_agree_with_the_polygon_slicing() {
-    use crate::pairs::cylinder_solid::{self, Other};
+    use crate::pairs::cylinder_sliced::{self, SlicedSolid};
     let mut rng = Rng(5);
     let (mut worst, mut compared) = ([0.0f64; 4], 0);
     while compared < 300 {
@@ -148,10 +148,17 @@ fn crossed_cylinders_agree_with_the_polygon_slicing() {
         let pose_a = Isometry3::identity();
         let mut work = WorkCounters::default();
         let run = |method, work: &mut WorkCounters| {
-            cylinder_solid::contact_by(&a, &pose_a, &Other::Cylinder(b), &pose_b, work, method)
+            cylinder_sliced::contact_by(
+                &a,
+                &pose_a,
+                &SlicedSolid::Cylinder(b),
+                &pose_b,
+                work,
+                method,
+            )
         };
-        let got = run(cylinder_solid::Method::ClosedForm, &mut work);
-        let want = run(cylinder_solid::Method::Sliced, &mut work);
+        let got = run(cylinder_sliced::Method::ClosedForm, &mut work);
+        let want = run(cylinder_sliced::Method::Sliced, &mut work);
         let scene = (a, b, pose_b);
         compared += tally(&mut worst, (&got, &want), reach, &scene);
     }
@@ -164,7 +171,7 @@ fn crossed_cylinders_agree_with_the_polygon_slicing() {
 /// 1e-8, and found no contact below 1e-9).
 #[test]
 fn shallow_crossings_are_resolved_or_sliced() {
-    use crate::pairs::cylinder_solid::{self, Other};
+    use crate::pairs::cylinder_sliced::{self, SlicedSolid};
     use contact_core::UnitQuaternion;
     let (a, b) = (
         Cylinder::new(0.5, 2.0).unwrap(),
@@ -180,10 +187,17 @@ fn shallow_crossings_are_resolved_or_sliced() {
         let pose_b = Isometry3::from_parts(nalgebra::Translation3::from(centre), turn);
         let mut work = WorkCounters::default();
         let run = |method, work: &mut WorkCounters| {
-            cylinder_solid::contact_by(&a, &pose_a, &Other::Cylinder(b), &pose_b, work, method)
+            cylinder_sliced::contact_by(
+                &a,
+                &pose_a,
+                &SlicedSolid::Cylinder(b),
+                &pose_b,
+                work,
+                method,
+            )
         };
-        let got = run(cylinder_solid::Method::ClosedForm, &mut work).unwrap();
-        let want = run(cylinder_solid::Method::Sliced, &mut work).unwrap();
+        let got = run(cylinder_sliced::Method::ClosedForm, &mut work).unwrap();
+        let want = run(cylinder_sliced::Method::Sliced, &mut work).unwrap();
         let e = got.errors(&want, 3.0);
         assert!(e.iter().all(|&x| x <= 1e-9), "δ = {delta:e}: {e:?}");
         assert!(
@@ -272,15 +286,15 @@ fn one_lateral_surface_agrees_with_both() {
         // other slicing agreeing there to 1e-14).
         let got = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Divergence);
         let want = if case == 0 {
-            use crate::pairs::cylinder_solid::{self, Other};
+            use crate::pairs::cylinder_sliced::{self, SlicedSolid};
             let (Solid::Cylinder(ca), Solid::Cylinder(cb)) = (a, b) else {
                 unreachable!("case 0 is two cylinders")
             };
-            let method = cylinder_solid::Method::Sliced;
-            cylinder_solid::contact_by(
+            let method = cylinder_sliced::Method::Sliced;
+            cylinder_sliced::contact_by(
                 &ca,
                 &pose_a,
-                &Other::Cylinder(cb),
+                &SlicedSolid::Cylinder(cb),
                 &pose_b,
                 &mut work,
                 method,

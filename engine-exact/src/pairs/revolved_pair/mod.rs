@@ -3,7 +3,7 @@
 //! surfaces ([`lateral`]: one-dimensional integrals over each surface's azimuth, cut at
 //! closed-form events), or, for axes within [`PARALLEL`] of parallel, by slicing across `a`'s
 //! axis and integrating each slice in polar coordinates about that axis; the contact from
-//! them by [`super::volume_contact`].
+//! them by [`crate::methods::volume_contact`].
 //!
 //! ## The divergence theorem
 //! With `ŵ` perpendicular to both axes, fields along `ŵ` have no flux through any cap, so the
@@ -55,7 +55,7 @@
 //!
 //! ## The normal and the areas
 //! The area vector of `a`'s surface inside `b` (outward of `a`), which
-//! [`super::volume_contact`] turns into the normal: `a`'s lateral surface at `(t, φ)` is
+//! [`crate::methods::volume_contact`] turns into the normal: `a`'s lateral surface at `(t, φ)` is
 //! inside `b` when `R(t)` lies in `b`'s interval along the ray, and sweeps
 //! `(u − k e_z) R dφ dt` there; `a`'s caps add `∓e_z` times their overlap with `b` (the polar
 //! section at `t = 0, L`, with `b`'s slab closed by 1e-12 so that a cap flush with `b`'s cap
@@ -99,12 +99,12 @@ pub(crate) mod slice;
 #[cfg(test)]
 mod tests;
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
-use super::sliced::golden_search;
-use super::solid_distance::{Solid, signed_distance};
-use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
+use crate::methods::sliced::golden_search;
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::Adaptive;
 use crate::quadrature::MAX_PIECES;
 use crate::ray_exit::surface_point_along_w;

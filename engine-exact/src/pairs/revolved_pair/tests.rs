@@ -3,8 +3,8 @@
 //! form.
 
 use super::contact;
-use crate::pairs::cylinder_solid::{self, Method, Other};
-use crate::pairs::solid_distance::Solid;
+use crate::methods::solid_distance::Solid;
+use crate::pairs::cylinder_sliced::{self, Method, SlicedSolid};
 use contact_core::geometry::{Cylinder, Frustum};
 use contact_core::{Isometry3, Vector3, WorkCounters};
 
@@ -16,10 +16,10 @@ fn polygon_slicing(
     pose_b: &Isometry3,
     work: &mut WorkCounters,
 ) -> Option<crate::kernel::PairContact> {
-    cylinder_solid::contact_by(
+    cylinder_sliced::contact_by(
         a,
         pose_a,
-        &Other::Cylinder(*b),
+        &SlicedSolid::Cylinder(*b),
         pose_b,
         work,
         Method::Sliced,

@@ -34,7 +34,7 @@
 //!
 //! ## The normal and the areas
 //! The area vector of the torus' surface inside `b` (outward of the torus), which
-//! [`super::volume_contact`] turns into the normal: at `(ψ, φ)` the outer wall (radius
+//! [`crate::methods::volume_contact`] turns into the normal: at `(ψ, φ)` the outer wall (radius
 //! `R + s`) sweeps `(R + s)(s u + t e_z) dψ dφ` and the inner wall (`R − s`)
 //! `(R − s)(−s u + t e_z) dψ dφ` (the tube's element `ρ_t(R + ρ_t cos ψ) dψ dφ` times its
 //! normal `cos ψ u + sin ψ e_z`, the inner wall at `π − ψ`), each where its radius lies in
@@ -57,13 +57,13 @@
 //! - **Grazing**: the seed is the deepest point the gap's minimisation found (to 1e-9 of the
 //!   tube's diameter); the extent is then bisected exactly on the slices. Touching is no
 //!   contact, and a lens whose sections are round-off is no contact
-//!   ([`super::volume_contact::unresolved_lens`]).
+//!   ([`crate::methods::volume_contact::unresolved_lens`]).
 //! - **One inside the other**, **symmetric crossings** and **identical placements**: the
 //!   area vector vanishes against the region's surface; with none of `b`'s surface inside the
 //!   torus (the torus inside `b`) the normal is `b`'s outward normal at its face nearest the
 //!   centroid, otherwise (`b` inside the tube, a symmetric crossing) the opposite of the
 //!   torus' outward normal at its surface point nearest the centroid (for a centroid on the
-//!   axis, the `+x` radial, as [`super::solid_distance`] documents); the area a quarter of
+//!   axis, the `+x` radial, as [`crate::methods::solid_distance`] documents); the area a quarter of
 //!   the region's surface.
 
 pub(crate) mod regions;
@@ -71,12 +71,12 @@ pub(crate) mod slice;
 #[cfg(test)]
 mod tests;
 
-use super::clipped::unit_for;
-use super::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
 use super::revolved_pair::{dimensions, quadric_of, surface_of};
-use super::solid_distance::{Solid, signed_distance};
-use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::{Adaptive, MAX_PIECES};
 use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Torus;

@@ -15,8 +15,8 @@
 //! region's wedge seeds that region's slices.
 
 use super::slice::{TorusPair, Wedge};
+use crate::methods::sliced::golden_search;
 use crate::pairs::box_revolved::azimuth::{SAMPLES, region_wedges_of};
-use crate::pairs::sliced::golden_search;
 use contact_core::Vector3;
 use std::cell::RefCell;
 

@@ -26,7 +26,7 @@
 //! the line through `c` along `n`, and the line through the centroid along `n` is that line:
 //! it leaves the sphere at `c − r n` and the solid at the foot `q = c − d n`. Hence, exactly
 //! as SPEC §4 defines them: normal `n`, points `c − r n` and `q`, δ = `r − d`. The area
-//! estimate is `|S|` as on the general path ([`super::volume_contact`]): `π(r² − d²)` for a
+//! estimate is `|S|` as on the general path ([`crate::methods::volume_contact`]): `π(r² − d²)` for a
 //! plane (the cap's base, or with the centre inside the projection of the rest of the sphere,
 //! the same disc), and for the side `|S| = 2R ∫ cos φ · 2√(r² − |R u(φ) − c_xy|²) dφ`, the
 //! side's own area vector inside the ball (the sphere's and the side's close the region), a
@@ -53,15 +53,15 @@
 //! torus meets the ring in two). Their degenerate branches apply: a ball inside the solid
 //! takes the outward normal of the face nearest its centre (area a quarter of the sphere),
 //! touching is no contact. Apart solids (signed distance `≥ r`) are rejected first, by
-//! [`super::solid_distance`].
+//! [`crate::methods::solid_distance`].
 
 pub(crate) mod fast_path;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use super::solid_distance::Solid;
-use super::solid_distance::signed_distance;
 use crate::kernel::PairContact;
+pub(crate) use crate::methods::solid_distance::Solid;
+use crate::methods::solid_distance::signed_distance;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 
 /// The contacts of the sphere of `radius` at `pose_sphere` with `solid` at `pose_solid`, one

@@ -16,7 +16,7 @@
 //! slices instead: the test errs only towards the slower, general method.
 
 use super::Bound;
-use crate::pairs::mesh_parts::{MAX_PART_TRIANGLES, MeshPart};
+use crate::methods::mesh_parts::{MAX_PART_TRIANGLES, MeshPart};
 use contact_core::Vector3;
 use std::f64::consts::TAU;
 

@@ -1,7 +1,7 @@
 //! A cylinder, a frustum (cone) or a ring torus against a closed triangle mesh (taken as
 //! exact): the intersection's moments by slicing perpendicular to the solid's axis, one
 //! contact per connected region. A cylinder against a mesh whose components are apart and
-//! small takes each component in closed form instead ([`super::cylinder_polyhedron`]),
+//! small takes each component in closed form instead ([`crate::methods::cylinder_polyhedron`]),
 //! unless a face is within 1e-3 of parallel to its axis, a cap's section is not clear-cut, or
 //! a component's pieces are not shown to be one region.
 //!
@@ -48,20 +48,19 @@
 //! points from the centroid to the mesh's closest point; otherwise against the solid's outward
 //! normal at its surface point nearest the centroid. Touching is no contact.
 
-mod ellipsoid;
 mod events;
 mod region;
 mod regions;
 pub(crate) mod section;
 
-pub(crate) use ellipsoid::ellipsoid_contacts;
-use region::{Region, area_scale};
+pub(crate) use region::Region;
+use region::area_scale;
 pub(crate) use region::{fallback, on_mesh};
 
-use super::clipped::unit_for;
 use super::mesh_plane::PreparedMesh;
-use super::solid_distance::Solid;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
+use crate::methods::solid_distance::Solid;
 use contact_core::{Isometry3, Vector2, Vector3, WorkCounters};
 use section::{Crossing, SlicedTriangle, clip_to_disc};
 use std::f64::consts::TAU;
@@ -278,7 +277,9 @@ pub(crate) fn contacts(
 ) {
     // A cylinder against a mesh's parts: each in closed form where it can.
     if let Solid::Cylinder(c) = solid {
-        if super::cylinder_polyhedron::mesh::mesh_contacts(c, pose_a, mesh, pose_b, work, emit) {
+        if crate::methods::cylinder_polyhedron::mesh::mesh_contacts(
+            c, pose_a, mesh, pose_b, work, emit,
+        ) {
             return;
         }
     }
@@ -319,7 +320,7 @@ pub(crate) fn contacts(
 
 /// Slices `mesh` (its vertices `local` in the solid's frame, working units) against the
 /// solid of `profile`, labels the regions and hands each to `per_region` with its root.
-fn sliced_regions(
+pub(crate) fn sliced_regions(
     profile: Profile,
     local: &[Vector3],
     mesh: &PreparedMesh,

@@ -1,6 +1,6 @@
 //! A box against the half-space below one unbounded plane, in closed form.
 //!
-//! The contact is the one [`super::clipped`] defines for a plane (normal the plane's, points
+//! The contact is the one [`crate::methods::clipped`] defines for a plane (normal the plane's, points
 //! on the line through the centroid of the part below the plane, area the cut section's), but
 //! the part below is never built as a polyhedron: its volume, centroid and section come from
 //! the box's corner heights alone. The work is in world axes from the plane's origin (lengths
@@ -48,11 +48,11 @@
 //! No corner below: no contact (the first test, or no wet volume). No corner above
 //! (every corner at or below the plane, so a top face flush with it counts): the whole box,
 //! its centre the centroid and a quarter of its surface the area, as for clipping's enclosed
-//! case in [`super::clipped`]. One corner or more on each side: the prism above, with the
+//! case in [`crate::methods::clipped`]. One corner or more on each side: the prism above, with the
 //! top face's square only when the top face's lowest corner is below the plane.
 
-use super::clipped::unit_for;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
 use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Point3, Vector3};
 

@@ -1,6 +1,6 @@
 //! A cylinder against a closed mesh of small components apart from one another (see
 //! `mesh_parts`): each component met is one polyhedron of the closed form, the points and
-//! the containment normal as the mesh's sliced regions take them (`mesh_revolved`).
+//! the containment normal as the mesh's sliced regions take them (`revolved_mesh`).
 //!
 //! A convex component meets the cylinder in one convex region: one contact. One that is not
 //! convex takes its caps from its section ([`super::Caps::Section`]) and may meet the
@@ -14,13 +14,13 @@
 use super::links::{Links, join_edges};
 use super::{Caps, FACE_CORNERS, Face, moments, moments_of};
 use crate::kernel::PairContact;
-use crate::pairs::clipped::unit_for;
-use crate::pairs::mesh_parts::MAX_PART_TRIANGLES;
+use crate::methods::clipped::unit_for;
+use crate::methods::mesh_parts::MAX_PART_TRIANGLES;
+use crate::methods::sliced::SlicedMoments;
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::pairs::mesh_plane::PreparedMesh;
-use crate::pairs::mesh_revolved::{fallback, on_mesh};
-use crate::pairs::sliced::SlicedMoments;
-use crate::pairs::solid_distance::{Solid, signed_distance};
-use crate::pairs::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::pairs::revolved_mesh::{fallback, on_mesh};
 use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Cylinder;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};

@@ -9,7 +9,7 @@ use super::{
     shape_events, to_world,
 };
 use crate::kernel::PairContact;
-use crate::pairs::solid_distance::{Solid, signed_distance};
+use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::ray_exit::surface_point_along_w;
 use contact_core::{Isometry3, Vector3, WorkCounters};
 use nalgebra::Matrix2;
@@ -81,7 +81,7 @@ pub(crate) fn contact<R: Fn(f64) -> f64>(
     let inside_solid = integrals.surface_b == 0.0;
     let moments = to_world(&integrals, pose_b, unit);
     let g = moments.centroid;
-    crate::pairs::volume_contact::contact(
+    crate::methods::volume_contact::contact(
         &moments,
         |g, d| ellipsoid_exit_w(semi_axes, pose_a, g, d),
         |g, d| surface_point_along_w(solid, pose_b, g, d),

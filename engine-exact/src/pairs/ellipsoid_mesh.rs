@@ -1,11 +1,10 @@
 //! A general ellipsoid against a closed mesh, as the unit sphere against the mesh mapped by
-//! the ellipsoid's inverse semi-axes (see the module doc of [`super`]).
+//! the ellipsoid's inverse semi-axes (see the module doc of `crate::pairs::revolved_mesh`).
 
-use super::region::{fallback, on_mesh};
-use super::{Profile, sliced_regions};
 use crate::kernel::PairContact;
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::pairs::mesh_plane::PreparedMesh;
-use crate::pairs::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::pairs::revolved_mesh::{Profile, fallback, on_mesh, sliced_regions};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 
 /// The contacts of the general ellipsoid of `semi` axes (`a`, at `pose_a`) with `mesh` (`b`,
@@ -14,7 +13,7 @@ use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 /// centroid by the semi-axes, area vectors by the cofactor `(bc, ac, ab)`, unsigned areas by
 /// each piece's own factor). The normal when the area vector vanishes with the mesh inside
 /// is against the ellipsoid's level surface through the centroid.
-pub(crate) fn ellipsoid_contacts(
+pub(crate) fn contacts(
     semi: &Vector3,
     pose_a: &Isometry3,
     mesh: &PreparedMesh,

@@ -5,11 +5,11 @@ use super::Profile;
 use super::section::{arc_moments, chord_moments};
 use super::{Setup, Slice, arcs, regions};
 use crate::kernel::PairContact;
-use crate::pairs::disc_section::disc_section;
-use crate::pairs::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
+use crate::methods::disc_section::disc_section;
+use crate::methods::ellipsoid_sliced::{ADAPTIVE, COMPONENTS, floor};
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::pairs::mesh_plane::{PreparedMesh, closest_on_mesh, exit_along};
-use crate::pairs::solid_distance::{Solid, signed_distance};
-use crate::pairs::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::MAX_PIECES;
 use crate::ray_exit::surface_point_along_w;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
@@ -46,13 +46,13 @@ pub(super) fn area_scale(v: &[Vector3; 3], cofactor: Option<Vector3>) -> f64 {
 }
 
 /// What a region's integration reads.
-pub(super) struct Region<'a> {
-    pub setup: &'a Setup<'a>,
-    pub roots: &'a [u32],
-    pub labels: &'a regions::Labels,
-    pub flat: &'a [(u32, [Vector3; 3])],
+pub(crate) struct Region<'a> {
+    pub(crate) setup: &'a Setup<'a>,
+    pub(super) roots: &'a [u32],
+    pub(super) labels: &'a regions::Labels,
+    pub(super) flat: &'a [(u32, [Vector3; 3])],
     /// `(triangle, root)` for every chord, sorted.
-    pub touched: &'a [(u32, u32)],
+    pub(super) touched: &'a [(u32, u32)],
 }
 
 impl Region<'_> {
@@ -166,7 +166,7 @@ impl Region<'_> {
     }
 
     /// Region `root`'s contact with the revolved `solid`.
-    pub(super) fn contact(
+    pub(crate) fn contact(
         &self,
         root: u32,
         solid: &Solid,
@@ -206,7 +206,7 @@ impl Region<'_> {
 
     /// Region `root`'s integrals in the sliced space: `[volume, ∫z, ∫x, ∫y, S_solid (3),
     /// solid's surface inside the mesh, mesh's surface inside the solid]`.
-    pub(super) fn integrals(&self, root: u32, work: &mut WorkCounters) -> [f64; COMPONENTS] {
+    pub(crate) fn integrals(&self, root: u32, work: &mut WorkCounters) -> [f64; COMPONENTS] {
         let setup = self.setup;
         let mut slice = Slice::default();
         let torus = matches!(setup.profile, Profile::Torus { .. });

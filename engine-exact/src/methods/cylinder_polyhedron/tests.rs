@@ -3,7 +3,7 @@
 //! against the volumes of a cylinder inside a box and a box inside a cylinder.
 
 use super::{Face, box_faces, box_moments};
-use crate::pairs::cylinder_solid::{Method, Other, contact_by};
+use crate::pairs::cylinder_sliced::{Method, SlicedSolid, contact_by};
 use crate::test_rng::Rng;
 use contact_core::geometry::{Cuboid, Cylinder};
 use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
@@ -33,7 +33,7 @@ fn tilted_boxes_agree_with_the_slicing() {
             ),
         );
         let a = Cylinder::new(r, l).unwrap();
-        let b = Other::Box(Cuboid::centered(half.x, half.y, half.z).unwrap());
+        let b = SlicedSolid::Box(Cuboid::centered(half.x, half.y, half.z).unwrap());
         let pose_a = Isometry3::identity();
         let mut work = WorkCounters::default();
         let got = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::ClosedForm);
@@ -135,7 +135,7 @@ fn bounded_plane_edges_agree_with_the_slicing() {
             ),
         );
         let pose_b = Isometry3::new(Vector3::new(0.1, 0.0, -0.2), Vector3::new(0.1, 0.2, 0.0));
-        let b = Other::Plane { plane, side };
+        let b = SlicedSolid::Plane { plane, side };
         // In the plane's frame the cylinder's pose above is relative to it.
         let pose_a = pose_b * pose_a;
         let mut work = WorkCounters::default();

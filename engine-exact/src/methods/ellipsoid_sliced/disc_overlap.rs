@@ -29,7 +29,7 @@
 //! Green's theorem: area `½∮(x dy − y dx)`, moments `⅓∮x(x dy − y dx)` and `⅓∮y(x dy − y dx)`;
 //! on arcs of ellipses these are trigonometric polynomials of degree 2, integrated exactly.
 
-use crate::pairs::disc_section::{Piece, cross, unit_disc_pieces};
+use crate::methods::disc_section::{Piece, cross, unit_disc_pieces};
 use nalgebra::{Complex, Matrix2, Matrix4, Schur, Vector2};
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 

@@ -1,20 +1,20 @@
 //! Box against a plane (bounded or not): exact convex clipping.
 //!
 //! An unbounded plane takes a shorter path with the same answer: the part of the box below
-//! the plane in closed form from the corner heights ([`super::box_half_space`]); a bounded
+//! the plane in closed form from the corner heights ([`half_space`]); a bounded
 //! plane's prism clips the box as a [`ConvexPolyhedron`].
 //!
 //! The plane's solid is the prism `z ≤ 0` (`z ≥ 0` when flipped) over its `[XMIN, XMAX] ×
 //! [YMIN, YMAX]` rectangle (infinite bounds drop their side). The box is clipped by the
 //! prism's planes in the plane's frame ([`crate::polyhedron`]); contact iff the intersection
-//! has positive volume. Normal, points, depth and area follow [`super::clipped`]: for an
+//! has positive volume. Normal, points, depth and area follow [`crate::methods::clipped`]: for an
 //! unbounded plane the normal is the plane's; over a bounded plane's edge it tilts towards
 //! the side face inside the box; a box wholly under the plane takes the plane's normal. The
 //! points lie on the line through the centroid along the normal.
 
-use super::box_half_space;
-use super::clipped::{self, HalfSpace, box_planes, unit_for};
+mod half_space;
 use crate::kernel::PairContact;
+use crate::methods::clipped::{self, HalfSpace, box_planes, unit_for};
 use crate::polyhedron::ConvexPolyhedron;
 use contact_core::geometry::{Cuboid, Plane};
 use contact_core::{Isometry3, Vector3};
@@ -31,7 +31,7 @@ pub(crate) fn contact(
     pose_plane: &Isometry3,
 ) -> Option<PairContact> {
     if plane.is_unbounded() {
-        return box_half_space::contact(cuboid, pose_box, side, pose_plane);
+        return half_space::contact(cuboid, pose_box, side, pose_plane);
     }
     bounded(cuboid, pose_box, plane, side, pose_plane)
 }

@@ -136,7 +136,7 @@ mod tests {
     use contact_core::geometry::TriangleMesh;
 
     fn boxes(boxes: &[(Point3, Vector3)]) -> TriangleMesh {
-        crate::pairs::mesh_box::boxes_surface(boxes)
+        crate::pairs::box_mesh::boxes_surface(boxes)
     }
 
     fn parts_of(mesh: &TriangleMesh) -> Vec<MeshPart> {

@@ -1,5 +1,5 @@
 //! A box against a closed triangle mesh (taken as exact), and a mesh against a bounded
-//! PLANE (the box that stands for it, [`super::bounded_plane`]): exact polyhedral
+//! PLANE (the box that stands for it, [`crate::methods::bounded_plane`]): exact polyhedral
 //! intersection, one contact per connected region.
 //!
 //! In the box's frame (centred, `|x_k| ≤ h_k`, lengths divided by a power of two near the
@@ -17,7 +17,7 @@
 //!   constant times the face's cap area, so the caps enter only by their areas, which come
 //!   from Green's theorem over the pieces bounding them; the clipped triangles are integrated
 //!   exactly (polynomials over triangles).
-//! - **Normal** (from the mesh into the box, SPEC §4 as [`super::clipped`] reads it): `S/|S|`,
+//! - **Normal** (from the mesh into the box, SPEC §4 as [`crate::methods::clipped`] reads it): `S/|S|`,
 //!   `S` the area vector of the mesh's surface inside the box. When it vanishes (`|S| ≤ 1e-12`
 //!   of that surface's area, or none): with no mesh surface inside, the box lies in the mesh
 //!   and the normal points from the centroid to the closest point of the mesh; otherwise the
@@ -40,13 +40,13 @@
 pub(crate) mod clip;
 pub(crate) mod faces;
 
-use super::clipped::unit_for;
 use super::mesh_plane::{PreparedMesh, closest_on_mesh, exit_along};
 use super::sphere_mesh::solid_angle;
 use crate::kernel::PairContact;
+use crate::methods::clipped::unit_for;
 use crate::ray_exit::box_exit;
 use clip::{Clipped, Edge, plane};
-use contact_core::geometry::{Cuboid, Plane};
+use contact_core::geometry::Cuboid;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use nalgebra::Translation3;
 
@@ -417,47 +417,4 @@ fn boxes_triangles(boxes: &[(Point3, Vector3)]) -> (Vec<Point3>, Vec<[u32; 3]>) 
         }
     }
     (vertices, triangles)
-}
-
-/// The contacts of `mesh` (at `pose_mesh`) with the bounded `plane` (at `pose_plane`,
-/// flipped when `side < 0`): the unbounded plane's clipping when every edge is out of the
-/// mesh's reach ([`super::bounded_plane::well_inside`]), otherwise [`prism_contacts`].
-pub(crate) fn bounded_plane_contacts(
-    mesh: &PreparedMesh,
-    pose_mesh: &Isometry3,
-    plane: &Plane,
-    side: f64,
-    pose_plane: &Isometry3,
-    work: &mut WorkCounters,
-    emit: &mut dyn FnMut(PairContact),
-) {
-    let centre = pose_mesh * mesh.centre;
-    if super::bounded_plane::well_inside(plane, pose_plane, &centre, mesh.radius) {
-        super::mesh_plane::contacts(mesh, pose_mesh, pose_plane, side, work, emit);
-        return;
-    }
-    prism_contacts(mesh, pose_mesh, plane, side, pose_plane, work, emit);
-}
-
-/// Contacts of `mesh` at `pose_mesh` (`a`) with the bounded `plane` (flipped when `side <
-/// 0`) at `pose_plane` (`b`): the mesh against the box standing for the plane about the mesh's
-/// ball.
-pub(crate) fn prism_contacts(
-    mesh: &PreparedMesh,
-    pose_mesh: &Isometry3,
-    plane: &Plane,
-    side: f64,
-    pose_plane: &Isometry3,
-    work: &mut WorkCounters,
-    emit: &mut dyn FnMut(PairContact),
-) {
-    let centre = pose_mesh * mesh.centre;
-    let Some((cuboid, pose_box)) =
-        super::bounded_plane::local_box(plane, side, pose_plane, &centre, mesh.radius)
-    else {
-        return;
-    };
-    contacts(&cuboid, &pose_box, mesh, pose_mesh, work, &mut |c| {
-        emit(c.swapped())
-    });
 }

@@ -5,9 +5,9 @@
 
 use super::mesh::mesh_contacts;
 use crate::kernel::PairContact;
+use crate::methods::solid_distance::Solid;
 use crate::pairs::mesh_plane::PreparedMesh;
-use crate::pairs::mesh_revolved;
-use crate::pairs::solid_distance::Solid;
+use crate::pairs::revolved_mesh;
 use crate::test_rng::Rng;
 use contact_core::geometry::{Cylinder, TriangleMesh};
 use contact_core::{Isometry3, Point3, Vector2, Vector3, WorkCounters};
@@ -68,7 +68,7 @@ fn dented_boxes() -> TriangleMesh {
         (Point3::new(-0.9, 0.0, 0.0), Vector3::new(0.5, 0.6, 0.4)),
         (Point3::new(0.8, 0.1, -0.2), Vector3::new(0.3, 0.5, 0.7)),
     ];
-    let mesh = crate::pairs::mesh_box::boxes_surface(&boxes);
+    let mesh = crate::pairs::box_mesh::boxes_surface(&boxes);
     let mut vertices = mesh.vertices().to_vec();
     for (k, (c, h)) in boxes.iter().enumerate() {
         // Corner 7 is (+, +, +): pulled towards the centre and down.
@@ -117,7 +117,7 @@ fn contacts(
     });
     if !closed {
         let solid = Solid::Cylinder(*cylinder);
-        mesh_revolved::contacts(&solid, pose_a, mesh, pose_b, &mut work, &mut |c| {
+        revolved_mesh::contacts(&solid, pose_a, mesh, pose_b, &mut work, &mut |c| {
             out.push(c)
         });
     }
@@ -178,7 +178,7 @@ fn convex_mesh_parts_agree_with_the_slicing() {
         (Point3::new(-0.9, 0.0, 0.0), Vector3::new(0.5, 0.6, 0.4)),
         (Point3::new(0.8, 0.1, -0.2), Vector3::new(0.3, 0.5, 0.7)),
     ];
-    let mesh = crate::pairs::mesh_box::boxes_surface(&boxes);
+    let mesh = crate::pairs::box_mesh::boxes_surface(&boxes);
     assert!(
         PreparedMesh::new(&mesh)
             .unwrap()
@@ -289,7 +289,7 @@ fn both_arms_of_a_u_are_left_to_the_slicing() {
     // Each region is the cylinder's stretch through an arm: the arm alone as a box mesh
     // (convex, in closed form) gives it.
     for x in [-0.65, 0.65] {
-        let arm = crate::pairs::mesh_box::boxes_surface(&[(
+        let arm = crate::pairs::box_mesh::boxes_surface(&[(
             Point3::new(x, 0.3, 0.4),
             Vector3::new(0.25, 0.3, 0.4),
         )]);

@@ -12,7 +12,7 @@
 
 use super::section::Crossing;
 use super::{Setup, Slice};
-use crate::pairs::mesh_box::{UnionFind, closed_loops};
+use crate::pairs::box_mesh::{UnionFind, closed_loops};
 use crate::pairs::mesh_plane::PreparedMesh;
 use contact_core::{Vector2, Vector3};
 

@@ -1,7 +1,7 @@
 //! A cylinder against a cylinder, a box or a bounded plane: the intersection's moments by
-//! slicing ([`super::sliced`]; two parallel cylinders and a box in closed form, two crossed
+//! slicing ([`crate::methods::sliced`]; two parallel cylinders and a box in closed form, two crossed
 //! ones by the divergence theorem over their lateral surfaces, `revolved_pair`),
-//! the contact from them by [`super::volume_contact`].
+//! the contact from them by [`crate::methods::volume_contact`].
 //!
 //! ## The slicing direction `n` (perpendicular to the first cylinder's axis)
 //! - **Cylinder–cylinder** (axes within `revolved_pair::PARALLEL` of parallel, and
@@ -11,12 +11,12 @@
 //!   itself and stays tiny however close to parallel the axes are; `b̂` is then projected on
 //!   the slicing planes (a change at round-off). **Parallel** axes (`â × b̂ = 0` exactly) are
 //!   not sliced: the intersection is a lens times an axial overlap, in closed form
-//!   ([`super::cylinder_parallel`]), and near-parallel axes (the general case, with no
+//!   ([`crate::methods::cylinder_parallel`]), and near-parallel axes (the general case, with no
 //!   branch) approach it continuously (1e-12 rad off: within 4e-12 of it, see the
 //!   characterization table).
 //! - **Cylinder–box, cylinder–bounded plane**: a box with an axis exactly parallel (or
 //!   opposite) to the cylinder's is not sliced: its section inside the disc times the axial
-//!   overlap, in closed form ([`super::cylinder_prism`]); a box at any other tilt is not
+//!   overlap, in closed form ([`crate::methods::cylinder_prism`]); a box at any other tilt is not
 //!   sliced either (the divergence theorem over the intersection's boundary, in closed form:
 //!   `cylinder_polyhedron`), nor is a bounded plane's prism (its faces cut to the cylinder's
 //!   reach), unless a face is within 1e-3 of parallel to the axis, where that closed form
@@ -26,7 +26,7 @@
 //!   a jump in the section, and three lines through the origin always leave a direction at
 //!   least 30° from each, so every face keeps `|g| ≥ 1/2` in-plane.
 //!
-//! ## The contact (SPEC §4, as [`super::volume_contact`] reads it)
+//! ## The contact (SPEC §4, as [`crate::methods::volume_contact`] reads it)
 //! One region (two convex solids meet in one convex piece; the bounded plane's solid is the
 //! prism `z ≤ 0`, or `z ≥ 0` when flipped, over its rectangle). Normal `−S_a/|S_a|`, `S_a` the
 //! area vector of the cylinder's surface inside the other solid; points where the line
@@ -39,22 +39,22 @@
 //! cylinder's nearest face normal (the bottom, then side, then top on ties); area a quarter of
 //! the intersection's surface. Touching (no volume) is no contact.
 
-use super::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
-use super::cylinder_parallel::{self, ParallelB};
-use super::cylinder_polyhedron;
-use super::cylinder_prism::{self, Prism};
 use super::revolved_pair;
-use super::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedMoments, SlicedPair};
-use super::solid_distance::{Solid, signed_distance};
-use super::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::kernel::PairContact;
+use crate::methods::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
+use crate::methods::cylinder_parallel::{self, ParallelB};
+use crate::methods::cylinder_polyhedron;
+use crate::methods::cylinder_prism::{self, Prism};
+use crate::methods::sliced::{Bound, MAX_B_CUTS, MAX_BOUNDS, SlicedMoments, SlicedPair};
+use crate::methods::solid_distance::{Solid, signed_distance};
+use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::ray_exit::{surface_point_along, surface_point_along_w};
 use contact_core::geometry::{Cuboid, Cylinder, Plane};
 use contact_core::{Isometry3, Matrix3, Point3, Vector2, Vector3, WorkCounters};
 
 /// The solid a cylinder is sliced against.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Other {
+pub(crate) enum SlicedSolid {
     /// A second cylinder.
     Cylinder(Cylinder),
     /// A box.
@@ -114,7 +114,7 @@ fn prism(plane: &Plane, side: f64) -> ([HalfSpace; 5], usize) {
 pub(crate) fn contact(
     a: &Cylinder,
     pose_a: &Isometry3,
-    b: &Other,
+    b: &SlicedSolid,
     pose_b: &Isometry3,
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
@@ -139,23 +139,23 @@ pub(crate) enum Method {
 pub(crate) fn contact_by(
     a: &Cylinder,
     pose_a: &Isometry3,
-    b: &Other,
+    b: &SlicedSolid,
     pose_b: &Isometry3,
     work: &mut WorkCounters,
     method: Method,
 ) -> Option<PairContact> {
     let (ra, hla) = (a.radius(), 0.5 * a.length());
     // A bounded plane with every edge out of reach is the unbounded plane, in closed form.
-    if let (Other::Plane { plane, side }, Method::ClosedForm) = (b, method) {
+    if let (SlicedSolid::Plane { plane, side }, Method::ClosedForm) = (b, method) {
         let centre = pose_a * Point3::new(0.0, 0.0, hla);
-        if super::bounded_plane::well_inside(plane, pose_b, &centre, ra.hypot(hla)) {
+        if crate::methods::bounded_plane::well_inside(plane, pose_b, &centre, ra.hypot(hla)) {
             return super::cylinder_plane::contact(a, pose_a, pose_b, *side, work);
         }
     }
     let size_b = match b {
-        Other::Cylinder(c) => c.radius().max(0.5 * c.length()),
-        Other::Box(c) => c.half_extents().norm(),
-        Other::Plane { .. } => 0.0,
+        SlicedSolid::Cylinder(c) => c.radius().max(0.5 * c.length()),
+        SlicedSolid::Box(c) => c.half_extents().norm(),
+        SlicedSolid::Plane { .. } => 0.0,
     };
     let unit = unit_for(ra.max(hla).max(size_b));
     // Everything in a's geometry frame first; the working frame is centred on a's centre.
@@ -163,7 +163,7 @@ pub(crate) fn contact_by(
     let rot_ab = pose_ab.rotation.to_rotation_matrix().into_inner();
     let centre_a = Vector3::new(0.0, 0.0, hla);
     let (prism_planes, prism_count) = match b {
-        Other::Plane { plane, side } => prism(plane, *side),
+        SlicedSolid::Plane { plane, side } => prism(plane, *side),
         _ => (
             [HalfSpace {
                 normal: Vector3::z(),
@@ -180,7 +180,7 @@ pub(crate) fn contact_by(
     }
     // A box at any other tilt: the divergence theorem over the intersection's boundary, in
     // closed form, unless a face is nearly parallel to the axis.
-    if let (Other::Box(c), Method::ClosedForm) = (b, method) {
+    if let (SlicedSolid::Box(c), Method::ClosedForm) = (b, method) {
         let centre = (pose_ab * c.center()).coords - centre_a;
         let half = c.half_extents();
         work.bounding_volume_tests += 1;
@@ -199,7 +199,7 @@ pub(crate) fn contact_by(
         }
     }
     // A bounded plane's prism, likewise (its faces cut to the cylinder's reach).
-    if let (Other::Plane { .. }, Method::ClosedForm) = (b, method) {
+    if let (SlicedSolid::Plane { .. }, Method::ClosedForm) = (b, method) {
         if let Some(m) = prism_moments(
             &prism_planes[..prism_count],
             (&rot_ab, &pose_ab.translation.vector, &centre_a),
@@ -220,7 +220,7 @@ pub(crate) fn contact_by(
     }
     // Crossed cylinders: the divergence theorem over the two lateral surfaces, unless they
     // only graze.
-    if let (Other::Cylinder(c), Method::ClosedForm) = (b, method) {
+    if let (SlicedSolid::Cylinder(c), Method::ClosedForm) = (b, method) {
         let axis = rot_ab.column(2);
         if axis.x.hypot(axis.y) >= revolved_pair::PARALLEL {
             let (a, c) = (Solid::Cylinder(*a), Solid::Cylinder(*c));
@@ -231,7 +231,7 @@ pub(crate) fn contact_by(
         }
     }
     let n = match b {
-        Other::Cylinder(_) => {
+        SlicedSolid::Cylinder(_) => {
             let axis = rot_ab.column(2);
             let rho = axis.x.hypot(axis.y);
             if rho > 0.0 {
@@ -240,10 +240,10 @@ pub(crate) fn contact_by(
                 Vector3::x()
             }
         }
-        Other::Box(_) => direction_away_from(
+        SlicedSolid::Box(_) => direction_away_from(
             &[rot_ab.column(0), rot_ab.column(1), rot_ab.column(2)].map(|c| c.into_owned()),
         ),
-        Other::Plane { .. } => {
+        SlicedSolid::Plane { .. } => {
             let mut normals = [Vector3::zeros(); 5];
             for (k, h) in prism_planes[..prism_count].iter().enumerate() {
                 normals[k] = rot_ab * h.normal;
@@ -275,7 +275,7 @@ pub(crate) fn contact_by(
         Vector3::new(ra, ra, hla) / unit,
     );
     match b {
-        Other::Cylinder(c) => {
+        SlicedSolid::Cylinder(c) => {
             let (r, hl) = (c.radius() / unit, 0.5 * c.length() / unit);
             let centre = to_f(&(pose_ab * Point3::new(0.0, 0.0, 0.5 * c.length())).coords);
             let axis = dir_f(&rot_ab.column(2).into_owned());
@@ -320,7 +320,7 @@ pub(crate) fn contact_by(
             pair.add_rim_plane_events();
             pair.add_cylinder_events(&centre, &Vector3::new(0.0, alpha, beta), r, hl);
         }
-        Other::Box(c) => {
+        SlicedSolid::Box(c) => {
             let centre = to_f(&(pose_ab * c.center()).coords);
             let axes = frame.tr_mul(&rot_ab);
             let half = c.half_extents() / unit;
@@ -360,7 +360,7 @@ pub(crate) fn contact_by(
             pair.add_polyhedron_events(&corners, &edges);
             pair.add_rim_plane_events();
         }
-        Other::Plane { plane, .. } => {
+        SlicedSolid::Plane { plane, .. } => {
             let to_world_f = frame.tr_mul(&rot_ab);
             let origin = to_f(&pose_ab.translation.vector);
             for (k, h) in prism_planes[..prism_count].iter().enumerate() {
@@ -466,7 +466,7 @@ fn prism_moments(
 /// they do not overlap. `None` for any other pose, which is sliced.
 fn aligned_moments(
     a: &Cylinder,
-    b: &Other,
+    b: &SlicedSolid,
     rot_ab: &Matrix3,
     pose_ab: &Isometry3,
     unit: f64,
@@ -474,7 +474,7 @@ fn aligned_moments(
     let (ra, la) = (a.radius() / unit, a.length() / unit);
     let along = |k: usize| rot_ab[(0, k)] == 0.0 && rot_ab[(1, k)] == 0.0;
     match b {
-        Other::Cylinder(c) if along(2) => {
+        SlicedSolid::Cylinder(c) if along(2) => {
             // b's frame has its origin on the bottom cap's centre, as a's does.
             let origin = pose_ab.translation.vector;
             let lb = c.length();
@@ -490,7 +490,7 @@ fn aligned_moments(
             };
             Some(cylinder_parallel::moments(ra, la, &other))
         }
-        Other::Box(c) => {
+        SlicedSolid::Box(c) => {
             let k = (0..3).find(|&k| along(k))?;
             let centre = pose_ab * c.center();
             let half = c.half_extents();
@@ -525,7 +525,7 @@ fn aligned_moments(
 fn finish(
     a: &Cylinder,
     pose_a: &Isometry3,
-    b: &Other,
+    b: &SlicedSolid,
     pose_b: &Isometry3,
     m: &SlicedMoments,
     (frame, centre_a, unit): (&Matrix3, &Vector3, f64),
@@ -546,9 +546,9 @@ fn finish(
     let solid_a = Solid::Cylinder(*a);
     let exit_a = |g: &Point3, d: &Vector3| surface_point_along_w(&solid_a, pose_a, g, d);
     let solid_b = match b {
-        Other::Cylinder(c) => Some(Solid::Cylinder(*c)),
-        Other::Box(c) => Some(Solid::Box(*c)),
-        Other::Plane { .. } => None,
+        SlicedSolid::Cylinder(c) => Some(Solid::Cylinder(*c)),
+        SlicedSolid::Box(c) => Some(Solid::Box(*c)),
+        SlicedSolid::Plane { .. } => None,
     };
     let exit_b = |g: &Point3, d: &Vector3| {
         let p = pose_b.inverse_transform_point(g);

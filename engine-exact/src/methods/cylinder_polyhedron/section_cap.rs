@@ -16,9 +16,9 @@
 //! that do not alternate, or more crossings than kept — the cap is not taken here (`None`)
 //! and the caller slices the pair.
 
-use crate::pairs::cylinder_parallel::segment_area_factor;
-use crate::pairs::disc_region::{DiscRegion, RimArc};
-use crate::pairs::mesh_revolved::section::{SlicedTriangle, clip_to_disc};
+use crate::methods::cylinder_parallel::segment_area_factor;
+use crate::methods::disc_region::{DiscRegion, RimArc};
+use crate::pairs::revolved_mesh::section::{SlicedTriangle, clip_to_disc};
 use contact_core::{Vector2, Vector3};
 use std::f64::consts::PI;
 

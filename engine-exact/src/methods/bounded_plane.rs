@@ -73,11 +73,9 @@ pub(crate) fn well_inside(
 mod tests {
     use super::*;
     use crate::kernel::PairContact;
-    use crate::pairs::cylinder_solid::{self, Other};
-    use crate::pairs::solid_distance::Solid;
-    use crate::pairs::{
-        box_revolved, cylinder_plane, ellipsoid_box, ellipsoid_plane, revolved_plane,
-    };
+    use crate::methods::solid_distance::Solid;
+    use crate::pairs::cylinder_sliced::{self, SlicedSolid};
+    use crate::pairs::{cylinder_plane, ellipsoid_box, ellipsoid_plane, revolved_plane};
     use contact_core::geometry::{Cylinder, Frustum, Torus};
     use contact_core::{UnitQuaternion, Vector3, WorkCounters};
 
@@ -128,13 +126,13 @@ mod tests {
                 &(pose * Point3::new(0.0, 0.0, 0.7)),
                 reach
             ));
-            let sliced = cylinder_solid::contact_by(
+            let sliced = cylinder_sliced::contact_by(
                 &cylinder,
                 &pose,
-                &Other::Plane { plane, side },
+                &SlicedSolid::Plane { plane, side },
                 &pose_plane,
                 &mut work,
-                cylinder_solid::Method::Sliced,
+                cylinder_sliced::Method::Sliced,
             );
             one(
                 sliced,
@@ -152,7 +150,7 @@ mod tests {
             ] {
                 let pose = at(0.6) * Isometry3::translation(0.0, 0.0, -middle);
                 let mut found = Vec::new();
-                box_revolved::prism_contacts(
+                crate::pairs::revolved_bounded_plane::prism_contacts(
                     &solid,
                     &pose,
                     &plane,
@@ -214,7 +212,7 @@ mod tests {
         }
         // A mesh (a box of 12 triangles): the box–mesh pair on the prism.
         let cuboid = contact_core::geometry::Cuboid::centered(0.7, 0.4, 0.5).unwrap();
-        let mesh = crate::pairs::mesh_box::box_mesh(&cuboid).unwrap();
+        let mesh = crate::pairs::box_mesh::box_mesh(&cuboid).unwrap();
         for k in 0..20 {
             let f = k as f64;
             let side = if k % 2 == 0 { 1.0 } else { -1.0 };
@@ -226,7 +224,7 @@ mod tests {
             );
             let mut work = WorkCounters::default();
             let (mut prism, mut half) = (Vec::new(), Vec::new());
-            crate::pairs::mesh_box::prism_contacts(
+            crate::pairs::mesh_bounded_plane::prism_contacts(
                 &mesh,
                 &pose,
                 &plane,

@@ -6,7 +6,7 @@
 //! sections and the side's arcs are those of the true region.
 
 use super::{FACE_CORNERS, Face};
-use crate::pairs::section::Polygon;
+use crate::methods::section::Polygon;
 use contact_core::{Vector2, Vector3};
 
 /// The faces of `∩ {n·x ≤ d}` over `planes` (unit normals) within `reach` of the origin,
