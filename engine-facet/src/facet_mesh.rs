@@ -54,6 +54,11 @@ pub struct FacetMesh {
     /// triangle): a tessellated sphere, whose contact with a plane is the sphere's
     /// (engine-facet's plane contact: `plane_support`).
     pub implied_sphere: Option<(Point3, f64)>,
+    /// The ellipsoid the mesh stands for, `(centre, semi-axes)` along the mesh's own axes, when
+    /// it is not a sphere and every corner lies on `Σ ((p − c)ᵢ/sᵢ)² = 1` to 1e-9 with its normal
+    /// along that surface's gradient to 1e-9 rad: a tessellated ellipsoid, whose contact with an
+    /// unbounded plane is the ellipsoid's (`plane_support::ellipsoid_on_plane`).
+    pub implied_ellipsoid: Option<(Point3, Vector3)>,
 }
 
 impl FacetMesh {
@@ -143,6 +148,11 @@ impl FacetMesh {
             .fold(0.0, f64::max);
         let implied_sphere =
             implied_sphere(closed, &centroid, &vertices, &triangles, &corner_normals);
+        let implied_ellipsoid = if implied_sphere.is_none() {
+            implied_ellipsoid(closed, &centroid, &vertices, &triangles, &corner_normals)
+        } else {
+            None
+        };
         Self {
             vertices,
             triangles,
@@ -159,6 +169,7 @@ impl FacetMesh {
             closed,
             pn_reach,
             implied_sphere,
+            implied_ellipsoid,
         }
     }
 
@@ -486,6 +497,41 @@ fn implied_sphere(
             .all(|(&v, n)| (vertices[v as usize] - centroid - n * radius).norm() <= 1e-9 * radius)
     });
     (on_sphere && radius > 0.0).then_some((*centroid, radius))
+}
+
+/// The axis-aligned ellipsoid about the volume centroid `c` that a closed mesh's corners and
+/// corner normals lie on, if they all do. The inverse squared semi-axes `w` are the least-squares
+/// solution of `w · (d ∘ d) = 1` over the vertices (`d = p − c`); every corner must then satisfy
+/// it to 1e-9 and carry the unit gradient `w ∘ d / |w ∘ d|` as its normal to 1e-9.
+fn implied_ellipsoid(
+    closed: bool,
+    centroid: &Point3,
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    corner_normals: &[[Vector3; 3]],
+) -> Option<(Point3, Vector3)> {
+    if !closed || vertices.len() < 6 {
+        return None;
+    }
+    let squares = |p: &Point3| (p - centroid).component_mul(&(p - centroid));
+    let (mut normal_matrix, mut rhs) = (nalgebra::Matrix3::<f64>::zeros(), Vector3::zeros());
+    for v in vertices {
+        let q = squares(v);
+        normal_matrix += q * q.transpose();
+        rhs += q;
+    }
+    let w = normal_matrix.lu().solve(&rhs)?;
+    if !w.iter().all(|&x| x.is_finite() && x > 0.0) {
+        return None;
+    }
+    let on_ellipsoid = triangles.iter().zip(corner_normals).all(|(t, normals)| {
+        t.iter().zip(normals).all(|(&v, n)| {
+            let p = vertices[v as usize];
+            let gradient = (p - centroid).component_mul(&w);
+            (w.dot(&squares(&p)) - 1.0).abs() <= 1e-9 && (gradient.normalize() - n).norm() <= 1e-9
+        })
+    });
+    on_ellipsoid.then(|| (*centroid, w.map(|x| 1.0 / x.sqrt())))
 }
 
 /// Permutes the per-triangle arrays to the new numbering (`old_of_new[k]` is the old index of

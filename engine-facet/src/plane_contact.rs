@@ -19,7 +19,9 @@
 
 use crate::contact_region::{LocalContact, add_polygon, clip, label_regions, new_node, union};
 use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
-use crate::plane_support::{Support, alone_contact, blended, sphere_on_plane, supports_by_region};
+use crate::plane_support::{
+    Support, alone_contact, blended, ellipsoid_on_plane, sphere_on_plane, supports_by_region,
+};
 use crate::scratch::{RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Vector3, WorkCounters};
@@ -44,6 +46,43 @@ pub(crate) fn mesh_plane(
         out.extend(found);
         return;
     }
+    if plane.is_unbounded()
+        && let Some((centre, semi)) = a.implied_ellipsoid
+    {
+        let Some(cap) = ellipsoid_on_plane(&centre.coords, &semi, &n, &height) else {
+            return;
+        };
+        if cap.weight < 1.0 {
+            // Deeper: blended with the facets' one region (none while they stay above).
+            let start = out.len();
+            facets_plane(a, plane, pose_a_plane, s, work, out);
+            match out.len() - start {
+                0 => out.push(alone_contact(&cap, &n)),
+                1 => out[start] = blended(&out[start], &cap, &n),
+                _ => {}
+            }
+        } else {
+            out.push(alone_contact(&cap, &n));
+        }
+        return;
+    }
+    facets_plane(a, plane, pose_a_plane, s, work, out);
+}
+
+/// The facets' contacts of mesh A with the plane (a tessellated sphere's blended with the
+/// sphere's support points); as [`mesh_plane`].
+fn facets_plane(
+    a: &FacetMesh,
+    plane: &Plane,
+    pose_a_plane: &Isometry3,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+    out: &mut Vec<LocalContact>,
+) {
+    let rot = pose_a_plane.rotation.to_rotation_matrix().into_inner();
+    let origin = pose_a_plane.translation.vector;
+    let n = rot.column(2).into_owned();
+    let height = |v: &Vector3| n.dot(&(v - origin));
     let [x0, x1] = plane.x_range();
     let [y0, y1] = plane.y_range();
     let bounded = !plane.is_unbounded();

@@ -24,10 +24,12 @@
 //! is blended with the facets' own contact (`plane_contact`) by a smoothstep down to nothing at
 //! `x ≥ 1`: depths
 //! linearly, points weighted by each answer's share of the depth, so the blend is continuous.
-//! Other meshes keep the facets' contact: off a sphere the cap's centroid leaves the support
-//! point's normal at third order (an ellipsoid's lies on the diameter through `q`), which the
-//! facets resolve as the tolerance rises and a local quadric does not, and the curvature taken
-//! per triangle would step where the support point crosses an edge. A support point is joined
+//! A tessellated ellipsoid ([`FacetMesh::implied_ellipsoid`]) answers as the ellipsoid
+//! ([`ellipsoid_on_plane`]): off a sphere the cap's centroid leaves the support point's normal
+//! (an ellipsoid's lies on the diameter through `q`), which a local quadric does not resolve
+//! but the ellipsoid's affine map to the unit ball does, at every depth. Other meshes keep the
+//! facets' contact: the curvature taken per triangle would step where the support point
+//! crosses an edge. A support point is joined
 //! to the facets' region with the nearest triangle (within two edge lengths); where none is, it
 //! makes a contact of its own (the sphere touches before its inscribed facets do).
 //!
@@ -79,6 +81,64 @@ pub(crate) fn sphere_on_plane(
         penetration: depth,
         area: std::f64::consts::PI * depth * (2.0 * radius - depth),
     }))
+}
+
+/// A tessellated ellipsoid (centre `c`, semi-axes `s` along the mesh's axes, `S = diag(s)`)
+/// against an unbounded plane of unit normal `n`, `height` the signed height above it: the
+/// ellipsoid's own contact, as the exact engine defines it. The map `x = c + S·y` sends the
+/// ellipsoid to the unit ball; with `k = |S n|` and the centre's height `d`, the cap's height
+/// there is `t = (k − d)/k`, its centroid `g = c − S² n · 3(2 − t)²/(4(3 − t)) / k`; the points
+/// are where the line through `g` along `n` meets the plane and leaves the ellipsoid, the depth
+/// their distance, the area the plane section `π·abc·(1 − σ²)/k` with `σ = min(−d/k, 0)` (the
+/// central section once the centre is below the plane).
+///
+/// `None`: no contact (the facets are inscribed, so they do not reach below the plane where
+/// the ellipsoid does not). Otherwise the answer with its blend weight: 1 while the cap is
+/// small in the unit ball (`x = √(2t) ≤ ½`, as a sphere's `√(2δ/R)`), falling to 0 at `x = 1`,
+/// below which the facets' contact is blended in ([`blended`], [`alone_contact`]).
+pub(crate) fn ellipsoid_on_plane(
+    centre: &Vector3,
+    semi: &Vector3,
+    n: &Vector3,
+    height: &impl Fn(&Vector3) -> f64,
+) -> Option<Support> {
+    let sn = semi.component_mul(n);
+    let k = sn.norm();
+    let d = height(centre);
+    let t = ((k - d) / k).min(2.0);
+    if t.is_nan() || t <= 0.0 {
+        return None;
+    }
+    let g_ball = 3.0 * (2.0 - t) * (2.0 - t) / (4.0 * (3.0 - t));
+    let g = centre - semi.component_mul(&sn) * (g_ball / k);
+    let exit = ellipsoid_exit(semi, &(g - centre), &(-n));
+    let q = g - n * exit;
+    let depth = exit - height(&g);
+    let sigma = (-d / k).min(0.0);
+    let abc = semi.x * semi.y * semi.z;
+    Some(Support {
+        q,
+        depth,
+        weight: blend_weight((2.0 * t).sqrt()),
+        area: std::f64::consts::PI * abc * (1.0 - sigma) * (1.0 + sigma) / k,
+    })
+}
+
+/// How far the ray from `p` (inside the ellipsoid of semi-axes `s` about the origin) along
+/// `u` goes before it leaves: the positive root of `|(p + τu) ⊘ s|² = 1`, taken without
+/// cancellation; 0 where `p` is not inside.
+fn ellipsoid_exit(s: &Vector3, p: &Vector3, u: &Vector3) -> f64 {
+    let (ps, us) = (p.component_div(s), u.component_div(s));
+    let (a, b, c) = (us.norm_squared(), ps.dot(&us), ps.norm_squared() - 1.0);
+    let disc = (b * b - a * c).max(0.0).sqrt();
+    if c >= 0.0 || a <= 0.0 {
+        return 0.0;
+    }
+    if b <= 0.0 {
+        (disc - b) / a
+    } else {
+        -c / (b + disc)
+    }
 }
 
 /// The smooth answer's weight for a cap whose longest semi-axis is `x` curvature radii:

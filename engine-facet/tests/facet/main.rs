@@ -5,6 +5,7 @@ mod concave_regions;
 mod convergence;
 mod engine;
 mod grazing_corner;
+mod implied_ellipsoid;
 mod obj_files;
 mod patches;
 mod pinned;
