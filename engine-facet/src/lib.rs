@@ -84,6 +84,7 @@ mod plane_support;
 mod prepared;
 mod scratch;
 mod smooth_patch;
+mod solid_on_face;
 pub mod surface_sums;
 pub mod tessellate;
 pub mod triangle_pair;

@@ -5,6 +5,7 @@ use crate::facet_mesh::FacetMesh;
 use crate::planar::{self, Planar, PlanarContact};
 use crate::plane_contact::mesh_plane;
 use crate::scratch::with_scratch;
+use crate::solid_on_face::implied_solid_on_face;
 use contact_core::geometry::Plane;
 use contact_core::{
     Contact, Isometry3, Point3, PreparedPair, PreparedStats, QueryError, WorkCounters, format_pose,
@@ -104,8 +105,26 @@ impl PreparedPair for PreparedFacetPair {
                     match (&a.shape, &b.shape) {
                         (Shape::Mesh(ma), Shape::Mesh(mb)) => {
                             let pose_ab = pose_wa.inv_mul(&pose_wb);
-                            mesh_mesh(ma, mb, &pose_ab, s, work, &mut local);
-                            contacts.extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
+                            if implied_solid_on_face(
+                                mb,
+                                ma,
+                                &pose_ab.inverse(),
+                                s,
+                                work,
+                                &mut local,
+                            ) {
+                                contacts.extend(
+                                    local
+                                        .iter()
+                                        .map(|c| to_world(&pose_wb, c, gj, gi).swapped()),
+                                );
+                            } else {
+                                if !implied_solid_on_face(ma, mb, &pose_ab, s, work, &mut local) {
+                                    mesh_mesh(ma, mb, &pose_ab, s, work, &mut local);
+                                }
+                                contacts
+                                    .extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
+                            }
                         }
                         (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
                             let pose_ab = pose_wa.inv_mul(&pose_wb);

@@ -173,8 +173,22 @@ fn first_bounce(samples: &[Sample]) -> (f64, f64, f64) {
 #[test]
 fn generic_orientation_ball_drops_rebound_as_the_oracle_at_every_damping() {
     let (k, e, dmax) = (1e10, 2.2, 1e-4);
-    for damping in [1e-9, 100.0, 1000.0] {
+    // On the ground plane, and on a ground box whose top face is that plane (the faceted
+    // engine meets the box's facets).
+    let on_box = |text: String| {
+        text.replace(
+            "GRAPHICS/2, PLANE, RM = 10",
+            "MARKER/11, PART = 1, QP = -1, -1, -0.2\nGRAPHICS/2, BOX, CORNER = 11, X = 2, Y = 2, Z = 0.2",
+        )
+    };
+    for (ground, damping) in [
+        ("plane", 1e-9),
+        ("plane", 100.0),
+        ("plane", 1000.0),
+        ("box", 100.0),
+    ] {
         let text = ball(0.1, "", k, e, damping, "");
+        let text = if ground == "box" { on_box(text) } else { text };
         let mut exact = None;
         for (name, engine) in engines() {
             let (samples, summary) = run(&text, engine.as_ref(), 0.16, 1e-5, 1e-5);
@@ -182,7 +196,7 @@ fn generic_orientation_ball_drops_rebound_as_the_oracle_at_every_damping() {
             let (ratio, peak_oracle) = impact_oracle(v_in, k, e, damping, dmax);
             let ratio_run = v_out / v_in;
             println!(
-                "damping {damping:e}, {name}: rebound {ratio_run:.6} (oracle {ratio:.6}), \
+                "{ground}, damping {damping:e}, {name}: rebound {ratio_run:.6} (oracle {ratio:.6}), \
                  peak {peak:.6e} (oracle {peak_oracle:.6e}), {} steps",
                 summary.integrator.steps
             );

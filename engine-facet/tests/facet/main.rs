@@ -11,6 +11,7 @@ mod patches;
 mod pinned;
 mod planar;
 mod planar_overlap;
+mod solid_on_face;
 mod stl_files;
 mod tessellation;
 mod threads;
