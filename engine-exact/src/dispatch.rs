@@ -80,8 +80,6 @@ pub(crate) struct Selected {
 const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the faceted engine (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY)";
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
-const CURVE_KNOTS: &str =
-    "the curve's knot vector could not be rebuilt from its breakpoints (repeated interior knots)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
 const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, a box or a mesh as a cavity around a box, cylinder, frustum, torus or ellipsoid (sphere included), one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
@@ -490,7 +488,7 @@ pub(crate) fn select(
             no_flip(flip_a, kernel)
         }
         (G::Point, G::Curve(curve)) => {
-            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            let curve = planar_curve(curve);
             no_flip(
                 flip_a,
                 Kernel::PointCurve {
@@ -500,7 +498,7 @@ pub(crate) fn select(
             )
         }
         (G::Circle(circle), G::Curve(curve)) => {
-            let curve = planar_curve(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+            let curve = planar_curve(curve);
             no_flip(
                 flip_a,
                 Kernel::CircleCurve {
@@ -533,7 +531,7 @@ pub(crate) fn select(
                 match g {
                     G::Arc(arc) => Ok(Chain::from_arc(arc.radius(), arc.range_angle(), side(flip))),
                     G::Curve(curve) => {
-                        let curve = PlanarCurve::new(curve).ok_or_else(|| no(CURVE_KNOTS))?;
+                        let curve = PlanarCurve::new(curve);
                         Ok(Chain::from_curve(&curve, side(flip)))
                     }
                     // Only arcs and curves reach here (the arm's patterns).
@@ -596,8 +594,8 @@ fn reversed(result: Result<Selected, Unsupported>) -> Result<Selected, Unsupport
     }
 }
 
-fn planar_curve(curve: &contact_core::geometry::Curve) -> Option<std::sync::Arc<PlanarCurve>> {
-    PlanarCurve::new(curve).map(std::sync::Arc::new)
+fn planar_curve(curve: &contact_core::geometry::Curve) -> std::sync::Arc<PlanarCurve> {
+    std::sync::Arc::new(PlanarCurve::new(curve))
 }
 
 /// A general ellipsoid against a box, a cylinder, a frustum or a torus (sliced), or the

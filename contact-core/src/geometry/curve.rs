@@ -203,6 +203,50 @@ impl Curve {
         )
     }
 
+    /// The knot span holding `u` (clamped to the domain): the index of the polynomial piece
+    /// that [`Self::point_in_span`] and its derivatives evaluate. A breakpoint belongs to the
+    /// span it starts (the domain's end to the last).
+    pub fn span(&self, u: f64) -> usize {
+        find_span(
+            &self.knots,
+            self.order - 1,
+            self.coords.len(),
+            self.clamp(u),
+        )
+    }
+
+    /// The point at `u` on the polynomial of knot span `span` (from [`Self::span`]), also for
+    /// `u` at or a little past the span's ends (where [`Self::point`] would switch pieces).
+    pub fn point_in_span(&self, span: usize, u: f64) -> Vector2 {
+        de_boor_in(&self.coords, &self.knots, self.order - 1, span, u)
+    }
+
+    /// dC/du at `u` on the polynomial of knot span `span`, as [`Self::point_in_span`].
+    pub fn derivative_in_span(&self, span: usize, u: f64) -> Vector2 {
+        de_boor_in(
+            &self.d1,
+            &self.knots[1..self.knots.len() - 1],
+            self.order - 2,
+            span - 1,
+            u,
+        )
+    }
+
+    /// d²C/du² at `u` on the polynomial of knot span `span` (zero for a polyline), as
+    /// [`Self::point_in_span`].
+    pub fn second_derivative_in_span(&self, span: usize, u: f64) -> Vector2 {
+        if self.order < 3 {
+            return Vector2::zeros();
+        }
+        de_boor_in(
+            &self.d2,
+            &self.knots[2..self.knots.len() - 2],
+            self.order - 3,
+            span - 2,
+            u,
+        )
+    }
+
     /// The outward unit normal at `u`: `tangent × z`, to the right of the direction of travel.
     /// `None` where the derivative vanishes (a cusp from repeated control points).
     pub fn normal(&self, u: f64) -> Option<Vector2> {
@@ -256,11 +300,13 @@ fn find_span(knots: &[f64], p: usize, n_ctrl: usize, u: f64) -> usize {
 
 /// De Boor evaluation of the degree-`p` spline with `ctrl` and `knots` at `u`.
 fn de_boor(ctrl: &[Vector2], knots: &[f64], p: usize, u: f64) -> Vector2 {
-    let s = find_span(knots, p, ctrl.len(), u);
-    let mut d: [Vector2; 4] = [Vector2::zeros(); 4];
-    for j in 0..=p {
-        d[j] = ctrl[s + j - p];
-    }
+    de_boor_in(ctrl, knots, p, find_span(knots, p, ctrl.len(), u), u)
+}
+
+/// De Boor's algorithm on the polynomial of knot span `s` (valid for `u` in or near it).
+fn de_boor_in(ctrl: &[Vector2], knots: &[f64], p: usize, s: usize, u: f64) -> Vector2 {
+    let mut d = [Vector2::zeros(); 4];
+    d[..=p].copy_from_slice(&ctrl[s - p..=s]);
     for r in 1..=p {
         for j in (r..=p).rev() {
             let i = s + j - p;
@@ -476,6 +522,40 @@ mod tests {
             assert!((fd - c.derivative(u)).norm() < 1e-6 * fd.norm().max(1.0));
             let fd2 = (c.derivative(u + h) - c.derivative(u - h)) / (2.0 * h);
             assert!((fd2 - c.second_derivative(u)).norm() < 1e-5 * fd2.norm().max(1.0));
+        }
+    }
+
+    #[test]
+    fn a_span_evaluates_its_own_polynomial_up_to_and_past_its_ends() {
+        for order in 2..=4 {
+            for closed in [false, true] {
+                let curve = Curve::new(&square(), order, closed, CurvePoints::Control).unwrap();
+                let [u0, u1] = curve.domain();
+                for k in 0..=200 {
+                    let u = u0 + (u1 - u0) * k as f64 / 200.0;
+                    let s = curve.span(u);
+                    assert_eq!(curve.point_in_span(s, u), curve.point(u).coords);
+                    assert_eq!(curve.derivative_in_span(s, u), curve.derivative(u));
+                    assert_eq!(
+                        curve.second_derivative_in_span(s, u),
+                        curve.second_derivative(u)
+                    );
+                }
+                // At a span's far end its own polynomial continues: for a polyline the
+                // derivative stays the segment's, where `derivative` takes the next one's.
+                let breaks = curve.breakpoints();
+                let (lo, hi) = (breaks[0], breaks[1]);
+                let s = curve.span(lo);
+                let inside = curve.derivative(0.5 * (lo + hi));
+                let at_end = curve.derivative_in_span(s, hi);
+                if order == 2 {
+                    assert_eq!(at_end, inside);
+                    assert_ne!(curve.derivative(hi), inside);
+                }
+                let h = 1e-6 * (hi - lo);
+                let slope = (curve.point_in_span(s, hi) - curve.point_in_span(s, hi - h)) / h;
+                assert!((slope - at_end).norm() < 1e-4 * at_end.norm().max(1.0));
+            }
         }
     }
 

@@ -464,7 +464,7 @@ mod tests {
         for order in 2..=4 {
             for closed in [false, true] {
                 let curve = Curve::new(&points, order, closed, CurvePoints::Control).unwrap();
-                let planar = PlanarCurve::new(&curve).unwrap();
+                let planar = PlanarCurve::new(&curve);
                 let chain = Chain::from_curve(&planar, 1.0);
                 let breaks = planar.breakpoints();
                 for (k, w) in breaks.windows(2).enumerate() {
