@@ -1,0 +1,215 @@
+//! B-spline curves and surfaces (rational or not) as Parasolid stores them: distinct knots
+//! with multiplicities, control vertices of dimension 2–4 (the last coordinate the weight
+//! when rational; the others are stored multiplied by it).
+
+/// A B-spline in one parameter with vector values of dimension `dim` (weights divided out).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Nurbs {
+    /// Degree p ≥ 1.
+    pub degree: usize,
+    /// Full knot vector (multiplicities expanded), length n + p + 1.
+    pub knots: Vec<f64>,
+    /// Control vertices, `dim` coordinates each, homogeneous (weight last) when rational.
+    pub vertices: Vec<f64>,
+    /// Coordinates per stored vertex (including the weight when rational).
+    pub stride: usize,
+    /// Whether the last coordinate is a weight.
+    pub rational: bool,
+}
+
+/// Expands distinct knots and multiplicities into a full knot vector.
+pub fn expand_knots(knots: &[f64], mult: &[i64]) -> Option<Vec<f64>> {
+    if knots.len() != mult.len() {
+        return None;
+    }
+    let mut out = Vec::new();
+    for (k, &m) in knots.iter().zip(mult) {
+        if !(0..=64).contains(&m) {
+            return None;
+        }
+        out.extend(std::iter::repeat_n(*k, m as usize));
+    }
+    Some(out)
+}
+
+impl Nurbs {
+    /// Checks the sizes: n vertices, n + p + 1 non-decreasing knots.
+    pub fn new(
+        degree: usize,
+        knots: Vec<f64>,
+        vertices: Vec<f64>,
+        stride: usize,
+        rational: bool,
+    ) -> Option<Self> {
+        if degree == 0 || stride == 0 || !vertices.len().is_multiple_of(stride) {
+            return None;
+        }
+        let n = vertices.len() / stride;
+        if n <= degree || knots.len() != n + degree + 1 {
+            return None;
+        }
+        if knots.windows(2).any(|w| w[1] < w[0]) || knots.iter().any(|k| !k.is_finite()) {
+            return None;
+        }
+        Some(Self {
+            degree,
+            knots,
+            vertices,
+            stride,
+            rational,
+        })
+    }
+
+    /// Number of control vertices.
+    pub fn count(&self) -> usize {
+        self.vertices.len() / self.stride
+    }
+
+    /// The parameter range `[t_p, t_n]`.
+    pub fn range(&self) -> (f64, f64) {
+        (self.knots[self.degree], self.knots[self.count()])
+    }
+
+    /// Distinct interior knots within the range (span boundaries), including both ends.
+    pub fn breaks(&self) -> Vec<f64> {
+        let (a, b) = self.range();
+        let mut out: Vec<f64> = self.knots[self.degree..=self.count()].to_vec();
+        out.dedup();
+        out.retain(|k| (a..=b).contains(k));
+        out
+    }
+
+    /// The value at `t` (clamped into the range), `dim = stride − rational` coordinates.
+    pub fn eval(&self, t: f64, out: &mut [f64]) {
+        let p = self.degree;
+        let n = self.count();
+        let (a, b) = self.range();
+        let t = t.clamp(a, b);
+        // Span k with knots[k] <= t < knots[k+1], k in p..n-1.
+        let mut k = self.knots[..n + 1]
+            .partition_point(|&x| x <= t)
+            .saturating_sub(1);
+        k = k.clamp(p, n - 1);
+        let s = self.stride;
+        let mut d = [[0.0f64; 4]; 16];
+        let m = p.min(15);
+        for (j, dj) in d.iter_mut().enumerate().take(m + 1) {
+            let v = &self.vertices[(k - p + j) * s..(k - p + j + 1) * s];
+            dj[..s].copy_from_slice(v);
+        }
+        for r in 1..=m {
+            for j in (r..=m).rev() {
+                let i = k - p + j;
+                let den = self.knots[i + p + 1 - r] - self.knots[i];
+                let alpha = if den > 0.0 {
+                    (t - self.knots[i]) / den
+                } else {
+                    0.0
+                };
+                let prev = d[j - 1];
+                for (x, y) in d[j].iter_mut().zip(prev).take(s) {
+                    *x = (1.0 - alpha) * y + alpha * *x;
+                }
+            }
+        }
+        let r = &d[m];
+        if self.rational {
+            let w = r[s - 1];
+            for c in 0..s - 1 {
+                out[c] = r[c] / w;
+            }
+        } else {
+            out[..s].copy_from_slice(&r[..s]);
+        }
+    }
+}
+
+/// A tensor-product B-spline surface: rows of u-curves, `v` varying slowest.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsSurface {
+    /// Degree in u.
+    pub u_degree: usize,
+    /// Degree in v.
+    pub v_degree: usize,
+    /// Full u knots.
+    pub u_knots: Vec<f64>,
+    /// Full v knots.
+    pub v_knots: Vec<f64>,
+    /// Vertices: `n_u` per row, `n_v` rows, `stride` coordinates each.
+    pub vertices: Vec<f64>,
+    /// Vertices in u.
+    pub n_u: usize,
+    /// Vertices in v.
+    pub n_v: usize,
+    /// Coordinates per vertex.
+    pub stride: usize,
+    /// Whether the last coordinate is a weight.
+    pub rational: bool,
+}
+
+impl NurbsSurface {
+    /// The parameter ranges.
+    pub fn range(&self) -> ((f64, f64), (f64, f64)) {
+        (
+            (self.u_knots[self.u_degree], self.u_knots[self.n_u]),
+            (self.v_knots[self.v_degree], self.v_knots[self.n_v]),
+        )
+    }
+
+    /// The point at (u, v): each row evaluated in u, then the column in v.
+    pub fn eval(&self, u: f64, v: f64) -> [f64; 3] {
+        let s = self.stride;
+        let mut column = Vec::with_capacity(self.n_v * s);
+        let mut tmp = [0.0; 4];
+        for row in 0..self.n_v {
+            let c = Nurbs {
+                degree: self.u_degree,
+                knots: self.u_knots.clone(),
+                vertices: self.vertices[row * self.n_u * s..(row + 1) * self.n_u * s].to_vec(),
+                stride: s,
+                rational: false,
+            };
+            c.eval(u, &mut tmp);
+            column.extend_from_slice(&tmp[..s]);
+        }
+        let c = Nurbs {
+            degree: self.v_degree,
+            knots: self.v_knots.clone(),
+            vertices: column,
+            stride: s,
+            rational: self.rational,
+        };
+        c.eval(v, &mut tmp);
+        [tmp[0], tmp[1], tmp[2]]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rational_quadratic_quarter_circle_lies_on_the_circle() {
+        // Quarter circle: (1,0), (1,1) weight √2/2, (0,1); homogeneous storage.
+        let w = std::f64::consts::FRAC_1_SQRT_2;
+        let c = Nurbs::new(
+            2,
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            vec![1.0, 0.0, 1.0, w, w, w, 0.0, 1.0, 1.0],
+            3,
+            true,
+        )
+        .unwrap();
+        let mut p = [0.0; 2];
+        for i in 0..=10 {
+            c.eval(i as f64 / 10.0, &mut p);
+            assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-14, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn sizes_that_do_not_fit_are_refused() {
+        assert!(Nurbs::new(3, vec![0.0; 5], vec![0.0; 12], 3, false).is_none());
+        assert!(expand_knots(&[0.0, 1.0], &[2]).is_none());
+    }
+}
