@@ -37,6 +37,9 @@ pub struct Edge {
     pub start: Option<usize>,
     /// End vertex.
     pub end: Option<usize>,
+    /// For an intersection curve, the two surfaces it is the intersection of (its stored
+    /// points are refined onto both).
+    pub surfaces: Option<Box<(Surface, Surface)>>,
 }
 
 /// A face.
@@ -86,6 +89,31 @@ fn chain<'p>(
         field = next;
     }
     Ok(out)
+}
+
+/// The two surfaces of an intersection curve node, when both are read.
+fn intersection_surfaces(
+    part: &Part,
+    index: u32,
+) -> Result<Option<Box<(Surface, Surface)>>, Error> {
+    let Some(node) = part.get(index) else {
+        return Ok(None);
+    };
+    let ids = part.ints(node, "surface")?;
+    if ids.len() != 2 {
+        return Ok(None);
+    }
+    let mut out = Vec::new();
+    for &i in ids {
+        let s = u32::try_from(i).ok().and_then(|i| part.get(i));
+        match s.map(|s| crate::geom::surface(part, s, 0)) {
+            Some(Ok(s)) => out.push(s),
+            _ => return Ok(None),
+        }
+    }
+    let b = out.pop();
+    let a = out.pop();
+    Ok(a.zip(b).map(Box::new))
 }
 
 struct Builder<'p> {
@@ -145,8 +173,12 @@ impl<'p> Builder<'p> {
             Some(f) => self.vertex(f)?,
             None => None,
         };
+        let mut surfaces = None;
         let (curve, with_curve) = if part.ptr(e, "curve")?.is_some() {
-            let (c, s, _) = curve_at(part, e, "curve", 0)?;
+            let (c, s, r) = curve_at(part, e, "curve", 0)?;
+            if r.node_type == ty::INTERSECTION {
+                surfaces = intersection_surfaces(part, r.index)?;
+            }
             (c, s)
         } else {
             // A tolerant edge: the + fin's own curve (fins run with the edge when +).
@@ -166,6 +198,7 @@ impl<'p> Builder<'p> {
             with_curve,
             start,
             end,
+            surfaces,
         });
         self.edge_of.insert(ei, self.edges.len() - 1);
         Ok(Some(self.edges.len() - 1))

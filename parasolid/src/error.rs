@@ -96,7 +96,7 @@ pub enum ErrorKind {
         what: String,
     },
     /// No body carries the attributes asked for.
-    #[error("no body has AdamsPartName = {part} and AdamsObjectName = {element} (bodies: {known})")]
+    #[error("no body of {part} has AdamsObjectName = {element} (bodies: {known})")]
     BodyNotFound {
         /// The part name asked for.
         part: String,

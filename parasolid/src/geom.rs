@@ -623,6 +623,7 @@ impl Surface {
         match self {
             Surface::Cone { .. } | Surface::Sphere { .. } => (Some(TAU), None),
             Surface::Torus { .. } => (Some(TAU), Some(TAU)),
+            Surface::Spun { profile, .. } if profile.is_periodic() => (Some(TAU), Some(TAU)),
             Surface::Spun { .. } => (None, Some(TAU)),
             Surface::Swept { section, .. } if section.is_periodic() => (Some(TAU), None),
             _ => (None, None),

@@ -135,7 +135,7 @@ pub struct NurbsSurface {
     pub u_knots: Vec<f64>,
     /// Full v knots.
     pub v_knots: Vec<f64>,
-    /// Vertices: `n_u` per row, `n_v` rows, `stride` coordinates each.
+    /// Vertices, v varying fastest (`n_v` per u-index), `stride` coordinates each.
     pub vertices: Vec<f64>,
     /// Vertices in u.
     pub n_u: usize,
@@ -156,30 +156,31 @@ impl NurbsSurface {
         )
     }
 
-    /// The point at (u, v): each row evaluated in u, then the column in v.
+    /// The point at (u, v): each v-column (the vertices are stored v fastest) evaluated at v,
+    /// then the resulting u-curve at u.
     pub fn eval(&self, u: f64, v: f64) -> [f64; 3] {
         let s = self.stride;
-        let mut column = Vec::with_capacity(self.n_v * s);
+        let mut row = Vec::with_capacity(self.n_u * s);
         let mut tmp = [0.0; 4];
-        for row in 0..self.n_v {
+        for i in 0..self.n_u {
             let c = Nurbs {
-                degree: self.u_degree,
-                knots: self.u_knots.clone(),
-                vertices: self.vertices[row * self.n_u * s..(row + 1) * self.n_u * s].to_vec(),
+                degree: self.v_degree,
+                knots: self.v_knots.clone(),
+                vertices: self.vertices[i * self.n_v * s..(i + 1) * self.n_v * s].to_vec(),
                 stride: s,
                 rational: false,
             };
-            c.eval(u, &mut tmp);
-            column.extend_from_slice(&tmp[..s]);
+            c.eval(v, &mut tmp);
+            row.extend_from_slice(&tmp[..s]);
         }
         let c = Nurbs {
-            degree: self.v_degree,
-            knots: self.v_knots.clone(),
-            vertices: column,
+            degree: self.u_degree,
+            knots: self.u_knots.clone(),
+            vertices: row,
             stride: s,
             rational: self.rational,
         };
-        c.eval(v, &mut tmp);
+        c.eval(u, &mut tmp);
         [tmp[0], tmp[1], tmp[2]]
     }
 }

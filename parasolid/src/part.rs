@@ -24,6 +24,8 @@ pub struct BodyName {
     pub part: Option<String>,
     /// Attribute `AdamsObjectName` (the GRAPHICS' ELEMENT), if set.
     pub element: Option<String>,
+    /// Attribute `UG2/ADAMS_ID`: the Adams id of the PART the body belongs to, if set.
+    pub adams_id: Option<i64>,
     /// Attribute `SDL/TYSA_DENSITY` in kg/m³, if set.
     pub density: Option<f64>,
 }
@@ -250,6 +252,7 @@ impl Part {
             index,
             part: None,
             element: None,
+            adams_id: None,
             density: None,
         };
         let mut next = self.ptr(body, "attributes_features")?;
@@ -271,7 +274,12 @@ impl Part {
                     Some(Value::Text(s)) => s.as_str(),
                     _ => "",
                 };
-                let first = self.ints(a, "fields")?.first().copied().unwrap_or(0);
+                let first = self
+                    .ints(a, "fields")?
+                    .iter()
+                    .copied()
+                    .find(|&f| f > 0)
+                    .unwrap_or(0);
                 let value = if first > 0 {
                     self.nodes.by_index.get(&(first as u32))
                 } else {
@@ -283,6 +291,7 @@ impl Part {
                     ("SDL/TYSA_DENSITY", Some(Value::Reals(r))) => {
                         name.density = r.first().copied()
                     }
+                    ("UG2/ADAMS_ID", Some(Value::Ints(r))) => name.adams_id = r.first().copied(),
                     _ => {}
                 }
             }
@@ -321,6 +330,47 @@ impl Part {
                     known,
                 })
             })
+    }
+
+    /// The body Adams names `element` on the PART with Adams id `part_id` (and name
+    /// `part_name` where the caller knows it): among the bodies whose AdamsObjectName is
+    /// `element` (names repeat across parts), the one whose `UG2/ADAMS_ID` is the part's id or
+    /// whose AdamsPartName is its name.
+    pub fn find_body_on_part(
+        &self,
+        part_id: u32,
+        part_name: Option<&str>,
+        element: &str,
+    ) -> Result<u32, Error> {
+        let names = self.body_names()?;
+        let found = names.iter().find(|n| {
+            n.element
+                .as_deref()
+                .is_some_and(|e| e.eq_ignore_ascii_case(element))
+                && (n.adams_id == Some(i64::from(part_id))
+                    || part_name.is_some_and(|p| {
+                        n.part.as_deref().is_some_and(|q| q.eq_ignore_ascii_case(p))
+                    }))
+        });
+        found.map(|n| n.index).ok_or_else(|| {
+            let known = names
+                .iter()
+                .map(|n| {
+                    format!(
+                        "{} (PART/{})/{}",
+                        n.part.as_deref().unwrap_or("?"),
+                        n.adams_id.map_or("?".to_string(), |i| i.to_string()),
+                        n.element.as_deref().unwrap_or("?")
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join(", ");
+            self.error(ErrorKind::BodyNotFound {
+                part: format!("PART/{part_id}"),
+                element: element.into(),
+                known,
+            })
+        })
     }
 
     /// The node at `index` (no reference check), for readers of this crate.

@@ -7,8 +7,9 @@
 //! within δ of the chord; intersection curves keep their stored points, with points added at
 //! chord midpoints (projected back onto both surfaces) where a chord deviates more than δ.
 
+use super::param::uv;
 use crate::brep::Edge;
-use crate::geom::Curve;
+use crate::geom::{Curve, Surface};
 use contact_core::Point3;
 use std::f64::consts::TAU;
 
@@ -25,6 +26,24 @@ pub fn segment_distance(p: &Point3, a: &Point3, b: &Point3) -> f64 {
         0.0
     };
     (p - (a + ab * t)).norm()
+}
+
+/// The parameter period of a closed curve that is not a circle or ellipse (a closed
+/// intersection curve or B-curve): its range's length when its ends meet.
+fn closed_period(c: &Curve) -> Option<(f64, f64)> {
+    if c.is_periodic() {
+        return None;
+    }
+    let (lo, hi) = c.range()?;
+    ((c.eval(lo) - c.eval(hi)).norm() < 1e-9 && hi > lo).then_some((lo, hi))
+}
+
+/// The point at `t`, taken modulo the period on a closed curve.
+fn eval_wrapped(c: &Curve, t: f64) -> Point3 {
+    match closed_period(c) {
+        Some((lo, hi)) if t > hi || t < lo => c.eval(lo + (t - lo).rem_euclid(hi - lo)),
+        _ => c.eval(t),
+    }
 }
 
 /// The parameters at which an edge starts and ends, in the edge's direction.
@@ -45,6 +64,18 @@ fn end_parameters(edge: &Edge, vertices: &[Point3]) -> Option<(f64, f64)> {
                     while sign * (t1 - t0) > TAU {
                         t1 -= sign * TAU;
                     }
+                    // Vertices of a tolerant edge may lie off its circle by more than they lie
+                    // apart: an arc that would leave a gap under a thousandth of a radian is
+                    // the short arc between near-coincident vertices, not a near-full circle.
+                    if TAU - sign * (t1 - t0) < 1e-3 {
+                        t1 -= sign * TAU;
+                    }
+                }
+            }
+            if let Some((lo, hi)) = closed_period(c) {
+                // An edge across a closed curve's start runs on past its end.
+                if sign * (t1 - t0) <= 0.0 {
+                    t1 += sign * (hi - lo);
                 }
             }
             Some((t0, t1))
@@ -86,8 +117,13 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
             let (lo, hi) = (t0.min(t1), t0.max(t1));
             let inner: Vec<f64> = (0..p.len())
                 .map(|i| i as f64)
+                .chain((1..p.len()).map(|i| (i + p.len() - 1) as f64))
+                .chain((0..p.len() - 1).map(|i| i as f64 - (p.len() - 1) as f64))
                 .filter(|&k| k > lo + 1e-9 && k < hi - 1e-9)
                 .collect();
+            let mut inner = inner;
+            inner.sort_by(f64::total_cmp);
+            inner.dedup();
             if t1 > t0 {
                 ts.extend(inner);
             } else {
@@ -130,7 +166,7 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
     if ts.len() < 2 {
         ts = vec![t0, t1];
     }
-    let mut pts: Vec<Point3> = ts.iter().map(|&t| c.eval(t)).collect();
+    let mut pts: Vec<Point3> = ts.iter().map(|&t| eval_wrapped(c, t)).collect();
     if let (Some(s), Some(e)) = (edge.start, edge.end) {
         pts[0] = vertices[s];
         let last = pts.len() - 1;
@@ -139,18 +175,83 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
         let last = pts.len() - 1;
         pts[last] = pts[0];
     }
-    if let Curve::Polyline(_) = c {
-        pts = densify(&pts, delta);
+    if let (Curve::Polyline(_), Some(surfaces)) = (c, edge.surfaces.as_deref()) {
+        pts = refine_on_surfaces(&pts, surfaces, delta);
     }
-    Some(pts)
+    // Points closer than δ/1000 to the one before (or to the end) add nothing but slivers.
+    let last = pts[pts.len() - 1];
+    let n = pts.len();
+    let mut kept = vec![pts[0]];
+    for (k, p) in pts.iter().enumerate().skip(1) {
+        let keep = k == n - 1
+            || ((p - kept[kept.len() - 1]).norm() > 1e-3 * delta
+                && (p - last).norm() > 1e-3 * delta);
+        if keep {
+            kept.push(*p);
+        }
+    }
+    Some(kept)
+}
+
+/// The point of both surfaces nearest `p`: alternating projections onto each (exact for
+/// analytic surfaces), which converge to the intersection where the surfaces cross.
+fn onto_both(p: &Point3, (s1, s2): &(Surface, Surface)) -> Point3 {
+    let mut q = *p;
+    for _ in 0..40 {
+        let a = project(s1, &q);
+        let b = project(s2, &a);
+        let done = (b - q).norm() < 1e-12;
+        q = b;
+        if done {
+            break;
+        }
+    }
+    q
+}
+
+fn project(s: &Surface, p: &Point3) -> Point3 {
+    let (u, v) = uv(s, p);
+    s.eval(u, v)
+}
+
+/// Stored intersection points with points added on both surfaces where a chord's midpoint
+/// deviates from the curve by more than δ.
+fn refine_on_surfaces(pts: &[Point3], surfaces: &(Surface, Surface), delta: f64) -> Vec<Point3> {
+    fn split(
+        a: Point3,
+        b: Point3,
+        s: &(Surface, Surface),
+        delta: f64,
+        depth: u32,
+        out: &mut Vec<Point3>,
+    ) {
+        let m = onto_both(&nalgebra_mid(&a, &b), s);
+        let dev = segment_distance(&m, &a, &b);
+        // A midpoint that lands far from the chord is another branch: keep the chord.
+        if dev > delta && dev < (b - a).norm() && depth < MAX_DEPTH {
+            split(a, m, s, delta, depth + 1, out);
+            split(m, b, s, delta, depth + 1, out);
+        } else {
+            out.push(b);
+        }
+    }
+    let mut out = vec![pts[0]];
+    for w in pts.windows(2) {
+        split(w[0], w[1], surfaces, delta, 0, &mut out);
+    }
+    out
+}
+
+fn nalgebra_mid(a: &Point3, b: &Point3) -> Point3 {
+    Point3::from((a.coords + b.coords) * 0.5)
 }
 
 /// Appends the parameters after `a` up to `b`, halving while a chord deviates more than δ.
 fn refine(c: &Curve, a: f64, b: f64, delta: f64, depth: u32, out: &mut Vec<f64>) {
-    let (pa, pb) = (c.eval(a), c.eval(b));
+    let (pa, pb) = (eval_wrapped(c, a), eval_wrapped(c, b));
     let dev = [0.25, 0.5, 0.75]
         .iter()
-        .map(|f| segment_distance(&c.eval(a + (b - a) * f), &pa, &pb))
+        .map(|f| segment_distance(&eval_wrapped(c, a + (b - a) * f), &pa, &pb))
         .fold(0.0, f64::max);
     if dev > delta && depth < MAX_DEPTH {
         let m = 0.5 * (a + b);
@@ -159,10 +260,4 @@ fn refine(c: &Curve, a: f64, b: f64, delta: f64, depth: u32, out: &mut Vec<f64>)
     } else {
         out.push(b);
     }
-}
-
-/// Stored intersection points are kept as they are: the chart's own chordal error bounds their
-/// deviation. (Refinement onto both surfaces is not done.)
-fn densify(pts: &[Point3], _delta: f64) -> Vec<Point3> {
-    pts.to_vec()
 }

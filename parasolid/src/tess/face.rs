@@ -149,14 +149,15 @@ pub fn triangulate(
         1 | 2 => {
             let p = period.ok_or("a loop winds round a direction that is not periodic")?;
             let seam_step = 0.05 * p;
-            polygons.push(seam_polygon(&mut ctx, &winding, p, seam_step)?);
+            let seam_u = seam_position(&holes, p);
+            polygons.push(seam_polygon(&mut ctx, &winding, p, seam_step, seam_u)?);
             let left = polygons[0]
                 .iter()
                 .map(|q| q.uv.x)
                 .fold(f64::INFINITY, f64::min);
             for mut h in holes {
-                let mean = h.iter().map(|q| q.uv.x).sum::<f64>() / h.len() as f64;
-                let shift = p * ((mean - left) / p).floor();
+                let lo = h.iter().map(|q| q.uv.x).fold(f64::INFINITY, f64::min);
+                let shift = p * ((lo - left) / p).floor();
                 for q in &mut h {
                     q.uv.x -= shift;
                 }
@@ -201,6 +202,7 @@ fn seam_polygon(
     winding: &[(Vec<Q>, i64)],
     p: f64,
     seam_step: f64,
+    seam_u: Option<f64>,
 ) -> Result<Vec<Q>, String> {
     let (a, wa) = &winding[0];
     if wa.abs() != 1 {
@@ -225,7 +227,35 @@ fn seam_polygon(
         out[last].uv.x = target;
         out
     };
-    let a_run = rotate(a, 0, *wa);
+    let off = |x: f64, target: f64| (x - target - p * ((x - target) / p).round()).abs();
+    // Without holes, the seam joins the closest pair of points of the two loops: the segment
+    // between an annulus' boundaries at their closest approach crosses neither.
+    let closest = if seam_u.is_none() && winding.len() == 2 {
+        let b = &winding[1].0;
+        let (su, sv) = seam_scale(ctx, a.iter().chain(b.iter()));
+        let mut best = (f64::INFINITY, 0, 0);
+        for (i, qa) in a.iter().enumerate() {
+            for (j, qb) in b.iter().enumerate() {
+                let du = off(qa.uv.x, qb.uv.x) * su;
+                let dv = (qa.uv.y - qb.uv.y) * sv;
+                let d = du * du + dv * dv;
+                if d < best.0 {
+                    best = (d, i, j);
+                }
+            }
+        }
+        Some((best.1, best.2))
+    } else {
+        None
+    };
+    let ia = match (seam_u, closest) {
+        (_, Some((i, _))) => i,
+        (Some(t), None) => (0..a.len())
+            .min_by(|&i, &j| off(a[i].uv.x, t).total_cmp(&off(a[j].uv.x, t)))
+            .unwrap_or(0),
+        (None, None) => 0,
+    };
+    let a_run = rotate(a, ia, *wa);
     let a_end = a_run[a_run.len() - 1].uv;
     let mut poly: Vec<Q> = a_run[..a_run.len() - 1].to_vec();
     let b_run: Vec<Q> = if winding.len() == 2 {
@@ -233,15 +263,14 @@ fn seam_polygon(
         if *wb != -wa {
             return Err("two loops wind round the face the same way".into());
         }
-        // The point of b nearest (in u, modulo the period) to a's seam end.
-        let ib = (0..b.len())
-            .min_by(|&i, &j| {
-                let d = |k: usize| {
-                    (b[k].uv.x - a_end.x - p * ((b[k].uv.x - a_end.x) / p).round()).abs()
-                };
-                d(i).total_cmp(&d(j))
-            })
-            .unwrap_or(0);
+        // The point of b closest to a's, or nearest the seam's u.
+        let target = seam_u.unwrap_or(a_end.x);
+        let ib = match closest {
+            Some((_, j)) => j,
+            None => (0..b.len())
+                .min_by(|&i, &j| off(b[i].uv.x, target).total_cmp(&off(b[j].uv.x, target)))
+                .unwrap_or(0),
+        };
         let mut run = rotate(b, ib, *wb);
         let shift = p * ((run[0].uv.x - a_end.x) / p).round();
         for q in &mut run {
@@ -252,7 +281,11 @@ fn seam_polygon(
         // One loop: the other side is a pole, where the surface closes to a point.
         let pole_v =
             pole(ctx.surface, ctx.swap, a).ok_or("one loop winds round a face that has no pole")?;
-        let pole = Point2::new(a_end.x, pole_v);
+        let pole_u = match seam_u {
+            Some(t) => t - p * ((t - a_end.x) / p).round(),
+            None => a_end.x,
+        };
+        let pole = Point2::new(pole_u, pole_v);
         let pole_id = ctx.new_point(&pole);
         vec![
             Q {
@@ -267,13 +300,25 @@ fn seam_polygon(
     };
     // Seam from a's end to b's start; its copy (one period back) from b's end to a's start.
     let (s0, s1) = (a_end, b_run[0].uv);
-    let m = (((s1 - s0).norm() / seam_step).ceil() as usize).max(1);
-    let seam: Vec<(Point2, u32)> = (1..m)
-        .map(|k| {
-            let q = s0 + (s1 - s0) * (k as f64 / m as f64);
-            (q, ctx.new_point(&q))
-        })
-        .collect();
+    // Through the gap between the holes: a's seam point, two points at u*, b's seam point.
+    let mut path = vec![s0];
+    if let Some(t) = seam_u {
+        let t = t - p * ((t - s0.x) / p).round();
+        path.push(Point2::new(t, s0.y + 0.25 * (s1.y - s0.y)));
+        path.push(Point2::new(t, s0.y + 0.75 * (s1.y - s0.y)));
+    }
+    path.push(s1);
+    let mut seam: Vec<(Point2, u32)> = Vec::new();
+    for (k, w) in path.windows(2).enumerate() {
+        let m = (((w[1] - w[0]).norm() / seam_step).ceil() as usize).max(1);
+        if k > 0 {
+            seam.push((w[0], ctx.new_point(&w[0])));
+        }
+        for i in 1..m {
+            let q = w[0] + (w[1] - w[0]) * (i as f64 / m as f64);
+            seam.push((q, ctx.new_point(&q)));
+        }
+    }
     poly.push(Q {
         uv: a_end,
         id: a_run[a_run.len() - 1].id,
@@ -288,6 +333,67 @@ fn seam_polygon(
         id,
     }));
     Ok(poly)
+}
+
+/// Lengths per unit u and v of the surface over the points' parameter box.
+fn seam_scale<'q>(ctx: &Ctx<'_>, pts: impl Iterator<Item = &'q Q>) -> (f64, f64) {
+    let (mut u0, mut u1, mut v0, mut v1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    for q in pts {
+        u0 = u0.min(q.uv.x);
+        u1 = u1.max(q.uv.x);
+        v0 = v0.min(q.uv.y);
+        v1 = v1.max(q.uv.y);
+    }
+    if ctx.swap {
+        let m = metric(ctx.surface, (v0, v1, u0, u1), f64::INFINITY);
+        (m.scale.1, m.scale.0)
+    } else {
+        metric(ctx.surface, (u0, u1, v0, v1), f64::INFINITY).scale
+    }
+}
+
+/// Where a seam should cut a periodic face so that no hole straddles it: the middle of the
+/// widest gap between the holes' u ranges (`None` without holes).
+fn seam_position(holes: &[Vec<Q>], p: f64) -> Option<f64> {
+    if holes.is_empty() {
+        return None;
+    }
+    let mut spans: Vec<(f64, f64)> = holes
+        .iter()
+        .map(|h| {
+            let lo = h.iter().map(|q| q.uv.x).fold(f64::INFINITY, f64::min);
+            let hi = h.iter().map(|q| q.uv.x).fold(f64::NEG_INFINITY, f64::max);
+            let start = lo.rem_euclid(p);
+            (start, start + (hi - lo))
+        })
+        .collect();
+    spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // Merge, then the widest gap (including the one wrapping past the period).
+    let mut merged: Vec<(f64, f64)> = Vec::new();
+    for s in spans {
+        match merged.last_mut() {
+            Some(m) if s.0 <= m.1 => m.1 = m.1.max(s.1),
+            _ => merged.push(s),
+        }
+    }
+    let mut best = (f64::NEG_INFINITY, 0.0);
+    for k in 0..merged.len() {
+        let end = merged[k].1;
+        let next = if k + 1 < merged.len() {
+            merged[k + 1].0
+        } else {
+            merged[0].0 + p
+        };
+        if next - end > best.0 {
+            best = (next - end, 0.5 * (end + next));
+        }
+    }
+    Some(best.1)
 }
 
 trait RoundTo {
