@@ -84,6 +84,21 @@ pub struct MeshFile {
     pub faceting_tolerance: Option<FacetingTolerance>,
     /// Label for messages (`GRAPHICS/id`).
     pub label: String,
+    /// For a Parasolid transmit file, the body it names; `None` for STL and OBJ files.
+    pub parasolid: Option<ParasolidBody>,
+}
+
+/// The body a `GRAPHICS/…, EXTERNAL, RM = marker, FILE = *.xmt_txt, ELEMENT = name` names in
+/// a Parasolid transmit file: the one whose attributes give the RM marker's part and the
+/// ELEMENT name (ELEMENT names repeat across parts).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParasolidBody {
+    /// The RM marker's PART id (the body's `UG2/ADAMS_ID`).
+    pub part: u32,
+    /// The ELEMENT (the body's `AdamsObjectName`).
+    pub element: String,
+    /// Model length units per metre (transmit files are in metres).
+    pub units_per_metre: f64,
 }
 
 /// What a GRAPHICS statement lowers to.

@@ -68,6 +68,25 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
     let probe = mesh_kind_probe();
     let mut out = Vec::new();
     for c in &model.contacts {
+        // A Parasolid body is tessellated: the faceted engine answers it, the exact one cannot.
+        if engine.name() == "exact" {
+            for (_, g) in c.i_geometries.iter().chain(&c.j_geometries) {
+                if let ContactGeometry::MeshFile(f) = g {
+                    if let Some(b) = &f.parasolid {
+                        out.push(Diagnostic::error(
+                            c.origin.clone(),
+                            format!(
+                                "CONTACT/{}: {} is body {} of the Parasolid file {}, which the exact engine does not model; the faceted engine answers it (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY, or --engine faceted)",
+                                c.id,
+                                f.label,
+                                b.element,
+                                f.path.file_name().map_or_else(|| f.path.display().to_string(), |n| n.to_string_lossy().into_owned())
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
         let i = instances(&c.i_geometries, &probe);
         let j = instances(&c.j_geometries, &probe);
         if let Err(e) = contact_core::check_lists(engine, &i, &j) {
@@ -113,8 +132,9 @@ pub fn check_run_settings(model: &Model, dataset: &std::path::Path) -> Vec<Diagn
     }
 }
 
-/// Every STL/OBJ file a CONTACT uses, read as `contact run` reads it: an unreadable or
-/// malformed mesh is an error at the CONTACT (each file reported once).
+/// Every STL/OBJ file and Parasolid body a CONTACT uses, read (and tessellated) as `contact
+/// run` reads it: an unreadable or malformed mesh, or a body that does not tessellate closed,
+/// is an error at the CONTACT (each file or body reported once).
 pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
     let mut seen = std::collections::BTreeSet::new();
     let mut out = Vec::new();
@@ -123,10 +143,11 @@ pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
             let ContactGeometry::MeshFile(file) = g else {
                 continue;
             };
-            if !seen.insert(file.path.clone()) {
+            let body = file.parasolid.as_ref().map(|b| (b.part, b.element.clone()));
+            if !seen.insert((file.path.clone(), body)) {
                 continue;
             }
-            if let Err(e) = contact_core::mesh_file::read_mesh_geometry(&file.path) {
+            if let Err(e) = contact_adams::parasolid_bodies::mesh_geometry(file) {
                 out.push(Diagnostic::error(
                     c.origin.clone(),
                     format!("CONTACT/{}: {}: {e}", c.id, file.label),

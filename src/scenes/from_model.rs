@@ -170,8 +170,7 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
 
 /// Reads an STL or OBJ file into a geometry placed on its part.
 fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let geometry =
-        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+    let geometry = contact_adams::parasolid_bodies::mesh_geometry(file)?;
     let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());

@@ -188,8 +188,7 @@ impl Lowering<'_> {
 
 /// A mesh file (STL) as a geometry on its part.
 fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let geometry =
-        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+    let geometry = crate::parasolid_bodies::mesh_geometry(file)?;
     let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());
