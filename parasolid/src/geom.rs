@@ -288,8 +288,15 @@ fn nurbs_surface(part: &Part, node: &Node) -> Result<NurbsSurface, Error> {
         n_v: nv as usize,
         stride: dim as usize,
         rational,
-    })
+        u_closed: false,
+        v_closed: false,
+    }
+    .with_closure(CLOSED))
 }
+
+/// Two ends of a curve (or two boundaries of a surface) within this distance (metres, a
+/// tenth of Parasolid's linear resolution) close it on itself.
+pub const CLOSED: f64 = 1e-9;
 
 /// Reads a curve node (`depth` bounds nesting, so a cycle of references is an error).
 pub fn curve(part: &Part, node: &Node, depth: u32) -> Result<Curve, Error> {
@@ -508,6 +515,26 @@ impl Curve {
         matches!(self, Curve::Ellipse { .. })
     }
 
+    /// The parameter interval over which a closed curve repeats: `[0, 2π]` for circles and
+    /// ellipses, the range of any other curve whose two ends lie within [`CLOSED`] (a periodic
+    /// or closed B-curve, a closed intersection curve); `None` for an open curve.
+    pub fn closed_range(&self) -> Option<(f64, f64)> {
+        if self.is_periodic() {
+            return Some((0.0, TAU));
+        }
+        let (lo, hi) = self.range()?;
+        ((self.eval(lo) - self.eval(hi)).norm() < CLOSED && hi > lo).then_some((lo, hi))
+    }
+
+    /// The point at `t`, taken modulo the range on a closed curve (see
+    /// [`Curve::closed_range`]) and clamped into it on an open one.
+    pub fn eval_wrapped(&self, t: f64) -> Point3 {
+        match self.closed_range() {
+            Some(r) => self.eval(crate::nurbs::wrap(t, r)),
+            None => self.eval(t),
+        }
+    }
+
     /// The point at parameter `t`.
     pub fn eval(&self, t: f64) -> Point3 {
         match self {
@@ -609,24 +636,29 @@ impl Surface {
                 small,
             } => c + (x * u.cos() + y * u.sin()) * (big + small * v.cos()) + a * (small * v.sin()),
             Surface::Nurbs(n) => Point3::from(n.eval(u, v)),
-            Surface::Swept { section, d } => section.eval(u) + d * v,
+            Surface::Swept { section, d } => section.eval_wrapped(u) + d * v,
             Surface::Spun { profile, b, a } => {
-                let q = profile.eval(u) - b;
+                let q = profile.eval_wrapped(u) - b;
                 let (s, c) = v.sin_cos();
                 b + q * c + a.cross(&q) * s + a * (a.dot(&q) * (1.0 - c))
             }
         }
     }
 
-    /// Periods of u and v (`None` where not periodic).
+    /// Periods of u and v (`None` where not periodic): 2π round an axis; a closed section or
+    /// profile's range (see [`Curve::closed_range`]); a closed B-surface's range.
     pub fn periods(&self) -> (Option<f64>, Option<f64>) {
+        let len = |r: Option<(f64, f64)>| r.map(|(lo, hi)| hi - lo);
         match self {
             Surface::Cone { .. } | Surface::Sphere { .. } => (Some(TAU), None),
             Surface::Torus { .. } => (Some(TAU), Some(TAU)),
-            Surface::Spun { profile, .. } if profile.is_periodic() => (Some(TAU), Some(TAU)),
-            Surface::Spun { .. } => (None, Some(TAU)),
-            Surface::Swept { section, .. } if section.is_periodic() => (Some(TAU), None),
-            _ => (None, None),
+            Surface::Spun { profile, .. } => (len(profile.closed_range()), Some(TAU)),
+            Surface::Swept { section, .. } => (len(section.closed_range()), None),
+            Surface::Nurbs(n) => {
+                let ((u0, u1), (v0, v1)) = n.range();
+                (n.u_closed.then_some(u1 - u0), n.v_closed.then_some(v1 - v0))
+            }
+            Surface::Plane { .. } => (None, None),
         }
     }
 }

@@ -145,9 +145,43 @@ pub struct NurbsSurface {
     pub stride: usize,
     /// Whether the last coordinate is a weight.
     pub rational: bool,
+    /// Whether the surface closes on itself in u (its `u = start` and `u = end` boundaries
+    /// coincide, as on a periodic B-surface): u is then taken modulo the range.
+    pub u_closed: bool,
+    /// Whether it closes in v.
+    pub v_closed: bool,
+}
+
+/// `t` taken into `[lo, hi]` modulo its length where it lies outside.
+pub fn wrap(t: f64, (lo, hi): (f64, f64)) -> f64 {
+    if (lo..=hi).contains(&t) || hi <= lo {
+        t
+    } else {
+        lo + (t - lo).rem_euclid(hi - lo)
+    }
 }
 
 impl NurbsSurface {
+    /// Sets [`NurbsSurface::u_closed`] and [`NurbsSurface::v_closed`] from the geometry: a
+    /// direction is closed when its two boundary curves coincide within `tol` at nine points.
+    pub fn with_closure(mut self, tol: f64) -> Self {
+        let ((u0, u1), (v0, v1)) = self.range();
+        let apart =
+            |a: [f64; 3], b: [f64; 3]| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt();
+        let f = |k: usize| k as f64 / 8.0;
+        self.u_closed = u1 > u0
+            && (0..=8).all(|k| {
+                let v = v0 + (v1 - v0) * f(k);
+                apart(self.eval(u0, v), self.eval(u1, v)) <= tol
+            });
+        self.v_closed = v1 > v0
+            && (0..=8).all(|k| {
+                let u = u0 + (u1 - u0) * f(k);
+                apart(self.eval(u, v0), self.eval(u, v1)) <= tol
+            });
+        self
+    }
+
     /// The parameter ranges.
     pub fn range(&self) -> ((f64, f64), (f64, f64)) {
         (
@@ -157,8 +191,12 @@ impl NurbsSurface {
     }
 
     /// The point at (u, v): each v-column (the vertices are stored v fastest) evaluated at v,
-    /// then the resulting u-curve at u.
+    /// then the resulting u-curve at u. On a closed direction the parameter is taken modulo
+    /// the range; otherwise it is clamped into it.
     pub fn eval(&self, u: f64, v: f64) -> [f64; 3] {
+        let ((u0, u1), (v0, v1)) = self.range();
+        let u = if self.u_closed { wrap(u, (u0, u1)) } else { u };
+        let v = if self.v_closed { wrap(v, (v0, v1)) } else { v };
         let s = self.stride;
         let mut row = Vec::with_capacity(self.n_u * s);
         let mut tmp = [0.0; 4];

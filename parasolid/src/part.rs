@@ -335,7 +335,9 @@ impl Part {
     /// The body Adams names `element` on the PART with Adams id `part_id` (and name
     /// `part_name` where the caller knows it): among the bodies whose AdamsObjectName is
     /// `element` (names repeat across parts), the one whose `UG2/ADAMS_ID` is the part's id or
-    /// whose AdamsPartName is its name.
+    /// whose AdamsPartName is its name. Where the bodies carry no `UG2/ADAMS_ID` and the
+    /// caller knows no part name, the one body whose AdamsObjectName is `element`, if only
+    /// one is.
     pub fn find_body_on_part(
         &self,
         part_id: u32,
@@ -343,15 +345,26 @@ impl Part {
         element: &str,
     ) -> Result<u32, Error> {
         let names = self.body_names()?;
-        let found = names.iter().find(|n| {
-            n.element
-                .as_deref()
-                .is_some_and(|e| e.eq_ignore_ascii_case(element))
-                && (n.adams_id == Some(i64::from(part_id))
-                    || part_name.is_some_and(|p| {
-                        n.part.as_deref().is_some_and(|q| q.eq_ignore_ascii_case(p))
-                    }))
+        let named: Vec<&BodyName> = names
+            .iter()
+            .filter(|n| {
+                n.element
+                    .as_deref()
+                    .is_some_and(|e| e.eq_ignore_ascii_case(element))
+            })
+            .collect();
+        let on_part = named.iter().find(|n| {
+            n.adams_id == Some(i64::from(part_id))
+                || part_name
+                    .is_some_and(|p| n.part.as_deref().is_some_and(|q| q.eq_ignore_ascii_case(p)))
         });
+        // A file without the part's id or name on its bodies: an ELEMENT only one body
+        // carries is that body.
+        let alone = match named.as_slice() {
+            [only] if only.adams_id.is_none() && part_name.is_none() => Some(only),
+            _ => None,
+        };
+        let found = on_part.or(alone);
         found.map(|n| n.index).ok_or_else(|| {
             let known = names
                 .iter()
@@ -371,6 +384,19 @@ impl Part {
                 known,
             })
         })
+    }
+
+    /// A part with no nodes, for tests that build bodies directly.
+    #[cfg(test)]
+    pub(crate) fn empty(file: &Path) -> Self {
+        Self {
+            file: file.to_path_buf(),
+            nodes: Nodes {
+                banner: String::new(),
+                schema: String::new(),
+                by_index: Default::default(),
+            },
+        }
     }
 
     /// The node at `index` (no reference check), for readers of this crate.

@@ -28,21 +28,13 @@ pub fn segment_distance(p: &Point3, a: &Point3, b: &Point3) -> f64 {
     (p - (a + ab * t)).norm()
 }
 
-/// The parameter period of a closed curve that is not a circle or ellipse (a closed
-/// intersection curve or B-curve): its range's length when its ends meet.
+/// The parameter range of a closed curve that is not a circle or ellipse (a closed
+/// intersection curve or B-curve).
 fn closed_period(c: &Curve) -> Option<(f64, f64)> {
     if c.is_periodic() {
-        return None;
-    }
-    let (lo, hi) = c.range()?;
-    ((c.eval(lo) - c.eval(hi)).norm() < 1e-9 && hi > lo).then_some((lo, hi))
-}
-
-/// The point at `t`, taken modulo the period on a closed curve.
-fn eval_wrapped(c: &Curve, t: f64) -> Point3 {
-    match closed_period(c) {
-        Some((lo, hi)) if t > hi || t < lo => c.eval(lo + (t - lo).rem_euclid(hi - lo)),
-        _ => c.eval(t),
+        None
+    } else {
+        c.closed_range()
     }
 }
 
@@ -166,7 +158,7 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
     if ts.len() < 2 {
         ts = vec![t0, t1];
     }
-    let mut pts: Vec<Point3> = ts.iter().map(|&t| eval_wrapped(c, t)).collect();
+    let mut pts: Vec<Point3> = ts.iter().map(|&t| c.eval_wrapped(t)).collect();
     if let (Some(s), Some(e)) = (edge.start, edge.end) {
         pts[0] = vertices[s];
         let last = pts.len() - 1;
@@ -248,10 +240,10 @@ fn nalgebra_mid(a: &Point3, b: &Point3) -> Point3 {
 
 /// Appends the parameters after `a` up to `b`, halving while a chord deviates more than δ.
 fn refine(c: &Curve, a: f64, b: f64, delta: f64, depth: u32, out: &mut Vec<f64>) {
-    let (pa, pb) = (eval_wrapped(c, a), eval_wrapped(c, b));
+    let (pa, pb) = (c.eval_wrapped(a), c.eval_wrapped(b));
     let dev = [0.25, 0.5, 0.75]
         .iter()
-        .map(|f| segment_distance(&eval_wrapped(c, a + (b - a) * f), &pa, &pb))
+        .map(|f| segment_distance(&c.eval_wrapped(a + (b - a) * f), &pa, &pb))
         .fold(0.0, f64::max);
     if dev > delta && depth < MAX_DEPTH {
         let m = 0.5 * (a + b);

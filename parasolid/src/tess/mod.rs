@@ -11,6 +11,8 @@
 pub mod edge;
 pub mod face;
 pub mod param;
+#[cfg(test)]
+mod solids_tests;
 
 use crate::brep::Body;
 use crate::error::{Error, ErrorKind};

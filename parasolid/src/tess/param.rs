@@ -3,6 +3,7 @@
 //! keep facets within the chord deviation δ.
 
 use crate::geom::{Surface, golden};
+use crate::nurbs::wrap;
 use contact_core::Point3;
 
 /// The parameters `(u, v)` of `p` (a point on or near the surface): exact for the analytic
@@ -42,23 +43,25 @@ pub fn uv(s: &Surface, p: &Point3) -> (f64, f64) {
         }
         Surface::Swept { section, d } => {
             let f = |t: f64| {
-                let q = p - section.eval(t);
+                let q = p - section.eval_wrapped(t);
                 (q - d * q.dot(d)).norm_squared()
             };
-            let u = search_1d(&f, section.range().unwrap_or((0.0, 1.0)));
-            (u, (p - section.eval(u)).dot(d))
+            let range = section.range().unwrap_or((0.0, 1.0));
+            let u = search_1d(&f, range, section.closed_range().is_some());
+            (u, (p - section.eval_wrapped(u)).dot(d))
         }
         Surface::Spun { profile, b, a } => {
             // The profile point at the same axial height and radius as p.
             let q = p - b;
             let (h, rho) = (q.dot(a), (q - a * q.dot(a)).norm());
             let f = |t: f64| {
-                let c = profile.eval(t) - b;
+                let c = profile.eval_wrapped(t) - b;
                 let (ch, cr) = (c.dot(a), (c - a * c.dot(a)).norm());
                 (ch - h).powi(2) + (cr - rho).powi(2)
             };
-            let u = search_1d(&f, profile.range().unwrap_or((0.0, 1.0)));
-            let c = profile.eval(u) - b;
+            let range = profile.range().unwrap_or((0.0, 1.0));
+            let u = search_1d(&f, range, profile.closed_range().is_some());
+            let c = profile.eval_wrapped(u) - b;
             let cr = c - a * c.dot(a);
             let qr = q - a * q.dot(a);
             let v = a.dot(&cr.cross(&qr)).atan2(cr.dot(&qr));
@@ -81,21 +84,36 @@ pub fn uv(s: &Surface, p: &Point3) -> (f64, f64) {
                     }
                 }
             }
-            // Alternate 1-D minimisations (coordinate descent) in shrinking brackets.
+            // Alternate 1-D minimisations (coordinate descent) in shrinking brackets, which
+            // run past the ends of a closed direction (the surface wraps there).
             let (mut u, mut v) = (best.1, best.2);
             let (mut hu, mut hv) = ((u1 - u0) / k as f64, (v1 - v0) / k as f64);
+            let bracket = |x: f64, h: f64, (lo, hi): (f64, f64), closed: bool| {
+                if closed {
+                    (x - h, x + h)
+                } else {
+                    ((x - h).max(lo), (x + h).min(hi))
+                }
+            };
             for _ in 0..12 {
-                u = golden(&|t| f(t, v), (u - hu).max(u0), (u + hu).min(u1));
-                v = golden(&|t| f(u, t), (v - hv).max(v0), (v + hv).min(v1));
+                let (a, b) = bracket(u, hu, (u0, u1), n.u_closed);
+                u = golden(&|t| f(t, v), a, b);
+                let (a, b) = bracket(v, hv, (v0, v1), n.v_closed);
+                v = golden(&|t| f(u, t), a, b);
                 hu *= 0.5;
                 hv *= 0.5;
             }
+            let u = if n.u_closed { wrap(u, (u0, u1)) } else { u };
+            let v = if n.v_closed { wrap(v, (v0, v1)) } else { v };
             (u, v)
         }
     }
 }
 
-fn search_1d(f: &dyn Fn(f64) -> f64, (lo, hi): (f64, f64)) -> f64 {
+/// The minimum of `f` over `[lo, hi]`: the best of 201 samples, refined by golden sections in
+/// the samples either side (past the ends when `closed`, the result then taken back into
+/// the range).
+fn search_1d(f: &dyn Fn(f64) -> f64, (lo, hi): (f64, f64), closed: bool) -> f64 {
     let n = 200;
     let step = (hi - lo) / n as f64;
     let mut best = (f64::INFINITY, lo);
@@ -106,7 +124,11 @@ fn search_1d(f: &dyn Fn(f64) -> f64, (lo, hi): (f64, f64)) -> f64 {
             best = (d, t);
         }
     }
-    golden(f, (best.1 - step).max(lo), (best.1 + step).min(hi))
+    if closed {
+        wrap(golden(f, best.1 - step, best.1 + step), (lo, hi))
+    } else {
+        golden(f, (best.1 - step).max(lo), (best.1 + step).min(hi))
+    }
 }
 
 /// Lengths per unit of u and v near the face (`scale`), and the largest parameter steps
