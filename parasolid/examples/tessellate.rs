@@ -45,14 +45,23 @@ fn main() -> std::process::ExitCode {
         }
     };
     let (mut triangles, mut failed) = (0usize, 0usize);
+    let mut slowest = Vec::new();
     for n in &names {
+        let began = Instant::now();
         let name = format!(
             "{}/{}",
             n.part.as_deref().unwrap_or("?"),
             n.element.as_deref().unwrap_or("?")
         );
         match Body::read(&part, n.index).and_then(|b| body_mesh(&part, &b, ft, &name)) {
-            Ok(m) => triangles += m.triangles().len(),
+            Ok(m) => {
+                triangles += m.triangles().len();
+                slowest.push((
+                    began.elapsed().as_secs_f64(),
+                    name.clone(),
+                    m.triangles().len(),
+                ));
+            }
             Err(e) => {
                 failed += 1;
                 eprintln!("body {} ({name}): {e}", n.index);
@@ -60,6 +69,10 @@ fn main() -> std::process::ExitCode {
         }
     }
     let total = start.elapsed();
+    slowest.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for (t, name, n) in slowest.iter().take(5) {
+        println!("  {name}: {t:.3} s, {n} triangles");
+    }
     println!(
         "{path}: schema {}, {} bodies ({failed} not closed), {triangles} triangles at FT {}; read {:.3} s, total {:.3} s",
         part.schema(),

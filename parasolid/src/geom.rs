@@ -529,6 +529,9 @@ impl Curve {
     /// The point at `t`, taken modulo the range on a closed curve (see
     /// [`Curve::closed_range`]) and clamped into it on an open one.
     pub fn eval_wrapped(&self, t: f64) -> Point3 {
+        if self.range().is_none_or(|(lo, hi)| (lo..=hi).contains(&t)) {
+            return self.eval(t);
+        }
         match self.closed_range() {
             Some(r) => self.eval(crate::nurbs::wrap(t, r)),
             None => self.eval(t),

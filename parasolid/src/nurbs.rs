@@ -190,37 +190,69 @@ impl NurbsSurface {
         )
     }
 
-    /// The point at (u, v): each v-column (the vertices are stored v fastest) evaluated at v,
-    /// then the resulting u-curve at u. On a closed direction the parameter is taken modulo
-    /// the range; otherwise it is clamped into it.
+    /// The point at (u, v): `Σ N_i(u) N_j(v) P_ij` over the (p+1)(q+1) vertices whose basis
+    /// functions are non-zero there (homogeneous when rational, the weight divided out after).
+    /// On a closed direction the parameter is taken modulo the range; otherwise it is clamped
+    /// into it.
     pub fn eval(&self, u: f64, v: f64) -> [f64; 3] {
         let ((u0, u1), (v0, v1)) = self.range();
-        let u = if self.u_closed { wrap(u, (u0, u1)) } else { u };
-        let v = if self.v_closed { wrap(v, (v0, v1)) } else { v };
-        let s = self.stride;
-        let mut row = Vec::with_capacity(self.n_u * s);
-        let mut tmp = [0.0; 4];
-        for i in 0..self.n_u {
-            let c = Nurbs {
-                degree: self.v_degree,
-                knots: self.v_knots.clone(),
-                vertices: self.vertices[i * self.n_v * s..(i + 1) * self.n_v * s].to_vec(),
-                stride: s,
-                rational: false,
-            };
-            c.eval(v, &mut tmp);
-            row.extend_from_slice(&tmp[..s]);
-        }
-        let c = Nurbs {
-            degree: self.u_degree,
-            knots: self.u_knots.clone(),
-            vertices: row,
-            stride: s,
-            rational: self.rational,
+        let u = if self.u_closed {
+            wrap(u, (u0, u1))
+        } else {
+            u.clamp(u0, u1)
         };
-        c.eval(u, &mut tmp);
-        [tmp[0], tmp[1], tmp[2]]
+        let v = if self.v_closed {
+            wrap(v, (v0, v1))
+        } else {
+            v.clamp(v0, v1)
+        };
+        let (ku, nu) = basis(&self.u_knots, self.u_degree, self.n_u, u);
+        let (kv, nv) = basis(&self.v_knots, self.v_degree, self.n_v, v);
+        let s = self.stride;
+        let mut acc = [0.0f64; 4];
+        for (i, bu) in nu.iter().enumerate().take(self.u_degree + 1) {
+            let row = (ku - self.u_degree + i) * self.n_v;
+            for (j, bv) in nv.iter().enumerate().take(self.v_degree + 1) {
+                let at = (row + kv - self.v_degree + j) * s;
+                let w = bu * bv;
+                for (a, x) in acc.iter_mut().zip(&self.vertices[at..at + s]) {
+                    *a += w * x;
+                }
+            }
+        }
+        if self.rational {
+            let w = acc[s - 1];
+            [acc[0] / w, acc[1] / w, acc[2] / w]
+        } else {
+            [acc[0], acc[1], acc[2]]
+        }
     }
+}
+
+/// The knot span `k` (`knots[k] ≤ t < knots[k+1]`, k in p..n−1) of `t` and the p+1 basis
+/// functions of degree p that are non-zero there, `N_{k−p} … N_k` (Cox–de Boor, computed
+/// by the triangular scheme; terms over a zero-length span are zero).
+fn basis(knots: &[f64], p: usize, n: usize, t: f64) -> (usize, [f64; 16]) {
+    let k = knots[..n + 1]
+        .partition_point(|&x| x <= t)
+        .saturating_sub(1)
+        .clamp(p, n - 1);
+    let mut out = [0.0; 16];
+    let (mut left, mut right) = ([0.0; 16], [0.0; 16]);
+    out[0] = 1.0;
+    for j in 1..=p.min(15) {
+        left[j] = t - knots[k + 1 - j];
+        right[j] = knots[k + j] - t;
+        let mut saved = 0.0;
+        for r in 0..j {
+            let den = right[r + 1] + left[j - r];
+            let temp = if den != 0.0 { out[r] / den } else { 0.0 };
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+    (k, out)
 }
 
 #[cfg(test)]
@@ -250,5 +282,65 @@ mod tests {
     fn sizes_that_do_not_fit_are_refused() {
         assert!(Nurbs::new(3, vec![0.0; 5], vec![0.0; 12], 3, false).is_none());
         assert!(expand_knots(&[0.0, 1.0], &[2]).is_none());
+    }
+
+    /// The surface evaluated as its construction reads: each v-column a B-curve evaluated at
+    /// v, then the u-curve through those points at u (homogeneous throughout).
+    fn by_columns(n: &NurbsSurface, u: f64, v: f64) -> [f64; 3] {
+        let s = n.stride;
+        let mut row = Vec::new();
+        let mut tmp = [0.0; 4];
+        for i in 0..n.n_u {
+            let c = Nurbs::new(
+                n.v_degree,
+                n.v_knots.clone(),
+                n.vertices[i * n.n_v * s..(i + 1) * n.n_v * s].to_vec(),
+                s,
+                false,
+            )
+            .unwrap();
+            c.eval(v, &mut tmp);
+            row.extend_from_slice(&tmp[..s]);
+        }
+        let c = Nurbs::new(n.u_degree, n.u_knots.clone(), row, s, n.rational).unwrap();
+        let mut out = [0.0; 3];
+        c.eval(u, &mut out);
+        out
+    }
+
+    #[test]
+    fn a_rational_surface_evaluates_as_its_columns_do() {
+        // Degree 2 × 3, 4 × 5 vertices, non-uniform knots, weights 0.5–2.
+        let (nu, nv) = (4, 5);
+        let mut vertices = Vec::new();
+        for i in 0..nu {
+            for j in 0..nv {
+                let w = 0.5 + ((i * 7 + j * 3) % 5) as f64 * 0.375;
+                let p = [i as f64, j as f64, ((i * j) as f64).sin()];
+                vertices.extend([p[0] * w, p[1] * w, p[2] * w, w]);
+            }
+        }
+        let n = NurbsSurface {
+            u_degree: 2,
+            v_degree: 3,
+            u_knots: vec![0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0],
+            v_knots: vec![0.0, 0.0, 0.0, 0.0, 0.3, 1.0, 1.0, 1.0, 1.0],
+            vertices,
+            n_u: nu,
+            n_v: nv,
+            stride: 4,
+            rational: true,
+            u_closed: false,
+            v_closed: false,
+        };
+        for a in 0..=10 {
+            for b in 0..=10 {
+                let (u, v) = (a as f64 / 10.0, b as f64 / 10.0);
+                let (p, q) = (n.eval(u, v), by_columns(&n, u, v));
+                for k in 0..3 {
+                    assert!((p[k] - q[k]).abs() < 1e-12, "({u}, {v}): {p:?} {q:?}");
+                }
+            }
+        }
     }
 }

@@ -7,7 +7,7 @@
 //! within δ of the chord; intersection curves keep their stored points, with points added at
 //! chord midpoints (projected back onto both surfaces) where a chord deviates more than δ.
 
-use super::param::uv;
+use super::param::{uv, uv_near};
 use crate::brep::Edge;
 use crate::geom::{Curve, Surface};
 use contact_core::Point3;
@@ -167,7 +167,9 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
         let last = pts.len() - 1;
         pts[last] = pts[0];
     }
-    if let (Curve::Polyline(_), Some(surfaces)) = (c, edge.surfaces.as_deref()) {
+    if let (Curve::Polyline(_), Some(surfaces), true) =
+        (c, edge.surfaces.as_deref(), delta.is_finite())
+    {
         pts = refine_on_surfaces(&pts, surfaces, delta);
     }
     // Points closer than δ/1000 to the one before (or to the end) add nothing but slivers.
@@ -189,9 +191,10 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
 /// analytic surfaces), which converge to the intersection where the surfaces cross.
 fn onto_both(p: &Point3, (s1, s2): &(Surface, Surface)) -> Point3 {
     let mut q = *p;
+    let (mut h1, mut h2) = (None, None);
     for _ in 0..40 {
-        let a = project(s1, &q);
-        let b = project(s2, &a);
+        let a = project(s1, &q, &mut h1);
+        let b = project(s2, &a, &mut h2);
         let done = (b - q).norm() < 1e-12;
         q = b;
         if done {
@@ -201,8 +204,13 @@ fn onto_both(p: &Point3, (s1, s2): &(Surface, Surface)) -> Point3 {
     q
 }
 
-fn project(s: &Surface, p: &Point3) -> Point3 {
-    let (u, v) = uv(s, p);
+/// The foot of `p` on `s`, searched near `hint` (the last foot's parameters), which it sets.
+fn project(s: &Surface, p: &Point3, hint: &mut Option<(f64, f64)>) -> Point3 {
+    let (u, v) = match *hint {
+        Some(h) => uv_near(s, p, h),
+        None => uv(s, p),
+    };
+    *hint = Some((u, v));
     s.eval(u, v)
 }
 

@@ -7,7 +7,7 @@
 //! normal, decides), so the two faces of an edge, whose fins run opposite ways, give a
 //! consistently oriented mesh.
 
-use super::param::{Metric, metric, uv};
+use super::param::{Metric, metric, uv, uv_near};
 use crate::geom::Surface;
 use contact_core::{Point2, Point3};
 use spade::handles::FixedVertexHandle;
@@ -96,8 +96,14 @@ pub fn triangulate(
     let mut rings: Vec<(Vec<Q>, i64, i64)> = Vec::new();
     for l in loops {
         let mut ring: Vec<Q> = Vec::with_capacity(l.len());
+        // The previous point's parameters as found (before unwrapping), to search near.
+        let mut raw: Option<(f64, f64)> = None;
         for (k, lp) in l.iter().enumerate() {
-            let (mut u, mut v) = uv(surface, &lp.p);
+            let (mut u, mut v) = match raw {
+                Some(h) => uv_near(surface, &lp.p, h),
+                None => uv(surface, &lp.p),
+            };
+            raw = Some((u, v));
             if k > 0 {
                 let last = ring[k - 1].uv;
                 u = unwrap(last.x, u, pu);

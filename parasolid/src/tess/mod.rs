@@ -76,7 +76,9 @@ pub fn characteristic_length(body: &Body) -> f64 {
     (hi - lo).norm()
 }
 
-/// Tessellates a body; `name` labels messages.
+/// Tessellates a body. A face whose triangulation fails between its edges' points (loops
+/// whose chords cross where two of them nearly touch) has its edges sampled again four
+/// times finer, and the body tessellated again, at most three times.
 pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Result<Mesh, Error> {
     let length = characteristic_length(body);
     if !(length.is_finite() && length > 0.0) {
@@ -86,15 +88,42 @@ pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Res
         }));
     }
     let delta = tolerance.chord_deviation(length);
+    let mut edge_delta = vec![delta; body.edges.len()];
+    let mut retries = 0;
+    loop {
+        match attempt(part, body, delta, &edge_delta) {
+            Ok(mesh) => return Ok(mesh),
+            Err((Some(f), _)) if retries < 3 => {
+                for fin in body.faces[f].loops.iter().flatten() {
+                    edge_delta[fin.edge] *= 0.25;
+                }
+                retries += 1;
+            }
+            Err((_, e)) => return Err(e),
+        }
+    }
+}
+
+/// One tessellation with each edge sampled at its own chord deviation; on failure, the
+/// index of the face whose triangulation failed, if that is what failed.
+fn attempt(
+    part: &Part,
+    body: &Body,
+    delta: f64,
+    edge_delta: &[f64],
+) -> Result<Mesh, (Option<usize>, Error)> {
     let mut vertices = body.vertices.clone();
     // Each edge's points as mesh vertex ids, from start to end.
     let mut edge_ids: Vec<Vec<u32>> = Vec::with_capacity(body.edges.len());
-    for e in &body.edges {
-        let pts = edge::sample(e, &body.vertices, delta).ok_or_else(|| {
-            part.error(ErrorKind::Geometry {
-                node: e.node.clone(),
-                what: "an edge with one vertex only, or a ring edge on an open curve".into(),
-            })
+    for (e, &d) in body.edges.iter().zip(edge_delta) {
+        let pts = edge::sample(e, &body.vertices, d).ok_or_else(|| {
+            (
+                None,
+                part.error(ErrorKind::Geometry {
+                    node: e.node.clone(),
+                    what: "an edge with one vertex only, or a ring edge on an open curve".into(),
+                }),
+            )
         })?;
         let n = pts.len();
         let mut ids = Vec::with_capacity(n);
@@ -117,7 +146,7 @@ pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Res
         edge_ids.push(ids);
     }
     let mut triangles = Vec::new();
-    for f in &body.faces {
+    for (index, f) in body.faces.iter().enumerate() {
         let mut loops = Vec::with_capacity(f.loops.len());
         for l in &f.loops {
             let mut ring: Vec<LoopPoint> = Vec::new();
@@ -129,10 +158,13 @@ pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Res
                     ids.iter().rev().copied().collect()
                 };
                 if k > 0 && ring.last().map(|p| p.id) != Some(run[0]) {
-                    return Err(part.error(ErrorKind::Geometry {
-                        node: f.node.clone(),
-                        what: "a loop's fins do not meet end to start".into(),
-                    }));
+                    return Err((
+                        None,
+                        part.error(ErrorKind::Geometry {
+                            node: f.node.clone(),
+                            what: "a loop's fins do not meet end to start".into(),
+                        }),
+                    ));
                 }
                 let skip = usize::from(k > 0);
                 ring.extend(run[skip..].iter().map(|&id| LoopPoint {
@@ -148,17 +180,24 @@ pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Res
             }
         }
         if loops.is_empty() {
-            return Err(part.error(ErrorKind::Geometry {
-                node: f.node.clone(),
-                what: "a face without a loop (a whole closed surface) is not tessellated".into(),
-            }));
+            return Err((
+                None,
+                part.error(ErrorKind::Geometry {
+                    node: f.node.clone(),
+                    what: "a face without a loop (a whole closed surface) is not tessellated"
+                        .into(),
+                }),
+            ));
         }
         let first_local = vertices.len() as u32;
         let ft = face::triangulate(&f.surface, &loops, delta, first_local).map_err(|what| {
-            part.error(ErrorKind::Geometry {
-                node: f.node.clone(),
-                what: format!("{} face: {what}", surface_kind(&f.surface)),
-            })
+            (
+                Some(index),
+                part.error(ErrorKind::Geometry {
+                    node: f.node.clone(),
+                    what: format!("{} face: {what}", surface_kind(&f.surface)),
+                }),
+            )
         })?;
         vertices.extend(ft.points);
         triangles.extend(ft.triangles);

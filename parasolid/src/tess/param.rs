@@ -88,13 +88,6 @@ pub fn uv(s: &Surface, p: &Point3) -> (f64, f64) {
             // run past the ends of a closed direction (the surface wraps there).
             let (mut u, mut v) = (best.1, best.2);
             let (mut hu, mut hv) = ((u1 - u0) / k as f64, (v1 - v0) / k as f64);
-            let bracket = |x: f64, h: f64, (lo, hi): (f64, f64), closed: bool| {
-                if closed {
-                    (x - h, x + h)
-                } else {
-                    ((x - h).max(lo), (x + h).min(hi))
-                }
-            };
             for _ in 0..12 {
                 let (a, b) = bracket(u, hu, (u0, u1), n.u_closed);
                 u = golden(&|t| f(t, v), a, b);
@@ -107,6 +100,102 @@ pub fn uv(s: &Surface, p: &Point3) -> (f64, f64) {
             let v = if n.v_closed { wrap(v, (v0, v1)) } else { v };
             (u, v)
         }
+    }
+}
+
+/// The parameters of `p` as [`uv`] finds them, searched first near `hint` (the parameters
+/// of a point close to `p`): on swept and spun surfaces the section or profile parameter is
+/// refined by golden sections within 1/64 of its range either side of the hint, and the
+/// whole range is searched only when the minimum lands on that bracket's edge. Other
+/// surfaces are inverted directly; a B-surface is searched near the hint and wholly only when
+/// that search does not land on it.
+pub fn uv_near(s: &Surface, p: &Point3, hint: (f64, f64)) -> (f64, f64) {
+    match s {
+        Surface::Swept { section, d } => {
+            let f = |t: f64| {
+                let q = p - section.eval_wrapped(t);
+                (q - d * q.dot(d)).norm_squared()
+            };
+            let range = section.range().unwrap_or((0.0, 1.0));
+            match local_1d(&f, hint.0, range, section.closed_range().is_some()) {
+                Some(u) => (u, (p - section.eval_wrapped(u)).dot(d)),
+                None => uv(s, p),
+            }
+        }
+        Surface::Spun { profile, b, a } => {
+            let q = p - b;
+            let (h, rho) = (q.dot(a), (q - a * q.dot(a)).norm());
+            let f = |t: f64| {
+                let c = profile.eval_wrapped(t) - b;
+                let (ch, cr) = (c.dot(a), (c - a * c.dot(a)).norm());
+                (ch - h).powi(2) + (cr - rho).powi(2)
+            };
+            let range = profile.range().unwrap_or((0.0, 1.0));
+            match local_1d(&f, hint.0, range, profile.closed_range().is_some()) {
+                Some(u) => {
+                    let c = profile.eval_wrapped(u) - b;
+                    let cr = c - a * c.dot(a);
+                    let qr = q - a * q.dot(a);
+                    (u, a.dot(&cr.cross(&qr)).atan2(cr.dot(&qr)))
+                }
+                None => uv(s, p),
+            }
+        }
+        Surface::Nurbs(n) => {
+            // Coordinate descent from the hint; kept only when it lands on the surface (within
+            // a tenth of Parasolid's resolution), as a loop point does.
+            let ((u0, u1), (v0, v1)) = n.range();
+            let f = |u: f64, v: f64| (Point3::from(n.eval(u, v)) - p).norm_squared();
+            let (mut u, mut v) = hint;
+            let (mut hu, mut hv) = ((u1 - u0) / 96.0, (v1 - v0) / 96.0);
+            for _ in 0..12 {
+                let (a, b) = bracket(u, hu, (u0, u1), n.u_closed);
+                u = golden(&|t| f(t, v), a, b);
+                let (a, b) = bracket(v, hv, (v0, v1), n.v_closed);
+                v = golden(&|t| f(u, t), a, b);
+                hu *= 0.5;
+                hv *= 0.5;
+            }
+            if f(u, v) <= 1e-18 {
+                let u = if n.u_closed { wrap(u, (u0, u1)) } else { u };
+                let v = if n.v_closed { wrap(v, (v0, v1)) } else { v };
+                (u, v)
+            } else {
+                uv(s, p)
+            }
+        }
+        _ => uv(s, p),
+    }
+}
+
+/// The bracket `x ± h`, cut to `[lo, hi]` unless the direction is closed.
+fn bracket(x: f64, h: f64, (lo, hi): (f64, f64), closed: bool) -> (f64, f64) {
+    if closed {
+        (x - h, x + h)
+    } else {
+        ((x - h).max(lo), (x + h).min(hi))
+    }
+}
+
+/// The minimum of `f` within 1/64 of `range` either side of `x` (past the range's ends when
+/// `closed`, the result then taken back into it); `None` when it lies on the bracket's edge
+/// inside the range (the minimum sought may lie beyond).
+fn local_1d(f: &dyn Fn(f64) -> f64, x: f64, (lo, hi): (f64, f64), closed: bool) -> Option<f64> {
+    let h = (hi - lo) / 64.0;
+    let (a, b) = if closed {
+        (x - h, x + h)
+    } else {
+        ((x - h).max(lo), (x + h).min(hi))
+    };
+    let t = golden(f, a, b);
+    let edge = 1e-6 * h;
+    let on_edge = (t - a < edge && (closed || a > lo)) || (b - t < edge && (closed || b < hi));
+    if on_edge {
+        None
+    } else if closed {
+        Some(wrap(t, (lo, hi)))
+    } else {
+        Some(t)
     }
 }
 
