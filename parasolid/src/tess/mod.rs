@@ -11,6 +11,7 @@
 pub mod edge;
 pub mod face;
 pub mod param;
+pub mod slivers;
 #[cfg(test)]
 mod solids_tests;
 
@@ -202,6 +203,7 @@ fn attempt(
         vertices.extend(ft.points);
         triangles.extend(ft.triangles);
     }
+    slivers::split_slivers(&vertices, &mut triangles);
     let mut mesh = Mesh {
         vertices,
         triangles,

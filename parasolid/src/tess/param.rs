@@ -106,9 +106,9 @@ pub fn uv(s: &Surface, p: &Point3) -> (f64, f64) {
 /// The parameters of `p` as [`uv`] finds them, searched first near `hint` (the parameters
 /// of a point close to `p`): on swept and spun surfaces the section or profile parameter is
 /// refined by golden sections within 1/64 of its range either side of the hint, and the
-/// whole range is searched only when the minimum lands on that bracket's edge. Other
-/// surfaces are inverted directly; a B-surface is searched near the hint and wholly only when
-/// that search does not land on it.
+/// whole range is searched only when the minimum lands on that bracket's edge; a B-surface
+/// is searched near the hint, and wholly only when that search does not land on it.
+/// Analytic surfaces are inverted directly.
 pub fn uv_near(s: &Surface, p: &Point3, hint: (f64, f64)) -> (f64, f64) {
     match s {
         Surface::Swept { section, d } => {
