@@ -40,11 +40,15 @@ pub fn read_part(path: &std::path::Path) -> Result<Arc<Part>, parasolid::Error> 
 }
 
 /// The mesh of a Parasolid body in model length units (GRAPHICS frame = RM marker frame),
-/// tessellated at `tolerance` (the GRAPHICS' FACETING_TOLERANCE, else Adams' default).
-pub fn body_geometry(file: &MeshFile, body: &ParasolidBody) -> Result<Arc<TriangleMesh>, String> {
-    let tolerance = file
-        .faceting_tolerance
-        .unwrap_or(FacetingTolerance::DEFAULT);
+/// tessellated at the GRAPHICS' FACETING_TOLERANCE, else at `model_tolerance` (the run's
+/// model-wide faceting tolerance: PREFERENCES/CONTACT_FACETING_TOLERANCE, its overrides, or
+/// Adams' default 300.0028).
+pub fn body_geometry(
+    file: &MeshFile,
+    body: &ParasolidBody,
+    model_tolerance: FacetingTolerance,
+) -> Result<Arc<TriangleMesh>, String> {
+    let tolerance = file.faceting_tolerance.unwrap_or(model_tolerance);
     let key = (
         file.path.clone(),
         body.part,
@@ -57,7 +61,7 @@ pub fn body_geometry(file: &MeshFile, body: &ParasolidBody) -> Result<Arc<Triang
     }
     let part = read_part(&file.path).map_err(|e| e.to_string())?;
     let index = part
-        .find_body_on_part(body.part, None, &body.element)
+        .find_body_on_part(body.part, body.part_name.as_deref(), &body.element)
         .map_err(|e| e.to_string())?;
     let name = format!("PART/{} {}", body.part, body.element);
     let b = Body::read(&part, index).map_err(|e| e.to_string())?;
@@ -73,10 +77,14 @@ pub fn body_geometry(file: &MeshFile, body: &ParasolidBody) -> Result<Arc<Triang
     Ok(mesh)
 }
 
-/// A mesh file's geometry: an STL or OBJ file as read, a Parasolid body tessellated.
-pub fn mesh_geometry(file: &MeshFile) -> Result<Geometry, String> {
+/// A mesh file's geometry: an STL or OBJ file as read, a Parasolid body tessellated (see
+/// [`body_geometry`] for `model_tolerance`).
+pub fn mesh_geometry(
+    file: &MeshFile,
+    model_tolerance: FacetingTolerance,
+) -> Result<Geometry, String> {
     match &file.parasolid {
-        Some(body) => Ok(Geometry::Mesh(body_geometry(file, body)?)),
+        Some(body) => Ok(Geometry::Mesh(body_geometry(file, body, model_tolerance)?)),
         None => contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string()),
     }
 }

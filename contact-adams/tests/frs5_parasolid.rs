@@ -54,12 +54,18 @@ fn parts_made_of_their_solids_match_mass_and_cm() {
         let mut f = f.clone();
         f.faceting_tolerance = Some(contact_core::FacetingTolerance::new(2400.0).unwrap());
         let f = &f;
-        let mesh = body_geometry(f, b).unwrap_or_else(|e| panic!("{}: {e}", f.label));
+        let mesh = body_geometry(f, b, contact_core::FacetingTolerance::DEFAULT)
+            .unwrap_or_else(|e| panic!("{}: {e}", f.label));
         let (v, moment) = volume_and_moment(&mesh);
         // The moment in the part frame: X_PG applied to the centroid, times the volume.
         let c = f.pose_part_geometry * Point3::from(moment / v);
         let part = read_part(&f.path).unwrap();
         let index = part.find_body_on_part(b.part, None, &b.element).unwrap();
+        // The part's name from its adams_view_name comment finds the same body through the
+        // AdamsPartName attribute alone (PART id 0 matches no UG2/ADAMS_ID).
+        let name = b.part_name.as_deref();
+        assert!(name.is_some(), "PART/{} has no name", b.part);
+        assert_eq!(part.find_body_on_part(0, name, &b.element).unwrap(), index);
         let density = part.body_name(index).unwrap().density;
         let e = per_part
             .entry(b.part)

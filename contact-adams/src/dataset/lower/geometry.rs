@@ -410,6 +410,7 @@ fn graphic(
                 }
                 let parasolid = Some(ParasolidBody {
                     part,
+                    part_name: model.parts.get(&part).and_then(|p| p.name.clone()),
                     element: element.to_string(),
                     units_per_metre: 1.0 / model.units.length_metre,
                 });
