@@ -136,23 +136,26 @@ fn centroid(m: &contact_core::geometry::TriangleMesh) -> contact_core::Point3 {
     contact_core::Point3::from(c / v)
 }
 
-/// Volume converges as FT rises at a measured order. Without the exact volume, the order
-/// comes from three tolerances in ratio 2 (Richardson): k = log2((V₁ − V₂)/(V₂ − V₄)). A chord
-/// of angle θ on radius r deviates r θ²/8 = δ ∝ 1/FT and cuts off an area ∝ r θ³ ∝ δ^{3/2}, with
-/// ∝ δ^{−1/2} chords round a curve: the volume error is ∝ δ, order 1. Measured on the housing
-/// (fwd_housing/SOLID5: planes, cylinders, cones, tori, a spun face, intersection curves).
+/// Volume and centroid converge as FT rises at a measured order. Without the exact values,
+/// the order comes from three tolerances in ratio 2 (Richardson): k = log2(|X₁ − X₂| / |X₂ −
+/// X₄|). A chord of angle θ on radius r deviates r θ²/8 = δ ∝ 1/FT and cuts off an area ∝ r θ³
+/// ∝ δ^{3/2}, with ∝ δ^{−1/2} chords round a curve: the volume error is ∝ δ, order 1, and so
+/// is the centroid's (the first moment's error is the same shell of thickness ∝ δ). Measured
+/// on the housing (fwd_housing/SOLID5: planes, cylinders, cones, tori, a spun face,
+/// intersection curves).
 #[test]
-fn volume_converges_at_a_measured_order() {
+fn volume_and_centroid_converge_at_a_measured_order() {
     let p = part();
     let i = p.find_body("fwd_housing", "SOLID5").unwrap();
     let b = Body::read(&p, i).unwrap();
-    let vol = |ft: f64| {
-        body_mesh(&p, &b, FacetingTolerance::new(ft).unwrap(), "SOLID5")
-            .unwrap()
-            .signed_volume()
+    let at = |ft: f64| {
+        let m = tessellate(&p, &b, FacetingTolerance::new(ft).unwrap()).unwrap();
+        (m.signed_volume(), m.centroid())
     };
-    let (v1, v2, v4) = (vol(400.0), vol(800.0), vol(1600.0));
+    let ((v1, c1), (v2, c2), (v4, c4)) = (at(400.0), at(800.0), at(1600.0));
     let order = ((v1 - v2) / (v2 - v4)).log2();
-    eprintln!("volumes {v1:e} {v2:e} {v4:e}: order {order:.2}");
-    assert!((0.7..=1.5).contains(&order), "order {order}");
+    let c_order = ((c1 - c2).norm() / (c2 - c4).norm()).log2();
+    eprintln!("volumes {v1:e} {v2:e} {v4:e}: order {order:.2}; centroid order {c_order:.2}");
+    assert!((0.7..=1.5).contains(&order), "volume order {order}");
+    assert!((0.7..=1.5).contains(&c_order), "centroid order {c_order}");
 }
