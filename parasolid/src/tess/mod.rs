@@ -79,8 +79,18 @@ pub fn characteristic_length(body: &Body) -> f64 {
 
 /// Tessellates a body. A face whose triangulation fails between its edges' points (loops
 /// whose chords cross where two of them nearly touch) has its edges sampled again four
-/// times finer, and the body tessellated again, at most three times.
+/// times finer, and the body tessellated again, at most twelve times.
 pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Result<Mesh, Error> {
+    tessellate_with_edges(part, body, tolerance, 1.0)
+}
+
+/// [`tessellate`] with every edge sampled at `edge_scale` times the chord deviation.
+fn tessellate_with_edges(
+    part: &Part,
+    body: &Body,
+    tolerance: FacetingTolerance,
+    edge_scale: f64,
+) -> Result<Mesh, Error> {
     let length = characteristic_length(body);
     if !(length.is_finite() && length > 0.0) {
         return Err(part.error(ErrorKind::Geometry {
@@ -89,12 +99,12 @@ pub fn tessellate(part: &Part, body: &Body, tolerance: FacetingTolerance) -> Res
         }));
     }
     let delta = tolerance.chord_deviation(length);
-    let mut edge_delta = vec![delta; body.edges.len()];
+    let mut edge_delta = vec![delta * edge_scale; body.edges.len()];
     let mut retries = 0;
     loop {
         match attempt(part, body, delta, &edge_delta) {
             Ok(mesh) => return Ok(mesh),
-            Err((Some(f), _)) if retries < 3 => {
+            Err((Some(f), _)) if retries < 12 => {
                 for fin in body.faces[f].loops.iter().flatten() {
                     edge_delta[fin.edge] *= 0.25;
                 }
@@ -232,14 +242,33 @@ pub fn surface_kind(s: &crate::geom::Surface) -> &'static str {
     }
 }
 
-/// Tessellates a body and checks it as the faceted engine checks a mesh file.
+/// Tessellates a body and checks it as the faceted engine checks a mesh file. A mesh that
+/// fails the checks (faces that meet badly where coarse edge chords pass close to other
+/// loops) is made again with every edge sampled four, then sixteen times finer.
 pub fn body_mesh(
     part: &Part,
     body: &Body,
     tolerance: FacetingTolerance,
     name: &str,
 ) -> Result<TriangleMesh, Error> {
-    let mesh = tessellate(part, body, tolerance)?;
+    let mut result = checked_mesh(part, body, tolerance, name, 1.0);
+    for scale in [0.25, 0.0625] {
+        if result.is_ok() {
+            break;
+        }
+        result = checked_mesh(part, body, tolerance, name, scale);
+    }
+    result
+}
+
+fn checked_mesh(
+    part: &Part,
+    body: &Body,
+    tolerance: FacetingTolerance,
+    name: &str,
+    edge_scale: f64,
+) -> Result<TriangleMesh, Error> {
+    let mesh = tessellate_with_edges(part, body, tolerance, edge_scale)?;
     // Drop vertices no triangle uses (edge points of faces that failed are errors already).
     let mut used = vec![u32::MAX; mesh.vertices.len()];
     let mut vertices = Vec::new();
