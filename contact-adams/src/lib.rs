@@ -37,6 +37,7 @@ pub mod dataset;
 pub mod engine_choice;
 pub mod expr;
 pub mod model;
+pub mod parasolid_bodies;
 pub mod run;
 pub mod session;
 pub mod svg_plot;

@@ -54,6 +54,9 @@ pub struct Part {
     pub velocity_w: Vector3,
     /// WX, WY, WZ: initial angular velocity, in ground.
     pub angular_velocity_w: Vector3,
+    /// The name Adams View gave it (`!adams_view_name='name'` before the statement), which
+    /// the bodies of a Parasolid file carry as their `AdamsPartName`.
+    pub name: Option<String>,
 }
 
 /// A marker (`MARKER/id`): a frame fixed on a part.
@@ -84,6 +87,23 @@ pub struct MeshFile {
     pub faceting_tolerance: Option<FacetingTolerance>,
     /// Label for messages (`GRAPHICS/id`).
     pub label: String,
+    /// For a Parasolid transmit file, the body it names; `None` for STL and OBJ files.
+    pub parasolid: Option<ParasolidBody>,
+}
+
+/// The body a `GRAPHICS/…, EXTERNAL, RM = marker, FILE = *.xmt_txt, ELEMENT = name` names in
+/// a Parasolid transmit file: the one whose attributes give the RM marker's part and the
+/// ELEMENT name (ELEMENT names repeat across parts).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParasolidBody {
+    /// The RM marker's PART id (the body's `UG2/ADAMS_ID`).
+    pub part: u32,
+    /// That PART's name, where the dataset gives it (the body's `AdamsPartName`).
+    pub part_name: Option<String>,
+    /// The ELEMENT (the body's `AdamsObjectName`).
+    pub element: String,
+    /// Model length units per metre (transmit files are in metres).
+    pub units_per_metre: f64,
 }
 
 /// What a GRAPHICS statement lowers to.

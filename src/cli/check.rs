@@ -62,15 +62,46 @@ fn instances(list: &[(u32, ContactGeometry)], probe: &Option<Geometry>) -> Vec<G
         .collect()
 }
 
+/// A CONTACT's Parasolid bodies, each an error for the exact engine: a body is tessellated,
+/// so the faceted engine is the one that answers it.
+fn parasolid_on_exact(c: &crate::model::ContactElement) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for (_, g) in c.i_geometries.iter().chain(&c.j_geometries) {
+        let ContactGeometry::MeshFile(f) = g else {
+            continue;
+        };
+        let Some(b) = &f.parasolid else { continue };
+        let file = f.path.file_name().map_or_else(
+            || f.path.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        out.push(Diagnostic::error(
+            c.origin.clone(),
+            format!(
+                "CONTACT/{}: {} is body {} of the Parasolid file {file}, which the exact engine does not model; the faceted engine answers it (PREFERENCES/CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY, or --engine faceted)",
+                c.id, f.label, b.element
+            ),
+        ));
+    }
+    out
+}
+
 /// Checks every CONTACT's pairs against `engine` (2-D/3-D mixes, unsupported pairs) and that
 /// its user force routines load. One error per failing check, at the CONTACT statement.
 pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnostic> {
     let probe = mesh_kind_probe();
     let mut out = Vec::new();
     for c in &model.contacts {
+        let refused = if engine.name() == "exact" {
+            parasolid_on_exact(c)
+        } else {
+            Vec::new()
+        };
         let i = instances(&c.i_geometries, &probe);
         let j = instances(&c.j_geometries, &probe);
-        if let Err(e) = contact_core::check_lists(engine, &i, &j) {
+        if !refused.is_empty() {
+            out.extend(refused);
+        } else if let Err(e) = contact_core::check_lists(engine, &i, &j) {
             out.push(Diagnostic::error(
                 c.origin.clone(),
                 format!("CONTACT/{}: {e}", c.id),
@@ -113,9 +144,19 @@ pub fn check_run_settings(model: &Model, dataset: &std::path::Path) -> Vec<Diagn
     }
 }
 
-/// Every STL/OBJ file a CONTACT uses, read as `contact run` reads it: an unreadable or
-/// malformed mesh is an error at the CONTACT (each file reported once).
+/// Every STL/OBJ file and Parasolid body a CONTACT uses, read (and tessellated) as `contact
+/// run` reads it: an unreadable or malformed mesh, or a body that does not tessellate closed,
+/// is an error at the CONTACT (each file or body reported once). Bodies are tessellated at
+/// the model-wide faceting tolerance a run without `--tolerance` uses.
 pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
+    let tolerance = crate::engine_choice::resolve(
+        &crate::engine_choice::Overrides::default(),
+        &|k| std::env::var(k).ok(),
+        Some(&model.preferences),
+    )
+    .map_or(model.preferences.faceting_tolerance, |s| {
+        s.faceting_tolerance
+    });
     let mut seen = std::collections::BTreeSet::new();
     let mut out = Vec::new();
     for c in &model.contacts {
@@ -123,10 +164,11 @@ pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
             let ContactGeometry::MeshFile(file) = g else {
                 continue;
             };
-            if !seen.insert(file.path.clone()) {
+            let body = file.parasolid.as_ref().map(|b| (b.part, b.element.clone()));
+            if !seen.insert((file.path.clone(), body)) {
                 continue;
             }
-            if let Err(e) = contact_core::mesh_file::read_mesh_geometry(&file.path) {
+            if let Err(e) = contact_adams::parasolid_bodies::mesh_geometry(file, tolerance) {
                 out.push(Diagnostic::error(
                     c.origin.clone(),
                     format!("CONTACT/{}: {}: {e}", c.id, file.label),

@@ -83,10 +83,12 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
                 let mut instance = match g {
                     ContactGeometry::Geometry(instance) => instance.clone(),
                     ContactGeometry::MeshFile(file) => {
-                        read_mesh(file).map_err(|message| ModelSceneError::Mesh {
-                            contact: c.id,
-                            message,
-                        })?
+                        read_mesh(file, model.preferences.faceting_tolerance).map_err(
+                            |message| ModelSceneError::Mesh {
+                                contact: c.id,
+                                message,
+                            },
+                        )?
                     }
                 };
                 // The sweep sets every geometry's tolerance.
@@ -168,10 +170,13 @@ fn contact_scene(model: &Model, c: &ContactElement) -> Result<Scene, ModelSceneE
     Ok(scene)
 }
 
-/// Reads an STL or OBJ file into a geometry placed on its part.
-fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let geometry =
-        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+/// Reads an STL or OBJ file, or tessellates a Parasolid body (at the GRAPHICS' faceting
+/// tolerance, else the dataset's `tolerance`), into a geometry placed on its part.
+fn read_mesh(
+    file: &MeshFile,
+    tolerance: contact_core::FacetingTolerance,
+) -> Result<GeometryInstance, String> {
+    let geometry = contact_adams::parasolid_bodies::mesh_geometry(file, tolerance)?;
     let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());

@@ -19,6 +19,7 @@ mod linear_cli;
 mod malformed;
 mod mutations;
 mod out_of_plane;
+mod parasolid;
 mod scenes_cli;
 mod select;
 mod select_runs;

@@ -171,11 +171,19 @@ const CASES: &[Case] = &[
         ],
     },
     Case {
-        name: "parasolid_file",
+        name: "missing_parasolid_file",
         body: "GRAPHICS/3, EXTERNAL, RM = 2, FILE = part.xmt_txt, ELEMENT = SOLID4\n",
         with_shapes: false,
         errors: &[
-            "data/bad.adm:7:38: error: GRAPHICS/3: FILE = part.xmt_txt is a Parasolid file, which contact cannot read; export the part as STL and give FILE = name.stl",
+            "data/bad.adm:7:38: error: GRAPHICS/3: FILE = part.xmt_txt: no such file (data/part.xmt_txt)",
+        ],
+    },
+    Case {
+        name: "binary_parasolid_file",
+        body: "GRAPHICS/3, EXTERNAL, RM = 2, FILE = part.x_b, ELEMENT = SOLID4\n",
+        with_shapes: false,
+        errors: &[
+            "data/bad.adm:7:38: error: GRAPHICS/3: FILE = part.x_b is a binary Parasolid file, which contact cannot read; write it as text (.x_t, .xmt_txt) or export the part as STL",
         ],
     },
     Case {

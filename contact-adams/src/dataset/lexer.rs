@@ -4,7 +4,8 @@
 //! - LF and CRLF line endings; a leading UTF-8 byte-order mark is skipped.
 //! - A dataset's (`.adm`) first line is the title, free text.
 //! - `!` starts a comment that runs to the end of the line; blank and comment lines are skipped
-//!   and do not end a statement.
+//!   and do not end a statement. A comment's `adams_view_name='name'` (Adams View writes one
+//!   before each element) names the statement that follows.
 //! - A line whose first non-blank character is `,` continues the previous statement.
 //! - In a command file (`.acf`) a line ending in `&` continues on the next line, and the first
 //!   lines without a `/` (before any command) name the dataset and the output files.
@@ -39,6 +40,16 @@ pub struct Segment {
 pub struct RawStatement {
     /// The lines, in order; never empty.
     pub segments: Vec<Segment>,
+    /// The name Adams View gave the element, from a comment `adams_view_name='name'` on the
+    /// lines between the previous statement and this one.
+    pub view_name: Option<String>,
+}
+
+/// The name in a comment's `adams_view_name='name'`, if it has one.
+fn view_name(comment: &str) -> Option<String> {
+    let rest = &comment[comment.find("adams_view_name='")? + "adams_view_name='".len()..];
+    let name = &rest[..rest.find('\'')?];
+    (!name.is_empty()).then(|| name.to_string())
 }
 
 impl RawStatement {
@@ -76,6 +87,7 @@ pub fn split_lines(text: &str, kind: FileKind) -> Lines {
     let mut out = Lines::default();
     let mut current: Option<RawStatement> = None;
     let mut ampersand_open = false;
+    let mut pending_name: Option<String> = None;
     for (index, raw_line) in text.split('\n').enumerate() {
         let line_no = u32::try_from(index + 1).unwrap_or(u32::MAX);
         let line = raw_line.strip_suffix('\r').unwrap_or(raw_line);
@@ -87,7 +99,12 @@ pub fn split_lines(text: &str, kind: FileKind) -> Lines {
             continue;
         }
         let without_comment = match line.find('!') {
-            Some(at) => &line[..at],
+            Some(at) => {
+                if let Some(name) = view_name(&line[at..]) {
+                    pending_name = Some(name);
+                }
+                &line[..at]
+            }
             None => line,
         };
         let trimmed_end = without_comment.trim_end();
@@ -144,6 +161,7 @@ pub fn split_lines(text: &str, kind: FileKind) -> Lines {
         let is_stop = kind == FileKind::Commands && bare_word && first_word == "STOP";
         current = Some(RawStatement {
             segments: vec![segment],
+            view_name: pending_name.take(),
         });
         if is_stop {
             if let Some(done) = current.take() {
@@ -162,6 +180,18 @@ pub fn split_lines(text: &str, kind: FileKind) -> Lines {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_view_name_comment_names_the_next_statement() {
+        let text = "t\nPART/1, GROUND\n!\n!   adams_view_name='fwd_housing'\nPART/9\n, MASS = 1\n! adams_view_name=''\nMARKER/2\n";
+        let lines = split_lines(text, FileKind::Dataset);
+        let names: Vec<Option<&str>> = lines
+            .statements
+            .iter()
+            .map(|s| s.view_name.as_deref())
+            .collect();
+        assert_eq!(names, [None, Some("fwd_housing"), None]);
+    }
 
     #[test]
     fn continuation_comments_and_end() {

@@ -83,6 +83,8 @@ pub struct Statement {
     pub id: Option<(u32, Loc)>,
     /// The arguments in the order written (none for statements that are not modelled).
     pub args: Vec<Arg>,
+    /// The name a comment `adams_view_name='name'` before it gives (see the lexer).
+    pub view_name: Option<String>,
 }
 
 impl Statement {
@@ -307,6 +309,7 @@ fn parse_statement(
         loc: name_loc,
         id: None,
         args: Vec::new(),
+        view_name: raw.view_name.clone(),
     };
     cur.skip_ws();
     let has_slash = cur.peek().is_some_and(|c| c.c == '/');

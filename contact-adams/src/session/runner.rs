@@ -9,7 +9,7 @@ use crate::engine_choice::{self, Overrides};
 use crate::model::{MeshFile, Model};
 use crate::run::lower::{LowerError, LoweredModel, lower};
 use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
-use contact_core::{GeometryEngine, GeometryInstance, WorkCounters};
+use contact_core::{FacetingTolerance, GeometryEngine, GeometryInstance, WorkCounters};
 use contact_solver::contact_force::Analysis;
 use contact_solver::kinematics::initial_degrees_of_freedom;
 use contact_solver::parallel::{MAX_THREADS, Parallelism};
@@ -57,6 +57,7 @@ pub fn run_model(
         model,
         engine: engine.as_ref(),
         parallelism,
+        tolerance: selection.faceting_tolerance,
         prepare: Duration::ZERO,
     };
     let steps = plan(model, options, &lowering, sink)?;
@@ -161,6 +162,8 @@ struct Lowering<'a> {
     model: &'a Model,
     engine: &'a dyn GeometryEngine,
     parallelism: Parallelism,
+    /// The model-wide faceting tolerance (Parasolid bodies are tessellated at it).
+    tolerance: FacetingTolerance,
     /// Wall time spent lowering so far.
     prepare: Duration,
 }
@@ -171,7 +174,8 @@ impl Lowering<'_> {
     /// through the parts' states).
     fn lower(&mut self, analysis: Analysis) -> Result<LoweredModel, LowerError> {
         let started = Instant::now();
-        let mut lowered = lower(self.model, self.engine, analysis, &read_mesh)?;
+        let read = |f: &MeshFile| read_mesh(f, self.tolerance);
+        let mut lowered = lower(self.model, self.engine, analysis, &read)?;
         lowered.system.set_parallelism(self.parallelism.clone());
         self.prepare += started.elapsed();
         Ok(lowered)
@@ -180,16 +184,17 @@ impl Lowering<'_> {
     /// The model's degrees of freedom at time `t` (SIMULATE/TRANSIENT chooses its analysis by
     /// them, which the lowered multibody system knows).
     fn degrees_of_freedom(&self, t: f64) -> Result<usize, DegreesOfFreedomError> {
+        let read = |f: &MeshFile| read_mesh(f, self.tolerance);
         let lowered =
-            lower(self.model, self.engine, Analysis::Quasistatic, &read_mesh).map_err(Box::new)?;
+            lower(self.model, self.engine, Analysis::Quasistatic, &read).map_err(Box::new)?;
         Ok(initial_degrees_of_freedom(&lowered.system, t)?)
     }
 }
 
-/// A mesh file (STL) as a geometry on its part.
-fn read_mesh(file: &MeshFile) -> Result<GeometryInstance, String> {
-    let geometry =
-        contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string())?;
+/// A mesh file (STL, OBJ, a Parasolid body tessellated at the model-wide `tolerance` unless
+/// its GRAPHICS gives one) as a geometry on its part.
+fn read_mesh(file: &MeshFile, tolerance: FacetingTolerance) -> Result<GeometryInstance, String> {
+    let geometry = crate::parasolid_bodies::mesh_geometry(file, tolerance)?;
     let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
         .labeled(file.label.clone());

@@ -339,6 +339,7 @@ fn part(low: &mut Lowering, st: &Statement, id: u32) -> Result<Part, Problem> {
         pose_world_part: Isometry3::from_parts(Translation3::from(qg), rotation),
         velocity_w: Vector3::new(v("VX")?, v("VY")?, v("VZ")?),
         angular_velocity_w: Vector3::new(v("WX")?, v("WY")?, v("WZ")?),
+        name: st.view_name.clone(),
     })
 }
 

@@ -4,7 +4,7 @@ use super::Lowering;
 use super::reader::{Problem, Reader};
 use crate::dataset::error::Loc;
 use crate::dataset::parser::Statement;
-use crate::model::{Graphic, MeshFile, Model, Shape};
+use crate::model::{Graphic, MeshFile, Model, ParasolidBody, Shape};
 use contact_core::geometry::{
     Arc, Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Line, Plane, Torus,
 };
@@ -391,16 +391,42 @@ fn graphic(
             let (part, pose) = reference(model, &r, "RM")?;
             let (file, loc) = r.word("FILE")?.ok_or_else(|| r.missing("FILE"))?;
             let lower = file.to_ascii_lowercase();
-            if [".xmt_txt", ".x_t", ".xmt_bin", ".x_b"]
-                .iter()
-                .any(|ext| lower.ends_with(ext))
-            {
+            if [".xmt_bin", ".x_b"].iter().any(|ext| lower.ends_with(ext)) {
                 return Err(Problem::new(
                     loc,
                     format!(
-                        "{label}: FILE = {file} is a Parasolid file, which contact cannot read; export the part as STL and give FILE = name.stl"
+                        "{label}: FILE = {file} is a binary Parasolid file, which contact cannot read; write it as text (.x_t, .xmt_txt) or export the part as STL"
                     ),
                 ));
+            }
+            if [".xmt_txt", ".x_t"].iter().any(|ext| lower.ends_with(ext)) {
+                let (element, _) = r.word("ELEMENT")?.ok_or_else(|| r.missing("ELEMENT"))?;
+                let path = low.dir.join(&file);
+                if !path.is_file() {
+                    return Err(Problem::new(
+                        loc,
+                        format!("{label}: FILE = {file}: no such file ({})", path.display()),
+                    ));
+                }
+                let parasolid = Some(ParasolidBody {
+                    part,
+                    part_name: model.parts.get(&part).and_then(|p| p.name.clone()),
+                    element: element.to_string(),
+                    units_per_metre: 1.0 / model.units.length_metre,
+                });
+                return Ok(Graphic {
+                    id,
+                    origin,
+                    part: Some(part),
+                    shape: Shape::MeshFile(MeshFile {
+                        path,
+                        pose_part_geometry: pose,
+                        flip_normal: false,
+                        faceting_tolerance: tolerance,
+                        label,
+                        parasolid,
+                    }),
+                });
             }
             if !(lower.ends_with(".stl") || lower.ends_with(".obj")) {
                 return Err(Problem::new(
@@ -425,6 +451,7 @@ fn graphic(
                     flip_normal: false,
                     faceting_tolerance: tolerance,
                     label,
+                    parasolid: None,
                 }),
             )
         }
@@ -470,7 +497,7 @@ pub(crate) fn lower_graphics(
                 );
             }
             if let Shape::MeshFile(m) = &g.shape {
-                if Reader::new(st).flag("ELEMENT") {
+                if m.parasolid.is_none() && Reader::new(st).flag("ELEMENT") {
                     low.warning(Reader::new(st).loc_of("ELEMENT"), format!("{}: ELEMENT names a body in a Parasolid file; an STL file has one body: ignored", m.label));
                 }
             }

@@ -1,0 +1,90 @@
+//! Mesh files as geometry: STL and OBJ files read as they are, Parasolid bodies read from
+//! their transmit file and tessellated at their faceting tolerance.
+//!
+//! A transmit file holds every body of a model, and several GRAPHICS (and `check` before
+//! `run`) name bodies of the same file: each file is read once per process and each body
+//! tessellated once per tolerance, both kept for the process's life.
+
+use crate::model::{MeshFile, ParasolidBody};
+use contact_core::geometry::TriangleMesh;
+use contact_core::{FacetingTolerance, Geometry};
+use parasolid::{Body, Part, body_mesh};
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex, OnceLock};
+
+type PartCache = Mutex<HashMap<PathBuf, Arc<Part>>>;
+type MeshKey = (PathBuf, u32, String, u64, u64);
+type MeshCache = Mutex<HashMap<MeshKey, Arc<TriangleMesh>>>;
+
+fn parts() -> &'static PartCache {
+    static CACHE: OnceLock<PartCache> = OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
+fn meshes() -> &'static MeshCache {
+    static CACHE: OnceLock<MeshCache> = OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
+/// The transmit file at `path`, read once.
+pub fn read_part(path: &std::path::Path) -> Result<Arc<Part>, parasolid::Error> {
+    if let Some(p) = parts().lock().ok().and_then(|c| c.get(path).cloned()) {
+        return Ok(p);
+    }
+    let p = Arc::new(Part::read(path)?);
+    if let Ok(mut c) = parts().lock() {
+        c.insert(path.to_path_buf(), p.clone());
+    }
+    Ok(p)
+}
+
+/// The mesh of a Parasolid body in model length units (GRAPHICS frame = RM marker frame),
+/// tessellated at the GRAPHICS' FACETING_TOLERANCE, else at `model_tolerance` (the run's
+/// model-wide faceting tolerance: PREFERENCES/CONTACT_FACETING_TOLERANCE, its overrides, or
+/// Adams' default 300.0028).
+pub fn body_geometry(
+    file: &MeshFile,
+    body: &ParasolidBody,
+    model_tolerance: FacetingTolerance,
+) -> Result<Arc<TriangleMesh>, String> {
+    let tolerance = file.faceting_tolerance.unwrap_or(model_tolerance);
+    let key = (
+        file.path.clone(),
+        body.part,
+        body.element.to_ascii_uppercase(),
+        tolerance.value().to_bits(),
+        body.units_per_metre.to_bits(),
+    );
+    if let Some(m) = meshes().lock().ok().and_then(|c| c.get(&key).cloned()) {
+        return Ok(m);
+    }
+    let part = read_part(&file.path).map_err(|e| e.to_string())?;
+    let index = part
+        .find_body_on_part(body.part, body.part_name.as_deref(), &body.element)
+        .map_err(|e| e.to_string())?;
+    let name = format!("PART/{} {}", body.part, body.element);
+    let b = Body::read(&part, index).map_err(|e| e.to_string())?;
+    let mesh = body_mesh(&part, &b, tolerance, &name).map_err(|e| e.to_string())?;
+    let s = body.units_per_metre;
+    let vertices = mesh.vertices().iter().map(|p| p * s).collect();
+    let mesh = TriangleMesh::new(vertices, mesh.triangles().to_vec())
+        .map(Arc::new)
+        .map_err(|e| format!("{}: body {name}: {e}", file.path.display()))?;
+    if let Ok(mut c) = meshes().lock() {
+        c.insert(key, mesh.clone());
+    }
+    Ok(mesh)
+}
+
+/// A mesh file's geometry: an STL or OBJ file as read, a Parasolid body tessellated (see
+/// [`body_geometry`] for `model_tolerance`).
+pub fn mesh_geometry(
+    file: &MeshFile,
+    model_tolerance: FacetingTolerance,
+) -> Result<Geometry, String> {
+    match &file.parasolid {
+        Some(body) => Ok(Geometry::Mesh(body_geometry(file, body, model_tolerance)?)),
+        None => contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string()),
+    }
+}
