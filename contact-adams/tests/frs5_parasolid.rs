@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 fn frs5() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/datasets/real-models/FRS5/FRS5_doe_8_LAUL_analysis.adm")
+        .join("../tests/data/frs5/FRS5_doe_8_LAUL_analysis.adm")
 }
 
 /// Volume and first moment of a closed mesh (divergence theorem).

@@ -1,4 +1,4 @@
-//! The FRS5 model's transmit file (../shared/datasets/real-models/FRS5): 43 solid bodies that
+//! The FRS5 model's transmit file (tests/data/frs5, a copy of the public dataset): 43 solid bodies that
 //! Adams uses in CONTACTs, read, found by their Adams names and tessellated closed.
 
 use contact_core::FacetingTolerance;
@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 fn frs5() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/datasets/real-models/FRS5/FRS5_doe_8_LAUL_analysis.xmt_txt")
+        .join("../tests/data/frs5/FRS5_doe_8_LAUL_analysis.xmt_txt")
 }
 
 fn part() -> Part {

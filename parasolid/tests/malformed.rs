@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 fn frs5_bytes() -> Vec<u8> {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/datasets/real-models/FRS5/FRS5_doe_8_LAUL_analysis.xmt_txt");
+        .join("../tests/data/frs5/FRS5_doe_8_LAUL_analysis.xmt_txt");
     std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 

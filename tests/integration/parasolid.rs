@@ -1,4 +1,4 @@
-//! `contact check` on FRS5 (../shared/datasets/real-models/FRS5), whose CONTACTs are between
+//! `contact check` on FRS5 (tests/data/frs5, a copy of the public dataset), whose CONTACTs are between
 //! Parasolid bodies of one transmit file and primitives: the faceted engine answers every one
 //! and nothing about the geometry is an error; the exact engine refuses each CONTACT that has
 //! a Parasolid body, naming the faceted engine.
@@ -8,7 +8,7 @@ use std::process::Command;
 
 fn frs5() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/datasets/real-models/FRS5/FRS5_doe_8_LAUL_analysis.adm")
+        .join("tests/data/frs5/FRS5_doe_8_LAUL_analysis.adm")
 }
 
 fn check(engine: Option<&str>) -> String {
