@@ -7,7 +7,8 @@
 //! z ≤ 0); anything else is read as an STL file (ascii or binary).
 //!
 //! Poses file: one pose of I relative to J a line, `x y z qw qx qy qz` separated by spaces or
-//! commas (the quaternion is normalised; a zero quaternion is an error); blank lines and lines
+//! commas (the quaternion must be unit within 1e-6, then is normalised; else an error with its
+//! line); blank lines and lines
 //! starting with `#` are skipped.
 
 use crate::peer::{ParryError, ParryPeer};
@@ -187,7 +188,13 @@ pub fn read_poses(path: &Path) -> Result<Vec<Isometry3>, QueryCliError> {
     })
 }
 
-/// Parses poses text; an error is `(line, reason)`.
+/// How far from 1 a pose quaternion's norm may be: a pose written to 7 significant digits
+/// passes; a quaternion that is not a rotation (a scale, a typo) is refused rather than
+/// normalised into some other rotation.
+pub const POSE_QUATERNION_TOLERANCE: f64 = 1e-6;
+
+/// Parses poses text; an error is `(line, reason)`. Each quaternion must be unit within
+/// [`POSE_QUATERNION_TOLERANCE`]; it is then normalised.
 pub fn parse_poses(text: &str) -> Result<Vec<Isometry3>, (usize, String)> {
     let mut poses = Vec::new();
     for (k, line) in text.lines().enumerate() {
@@ -213,10 +220,24 @@ pub fn parse_poses(text: &str) -> Result<Vec<Isometry3>, (usize, String)> {
             ));
         };
         let q = nalgebra::Quaternion::new(qw, qx, qy, qz);
-        if !numbers.iter().all(|v| v.is_finite()) || q.norm() < 1e-12 {
+        if !numbers.iter().all(|v| v.is_finite()) {
+            return Err((k + 1, "needs finite numbers".into()));
+        }
+        // The norm scaled by the largest component, so that 1e200 does not overflow to inf.
+        let largest = q.coords.amax();
+        let norm = if largest > 0.0 {
+            largest * (q.coords / largest).norm()
+        } else {
+            0.0
+        };
+        if (norm - 1.0).abs() > POSE_QUATERNION_TOLERANCE {
             return Err((
                 k + 1,
-                "needs finite numbers and a non-zero quaternion".into(),
+                format!(
+                    "the quaternion ({qw:?}, {qx:?}, {qy:?}, {qz:?}) has norm {:?}: it must be \
+                     a unit quaternion within {POSE_QUATERNION_TOLERANCE:e} (divide it by its norm)",
+                    norm
+                ),
             ));
         }
         poses.push(Isometry3::from_parts(

@@ -433,3 +433,28 @@ fn a_mass_at_the_floating_point_limit_is_diagnosed_as_such() {
     assert!(!stderr.contains("duplicated joints"), "{stderr}");
     assert!(stderr.contains("no frame was computed"), "{stderr}");
 }
+
+#[test]
+fn a_pose_quaternion_that_is_not_unit_is_refused_with_its_line() {
+    use contact::cli::query::{POSE_QUATERNION_TOLERANCE, parse_poses};
+    // The reproduction: (1e200, 0, 0, 0) was used as is (depth 0.9998 instead of 0.5).
+    let (line, reason) = parse_poses("# x y z qw qx qy qz\n0 0 0.5 1e200 0 0 0\n").unwrap_err();
+    assert_eq!(line, 2);
+    assert!(
+        reason.contains("has norm 1e200") && reason.contains("1e-6"),
+        "{reason}"
+    );
+    // Written to 7 significant digits (cos, sin of 0.3 rad about z): within the tolerance.
+    let poses = parse_poses("0 0 1 0.9887711 0 0 0.1494381\n").unwrap();
+    let q = poses[0].rotation.quaternion();
+    assert!((q.norm() - 1.0).abs() < 1e-15);
+    assert!((q.k - 0.1494381 / 0.98877110f64.hypot(0.1494381)).abs() < 1e-15);
+    // Just past the bound, either way.
+    for scale in [
+        1.0 + 2.0 * POSE_QUATERNION_TOLERANCE,
+        1.0 - 2.0 * POSE_QUATERNION_TOLERANCE,
+    ] {
+        let text = format!("0 0 0 {scale:?} 0 0 0\n");
+        assert_eq!(parse_poses(&text).unwrap_err().0, 1, "{scale}");
+    }
+}
