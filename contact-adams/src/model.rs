@@ -346,6 +346,22 @@ pub struct Variable {
     pub initial_value: Option<f64>,
 }
 
+/// A GCON statement of the one form the solver supports, `FUNCTION = DM(a, b) − L`: the
+/// origins of markers `a` and `b` kept at distance `length`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gcon {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The I marker (the one the reaction is reported on).
+    pub i: u32,
+    /// The other marker of `DM(a, b)` (a if I is b, else b).
+    pub j: u32,
+    /// L (> 0).
+    pub length: f64,
+}
+
 /// A REQUEST statement, kept for output.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Request {
@@ -527,6 +543,8 @@ pub struct Model {
     pub joints: Vec<Joint>,
     /// JPRIMs in id order.
     pub primitives: Vec<JointPrimitive>,
+    /// GCONs in id order.
+    pub gcons: Vec<Gcon>,
     /// MOTIONs in id order.
     pub motions: Vec<Motion>,
     /// SFORCEs in id order.

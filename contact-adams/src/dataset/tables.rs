@@ -374,6 +374,7 @@ const REQUEST: &[ArgSpec] = &[
     ignored(vals("CLABELS")),
     ignored(vals("RESULTS_NAME")),
 ];
+const GCON: &[ArgSpec] = &[vals("I"), expr("FUNCTION")];
 const SIMULATE: &[ArgSpec] = &[
     flag("DYNAMICS"),
     flag("KINEMATICS"),
@@ -447,9 +448,18 @@ pub const DATASET_STATEMENTS: &[StatementSpec] = &[
     stmt("OUTPUT", NoId, OUTPUT),
     stmt("RESULTS", NoId, RESULTS),
     StatementSpec {
-        aliases: &[("C", "COMMENT"), ("D", "DISPLACEMENT")],
+        // D, V, A and F are the type abbreviations Adams documents (F would otherwise be a
+        // prefix of F1 … F8 and FUNCTION too).
+        aliases: &[
+            ("C", "COMMENT"),
+            ("D", "DISPLACEMENT"),
+            ("V", "VELOCITY"),
+            ("A", "ACCELERATION"),
+            ("F", "FORCE"),
+        ],
         ..stmt("REQUEST", Required, REQUEST)
     },
+    stmt("GCON", Required, GCON),
     not_modelled("ARRAY"),
     not_modelled("BEAM"),
     not_modelled("BUSHING"),

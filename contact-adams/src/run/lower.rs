@@ -276,6 +276,12 @@ pub fn lower_with_routines(
             .add_constraint(format!("JPRIM/{}", p.id), kind, mi, mj)
             .map_err(element(&p.origin))?;
     }
+    for g in &model.gcons {
+        let (mi, mj) = (marker(g.i, &g.origin)?, marker(g.j, &g.origin)?);
+        builder
+            .add_distance(format!("GCON/{}", g.id), mi, mj, g.length)
+            .map_err(element(&g.origin))?;
+    }
     for m in &model.motions {
         if !m.function.is_time_only() {
             return Err(unsupported(

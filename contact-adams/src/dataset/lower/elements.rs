@@ -4,14 +4,14 @@ use super::Lowering;
 use super::reader::{Problem, Reader};
 use crate::dataset::error::Loc;
 use crate::dataset::parser::Statement;
-use crate::expr::{Expr, ExprErrorKind, parse_expr};
+use crate::expr::{Expr, parse_expr};
 use crate::model::{
     EquilibriumSettings, Freedom, IntegratorSettings, Joint, JointKind, JointPrimitive, Model,
-    Motion, MotionLevel, MotionTarget, PrimitiveKind, Request, SForce, Variable,
+    Motion, MotionLevel, MotionTarget, PrimitiveKind, SForce, Variable,
 };
 
 /// A marker reference that must exist.
-fn marker(model: &Model, r: &Reader<'_>, name: &str) -> Result<u32, Problem> {
+pub(super) fn marker(model: &Model, r: &Reader<'_>, name: &str) -> Result<u32, Problem> {
     let (m, loc) = r.id(name)?.ok_or_else(|| r.missing(name))?;
     if !model.markers.contains_key(&m) {
         return Err(Problem::new(
@@ -428,53 +428,6 @@ fn report_variable_cycles(low: &mut Lowering, variables: &[Variable]) {
                     stack.push((next, longer));
                 }
             }
-        }
-    }
-}
-
-/// REQUEST statements, kept for output; an unsupported function inside is a warning (the
-/// request's other columns still work).
-pub(crate) fn lower_requests(low: &mut Lowering, model: &mut Model, requests: &[&Statement]) {
-    const FUNCTIONS: [&str; 9] = ["F1", "F2", "F3", "F4", "F5", "F6", "F7", "F8", "FUNCTION"];
-    for st in requests {
-        let Some((id, _)) = st.id else { continue };
-        let r = Reader::new(st);
-        let result = (|| -> Result<Request, Problem> {
-            let kind = r.one_of(&["DISPLACEMENT", "VELOCITY", "ACCELERATION", "FORCE"])?;
-            let mut markers = [None; 3];
-            for (k, name) in ["I", "J", "RM"].iter().enumerate() {
-                if r.flag(name) {
-                    markers[k] = Some(marker(model, &r, name)?);
-                }
-            }
-            let mut functions = Vec::new();
-            for name in FUNCTIONS {
-                let Some((text, _)) = r.expression(name) else {
-                    continue;
-                };
-                if let Err(e) = parse_expr(&text.text) {
-                    let at = text.loc_at(e.offset);
-                    match e.kind {
-                        ExprErrorKind::UnknownFunction(_) => low.warning(
-                            at,
-                            format!("REQUEST/{id}: {name}: {e}: this output column will be empty"),
-                        ),
-                        _ => return Err(Problem::new(at, format!("REQUEST/{id}: {name}: {e}"))),
-                    }
-                }
-                functions.push((name, text.text.clone()));
-            }
-            Ok(Request {
-                id,
-                origin: low.origin(st.loc),
-                kind,
-                markers,
-                comment: r.text("COMMENT"),
-                functions,
-            })
-        })();
-        if let Some(q) = low.ok(result) {
-            model.requests.push(q);
         }
     }
 }

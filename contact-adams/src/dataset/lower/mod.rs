@@ -12,6 +12,7 @@ mod contact;
 mod elements;
 mod geometry;
 mod reader;
+mod requests;
 
 pub use reader::{Problem, parse_number};
 
@@ -77,6 +78,7 @@ fn empty_model(title: String) -> Model {
         contacts: Vec::new(),
         joints: Vec::new(),
         primitives: Vec::new(),
+        gcons: Vec::new(),
         motions: Vec::new(),
         sforces: Vec::new(),
         variables: Vec::new(),
@@ -204,8 +206,10 @@ pub(crate) fn lower(
     elements::lower_motions(&mut low, &mut model, &motions);
     let sforces = by_id(&mut low, parsed, "SFORCE");
     elements::lower_sforces(&mut low, &mut model, &sforces);
+    let gcons = by_id(&mut low, parsed, "GCON");
+    requests::lower_gcons(&mut low, &mut model, &gcons);
     let requests = by_id(&mut low, parsed, "REQUEST");
-    elements::lower_requests(&mut low, &mut model, &requests);
+    requests::lower_requests(&mut low, &mut model, &requests);
     for st in singletons(parsed, "INTEGRATOR") {
         if let Some(settings) = elements::integrator(&mut low, st) {
             model.integrator = settings;

@@ -43,6 +43,8 @@ pub(crate) enum Primitive {
     },
     /// The rotation of x_I about z_J equals the drive (a rotational MOTION).
     Angle { drive: TimeFunction },
+    /// `|d| − length`: the I origin at `length` (> 0) from the J origin (GCON `DM(i, j) − L`).
+    Distance { length: f64 },
 }
 
 impl std::fmt::Debug for Primitive {
@@ -56,6 +58,7 @@ impl std::fmt::Debug for Primitive {
                 write!(f, "InPlane({normal_j:?}_J, driven: {})", drive.is_some())
             }
             Self::Angle { .. } => write!(f, "Angle(driven)"),
+            Self::Distance { length } => write!(f, "Distance({length:?})"),
         }
     }
 }
@@ -105,6 +108,7 @@ impl Primitive {
                 let [x_j, y_j, _] = frames.axes_j;
                 wrap_angle(x_i.dot(&y_j).atan2(x_i.dot(&x_j)) - drive(t).0)
             }
+            Self::Distance { length } => frames.d.norm() - length,
         }
     }
 
@@ -139,6 +143,13 @@ impl Primitive {
                 let theta_b = (y_j.cross(&x_i) * c - x_j.cross(&x_i) * s) * scale;
                 [zero, theta_a, zero, theta_b]
             }
+            Self::Distance { .. } => {
+                // ∂|d|/∂d = d/|d|; at |d| = 0 the direction is undefined and the row is zero
+                // (the builder refuses markers that start coincident).
+                let norm = frames.d.norm();
+                let n = if norm > 0.0 { frames.d / norm } else { zero };
+                [n, frames.s_i.cross(&n), -n, -frames.s_j.cross(&n)]
+            }
         }
     }
 
@@ -154,7 +165,10 @@ impl Primitive {
 
     /// Whether Φ is a length (`true`) or an angle or cosine (`false`): sets its tolerance.
     pub fn is_length(&self) -> bool {
-        matches!(self, Self::Coincident(_) | Self::InPlane { .. })
+        matches!(
+            self,
+            Self::Coincident(_) | Self::InPlane { .. } | Self::Distance { .. }
+        )
     }
 }
 
