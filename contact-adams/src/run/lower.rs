@@ -246,7 +246,18 @@ pub fn lower_with_routines(
             JointKind::Planar => ConstraintKind::Planar,
             JointKind::Universal => ConstraintKind::Universal,
             JointKind::Hooke => ConstraintKind::Hooke,
-            JointKind::Convel | JointKind::Rackpin | JointKind::Screw => {
+            JointKind::Rackpin => {
+                let (mi, mj) = (marker(j.i, &j.origin)?, marker(j.j, &j.origin)?);
+                let pd = j.parameter.ok_or_else(|| {
+                    unsupported(&j.origin, format!("JOINT/{}: RACKPIN needs PD", j.id))
+                })?;
+                let id = builder
+                    .add_rackpin(format!("JOINT/{}", j.id), mi, mj, pd)
+                    .map_err(element(&j.origin))?;
+                joints.insert(j.id, id);
+                continue;
+            }
+            JointKind::Convel | JointKind::Screw => {
                 return Err(unsupported(
                     &j.origin,
                     format!(

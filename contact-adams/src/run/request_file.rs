@@ -164,7 +164,9 @@ pub fn header(output: &RequestOutput, now: SystemTime) -> String {
     s
 }
 
-/// `x` as Fortran `1PE13.5` writes it, without the padding: `-9.23880E-01`, `0.00000E+00`.
+/// `x` as Fortran `1PE13.5` writes it, without the padding: `-9.23880E-01`, `0.00000E+00`;
+/// an exponent beyond ±99 is written without the E, as Fortran does (`1.00000-100`), so the
+/// field stays 13 wide and blank-separated.
 pub fn fortran_e(x: f64) -> String {
     if x == 0.0 {
         return "0.00000E+00".into();
@@ -176,6 +178,10 @@ pub fn fortran_e(x: f64) -> String {
     let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
     let exponent: i32 = exponent.parse().unwrap_or(0);
     let sign = if exponent < 0 { '-' } else { '+' };
+    if exponent.abs() > 99 {
+        // Fortran drops the E to keep the field 13 wide: `-8.69930-105`.
+        return format!("{mantissa}{sign}{:03}", exponent.abs());
+    }
     format!("{mantissa}E{sign}{:02}", exponent.abs())
 }
 
@@ -264,7 +270,9 @@ mod tests {
         assert_eq!(fortran_e(2.929187e-16), "2.92919E-16");
         assert_eq!(fortran_e(0.0), "0.00000E+00");
         assert_eq!(fortran_e(-0.0), "0.00000E+00");
-        assert_eq!(fortran_e(1e-100), "1.00000E-100");
+        assert_eq!(fortran_e(1e-100), "1.00000-100");
+        assert_eq!(fortran_e(-8.6993e-105), "-8.69930-105");
+        assert_eq!(fortran_e(2.5e120), "2.50000+120");
         assert_eq!(format!(" {:>13}", fortran_e(0.01)), "   1.00000E-02");
     }
 

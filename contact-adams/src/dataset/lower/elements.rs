@@ -108,10 +108,18 @@ pub(crate) fn lower_joints(low: &mut Lowering, model: &mut Model, joints: &[&Sta
                     r.number("PITCH")?
                         .ok_or_else(|| r.missing("PITCH for a SCREW joint"))?,
                 ),
-                JointKind::Rackpin => Some(
-                    r.number("PD")?
-                        .ok_or_else(|| r.missing("PD for a RACKPIN joint"))?,
-                ),
+                JointKind::Rackpin => {
+                    let pd = r
+                        .number("PD")?
+                        .ok_or_else(|| r.missing("PD for a RACKPIN joint"))?;
+                    if !(pd.is_finite() && pd > 0.0) {
+                        return Err(Problem::new(
+                            r.loc_of("PD"),
+                            format!("JOINT/{id}: PD = {pd:?} is out of range: must be > 0"),
+                        ));
+                    }
+                    Some(pd)
+                }
                 _ => None,
             };
             Ok(Joint {
@@ -124,10 +132,7 @@ pub(crate) fn lower_joints(low: &mut Lowering, model: &mut Model, joints: &[&Sta
             })
         })();
         if let Some(j) = low.ok(result) {
-            if matches!(
-                j.kind,
-                JointKind::Convel | JointKind::Rackpin | JointKind::Screw
-            ) {
+            if matches!(j.kind, JointKind::Convel | JointKind::Screw) {
                 low.warning(
                     st.loc,
                     format!(
