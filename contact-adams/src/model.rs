@@ -520,6 +520,30 @@ pub enum Command {
     Stop,
 }
 
+impl std::fmt::Display for Command {
+    /// The command as a command file writes it (`DEACTIVATE/JOINT, ID = 1, 2`); the commands
+    /// with settings are named only (`INTEGRATOR`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Activate { active, class, ids } => {
+                let ids: Vec<String> = ids.iter().map(u32::to_string).collect();
+                let verb = if *active { "ACTIVATE" } else { "DEACTIVATE" };
+                write!(f, "{verb}/{class}, ID = {}", ids.join(", "))
+            }
+            Self::Gravity(g) => write!(
+                f,
+                "ACCGRAV/ IGRAV = {}, JGRAV = {}, KGRAV = {}",
+                g.x, g.y, g.z
+            ),
+            Self::Simulate { .. } => f.write_str("SIMULATE"),
+            Self::Integrator(_) => f.write_str("INTEGRATOR"),
+            Self::Equilibrium(_) => f.write_str("EQUILIBRIUM"),
+            Self::Linear { .. } => f.write_str("LINEAR/EIGENSOL"),
+            Self::Stop => f.write_str("STOP"),
+        }
+    }
+}
+
 /// The whole validated model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {

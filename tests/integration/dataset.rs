@@ -427,6 +427,7 @@ sim/stat\nsim/dyn, dur = .5, dtout = .001\ndeact/contact, id = 3\nENVIRONMENT/NA
         "data/t.adm:4:1: warning: GFORCE is not modelled by contact: statement ignored",
         "data/t.acf:3:5: warning: INTEGRATOR/HHT: the solver uses its own GSTIFF-style BDF; the method is ignored",
         "data/t.acf:9:1: warning: ENVIRONMENT is not modelled by contact: statement ignored",
+        "data/t.acf:8:1: warning: DEACTIVATE/CONTACT, ID = 3 is not applied by this solver: the command is ignored",
     ] {
         assert!(p.contains(&expected.to_string()), "{expected}\n{p:#?}");
     }
