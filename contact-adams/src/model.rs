@@ -553,8 +553,10 @@ pub struct Model {
     pub units: Units,
     /// ACCGRAV, in model units.
     pub gravity: Vector3,
-    /// PREFERENCES.
+    /// PREFERENCES (the defaults where none is given).
     pub preferences: Preferences,
+    /// The engine settings a PREFERENCES statement gave (to tell them from the defaults).
+    pub engine_preferences: crate::engine_choice::DatasetEngine,
     /// Parts by id.
     pub parts: BTreeMap<u32, Part>,
     /// Markers by id.
@@ -585,6 +587,13 @@ pub struct Model {
     pub output_flags: Vec<&'static str>,
     /// The command file's commands, in order, with their origins.
     pub commands: Vec<(Origin, Command)>,
+    /// VARIABLEs left out because their FUNCTION calls a function this solver does not
+    /// evaluate (id → why): a warning at the VARIABLE, and an error wherever its value is
+    /// needed (a VARVAL in a MOTION, SFORCE, REQUEST or another VARIABLE).
+    pub unevaluated_variables: BTreeMap<u32, String>,
+    /// The dataset's statements as written, counted by full keyword (`PART`, `CONTACT`, …),
+    /// every one whether or not it lowered without errors.
+    pub written: BTreeMap<&'static str, usize>,
 }
 
 impl Model {

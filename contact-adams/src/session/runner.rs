@@ -39,7 +39,7 @@ pub fn run_model(
     let selection = engine_choice::resolve(
         &overrides,
         &|k| std::env::var(k).ok(),
-        Some(&model.preferences),
+        model.engine_preferences,
     )?;
     sink.engine(&selection).map_err(RunError::Output)?;
     let (threads, by) = match (options.threads, model.preferences.threads) {

@@ -4,7 +4,7 @@ use super::Lowering;
 use super::reader::{Problem, Reader};
 use crate::dataset::error::Loc;
 use crate::dataset::parser::Statement;
-use crate::expr::{Expr, parse_expr};
+use crate::expr::{Expr, ExprErrorKind, parse_expr};
 use crate::model::{
     EquilibriumSettings, Freedom, IntegratorSettings, Joint, JointKind, JointPrimitive, Model,
     Motion, MotionLevel, MotionTarget, PrimitiveKind, SForce, Variable,
@@ -36,6 +36,15 @@ fn marker_pair(model: &Model, r: &Reader<'_>) -> Result<(u32, u32), Problem> {
     Ok((i, j))
 }
 
+/// Why VARIABLE/`v` has no value: not defined, or its FUNCTION calls a function this solver
+/// does not evaluate.
+pub(super) fn missing_variable(model: &Model, v: u32) -> String {
+    match model.unevaluated_variables.get(&v) {
+        Some(why) => format!("VARIABLE/{v} has no value here: its FUNCTION has an {why}"),
+        None => format!("VARIABLE/{v} is not defined"),
+    }
+}
+
 /// Parses the expression of argument `name`; unknown functions and missing markers or variables
 /// are errors at their location.
 fn function(model: &Model, r: &Reader<'_>, name: &str) -> Result<(Expr, Loc), Problem> {
@@ -55,8 +64,9 @@ fn function(model: &Model, r: &Reader<'_>, name: &str) -> Result<(Expr, Loc), Pr
             return Err(Problem::new(
                 loc,
                 format!(
-                    "{}: {name}: VARVAL({v}): VARIABLE/{v} is not defined",
-                    r.label()
+                    "{}: {name}: VARVAL({v}): {}",
+                    r.label(),
+                    missing_variable(model, v)
                 ),
             ));
         }
@@ -343,10 +353,11 @@ pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: 
         .filter_map(|s| s.id.map(|(id, _)| id))
         .collect();
     let mut lowered = Vec::new();
+    let mut unevaluated = Vec::new();
     for st in variables {
         let Some((id, _)) = st.id else { continue };
         let r = Reader::new(st);
-        let result = (|| -> Result<Variable, Problem> {
+        let result = (|| -> Result<Option<Variable>, Problem> {
             if r.flag("ROUTINE") {
                 return Err(Problem::new(
                     r.loc_of("ROUTINE"),
@@ -357,11 +368,23 @@ pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: 
                 .expression("FUNCTION")
                 .ok_or_else(|| r.missing("FUNCTION"))?;
             let f = parse_expr(&text.text).map_err(|e| {
-                Problem::new(
+                let problem = Problem::new(
                     text.loc_at(e.offset),
                     format!("VARIABLE/{id}: FUNCTION: {e}"),
-                )
-            })?;
+                );
+                match e.kind {
+                    ExprErrorKind::UnknownFunction(name) => Err((problem, name)),
+                    _ => Ok(problem),
+                }
+            });
+            let f = match f {
+                Ok(f) => f,
+                Err(Ok(problem)) => return Err(problem),
+                Err(Err((problem, function))) => {
+                    unevaluated.push((id, problem, function));
+                    return Ok(None);
+                }
+            };
             for m in f.marker_ids() {
                 if !model.markers.contains_key(&m) {
                     return Err(Problem::new(
@@ -380,16 +403,52 @@ pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: 
                     ));
                 }
             }
-            Ok(Variable {
+            Ok(Some(Variable {
                 id,
                 origin: low.origin(st.loc),
                 function: f,
                 initial_value: r.number("IC")?,
-            })
+            }))
         })();
-        if let Some(v) = low.ok(result) {
+        if let Some(Some(v)) = low.ok(result) {
             lowered.push(v);
         }
+    }
+    // An unsupported function is an error only where a value is needed: the VARIABLE is left
+    // out with a warning, and so is every VARIABLE that reads it (the uses are the errors).
+    for (id, problem, function) in unevaluated {
+        let why = format!("unsupported function {function}");
+        low.warning(
+            problem.loc,
+            format!(
+                "{}: the variable has no value: an error wherever it is used",
+                problem.message
+            ),
+        );
+        model.unevaluated_variables.insert(id, why);
+    }
+    loop {
+        let Some(k) = lowered.iter().position(|v| {
+            v.function
+                .variable_ids()
+                .iter()
+                .any(|u| model.unevaluated_variables.contains_key(u))
+        }) else {
+            break;
+        };
+        let v = lowered.remove(k);
+        let u = v
+            .function
+            .variable_ids()
+            .into_iter()
+            .find(|u| model.unevaluated_variables.contains_key(u))
+            .unwrap_or(v.id);
+        let why = format!("unsupported function, through VARVAL({u})");
+        low.warning(
+            v.origin.loc,
+            format!("VARIABLE/{}: FUNCTION: VARVAL({u}): {}: the variable has no value: an error wherever it is used", v.id, missing_variable(model, u)),
+        );
+        model.unevaluated_variables.insert(v.id, why);
     }
     report_variable_cycles(low, &lowered);
     model.variables = lowered;

@@ -72,6 +72,7 @@ fn empty_model(title: String) -> Model {
         units: Units::MKS,
         gravity: Vector3::zeros(),
         preferences: Preferences::default(),
+        engine_preferences: Default::default(),
         parts: BTreeMap::new(),
         markers: BTreeMap::new(),
         graphics: BTreeMap::new(),
@@ -87,6 +88,8 @@ fn empty_model(title: String) -> Model {
         equilibrium: EquilibriumSettings::default(),
         output_flags: Vec::new(),
         commands: Vec::new(),
+        written: BTreeMap::new(),
+        unevaluated_variables: BTreeMap::new(),
     }
 }
 
@@ -172,6 +175,9 @@ pub(crate) fn lower(
         .map(|t| t.text.clone())
         .unwrap_or_default();
     let mut model = empty_model(title);
+    for st in &parsed.statements {
+        *model.written.entry(st.spec.name).or_default() += 1;
+    }
     if parsed.end.is_none() {
         let loc = parsed
             .statements

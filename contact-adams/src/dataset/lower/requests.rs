@@ -139,7 +139,10 @@ fn check_function(
             Expr::VarVal(v) if !model.variables.iter().any(|var| var.id == *v) => {
                 problem = Some(Problem::new(
                     at("VARVAL", 0),
-                    format!("REQUEST/{id}: {name}: VARVAL({v}): VARIABLE/{v} is not defined"),
+                    format!(
+                        "REQUEST/{id}: {name}: VARVAL({v}): {}",
+                        super::elements::missing_variable(model, *v)
+                    ),
                 ));
             }
             Expr::Measure(Measure::Vx | Measure::Vy | Measure::Vz | Measure::Vm, m)
