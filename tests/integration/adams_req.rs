@@ -36,13 +36,6 @@ pub struct ReqFile {
     pub values: Vec<Vec<[f64; 6]>>,
 }
 
-impl ReqFile {
-    /// The index of REQUEST `id`.
-    pub fn index(&self, id: u32) -> Option<usize> {
-        self.requests.iter().position(|r| r.id == id)
-    }
-}
-
 /// Parses `text`; the error names the 1-based line.
 pub fn parse(text: &str) -> Result<ReqFile, String> {
     let lines: Vec<&str> = text
