@@ -239,7 +239,7 @@ fn spherical_case01_matches_adams() {
 }
 
 #[test]
-#[ignore = "the pendulum drifts out of its plane where Adams' stays in it, with a reaction torque Adams does not have: not yet found; and Adams is off the exact pendulum as in Spherical_Case01"]
+#[ignore = "Adams' run is off the exact pendulum as in Spherical_Case01 (the same rod, x(4.16 s) = -0.477812 m in both); and the HOOKE joint carries a reaction torque where Adams' carries none, falling with ERROR but not gone at 1e-7: cause not found"]
 fn universal_case02_matches_adams() {
     matches_adams("Universal_Case02", 5.0);
 }
@@ -321,6 +321,8 @@ fn matches_adams_at_error(case: &str, error: f64) {
             "{case} (ERROR = {error:e}) REQUEST/{} {}: worst {:.3e} at t = {}",
             d.request, d.name, d.worst, d.at
         );
+    }
+    for d in &deviations {
         assert!(
             d.worst <= d.tolerance,
             "{case} REQUEST/{} {}: {:.3e} > {:.0e} at t = {}",
