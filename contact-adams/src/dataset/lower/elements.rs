@@ -2,12 +2,13 @@
 
 use super::Lowering;
 use super::reader::{Problem, Reader};
+use super::variables::missing_variable;
 use crate::dataset::error::Loc;
 use crate::dataset::parser::Statement;
-use crate::expr::{Expr, ExprErrorKind, parse_expr};
+use crate::expr::{Expr, parse_expr};
 use crate::model::{
     EquilibriumSettings, Freedom, IntegratorSettings, Joint, JointKind, JointPrimitive, Model,
-    Motion, MotionLevel, MotionTarget, PrimitiveKind, SForce, Variable,
+    Motion, MotionLevel, MotionTarget, PrimitiveKind, SForce,
 };
 
 /// A marker reference that must exist.
@@ -34,15 +35,6 @@ fn marker_pair(model: &Model, r: &Reader<'_>) -> Result<(u32, u32), Problem> {
         ));
     }
     Ok((i, j))
-}
-
-/// Why VARIABLE/`v` has no value: not defined, or its FUNCTION calls a function this solver
-/// does not evaluate.
-pub(super) fn missing_variable(model: &Model, v: u32) -> String {
-    match model.unevaluated_variables.get(&v) {
-        Some(why) => format!("VARIABLE/{v} has no value here: its FUNCTION has an {why}"),
-        None => format!("VARIABLE/{v} is not defined"),
-    }
 }
 
 /// Parses the expression of argument `name`; unknown functions and missing markers or variables
@@ -340,158 +332,6 @@ pub(crate) fn lower_sforces(low: &mut Lowering, model: &mut Model, sforces: &[&S
         })();
         if let Some(f) = low.ok(result) {
             model.sforces.push(f);
-        }
-    }
-}
-
-/// VARIABLE statements: all ids are known first, so variables may read each other.
-pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: &[&Statement]) {
-    // Every declared id is known before any function is checked, so a VARVAL may name a
-    // variable defined later in the file.
-    let declared: Vec<u32> = variables
-        .iter()
-        .filter_map(|s| s.id.map(|(id, _)| id))
-        .collect();
-    let mut lowered = Vec::new();
-    let mut unevaluated = Vec::new();
-    for st in variables {
-        let Some((id, _)) = st.id else { continue };
-        let r = Reader::new(st);
-        let result = (|| -> Result<Option<Variable>, Problem> {
-            if r.flag("ROUTINE") {
-                return Err(Problem::new(
-                    r.loc_of("ROUTINE"),
-                    format!("VARIABLE/{id}: ROUTINE (user subroutines) is not supported"),
-                ));
-            }
-            let (text, loc) = r
-                .expression("FUNCTION")
-                .ok_or_else(|| r.missing("FUNCTION"))?;
-            let f = parse_expr(&text.text).map_err(|e| {
-                let problem = Problem::new(
-                    text.loc_at(e.offset),
-                    format!("VARIABLE/{id}: FUNCTION: {e}"),
-                );
-                match e.kind {
-                    ExprErrorKind::UnknownFunction(name) => Err((problem, name)),
-                    _ => Ok(problem),
-                }
-            });
-            let f = match f {
-                Ok(f) => f,
-                Err(Ok(problem)) => return Err(problem),
-                Err(Err((problem, function))) => {
-                    unevaluated.push((id, problem, function));
-                    return Ok(None);
-                }
-            };
-            for m in f.marker_ids() {
-                if !model.markers.contains_key(&m) {
-                    return Err(Problem::new(
-                        loc,
-                        format!("VARIABLE/{id}: FUNCTION: MARKER/{m} is not defined"),
-                    ));
-                }
-            }
-            for v in f.variable_ids() {
-                if !declared.contains(&v) {
-                    return Err(Problem::new(
-                        loc,
-                        format!(
-                            "VARIABLE/{id}: FUNCTION: VARVAL({v}): VARIABLE/{v} is not defined"
-                        ),
-                    ));
-                }
-            }
-            Ok(Some(Variable {
-                id,
-                origin: low.origin(st.loc),
-                function: f,
-                initial_value: r.number("IC")?,
-            }))
-        })();
-        if let Some(Some(v)) = low.ok(result) {
-            lowered.push(v);
-        }
-    }
-    // An unsupported function is an error only where a value is needed: the VARIABLE is left
-    // out with a warning, and so is every VARIABLE that reads it (the uses are the errors).
-    for (id, problem, function) in unevaluated {
-        let why = format!("unsupported function {function}");
-        low.warning(
-            problem.loc,
-            format!(
-                "{}: the variable has no value: an error wherever it is used",
-                problem.message
-            ),
-        );
-        model.unevaluated_variables.insert(id, why);
-    }
-    loop {
-        let Some(k) = lowered.iter().position(|v| {
-            v.function
-                .variable_ids()
-                .iter()
-                .any(|u| model.unevaluated_variables.contains_key(u))
-        }) else {
-            break;
-        };
-        let v = lowered.remove(k);
-        let u = v
-            .function
-            .variable_ids()
-            .into_iter()
-            .find(|u| model.unevaluated_variables.contains_key(u))
-            .unwrap_or(v.id);
-        let why = format!("unsupported function, through VARVAL({u})");
-        low.warning(
-            v.origin.loc,
-            format!("VARIABLE/{}: FUNCTION: VARVAL({u}): {}: the variable has no value: an error wherever it is used", v.id, missing_variable(model, u)),
-        );
-        model.unevaluated_variables.insert(v.id, why);
-    }
-    report_variable_cycles(low, &lowered);
-    model.variables = lowered;
-}
-
-/// VARIABLEs whose FUNCTIONs read each other through VARVAL in a cycle have no value: each
-/// cycle is an error at the VARIABLE with the smallest id in it, naming the cycle
-/// (`VARIABLE/1 → VARIABLE/2 → VARIABLE/1`).
-fn report_variable_cycles(low: &mut Lowering, variables: &[Variable]) {
-    let reads: std::collections::BTreeMap<u32, Vec<u32>> = variables
-        .iter()
-        .map(|v| (v.id, v.function.variable_ids()))
-        .collect();
-    let mut reported = std::collections::BTreeSet::new();
-    for v in variables {
-        // Depth-first from v, looking for a path back to v.
-        let mut stack = vec![(v.id, vec![v.id])];
-        let mut visited = std::collections::BTreeSet::new();
-        while let Some((at, path)) = stack.pop() {
-            for &next in reads.get(&at).map_or(&[][..], Vec::as_slice) {
-                if next == v.id {
-                    let smallest = path.iter().min().copied().unwrap_or(v.id);
-                    if smallest == v.id && reported.insert(v.id) {
-                        let names: Vec<String> = path
-                            .iter()
-                            .chain([&v.id])
-                            .map(|id| format!("VARIABLE/{id}"))
-                            .collect();
-                        low.error(Problem::new(
-                            v.origin.loc,
-                            format!(
-                                "VARIABLE/{}: FUNCTION: the variables read each other in a cycle ({}): none has a value",
-                                v.id,
-                                names.join(" → ")
-                            ),
-                        ));
-                    }
-                } else if visited.insert(next) {
-                    let mut longer = path.clone();
-                    longer.push(next);
-                    stack.push((next, longer));
-                }
-            }
         }
     }
 }

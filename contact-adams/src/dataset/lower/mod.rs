@@ -13,6 +13,7 @@ mod elements;
 mod geometry;
 mod reader;
 mod requests;
+mod variables;
 
 pub use reader::{Problem, parse_number};
 
@@ -207,7 +208,7 @@ pub(crate) fn lower(
     let primitives = by_id(&mut low, parsed, "JPRIM");
     elements::lower_primitives(&mut low, &mut model, &primitives);
     let variables = by_id(&mut low, parsed, "VARIABLE");
-    elements::lower_variables(&mut low, &mut model, &variables);
+    variables::lower_variables(&mut low, &mut model, &variables);
     let motions = by_id(&mut low, parsed, "MOTION");
     elements::lower_motions(&mut low, &mut model, &motions);
     let sforces = by_id(&mut low, parsed, "SFORCE");

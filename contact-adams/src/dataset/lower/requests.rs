@@ -141,7 +141,7 @@ fn check_function(
                     at("VARVAL", 0),
                     format!(
                         "REQUEST/{id}: {name}: VARVAL({v}): {}",
-                        super::elements::missing_variable(model, *v)
+                        super::variables::missing_variable(model, *v)
                     ),
                 ));
             }
