@@ -420,3 +420,60 @@ fn every_adams_test_model_reads_without_an_error() {
         assert!(loaded.model.has_moving_part(), "{case}");
     }
 }
+
+/// `SFORCE(id, jflag, comp, rm)` in a REQUEST is the load the solver applies: a spring
+/// `−10·(DM − 1)` along the line of centres on I and its opposite on J, and a constant 0.3 N·m
+/// torque about J's z axis on I and its opposite on J; checked at every frame against the
+/// closed form at the displacement the DISPLACEMENT request reports.
+#[test]
+fn sforce_requests_report_the_applied_loads() {
+    let dir = std::env::temp_dir().join(format!("contact-sforce-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let adm = dir.join("sforce.adm");
+    std::fs::write(
+        &adm,
+        "sforce\nPART/1, GROUND\nMARKER/1, PART = 1\n\
+         PART/2, MASS = 1, CM = 20, IP = 1, 1, 1, QG = 1.5, 0, 0\nMARKER/20, PART = 2\n\
+         SFORCE/1, TRANSLATIONAL, I = 20, J = 1, FUNCTION = -10*(DM(20, 1) - 1)\n\
+         SFORCE/2, ROTATIONAL, I = 20, J = 1, FUNCTION = 0.3\n\
+         REQUEST/1, D, I = 20, J = 1\n\
+         REQUEST/2, F2=SFORCE(1,0,2,0)\\F3=SFORCE(1,0,3,0)\\F4=SFORCE(1,1,2,0)\\F6=SFORCE(2,0,8,0)\\F7=SFORCE(2,1,8,0)\\F8=SFORCE(1,0,1,0)\n\
+         END\n",
+    )
+    .unwrap();
+    let acf = dir.join("sforce.acf");
+    std::fs::write(
+        &acf,
+        "sforce.adm\nrun\nsimulate/dynamics, end = 1, dtout = 0.1\nstop\n",
+    )
+    .unwrap();
+    let mut files = ResultFiles::new(dir.join("out"));
+    run_files(&adm, Some(&acf), &RunOptions::default(), &mut files).unwrap();
+    let csv = std::fs::read_to_string(dir.join("out").join("requests.csv")).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let rows: Vec<Vec<String>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(str::to_owned).collect())
+        .collect();
+    let value = |row: &[String], c: usize| row[3 + c].parse::<f64>().unwrap();
+    assert_eq!(rows.len(), 22);
+    let mut stretched = 0.0_f64;
+    for pair in rows.chunks(2) {
+        let (d, f) = (&pair[0], &pair[1]);
+        assert_eq!((d[1].as_str(), f[1].as_str()), ("1", "2"));
+        let x = value(d, 0);
+        stretched = stretched.max((x - 1.0).abs());
+        let spring = -10.0 * (x - 1.0);
+        let expected = [spring, 0.0, -spring, 0.3, -0.3, spring.abs()];
+        for (c, e) in expected.iter().enumerate() {
+            assert!(
+                (value(f, c) - e).abs() <= 1e-12 * (1.0 + e.abs()),
+                "t = {}: column {c}: {} vs {e}",
+                f[0],
+                value(f, c)
+            );
+        }
+    }
+    assert!(stretched > 0.4, "the spring moved: {stretched}");
+}

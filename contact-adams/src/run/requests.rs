@@ -19,7 +19,7 @@
 use super::frames::MarkerTable;
 use super::measures::StateContext;
 use crate::expr::{Context, ElementKind, EvalError, Expr, Measure, parse_expr};
-use crate::model::Model;
+use crate::model::{Freedom, Model, SForce};
 use contact_core::{Isometry3, UnitQuaternion, Vector3};
 use contact_solver::frame::FrameDynamics;
 use contact_solver::mbs::PartState;
@@ -94,6 +94,8 @@ pub struct RequestSet {
     variables: Arc<BTreeMap<u32, Expr>>,
     /// JOINT id → index into the frame's reactions (and the joint's I, J markers).
     joints: BTreeMap<u32, (usize, u32, u32)>,
+    /// SFORCE id → the element (markers, freedom, FUNCTION), for `SFORCE(id, …)`.
+    sforces: BTreeMap<u32, SForce>,
 }
 
 /// Why a request has no value at a frame.
@@ -207,6 +209,7 @@ impl RequestSet {
             markers,
             variables,
             joints,
+            sforces: model.sforces.iter().map(|s| (s.id, s.clone())).collect(),
         }
     }
 
@@ -235,6 +238,7 @@ impl RequestSet {
             },
             dynamics: frame.dynamics.as_ref(),
             joints: &self.joints,
+            sforces: &self.sforces,
         };
         let no_dynamics = || RequestError::NoDynamics {
             id: r.id,
@@ -323,6 +327,7 @@ struct RequestContext<'a> {
     state: StateContext<'a>,
     dynamics: Option<&'a FrameDynamics>,
     joints: &'a BTreeMap<u32, (usize, u32, u32)>,
+    sforces: &'a BTreeMap<u32, SForce>,
 }
 
 impl RequestContext<'_> {
@@ -364,6 +369,60 @@ impl RequestContext<'_> {
         let w = s.angular_velocity_w;
         Some((a_cm + alpha.cross(&r) + w.cross(&w.cross(&r)), alpha))
     }
+
+    /// JOINT/`id`'s reaction force and torque on its I marker (`jflag` 0) or J marker (1),
+    /// world axes.
+    fn joint_reaction(&self, id: u32, jflag: u32) -> Result<(Vector3, Vector3), EvalError> {
+        let (&(k, _, _), dynamics) = self
+            .joints
+            .get(&id)
+            .zip(self.dynamics)
+            .ok_or(EvalError::NeedsState("JOINT"))?;
+        let e = &dynamics.reactions[k];
+        Ok(if jflag == 0 {
+            (e.force_i_w, e.torque_i_w)
+        } else {
+            (e.force_j_w, e.torque_j_w)
+        })
+    }
+
+    /// SFORCE/`id`'s force and torque on its I marker (`jflag` 0) or J marker (1), world
+    /// axes, as the solver applies them: TRANSLATIONAL `f·(p_I − p_J)/|p_I − p_J|` on I (`f·z_J`
+    /// with ACTIONONLY), the opposite on J (nothing with ACTIONONLY), no torque (the line of
+    /// action passes through both markers); ROTATIONAL `f·z_J` torque on I, the opposite on J
+    /// (nothing with ACTIONONLY), no force. `f` is the FUNCTION at this frame.
+    fn sforce_load(&self, id: u32, jflag: u32) -> Result<(Vector3, Vector3), EvalError> {
+        let s = self
+            .sforces
+            .get(&id)
+            .ok_or(EvalError::NeedsState("SFORCE"))?;
+        let value = s.function.eval(&self.state)?;
+        let (pose_i, pose_j) = (self.pose(s.i), self.pose(s.j));
+        let z_j = pose_j.rotation * Vector3::z();
+        let sign = match (jflag, s.action_only) {
+            (0, _) => 1.0,
+            (_, true) => 0.0,
+            (_, false) => -1.0,
+        };
+        Ok(match s.freedom {
+            Freedom::Translational => {
+                let direction = if s.action_only {
+                    z_j
+                } else {
+                    let d = pose_i.translation.vector - pose_j.translation.vector;
+                    let length = d.norm();
+                    if length == 0.0 {
+                        return Err(EvalError::NeedsState(
+                            "an SFORCE whose I and J markers coincide",
+                        ));
+                    }
+                    d / length
+                };
+                (direction * (value * sign), Vector3::zeros())
+            }
+            Freedom::Rotational => (Vector3::zeros(), z_j * (value * sign)),
+        })
+    }
 }
 
 impl Context for RequestContext<'_> {
@@ -381,19 +440,10 @@ impl Context for RequestContext<'_> {
 
     fn element_force(&self, kind: ElementKind, args: [u32; 4]) -> Result<f64, EvalError> {
         let [id, jflag, component, rm] = args;
-        if kind != ElementKind::Joint {
-            return Err(EvalError::NeedsState(kind.name()));
-        }
-        let (&(k, _, _), dynamics) = self
-            .joints
-            .get(&id)
-            .zip(self.dynamics)
-            .ok_or(EvalError::NeedsState("JOINT"))?;
-        let e = &dynamics.reactions[k];
-        let (force, torque) = if jflag == 0 {
-            (e.force_i_w, e.torque_i_w)
-        } else {
-            (e.force_j_w, e.torque_j_w)
+        let (force, torque) = match kind {
+            ElementKind::Joint => self.joint_reaction(id, jflag)?,
+            ElementKind::Sforce => self.sforce_load(id, jflag)?,
+            ElementKind::Motion => return Err(EvalError::NeedsState(kind.name())),
         };
         let axes = self.axes(rm);
         let (f, t) = (
@@ -407,7 +457,7 @@ impl Context for RequestContext<'_> {
             6..=8 => t[component as usize - 6],
             _ => {
                 return Err(EvalError::NeedsState(
-                    "JOINT with a component outside 1..=8",
+                    "an element force with a component outside 1..=8",
                 ));
             }
         })

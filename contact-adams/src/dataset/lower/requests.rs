@@ -132,7 +132,7 @@ fn check_function(
             }
             Expr::Element(kind, args) => {
                 problem = check_element(model, id, name, *kind, *args, &at).err();
-                if problem.is_none() && *kind != ElementKind::Joint {
+                if problem.is_none() && *kind == ElementKind::Motion {
                     unevaluated = Some(kind.name());
                 }
             }
