@@ -152,7 +152,7 @@ pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
     let tolerance = crate::engine_choice::resolve(
         &crate::engine_choice::Overrides::default(),
         &|k| std::env::var(k).ok(),
-        Some(&model.preferences),
+        model.engine_preferences,
     )
     .map_or(model.preferences.faceting_tolerance, |s| {
         s.faceting_tolerance
