@@ -101,12 +101,32 @@ pub struct EnvironmentError {
     pub source: InvalidArgument,
 }
 
+/// The engine settings a dataset's PREFERENCES set: `None` where no PREFERENCES statement
+/// names that setting (the default then applies, and is reported as the default).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct DatasetEngine {
+    /// `CONTACT_GEOMETRY_LIBRARY`, if given.
+    pub library: Option<GeometryLibrary>,
+    /// `CONTACT_FACETING_TOLERANCE`, if given.
+    pub faceting_tolerance: Option<FacetingTolerance>,
+}
+
+impl From<&Preferences> for DatasetEngine {
+    /// Both settings of `preferences`, as if both were given.
+    fn from(preferences: &Preferences) -> Self {
+        Self {
+            library: Some(preferences.geometry_library),
+            faceting_tolerance: Some(preferences.faceting_tolerance),
+        }
+    }
+}
+
 /// Resolves the selection from the four sources (see the module docs). `environment` looks a
 /// variable up (pass `|k| std::env::var(k).ok()` for the process environment).
 pub fn resolve(
     overrides: &Overrides,
     environment: &dyn Fn(&str) -> Option<String>,
-    dataset: Option<&Preferences>,
+    dataset: DatasetEngine,
 ) -> Result<EngineSelection, EnvironmentError> {
     let env_library = environment(LIBRARY_VARIABLE)
         .map(|v| GeometryLibrary::parse(&v))
@@ -130,13 +150,13 @@ pub fn resolve(
     let (library, library_source) = first(
         overrides.library,
         env_library,
-        dataset.map(|p| p.geometry_library),
+        dataset.library,
         GeometryLibrary::default(),
     );
     let (faceting_tolerance, tolerance_source) = first(
         overrides.faceting_tolerance,
         env_tolerance,
-        dataset.map(|p| p.faceting_tolerance),
+        dataset.faceting_tolerance,
         FacetingTolerance::DEFAULT,
     );
     Ok(EngineSelection {
@@ -208,13 +228,13 @@ mod tests {
             faceting_tolerance: FacetingTolerance::new(2000.0).unwrap(),
             threads: None,
         };
-        let none = resolve(&Overrides::default(), &env(&[]), None).unwrap();
+        let none = resolve(&Overrides::default(), &env(&[]), DatasetEngine::default()).unwrap();
         assert_eq!(
             (none.library, none.library_source),
             (GeometryLibrary::Faceted, Source::Default)
         );
         assert_eq!(none.faceting_tolerance, FacetingTolerance::DEFAULT);
-        let from_dataset = resolve(&Overrides::default(), &env(&[]), Some(&dataset)).unwrap();
+        let from_dataset = resolve(&Overrides::default(), &env(&[]), (&dataset).into()).unwrap();
         assert_eq!(
             (from_dataset.library, from_dataset.library_source),
             (GeometryLibrary::Exact, Source::Dataset)
@@ -223,7 +243,7 @@ mod tests {
             ("CONTACT_GEOMETRY_LIBRARY", "rapid"),
             ("MDI_FACETING_TOLERANCE", "500"),
         ]);
-        let from_env = resolve(&Overrides::default(), &e, Some(&dataset)).unwrap();
+        let from_env = resolve(&Overrides::default(), &e, (&dataset).into()).unwrap();
         assert_eq!(
             (from_env.library, from_env.library_source),
             (GeometryLibrary::Faceted, Source::Environment)
@@ -233,7 +253,7 @@ mod tests {
             library: Some(GeometryLibrary::Exact),
             faceting_tolerance: None,
         };
-        let from_override = resolve(&over, &e, Some(&dataset)).unwrap();
+        let from_override = resolve(&over, &e, (&dataset).into()).unwrap();
         assert_eq!(
             (from_override.library, from_override.library_source),
             (GeometryLibrary::Exact, Source::Override)
@@ -250,7 +270,7 @@ mod tests {
         let e = resolve(
             &Overrides::default(),
             &env(&[("MDI_FACETING_TOLERANCE", "fine")]),
-            None,
+            DatasetEngine::default(),
         )
         .unwrap_err();
         assert_eq!(
@@ -260,7 +280,7 @@ mod tests {
         let e = resolve(
             &Overrides::default(),
             &env(&[("CONTACT_GEOMETRY_LIBRARY", "acis")]),
-            None,
+            DatasetEngine::default(),
         )
         .unwrap_err();
         assert!(e.to_string().starts_with(

@@ -346,6 +346,22 @@ pub struct Variable {
     pub initial_value: Option<f64>,
 }
 
+/// A GCON statement of the one form the solver supports, `FUNCTION = DM(a, b) − L`: the
+/// origins of markers `a` and `b` kept at distance `length`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gcon {
+    /// The Adams id.
+    pub id: u32,
+    /// Where it was defined.
+    pub origin: Origin,
+    /// The I marker (the one the reaction is reported on).
+    pub i: u32,
+    /// The other marker of `DM(a, b)` (a if I is b, else b).
+    pub j: u32,
+    /// L (> 0).
+    pub length: f64,
+}
+
 /// A REQUEST statement, kept for output.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Request {
@@ -504,6 +520,30 @@ pub enum Command {
     Stop,
 }
 
+impl std::fmt::Display for Command {
+    /// The command as a command file writes it (`DEACTIVATE/JOINT, ID = 1, 2`); the commands
+    /// with settings are named only (`INTEGRATOR`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Activate { active, class, ids } => {
+                let ids: Vec<String> = ids.iter().map(u32::to_string).collect();
+                let verb = if *active { "ACTIVATE" } else { "DEACTIVATE" };
+                write!(f, "{verb}/{class}, ID = {}", ids.join(", "))
+            }
+            Self::Gravity(g) => write!(
+                f,
+                "ACCGRAV/ IGRAV = {}, JGRAV = {}, KGRAV = {}",
+                g.x, g.y, g.z
+            ),
+            Self::Simulate { .. } => f.write_str("SIMULATE"),
+            Self::Integrator(_) => f.write_str("INTEGRATOR"),
+            Self::Equilibrium(_) => f.write_str("EQUILIBRIUM"),
+            Self::Linear { .. } => f.write_str("LINEAR/EIGENSOL"),
+            Self::Stop => f.write_str("STOP"),
+        }
+    }
+}
+
 /// The whole validated model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {
@@ -513,8 +553,10 @@ pub struct Model {
     pub units: Units,
     /// ACCGRAV, in model units.
     pub gravity: Vector3,
-    /// PREFERENCES.
+    /// PREFERENCES (the defaults where none is given).
     pub preferences: Preferences,
+    /// The engine settings a PREFERENCES statement gave (to tell them from the defaults).
+    pub engine_preferences: crate::engine_choice::DatasetEngine,
     /// Parts by id.
     pub parts: BTreeMap<u32, Part>,
     /// Markers by id.
@@ -527,6 +569,8 @@ pub struct Model {
     pub joints: Vec<Joint>,
     /// JPRIMs in id order.
     pub primitives: Vec<JointPrimitive>,
+    /// GCONs in id order.
+    pub gcons: Vec<Gcon>,
     /// MOTIONs in id order.
     pub motions: Vec<Motion>,
     /// SFORCEs in id order.
@@ -543,6 +587,13 @@ pub struct Model {
     pub output_flags: Vec<&'static str>,
     /// The command file's commands, in order, with their origins.
     pub commands: Vec<(Origin, Command)>,
+    /// VARIABLEs left out because their FUNCTION calls a function this solver does not
+    /// evaluate (id → why): a warning at the VARIABLE, and an error wherever its value is
+    /// needed (a VARVAL in a MOTION, SFORCE, REQUEST or another VARIABLE).
+    pub unevaluated_variables: BTreeMap<u32, String>,
+    /// The dataset's statements as written, counted by full keyword (`PART`, `CONTACT`, …),
+    /// every one whether or not it lowered without errors.
+    pub written: BTreeMap<&'static str, usize>,
 }
 
 impl Model {

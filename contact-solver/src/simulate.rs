@@ -17,6 +17,7 @@
 use super::EvaluationError;
 use super::bdf::{Bdf, IntegratorError, IntegratorSettings, IntegratorStats};
 use super::contact_force::{ContactForce, ContactReport};
+use super::frame::FrameDynamics;
 use super::mbs::{MbsError, MultibodySystem, PartState, StateView};
 use std::sync::Arc;
 
@@ -56,6 +57,9 @@ pub struct Frame {
     pub parts: Vec<PartState>,
     /// Per CONTACT (in the order given), its contacts.
     pub contacts: Vec<Vec<ContactReport>>,
+    /// Accelerations and constraint reactions, when the system was asked for them
+    /// ([`MultibodySystem::set_output_dynamics`]); `None` otherwise.
+    pub dynamics: Option<FrameDynamics>,
 }
 
 /// What a run did.
@@ -199,7 +203,12 @@ pub fn simulate_with_progress(
             .map(|c| c.reports(t, &view))
             .collect::<Result<_, _>>()
             .map_err(|source| SimulationError::Evaluation { t, source })?;
-        Ok(Frame { t, parts, contacts })
+        Ok(Frame {
+            t,
+            parts,
+            contacts,
+            dynamics: None,
+        })
     };
     let mut frame = frame_at(system, start, bdf.y())?;
     {
@@ -209,6 +218,13 @@ pub fn simulate_with_progress(
         }
     }
     let mut active: Vec<bool> = frame.contacts.iter().map(|c| !c.is_empty()).collect();
+    if system.output_dynamics() {
+        frame.dynamics = Some(
+            system
+                .frame_dynamics(start, bdf.y())
+                .map_err(|source| SimulationError::Evaluation { t: start, source })?,
+        );
+    }
     sink(&frame).map_err(|source| SimulationError::Output { t: start, source })?;
     summary.frames += 1;
     let outputs = ((end - start) / output_step).round().max(1.0) as u64;
@@ -290,14 +306,21 @@ pub fn simulate_with_progress(
         });
         while next_output <= outputs && output_time(next_output) <= t {
             let t_out = output_time(next_output);
-            let output = if t_out == t {
-                frame.clone()
+            let (mut output, y) = if t_out == t {
+                (frame.clone(), bdf.y().clone())
             } else {
                 let (y, _) = bdf
                     .interpolate(t_out)
                     .map_err(|source| SimulationError::Integrator { t, source })?;
-                frame_at(system, t_out, &y)?
+                (frame_at(system, t_out, &y)?, y)
             };
+            if system.output_dynamics() {
+                output.dynamics = Some(
+                    system
+                        .frame_dynamics(t_out, &y)
+                        .map_err(|source| SimulationError::Evaluation { t: t_out, source })?,
+                );
+            }
             sink(&output).map_err(|source| SimulationError::Output { t: t_out, source })?;
             summary.frames += 1;
             next_output += 1;

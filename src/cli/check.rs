@@ -152,7 +152,7 @@ pub fn check_mesh_files(model: &Model) -> Vec<Diagnostic> {
     let tolerance = crate::engine_choice::resolve(
         &crate::engine_choice::Overrides::default(),
         &|k| std::env::var(k).ok(),
-        Some(&model.preferences),
+        model.engine_preferences,
     )
     .map_or(model.preferences.faceting_tolerance, |s| {
         s.faceting_tolerance
@@ -209,11 +209,12 @@ pub fn summary(model: &Model, engine: &str) -> String {
         .ground()
         .map(|g| format!("PART/{g}"))
         .unwrap_or_else(|| "none".into());
+    let none = BTreeMap::new();
     s.push_str(&format!(
         "parts: {} (ground {ground}), markers: {}, graphics: {}\n",
-        model.parts.len(),
-        model.markers.len(),
-        model.graphics.len()
+        written(model, &["PART"], model.parts.len(), &none),
+        written(model, &["MARKER"], model.markers.len(), &none),
+        written(model, &["GRAPHICS"], model.graphics.len(), &none),
     ));
     let mut joints: BTreeMap<String, usize> = BTreeMap::new();
     for j in &model.joints {
@@ -227,16 +228,20 @@ pub fn summary(model: &Model, engine: &str) -> String {
             .or_default() += 1;
     }
     s.push_str(&format!(
-        "joints: {}{}\n",
-        model.joints.len() + model.primitives.len(),
-        counts(&joints)
+        "joints: {}\n",
+        written(
+            model,
+            &["JOINT", "JPRIM"],
+            model.joints.len() + model.primitives.len(),
+            &joints
+        )
     ));
     s.push_str(&format!(
         "motions: {}, sforces: {}, variables: {}, requests: {}\n",
-        model.motions.len(),
-        model.sforces.len(),
-        model.variables.len(),
-        model.requests.len()
+        written(model, &["MOTION"], model.motions.len(), &none),
+        written(model, &["SFORCE"], model.sforces.len(), &none),
+        written(model, &["VARIABLE"], model.variables.len(), &none),
+        written(model, &["REQUEST"], model.requests.len(), &none),
     ));
     let mut contacts: BTreeMap<String, usize> = BTreeMap::new();
     for c in &model.contacts {
@@ -251,20 +256,36 @@ pub fn summary(model: &Model, engine: &str) -> String {
         *contacts.entry(key).or_default() += 1;
     }
     s.push_str(&format!(
-        "contacts: {}{}\n",
-        model.contacts.len(),
-        counts(&contacts)
+        "contacts: {}\n",
+        written(model, &["CONTACT"], model.contacts.len(), &contacts)
     ));
     s.push_str(&format!("engine: {engine}\n"));
     s
 }
 
-fn counts(map: &BTreeMap<String, usize>) -> String {
-    if map.is_empty() {
-        return String::new();
+/// The number of `names` statements as written (at least the `lowered` count, for a model not
+/// read from text), then in parentheses the `breakdown` of the lowered ones and how many did
+/// not lower (their errors are listed below the header): `3 (BOX to PLANE 1, 2 with errors)`.
+fn written(
+    model: &Model,
+    names: &[&str],
+    lowered: usize,
+    breakdown: &BTreeMap<String, usize>,
+) -> String {
+    let as_written: usize = names
+        .iter()
+        .map(|n| model.written.get(n).copied().unwrap_or(0))
+        .sum();
+    let total = as_written.max(lowered);
+    let mut parts: Vec<String> = breakdown.iter().map(|(k, n)| format!("{k} {n}")).collect();
+    if total > lowered {
+        parts.push(format!("{} with errors", total - lowered));
     }
-    let parts: Vec<String> = map.iter().map(|(k, n)| format!("{k} {n}")).collect();
-    format!(" ({})", parts.join(", "))
+    if parts.is_empty() {
+        total.to_string()
+    } else {
+        format!("{total} ({})", parts.join(", "))
+    }
 }
 
 /// Runs `contact check` with the engine chosen by [`engine_for`]; writes the report to `out`
@@ -289,7 +310,11 @@ pub fn run_with(
     let mut diagnostics = loaded.diagnostics;
     let model = loaded.model;
     let mut library = model.preferences.geometry_library;
-    let mut source = "PREFERENCES";
+    let mut source = if model.engine_preferences.library.is_some() {
+        "PREFERENCES"
+    } else {
+        "default"
+    };
     if let Some(name) = &args.engine {
         match GeometryLibrary::parse(name) {
             Ok(l) => {
@@ -341,7 +366,7 @@ pub fn run_with(
     let environment = crate::engine_choice::resolve(
         &crate::engine_choice::Overrides::default(),
         &|k| std::env::var(k).ok(),
-        Some(&model.preferences),
+        model.engine_preferences,
     )
     .err();
     // Dataset first, then the command file; each in line and column order.

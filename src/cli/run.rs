@@ -126,9 +126,14 @@ fn print_outcome(
             } else {
                 ""
             };
+            let requests: String = files
+                .request_files()
+                .iter()
+                .map(|name| format!(", {name}"))
+                .collect();
             writeln!(
                 out,
-                "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg{linear})",
+                "results in {}/ (parts.csv, contacts.csv, frames.jsonl, summary.json, contact_force.svg, penetration.svg{requests}{linear})",
                 files.dir().display()
             )?;
             Ok(0)

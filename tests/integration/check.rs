@@ -204,7 +204,7 @@ fn check_prints_a_summary_and_exits_1_on_errors() {
         "{text}"
     );
     assert!(
-        text.contains("engine: sphere-plane (from PREFERENCES)\n"),
+        text.contains("engine: sphere-plane (from default)\n"),
         "{text}"
     );
     assert!(
@@ -219,6 +219,35 @@ fn check_prints_a_summary_and_exits_1_on_errors() {
         "{text}"
     );
     assert!(text.ends_with("1 error(s), 0 warning(s)\n"), "{text}");
+
+    // A PREFERENCES that names the library is reported as the source.
+    let preferred = MODEL.replace(
+        "END\n",
+        "PREFERENCES/ CONTACT_GEOMETRY_LIBRARY = DEFAULT_LIBRARY\nEND\n",
+    );
+    let preferred = write_model("check_preferred.adm", &preferred);
+    let mut out = Vec::new();
+    run_with(&args(preferred), &mut out, &engines).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("engine: sphere-plane (from PREFERENCES)\n"),
+        "{text}"
+    );
+
+    // The header counts statements as written: a CONTACT whose geometry is missing is counted
+    // with its error.
+    let broken = MODEL.replace(
+        "END\n",
+        "CONTACT/3, IGEOM = 99, JGEOM = 1, IMPACT, STIFFNESS = 1e5, DAMPING = 10, DMAX = 0.1, EXPONENT = 2.2\nEND\n",
+    );
+    let broken = write_model("check_broken.adm", &broken);
+    let mut out = Vec::new();
+    assert_eq!(run_with(&args(broken), &mut out, &engines).unwrap(), 1);
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("contacts: 3 (BOX to PLANE 1, ELLIPSOID to PLANE 1, 1 with errors)\n"),
+        "{text}"
+    );
 
     let without_box = MODEL.replace("CONTACT/2", "!CONTACT/2");
     let path = write_model("check_ball.adm", &without_box);

@@ -1,5 +1,7 @@
 //! The root package's one integration test binary (one link on 2 cores); modules by topic.
 
+mod adams_req;
+mod adams_tests;
 mod augmented_lagrangian;
 mod ball_drop;
 mod check;

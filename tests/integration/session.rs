@@ -211,3 +211,36 @@ fn a_dataset_with_errors_runs_nothing() {
     assert!(matches!(missing, RunError::Dataset(_)), "{missing}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Two SIMULATE commands keep their own END and output step; the second starts where the
+/// first ended, whose last frame is not written twice. Without PREFERENCES the engine is the
+/// default, and the report says so.
+#[test]
+fn each_simulate_writes_at_its_own_output_step() {
+    let adm = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/adams-tests/Revolute_Case02/test_Revolute_Case02.adm");
+    let dir = std::env::temp_dir().join(format!("contact-spans-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let acf = dir.join("spans.acf");
+    std::fs::write(
+        &acf,
+        "test_Revolute_Case02.adm\nspans\nsimulate/dynamics, end = 0.02, dtout = 0.01\n\
+         simulate/dynamics, end = 0.023, dtout = 0.001\nstop\n",
+    )
+    .unwrap();
+    let mut sink = Recorder::default();
+    let report = run_files(&adm, Some(&acf), &RunOptions::default(), &mut sink).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let frames: Vec<String> = sink
+        .events
+        .iter()
+        .filter_map(|e| e.strip_prefix("frame "))
+        .map(|t| format!("{:.4}", t.parse::<f64>().unwrap()))
+        .collect();
+    assert_eq!(
+        frames,
+        ["0.0000", "0.0100", "0.0200", "0.0210", "0.0220", "0.0230"]
+    );
+    assert_eq!(report.analyses.len(), 2);
+    assert_eq!(report.selection.library_source, Source::Default);
+}

@@ -374,6 +374,7 @@ const REQUEST: &[ArgSpec] = &[
     ignored(vals("CLABELS")),
     ignored(vals("RESULTS_NAME")),
 ];
+const GCON: &[ArgSpec] = &[vals("I"), expr("FUNCTION")];
 const SIMULATE: &[ArgSpec] = &[
     flag("DYNAMICS"),
     flag("KINEMATICS"),
@@ -447,9 +448,18 @@ pub const DATASET_STATEMENTS: &[StatementSpec] = &[
     stmt("OUTPUT", NoId, OUTPUT),
     stmt("RESULTS", NoId, RESULTS),
     StatementSpec {
-        aliases: &[("C", "COMMENT"), ("D", "DISPLACEMENT")],
+        // D, V, A and F are the type abbreviations Adams documents (F would otherwise be a
+        // prefix of F1 … F8 and FUNCTION too).
+        aliases: &[
+            ("C", "COMMENT"),
+            ("D", "DISPLACEMENT"),
+            ("V", "VELOCITY"),
+            ("A", "ACCELERATION"),
+            ("F", "FORCE"),
+        ],
         ..stmt("REQUEST", Required, REQUEST)
     },
+    stmt("GCON", Required, GCON),
     not_modelled("ARRAY"),
     not_modelled("BEAM"),
     not_modelled("BUSHING"),
@@ -459,6 +469,9 @@ pub const DATASET_STATEMENTS: &[StatementSpec] = &[
     not_modelled("DEBUG"),
     not_modelled("DIFF"),
     not_modelled("FEMDATA"),
+    not_modelled("FE_LOAD"),
+    not_modelled("FE_NODE"),
+    not_modelled("FE_PART"),
     not_modelled("FIELD"),
     not_modelled("FLEX_BODY"),
     not_modelled("FRICTION"),
@@ -468,6 +481,7 @@ pub const DATASET_STATEMENTS: &[StatementSpec] = &[
     not_modelled("KINEMATICS"),
     not_modelled("LIST"),
     not_modelled("LSE"),
+    not_modelled("MATERIAL"),
     not_modelled("MFORCE"),
     not_modelled("MREQUEST"),
     not_modelled("NFORCE"),
@@ -476,6 +490,7 @@ pub const DATASET_STATEMENTS: &[StatementSpec] = &[
     not_modelled("POINT_MASS"),
     not_modelled("POUTPUT"),
     not_modelled("PTCV"),
+    not_modelled("SECTION"),
     not_modelled("SENSOR"),
     not_modelled("SPLINE"),
     not_modelled("SPRINGDAMPER"),

@@ -168,6 +168,8 @@ pub enum Callee {
     VarVal,
     /// A force element's force (arguments are ids and flags).
     Element(ElementKind),
+    /// `ORIENT(type, component, i, j)`: an orientation of marker i relative to marker j.
+    Orient,
     /// `USER(r1, …, r30)`: constants for a user routine; not evaluable.
     User,
 }
@@ -221,6 +223,7 @@ pub const FUNCTIONS: &[(&str, Callee, usize, usize)] = &[
     ("MOTION", Callee::Element(ElementKind::Motion), 4, 4),
     ("JOINT", Callee::Element(ElementKind::Joint), 4, 4),
     ("SFORCE", Callee::Element(ElementKind::Sforce), 4, 4),
+    ("ORIENT", Callee::Orient, 4, 4),
     ("USER", Callee::User, 0, 30),
 ];
 
@@ -244,6 +247,10 @@ pub enum Expr {
     VarVal(u32),
     /// A force element's force `NAME(id, jflag, comp, rm)`.
     Element(ElementKind, [u32; 4]),
+    /// `ORIENT(type, component, i, j)`, the four integers as written. Type 27 is the Euler
+    /// parameters of i's axes relative to j's, components 1..=4 = e0 (scalar), e1, e2, e3;
+    /// the dataset check refuses any other type.
+    Orient([u32; 4]),
     /// `USER(r1, …)`: constants for a user routine.
     User(Vec<f64>),
 }
@@ -264,6 +271,7 @@ impl Expr {
             | Self::Measure(..)
             | Self::VarVal(_)
             | Self::Element(..)
+            | Self::Orient(_)
             | Self::User(_) => {}
         }
     }
@@ -274,7 +282,11 @@ impl Expr {
         self.walk(&mut |e| {
             if matches!(
                 e,
-                Self::Measure(..) | Self::VarVal(_) | Self::Element(..) | Self::User(_)
+                Self::Measure(..)
+                    | Self::VarVal(_)
+                    | Self::Element(..)
+                    | Self::Orient(_)
+                    | Self::User(_)
             ) {
                 only = false;
             }
@@ -285,10 +297,12 @@ impl Expr {
     /// Every marker id a measure names (0s left out), in order of appearance.
     pub fn marker_ids(&self) -> Vec<u32> {
         let mut ids = Vec::new();
-        self.walk(&mut |e| {
-            if let Self::Measure(_, markers) = e {
+        self.walk(&mut |e| match e {
+            Self::Measure(_, markers) => {
                 ids.extend(markers.iter().copied().filter(|m| *m != 0));
             }
+            Self::Orient([_, _, i, j]) => ids.extend([*i, *j].into_iter().filter(|m| *m != 0)),
+            _ => {}
         });
         ids
     }

@@ -15,6 +15,11 @@ pub trait Context {
     fn variable(&self, id: u32) -> Result<f64, EvalError>;
     /// A force element's force component: `NAME(id, jflag, comp, rm)`.
     fn element_force(&self, kind: ElementKind, args: [u32; 4]) -> Result<f64, EvalError>;
+    /// `ORIENT(type, component, i, j)`; by default [`EvalError::NeedsState`] (only request
+    /// output evaluates it).
+    fn orient(&self, _args: [u32; 4]) -> Result<f64, EvalError> {
+        Err(EvalError::NeedsState("ORIENT"))
+    }
 }
 
 /// A context that knows only the time: measures, variables and forces are
@@ -209,6 +214,7 @@ impl Expr {
             Self::Measure(m, markers) => ctx.measure(*m, markers)?,
             Self::VarVal(id) => ctx.variable(*id)?,
             Self::Element(kind, args) => ctx.element_force(*kind, *args)?,
+            Self::Orient(args) => ctx.orient(*args)?,
             Self::User(_) => return Err(EvalError::User),
         })
     }

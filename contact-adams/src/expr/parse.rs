@@ -345,6 +345,10 @@ impl Parser {
                 let v = ids(&args)?;
                 Expr::Element(kind, [v[0], v[1], v[2], v[3]])
             }
+            Callee::Orient => {
+                let v = ids(&args)?;
+                Expr::Orient([v[0], v[1], v[2], v[3]])
+            }
             Callee::User => {
                 let mut constants = Vec::new();
                 for a in &args {

@@ -246,7 +246,18 @@ pub fn lower_with_routines(
             JointKind::Planar => ConstraintKind::Planar,
             JointKind::Universal => ConstraintKind::Universal,
             JointKind::Hooke => ConstraintKind::Hooke,
-            JointKind::Convel | JointKind::Rackpin | JointKind::Screw => {
+            JointKind::Rackpin => {
+                let (mi, mj) = (marker(j.i, &j.origin)?, marker(j.j, &j.origin)?);
+                let pd = j.parameter.ok_or_else(|| {
+                    unsupported(&j.origin, format!("JOINT/{}: RACKPIN needs PD", j.id))
+                })?;
+                let id = builder
+                    .add_rackpin(format!("JOINT/{}", j.id), mi, mj, pd)
+                    .map_err(element(&j.origin))?;
+                joints.insert(j.id, id);
+                continue;
+            }
+            JointKind::Convel | JointKind::Screw => {
                 return Err(unsupported(
                     &j.origin,
                     format!(
@@ -275,6 +286,12 @@ pub fn lower_with_routines(
         builder
             .add_constraint(format!("JPRIM/{}", p.id), kind, mi, mj)
             .map_err(element(&p.origin))?;
+    }
+    for g in &model.gcons {
+        let (mi, mj) = (marker(g.i, &g.origin)?, marker(g.j, &g.origin)?);
+        builder
+            .add_distance(format!("GCON/{}", g.id), mi, mj, g.length)
+            .map_err(element(&g.origin))?;
     }
     for m in &model.motions {
         if !m.function.is_time_only() {

@@ -8,4 +8,6 @@ pub mod measures;
 pub mod motion_level;
 pub mod output;
 pub mod plan;
+pub mod request_file;
+pub mod requests;
 pub mod sforce;

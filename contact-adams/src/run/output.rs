@@ -6,6 +6,8 @@
 //!   penetration and its rate, normal force, friction force and torque, area;
 //! - `frames.jsonl`: the same, one JSON object per output step (JSON lines, so a run cut short
 //!   leaves every completed line readable);
+//! - `requests.csv` and, with OUTPUT/REQSAVE, `<model>.req` when the model has REQUESTs
+//!   ([`request_file`](super::request_file));
 //! - at the end (also after a failure): `contact_force.svg` and `penetration.svg` against time,
 //!   one curve per CONTACT, and `summary.json`.
 //!
@@ -16,6 +18,7 @@
 //! watched sees its files grow while it runs. Frames are serialized straight from the states,
 //! without building JSON values.
 
+use super::request_file::{RequestOutput, RequestWriter};
 use crate::svg_plot::{DecimatedSeries, Plot, Scale, Series};
 use contact_solver::mbs::PartId;
 use contact_solver::simulate::Frame;
@@ -75,6 +78,7 @@ pub struct ResultWriter {
     depth_series: Vec<DecimatedSeries>,
     parts_line: Vec<PartLine>,
     last_flush: Instant,
+    requests: Option<RequestWriter>,
 }
 
 impl ResultWriter {
@@ -83,6 +87,7 @@ impl ResultWriter {
         dir: &Path,
         part_ids: Vec<(PartId, u32)>,
         contact_names: Vec<String>,
+        requests: Option<RequestOutput>,
     ) -> std::io::Result<Self> {
         std::fs::create_dir_all(dir).map_err(|e| naming(dir, e))?;
         let open = |name: &str| {
@@ -110,6 +115,9 @@ impl ResultWriter {
             depth_series: vec![DecimatedSeries::new(); n],
             parts_line: Vec::new(),
             last_flush: Instant::now(),
+            requests: requests
+                .map(|r| RequestWriter::create(dir, r))
+                .transpose()?,
         })
     }
 
@@ -200,6 +208,9 @@ impl ResultWriter {
         )?;
         self.parts_line = parts_json;
         writeln!(self.frames)?;
+        if let Some(requests) = &mut self.requests {
+            requests.write(frame)?;
+        }
         if self.last_flush.elapsed() >= FLUSH_INTERVAL {
             self.flush()?;
         }
@@ -211,7 +222,19 @@ impl ResultWriter {
         self.last_flush = Instant::now();
         self.parts_csv.flush()?;
         self.contacts_csv.flush()?;
+        if let Some(requests) = &mut self.requests {
+            requests.flush()?;
+        }
         self.frames.flush()
+    }
+
+    /// The request files written, by name (`requests.csv`, and `<model>.req` with REQSAVE).
+    pub fn request_files(&self) -> Vec<String> {
+        match &self.requests {
+            Some(r) if r.writes_req() => vec!["requests.csv".into(), r.req_name().into()],
+            Some(_) => vec!["requests.csv".into()],
+            None => Vec::new(),
+        }
     }
 
     /// Writes the plots and `summary.json` (call after the run, whether it succeeded or not).

@@ -2,7 +2,8 @@
 //! `contact run` flags), with the INTEGRATOR and EQUILIBRIUM settings in force at each.
 //!
 //! - SIMULATE/DYNAMICS and SIMULATE/KINEMATICS run from the current time to END (or for
-//!   DURATION); consecutive SIMULATEs of the same analysis run as one span (a note says so).
+//!   DURATION), each with its own DTOUT or STEPS; the next SIMULATE starts from the state the
+//!   last one reached (its first frame, a repeat of the last one written, is not written again).
 //! - SIMULATE/TRANSIENT runs kinematics when the model has zero degrees of freedom and dynamics
 //!   otherwise, as in Adams. The degrees of freedom are `6n − rank(Φ_v)` at the model's
 //!   configuration assembled at the TRANSIENT's start time (`n` moving parts, `Φ_v` the
@@ -375,30 +376,20 @@ pub fn plan_analyses(
                         });
                     }
                 };
-                match &mut span {
-                    Some(current) if current.analysis == timed => {
-                        notes.push(format!(
-                            "{origin}: consecutive SIMULATE commands run as one span to END = {stop}"
-                        ));
-                        current.end = stop;
-                        current.output = current.output.or(*output);
-                        current.transient = current.transient.or(transient);
-                    }
-                    _ => {
-                        if let Some(done) = span.take() {
-                            steps.push(finish(done, overrides, &mut notes, false)?);
-                        }
-                        span = Some(Span {
-                            origin: Some(origin.clone()),
-                            analysis: timed,
-                            start: time,
-                            end: stop,
-                            output: *output,
-                            integrator,
-                            transient,
-                        });
-                    }
+                // Each SIMULATE is its own span with its own END and output step; the next
+                // one starts from the state this one reaches.
+                if let Some(done) = span.take() {
+                    steps.push(finish(done, overrides, &mut notes, false)?);
                 }
+                span = Some(Span {
+                    origin: Some(origin.clone()),
+                    analysis: timed,
+                    start: time,
+                    end: stop,
+                    output: *output,
+                    integrator,
+                    transient,
+                });
                 time = stop;
             }
             Command::Linear { damping } => {
@@ -412,7 +403,7 @@ pub fn plan_analyses(
             }
             Command::Stop => break,
             other => notes.push(format!(
-                "{origin}: {other:?} is not applied by this solver yet: it is ignored"
+                "{origin}: {other} is not applied by this solver: the command is ignored"
             )),
         }
     }
@@ -602,23 +593,27 @@ mod tests {
              SIMULATE/KINEMATICS, DURATION = 0.5, STEPS = 5\nSIMULATE/INITIAL_CONDITIONS\nSTOP\n",
             PlanOverrides::default(),
         );
-        assert_eq!(steps.len(), 4, "{steps:?}");
-        let AnalysisStep::Dynamics {
-            start,
-            end,
-            output_step,
-            ..
-        } = steps[0]
-        else {
-            panic!("{:?}", steps[0]);
-        };
-        assert_eq!((start, end, output_step), (0.0, 2.0, 0.1));
-        let AnalysisStep::Statics { t, settings } = steps[1] else {
-            panic!("{:?}", steps[1]);
+        assert_eq!(steps.len(), 5, "{steps:?}");
+        // Each SIMULATE/DYNAMICS keeps its own END and DTOUT.
+        let spans: Vec<(f64, f64, f64)> = steps[..2]
+            .iter()
+            .map(|s| match *s {
+                AnalysisStep::Dynamics {
+                    start,
+                    end,
+                    output_step,
+                    ..
+                } => (start, end, output_step),
+                ref other => panic!("{other:?}"),
+            })
+            .collect();
+        assert_eq!(spans, [(0.0, 1.0, 0.1), (1.0, 2.0, 0.5)]);
+        let AnalysisStep::Statics { t, settings } = steps[2] else {
+            panic!("{:?}", steps[2]);
         };
         assert_eq!((t, settings.maxit, settings.dynamic), (2.0, 7, true));
         assert_eq!(
-            steps[2],
+            steps[3],
             AnalysisStep::Kinematics {
                 start: 2.0,
                 end: 2.5,
@@ -626,11 +621,29 @@ mod tests {
                 transient: None,
             }
         );
-        assert_eq!(steps[3], AnalysisStep::InitialConditions { t: 2.5 });
-        assert!(
-            notes.iter().any(|n| n.contains("one span to END = 2")),
-            "{notes:?}"
+        assert_eq!(steps[4], AnalysisStep::InitialConditions { t: 2.5 });
+        assert!(!notes.iter().any(|n| n.contains("one span")), "{notes:?}");
+    }
+
+    /// Three SIMULATEs with output steps 0.01, 1e-6 and 1e-3 keep theirs.
+    #[test]
+    fn each_simulate_keeps_its_own_output_step() {
+        let (steps, _) = plan(
+            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.01\n\
+             SIMULATE/DYNAMICS, END = 1.00001, DTOUT = 1E-6\nSIMULATE/DYNAMICS, DURATION = 1, STEPS = 1000\nSTOP\n",
+            PlanOverrides::default(),
         );
+        let outputs: Vec<f64> = steps
+            .iter()
+            .map(|s| match *s {
+                AnalysisStep::Dynamics { output_step, .. } => output_step,
+                ref other => panic!("{other:?}"),
+            })
+            .collect();
+        assert_eq!(outputs.len(), 3);
+        assert_eq!(outputs[0], 0.01);
+        assert_eq!(outputs[1], 1e-6);
+        assert!((outputs[2] - 1e-3).abs() < 1e-15, "{outputs:?}");
     }
 
     #[test]
@@ -720,13 +733,21 @@ mod tests {
                 .any(|n| n.contains("ran as DYNAMICS: the model has 2 degrees of freedom")),
             "{notes:?}"
         );
-        // A DYNAMICS followed by a TRANSIENT that chooses dynamics runs as one span.
+        // A DYNAMICS followed by a TRANSIENT that chooses dynamics: two spans, the second
+        // from where the first ends.
         let (steps, _) = plan_with_dof(
             "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2, DTOUT = 0.1\nSTOP\n",
             PlanOverrides::default(),
             Some(1),
         );
-        assert_eq!(steps.len(), 1);
-        assert!(matches!(steps[0], AnalysisStep::Dynamics { end: 2.0, .. }));
+        assert_eq!(steps.len(), 2);
+        assert!(matches!(
+            steps[1],
+            AnalysisStep::Dynamics {
+                start: 1.0,
+                end: 2.0,
+                ..
+            }
+        ));
     }
 }

@@ -66,6 +66,15 @@ impl ResultFiles {
         self.write_error.as_ref()
     }
 
+    /// The request files being written (`requests.csv`, and `<model>.req` with
+    /// OUTPUT/REQSAVE), by name; empty when the model has no REQUESTs.
+    pub fn request_files(&self) -> Vec<String> {
+        self.writer
+            .as_ref()
+            .map(ResultWriter::request_files)
+            .unwrap_or_default()
+    }
+
     /// The files written when the run finished (the plots and `summary.json`).
     pub fn finished_files(&self) -> &[PathBuf] {
         &self.finished
@@ -78,6 +87,7 @@ impl RunSink for ResultFiles {
             &self.dir,
             layout.parts.to_vec(),
             layout.contacts.to_vec(),
+            layout.requests.cloned(),
         )?);
         Ok(())
     }

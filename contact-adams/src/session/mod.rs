@@ -69,6 +69,7 @@ pub use runner::run_model;
 use crate::dataset::{self, Diagnostic, Loaded, Severity};
 use crate::engine_choice::EngineSelection;
 use crate::run::plan::AnalysisStep;
+use crate::run::request_file::RequestOutput;
 use contact_core::{FacetingTolerance, GeometryLibrary};
 use contact_solver::linear::Linearization;
 use contact_solver::mbs::PartId;
@@ -103,6 +104,9 @@ pub struct RunLayout<'a> {
     pub contacts: &'a [String],
     /// The analyses the run performs, in order.
     pub analyses: &'a [AnalysisStep],
+    /// The model's REQUESTs and how their files are written (`None` when it has none); each
+    /// frame then carries the accelerations and reactions they read.
+    pub requests: Option<&'a RequestOutput>,
 }
 
 /// Where a run delivers what it computes; only [`frame`](Self::frame) has no default.

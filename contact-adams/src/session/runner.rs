@@ -9,11 +9,14 @@ use crate::engine_choice::{self, Overrides};
 use crate::model::{MeshFile, Model};
 use crate::run::lower::{LowerError, LoweredModel, lower};
 use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
+use crate::run::request_file::{RequestOutput, units_tag};
+use crate::run::requests::RequestSet;
 use contact_core::{FacetingTolerance, GeometryEngine, GeometryInstance, WorkCounters};
 use contact_solver::contact_force::Analysis;
 use contact_solver::kinematics::initial_degrees_of_freedom;
 use contact_solver::parallel::{MAX_THREADS, Parallelism};
 use std::path::Path;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// Runs `model`'s analyses (read from `source`, which the report names) with `options`,
@@ -36,7 +39,7 @@ pub fn run_model(
     let selection = engine_choice::resolve(
         &overrides,
         &|k| std::env::var(k).ok(),
-        Some(&model.preferences),
+        model.engine_preferences,
     )?;
     sink.engine(&selection).map_err(RunError::Output)?;
     let (threads, by) = match (options.threads, model.preferences.threads) {
@@ -59,6 +62,7 @@ pub fn run_model(
         parallelism,
         tolerance: selection.faceting_tolerance,
         prepare: Duration::ZERO,
+        output_dynamics: !model.requests.is_empty(),
     };
     let steps = plan(model, options, &lowering, sink)?;
     let Some(first) = steps.first() else {
@@ -71,10 +75,12 @@ pub fn run_model(
         .iter()
         .map(|c| format!("CONTACT/{}", c.id))
         .collect();
+    let requests = request_output(model, source, &current.1, sink)?;
     sink.start(&RunLayout {
         parts: &current.1.parts,
         contacts: &contacts,
         analyses: &steps,
+        requests: requests.as_ref(),
     })
     .map_err(RunError::Output)?;
     let (start, end) = span_of(&steps);
@@ -166,6 +172,8 @@ struct Lowering<'a> {
     tolerance: FacetingTolerance,
     /// Wall time spent lowering so far.
     prepare: Duration,
+    /// Whether frames carry accelerations and reactions (the model has REQUESTs).
+    output_dynamics: bool,
 }
 
 impl Lowering<'_> {
@@ -177,6 +185,7 @@ impl Lowering<'_> {
         let read = |f: &MeshFile| read_mesh(f, self.tolerance);
         let mut lowered = lower(self.model, self.engine, analysis, &read)?;
         lowered.system.set_parallelism(self.parallelism.clone());
+        lowered.system.set_output_dynamics(self.output_dynamics);
         self.prepare += started.elapsed();
         Ok(lowered)
     }
@@ -189,6 +198,49 @@ impl Lowering<'_> {
             lower(self.model, self.engine, Analysis::Quasistatic, &read).map_err(Box::new)?;
         Ok(initial_degrees_of_freedom(&lowered.system, t)?)
     }
+}
+
+/// The model's REQUESTs ready to write (`None` when it has none), with a note when
+/// `OUTPUT/REQSAVE` is absent: Adams then writes no `.req` file, and neither does this run.
+fn request_output(
+    model: &Model,
+    source: &Path,
+    lowered: &LoweredModel,
+    sink: &mut dyn RunSink,
+) -> Result<Option<RequestOutput>, RunError> {
+    if model.requests.is_empty() {
+        return Ok(None);
+    }
+    let variables = model
+        .variables
+        .iter()
+        .map(|v| (v.id, v.function.clone()))
+        .collect();
+    let set = RequestSet::new(
+        model,
+        lowered.system.constraint_rows().map(|(name, _)| name),
+        lowered.markers.clone(),
+        Arc::new(variables),
+    );
+    let stem = source
+        .file_stem()
+        .map_or_else(|| "model".into(), |s| s.to_string_lossy().into_owned());
+    let reqsave = model.output_flags.contains(&"REQSAVE");
+    let file_name = format!("{stem}.req");
+    if !reqsave {
+        sink.note(&format!(
+            "no OUTPUT/REQSAVE: {file_name} is not written (as Adams writes none); the {} REQUESTs go to requests.csv",
+            model.requests.len()
+        ))
+        .map_err(RunError::Output)?;
+    }
+    Ok(Some(RequestOutput {
+        set,
+        title: model.title.clone(),
+        units_tag: units_tag(&model.units),
+        reqsave,
+        file_name,
+    }))
 }
 
 /// A mesh file (STL, OBJ, a Parasolid body tessellated at the model-wide `tolerance` unless

@@ -134,6 +134,62 @@ impl MultibodyBuilder {
         Ok(ConstraintId(self.constraints.len() - 1))
     }
 
+    /// Adds a distance constraint `|p_I − p_J| − length = 0` between the origins of marker I
+    /// and marker J (on different parts): Adams' `GCON, FUNCTION = DM(i, j) − L`. One equation;
+    /// `length` must be finite and > 0 (at zero distance the direction, and so the Jacobian,
+    /// is undefined).
+    pub fn add_distance(
+        &mut self,
+        name: impl Into<String>,
+        marker_i: MarkerId,
+        marker_j: MarkerId,
+        length: f64,
+    ) -> Result<ConstraintId, MbsError> {
+        let name = name.into();
+        if !(length.is_finite() && length > 0.0) {
+            return Err(MbsError::InvalidArgument {
+                element: name,
+                argument: "distance",
+                value: format!("{length:?}"),
+                allowed: "finite and > 0",
+            });
+        }
+        let id = self.add_constraint(name, ConstraintKind::AtPoint, marker_i, marker_j)?;
+        let element = &mut self.constraints[id.0];
+        element.kind = None;
+        element.primitives = vec![Primitive::Distance { length }];
+        Ok(id)
+    }
+
+    /// Adds a RACKPIN between marker I (the pinion, z_I its axis) and marker J (the rack, z_J
+    /// its direction of travel) with pitch diameter `pitch_diameter` (finite, > 0): one
+    /// equation, the rack's travel along z_J equal to PD/2 times the pinion's rotation about
+    /// z_I, zero where x_I points along z_J (Adams' convention).
+    pub fn add_rackpin(
+        &mut self,
+        name: impl Into<String>,
+        marker_i: MarkerId,
+        marker_j: MarkerId,
+        pitch_diameter: f64,
+    ) -> Result<ConstraintId, MbsError> {
+        let name = name.into();
+        if !(pitch_diameter.is_finite() && pitch_diameter > 0.0) {
+            return Err(MbsError::InvalidArgument {
+                element: name,
+                argument: "PD",
+                value: format!("{pitch_diameter:?}"),
+                allowed: "finite and > 0",
+            });
+        }
+        let id = self.add_constraint(name, ConstraintKind::AtPoint, marker_i, marker_j)?;
+        let element = &mut self.constraints[id.0];
+        element.kind = None;
+        element.primitives = vec![Primitive::RackPin {
+            radius: 0.5 * pitch_diameter,
+        }];
+        Ok(id)
+    }
+
     /// Adds a MOTION driving `dof` of `joint` with `function` (see [`MotionDof`] for the measure
     /// and the joints allowed).
     pub fn add_motion(
@@ -363,6 +419,7 @@ impl MultibodyBuilder {
             forces: self.forces,
             parallelism: crate::parallel::Parallelism::serial(),
             force_partials: super::force::ForcePartials::default(),
+            output_dynamics: false,
             gravity_w: self.gravity_w,
             layout,
             length_scale,

@@ -46,6 +46,8 @@ pub struct MultibodySystem {
     pub(crate) parallelism: crate::parallel::Parallelism,
     /// Where the Newton matrix takes the force elements' partials from.
     pub(crate) force_partials: super::force::ForcePartials,
+    /// Whether output frames carry accelerations and reactions ([`crate::frame::FrameDynamics`]).
+    pub(crate) output_dynamics: bool,
 }
 
 impl std::fmt::Debug for MultibodySystem {

@@ -246,13 +246,19 @@ pub(crate) fn apply_preferences(low: &mut Lowering, model: &mut Model, st: &Stat
     let r = Reader::new(st);
     if let Some(Some((word, loc))) = low.ok(r.word("CONTACT_GEOMETRY_LIBRARY")) {
         match GeometryLibrary::parse(&word) {
-            Ok(lib) => model.preferences.geometry_library = lib,
+            Ok(lib) => {
+                model.preferences.geometry_library = lib;
+                model.engine_preferences.library = Some(lib);
+            }
             Err(e) => low.error(Problem::new(loc, format!("PREFERENCES: {e}"))),
         }
     }
     if let Some(Some(ft)) = low.ok(r.number("CONTACT_FACETING_TOLERANCE")) {
         match FacetingTolerance::new(ft) {
-            Ok(ft) => model.preferences.faceting_tolerance = ft,
+            Ok(ft) => {
+                model.preferences.faceting_tolerance = ft;
+                model.engine_preferences.faceting_tolerance = Some(ft);
+            }
             Err(e) => low.error(Problem::new(
                 r.loc_of("CONTACT_FACETING_TOLERANCE"),
                 format!("PREFERENCES: CONTACT_{e}"),

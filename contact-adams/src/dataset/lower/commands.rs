@@ -147,8 +147,14 @@ fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) ->
     match st.spec.name {
         "SIMULATE" => low.ok(simulate(&r)),
         "LINEAR" => low.ok(linear(&r)),
-        "ACTIVATE" => low.ok(activate(&r, true)),
-        "DEACTIVATE" => low.ok(activate(&r, false)),
+        "ACTIVATE" | "DEACTIVATE" => {
+            let command = low.ok(activate(&r, st.spec.name == "ACTIVATE"))?;
+            low.warning(
+                st.loc,
+                format!("{command} is not applied by this solver: the command is ignored"),
+            );
+            Some(command)
+        }
         "INTEGRATOR" => integrator(low, st).map(Command::Integrator),
         "EQUILIBRIUM" => equilibrium(low, st).map(Command::Equilibrium),
         "ACCGRAV" => gravity(low, st).map(Command::Gravity),

@@ -2,16 +2,17 @@
 
 use super::Lowering;
 use super::reader::{Problem, Reader};
+use super::variables::missing_variable;
 use crate::dataset::error::Loc;
 use crate::dataset::parser::Statement;
-use crate::expr::{Expr, ExprErrorKind, parse_expr};
+use crate::expr::{Expr, parse_expr};
 use crate::model::{
     EquilibriumSettings, Freedom, IntegratorSettings, Joint, JointKind, JointPrimitive, Model,
-    Motion, MotionLevel, MotionTarget, PrimitiveKind, Request, SForce, Variable,
+    Motion, MotionLevel, MotionTarget, PrimitiveKind, SForce,
 };
 
 /// A marker reference that must exist.
-fn marker(model: &Model, r: &Reader<'_>, name: &str) -> Result<u32, Problem> {
+pub(super) fn marker(model: &Model, r: &Reader<'_>, name: &str) -> Result<u32, Problem> {
     let (m, loc) = r.id(name)?.ok_or_else(|| r.missing(name))?;
     if !model.markers.contains_key(&m) {
         return Err(Problem::new(
@@ -55,8 +56,9 @@ fn function(model: &Model, r: &Reader<'_>, name: &str) -> Result<(Expr, Loc), Pr
             return Err(Problem::new(
                 loc,
                 format!(
-                    "{}: {name}: VARVAL({v}): VARIABLE/{v} is not defined",
-                    r.label()
+                    "{}: {name}: VARVAL({v}): {}",
+                    r.label(),
+                    missing_variable(model, v)
                 ),
             ));
         }
@@ -108,10 +110,18 @@ pub(crate) fn lower_joints(low: &mut Lowering, model: &mut Model, joints: &[&Sta
                     r.number("PITCH")?
                         .ok_or_else(|| r.missing("PITCH for a SCREW joint"))?,
                 ),
-                JointKind::Rackpin => Some(
-                    r.number("PD")?
-                        .ok_or_else(|| r.missing("PD for a RACKPIN joint"))?,
-                ),
+                JointKind::Rackpin => {
+                    let pd = r
+                        .number("PD")?
+                        .ok_or_else(|| r.missing("PD for a RACKPIN joint"))?;
+                    if !(pd.is_finite() && pd > 0.0) {
+                        return Err(Problem::new(
+                            r.loc_of("PD"),
+                            format!("JOINT/{id}: PD = {pd:?} is out of range: must be > 0"),
+                        ));
+                    }
+                    Some(pd)
+                }
                 _ => None,
             };
             Ok(Joint {
@@ -124,10 +134,7 @@ pub(crate) fn lower_joints(low: &mut Lowering, model: &mut Model, joints: &[&Sta
             })
         })();
         if let Some(j) = low.ok(result) {
-            if matches!(
-                j.kind,
-                JointKind::Convel | JointKind::Rackpin | JointKind::Screw
-            ) {
+            if matches!(j.kind, JointKind::Convel | JointKind::Screw) {
                 low.warning(
                     st.loc,
                     format!(
@@ -325,156 +332,6 @@ pub(crate) fn lower_sforces(low: &mut Lowering, model: &mut Model, sforces: &[&S
         })();
         if let Some(f) = low.ok(result) {
             model.sforces.push(f);
-        }
-    }
-}
-
-/// VARIABLE statements: all ids are known first, so variables may read each other.
-pub(crate) fn lower_variables(low: &mut Lowering, model: &mut Model, variables: &[&Statement]) {
-    // Every declared id is known before any function is checked, so a VARVAL may name a
-    // variable defined later in the file.
-    let declared: Vec<u32> = variables
-        .iter()
-        .filter_map(|s| s.id.map(|(id, _)| id))
-        .collect();
-    let mut lowered = Vec::new();
-    for st in variables {
-        let Some((id, _)) = st.id else { continue };
-        let r = Reader::new(st);
-        let result = (|| -> Result<Variable, Problem> {
-            if r.flag("ROUTINE") {
-                return Err(Problem::new(
-                    r.loc_of("ROUTINE"),
-                    format!("VARIABLE/{id}: ROUTINE (user subroutines) is not supported"),
-                ));
-            }
-            let (text, loc) = r
-                .expression("FUNCTION")
-                .ok_or_else(|| r.missing("FUNCTION"))?;
-            let f = parse_expr(&text.text).map_err(|e| {
-                Problem::new(
-                    text.loc_at(e.offset),
-                    format!("VARIABLE/{id}: FUNCTION: {e}"),
-                )
-            })?;
-            for m in f.marker_ids() {
-                if !model.markers.contains_key(&m) {
-                    return Err(Problem::new(
-                        loc,
-                        format!("VARIABLE/{id}: FUNCTION: MARKER/{m} is not defined"),
-                    ));
-                }
-            }
-            for v in f.variable_ids() {
-                if !declared.contains(&v) {
-                    return Err(Problem::new(
-                        loc,
-                        format!(
-                            "VARIABLE/{id}: FUNCTION: VARVAL({v}): VARIABLE/{v} is not defined"
-                        ),
-                    ));
-                }
-            }
-            Ok(Variable {
-                id,
-                origin: low.origin(st.loc),
-                function: f,
-                initial_value: r.number("IC")?,
-            })
-        })();
-        if let Some(v) = low.ok(result) {
-            lowered.push(v);
-        }
-    }
-    report_variable_cycles(low, &lowered);
-    model.variables = lowered;
-}
-
-/// VARIABLEs whose FUNCTIONs read each other through VARVAL in a cycle have no value: each
-/// cycle is an error at the VARIABLE with the smallest id in it, naming the cycle
-/// (`VARIABLE/1 → VARIABLE/2 → VARIABLE/1`).
-fn report_variable_cycles(low: &mut Lowering, variables: &[Variable]) {
-    let reads: std::collections::BTreeMap<u32, Vec<u32>> = variables
-        .iter()
-        .map(|v| (v.id, v.function.variable_ids()))
-        .collect();
-    let mut reported = std::collections::BTreeSet::new();
-    for v in variables {
-        // Depth-first from v, looking for a path back to v.
-        let mut stack = vec![(v.id, vec![v.id])];
-        let mut visited = std::collections::BTreeSet::new();
-        while let Some((at, path)) = stack.pop() {
-            for &next in reads.get(&at).map_or(&[][..], Vec::as_slice) {
-                if next == v.id {
-                    let smallest = path.iter().min().copied().unwrap_or(v.id);
-                    if smallest == v.id && reported.insert(v.id) {
-                        let names: Vec<String> = path
-                            .iter()
-                            .chain([&v.id])
-                            .map(|id| format!("VARIABLE/{id}"))
-                            .collect();
-                        low.error(Problem::new(
-                            v.origin.loc,
-                            format!(
-                                "VARIABLE/{}: FUNCTION: the variables read each other in a cycle ({}): none has a value",
-                                v.id,
-                                names.join(" → ")
-                            ),
-                        ));
-                    }
-                } else if visited.insert(next) {
-                    let mut longer = path.clone();
-                    longer.push(next);
-                    stack.push((next, longer));
-                }
-            }
-        }
-    }
-}
-
-/// REQUEST statements, kept for output; an unsupported function inside is a warning (the
-/// request's other columns still work).
-pub(crate) fn lower_requests(low: &mut Lowering, model: &mut Model, requests: &[&Statement]) {
-    const FUNCTIONS: [&str; 9] = ["F1", "F2", "F3", "F4", "F5", "F6", "F7", "F8", "FUNCTION"];
-    for st in requests {
-        let Some((id, _)) = st.id else { continue };
-        let r = Reader::new(st);
-        let result = (|| -> Result<Request, Problem> {
-            let kind = r.one_of(&["DISPLACEMENT", "VELOCITY", "ACCELERATION", "FORCE"])?;
-            let mut markers = [None; 3];
-            for (k, name) in ["I", "J", "RM"].iter().enumerate() {
-                if r.flag(name) {
-                    markers[k] = Some(marker(model, &r, name)?);
-                }
-            }
-            let mut functions = Vec::new();
-            for name in FUNCTIONS {
-                let Some((text, _)) = r.expression(name) else {
-                    continue;
-                };
-                if let Err(e) = parse_expr(&text.text) {
-                    let at = text.loc_at(e.offset);
-                    match e.kind {
-                        ExprErrorKind::UnknownFunction(_) => low.warning(
-                            at,
-                            format!("REQUEST/{id}: {name}: {e}: this output column will be empty"),
-                        ),
-                        _ => return Err(Problem::new(at, format!("REQUEST/{id}: {name}: {e}"))),
-                    }
-                }
-                functions.push((name, text.text.clone()));
-            }
-            Ok(Request {
-                id,
-                origin: low.origin(st.loc),
-                kind,
-                markers,
-                comment: r.text("COMMENT"),
-                functions,
-            })
-        })();
-        if let Some(q) = low.ok(result) {
-            model.requests.push(q);
         }
     }
 }

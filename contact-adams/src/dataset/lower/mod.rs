@@ -12,6 +12,8 @@ mod contact;
 mod elements;
 mod geometry;
 mod reader;
+mod requests;
+mod variables;
 
 pub use reader::{Problem, parse_number};
 
@@ -71,12 +73,14 @@ fn empty_model(title: String) -> Model {
         units: Units::MKS,
         gravity: Vector3::zeros(),
         preferences: Preferences::default(),
+        engine_preferences: Default::default(),
         parts: BTreeMap::new(),
         markers: BTreeMap::new(),
         graphics: BTreeMap::new(),
         contacts: Vec::new(),
         joints: Vec::new(),
         primitives: Vec::new(),
+        gcons: Vec::new(),
         motions: Vec::new(),
         sforces: Vec::new(),
         variables: Vec::new(),
@@ -85,6 +89,8 @@ fn empty_model(title: String) -> Model {
         equilibrium: EquilibriumSettings::default(),
         output_flags: Vec::new(),
         commands: Vec::new(),
+        written: BTreeMap::new(),
+        unevaluated_variables: BTreeMap::new(),
     }
 }
 
@@ -170,6 +176,9 @@ pub(crate) fn lower(
         .map(|t| t.text.clone())
         .unwrap_or_default();
     let mut model = empty_model(title);
+    for st in &parsed.statements {
+        *model.written.entry(st.spec.name).or_default() += 1;
+    }
     if parsed.end.is_none() {
         let loc = parsed
             .statements
@@ -199,13 +208,15 @@ pub(crate) fn lower(
     let primitives = by_id(&mut low, parsed, "JPRIM");
     elements::lower_primitives(&mut low, &mut model, &primitives);
     let variables = by_id(&mut low, parsed, "VARIABLE");
-    elements::lower_variables(&mut low, &mut model, &variables);
+    variables::lower_variables(&mut low, &mut model, &variables);
     let motions = by_id(&mut low, parsed, "MOTION");
     elements::lower_motions(&mut low, &mut model, &motions);
     let sforces = by_id(&mut low, parsed, "SFORCE");
     elements::lower_sforces(&mut low, &mut model, &sforces);
+    let gcons = by_id(&mut low, parsed, "GCON");
+    requests::lower_gcons(&mut low, &mut model, &gcons);
     let requests = by_id(&mut low, parsed, "REQUEST");
-    elements::lower_requests(&mut low, &mut model, &requests);
+    requests::lower_requests(&mut low, &mut model, &requests);
     for st in singletons(parsed, "INTEGRATOR") {
         if let Some(settings) = elements::integrator(&mut low, st) {
             model.integrator = settings;

@@ -43,6 +43,14 @@ pub(crate) enum Primitive {
     },
     /// The rotation of x_I about z_J equals the drive (a rotational MOTION).
     Angle { drive: TimeFunction },
+    /// `|d| − length`: the I origin at `length` (> 0) from the J origin (GCON `DM(i, j) − L`).
+    Distance { length: f64 },
+    /// RACKPIN, pitch radius `radius` (> 0): `r·wrap(θ − s/r)`, where θ is the rotation of
+    /// I (the pinion) about z_I measured from z_J to x_I, `atan2(x_I·(z_I × z_J), x_I·z_J)`,
+    /// and `s = (p_J − p_I)·z_J` the rack's travel along its z axis. Zero when x_I points along
+    /// z_J with the origins level along z_J; θ = s/r after that. The wrapped difference keeps
+    /// the equation smooth through any number of turns.
+    RackPin { radius: f64 },
 }
 
 impl std::fmt::Debug for Primitive {
@@ -56,6 +64,8 @@ impl std::fmt::Debug for Primitive {
                 write!(f, "InPlane({normal_j:?}_J, driven: {})", drive.is_some())
             }
             Self::Angle { .. } => write!(f, "Angle(driven)"),
+            Self::Distance { length } => write!(f, "Distance({length:?})"),
+            Self::RackPin { radius } => write!(f, "RackPin({radius:?})"),
         }
     }
 }
@@ -105,6 +115,13 @@ impl Primitive {
                 let [x_j, y_j, _] = frames.axes_j;
                 wrap_angle(x_i.dot(&y_j).atan2(x_i.dot(&x_j)) - drive(t).0)
             }
+            Self::Distance { length } => frames.d.norm() - length,
+            Self::RackPin { radius } => {
+                let (x, a, u) = (frames.axes_i[0], frames.axes_i[2], frames.axes_j[2]);
+                let theta = x.dot(&a.cross(&u)).atan2(x.dot(&u));
+                let travel = -frames.d.dot(&u);
+                radius * wrap_angle(theta - travel / radius)
+            }
         }
     }
 
@@ -139,6 +156,34 @@ impl Primitive {
                 let theta_b = (y_j.cross(&x_i) * c - x_j.cross(&x_i) * s) * scale;
                 [zero, theta_a, zero, theta_b]
             }
+            Self::Distance { .. } => {
+                // ∂|d|/∂d = d/|d|; at |d| = 0 the direction is undefined and the row is zero
+                // (the builder refuses markers that start coincident).
+                let norm = frames.d.norm();
+                let n = if norm > 0.0 { frames.d / norm } else { zero };
+                [n, frames.s_i.cross(&n), -n, -frames.s_j.cross(&n)]
+            }
+            Self::RackPin { radius } => {
+                // θ = atan2(S, C), S = x·(a × u), C = x·u (x, a = x_I, z_I; u = z_J):
+                // ∂S/∂θ_I = x × w + a × (u × x), ∂S/∂θ_J = u × (x × a) with w = a × u;
+                // ∂C/∂θ_I = x × u, ∂C/∂θ_J = u × x. The travel s = −d·u has the InPlane
+                // gradient with the sign turned.
+                let (x, a, u) = (frames.axes_i[0], frames.axes_i[2], frames.axes_j[2]);
+                let w = a.cross(&u);
+                let (s, c) = (x.dot(&w), x.dot(&u));
+                let scale = radius / (s * s + c * c);
+                let ds_a = x.cross(&w) + a.cross(&u.cross(&x));
+                let ds_b = u.cross(&x.cross(&a));
+                let (dc_a, dc_b) = (x.cross(&u), u.cross(&x));
+                let theta_a = (ds_a * c - dc_a * s) * scale;
+                let theta_b = (ds_b * c - dc_b * s) * scale;
+                [
+                    u,
+                    theta_a + frames.s_i.cross(&u),
+                    -u,
+                    theta_b + u.cross(&(frames.d + frames.s_j)),
+                ]
+            }
         }
     }
 
@@ -154,7 +199,13 @@ impl Primitive {
 
     /// Whether Φ is a length (`true`) or an angle or cosine (`false`): sets its tolerance.
     pub fn is_length(&self) -> bool {
-        matches!(self, Self::Coincident(_) | Self::InPlane { .. })
+        matches!(
+            self,
+            Self::Coincident(_)
+                | Self::InPlane { .. }
+                | Self::Distance { .. }
+                | Self::RackPin { .. }
+        )
     }
 }
 

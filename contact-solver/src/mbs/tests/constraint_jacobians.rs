@@ -137,3 +137,54 @@ fn equation_counts_match_the_degrees_of_freedom_removed() {
         assert_eq!(kind.equations(), count, "{kind:?}");
     }
 }
+
+/// Two random parts (or a part and ground) joined by a distance constraint or a RACKPIN.
+fn special_system(rackpin: bool, to_ground: bool, seed: u64) -> MultibodySystem {
+    let mut rng = Rng::new(seed);
+    let mut builder = MultibodyBuilder::new(Vector3::zeros());
+    let a = builder.add_part(random_part(&mut rng, "PART/2")).unwrap();
+    let b = if to_ground {
+        PartId::GROUND
+    } else {
+        builder.add_part(random_part(&mut rng, "PART/3")).unwrap()
+    };
+    let i = builder.add_marker(a, rng.pose(0.7)).unwrap();
+    let j = builder.add_marker(b, rng.pose(0.7)).unwrap();
+    if rackpin {
+        builder.add_rackpin("JOINT/1", i, j, 0.3).unwrap();
+    } else {
+        builder.add_distance("GCON/1", i, j, 1.7).unwrap();
+    }
+    builder.build().unwrap()
+}
+
+#[test]
+fn distance_and_rackpin_jacobians_match_central_differences() {
+    for rackpin in [false, true] {
+        for (seed, to_ground) in [(21, false), (22, true), (23, false)] {
+            let mut system = special_system(rackpin, to_ground, seed);
+            let (y, _) = random_state(&system, seed + 100);
+            let error = worst_relative_error(&mut system, &y, 0.3);
+            assert!(
+                error < 1e-6,
+                "rackpin {rackpin} (seed {seed}, ground {to_ground}): relative error {error:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn distance_and_rackpin_refuse_a_size_out_of_range() {
+    let mut builder = MultibodyBuilder::new(Vector3::zeros());
+    let a = builder
+        .add_part(random_part(&mut Rng::new(1), "PART/2"))
+        .unwrap();
+    let i = builder.add_marker(a, Isometry3::identity()).unwrap();
+    let j = builder
+        .add_marker(PartId::GROUND, Isometry3::identity())
+        .unwrap();
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(builder.add_distance("GCON/1", i, j, bad).is_err());
+        assert!(builder.add_rackpin("JOINT/1", i, j, bad).is_err());
+    }
+}
