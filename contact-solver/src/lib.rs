@@ -41,4 +41,4 @@ pub mod parallel;
 pub mod simulate;
 pub mod statics;
 
-pub use dae::{DaeSystem, EvaluationError, VariableKind};
+pub use dae::{DaeSystem, EvaluationError, NewtonStorage, VariableKind};

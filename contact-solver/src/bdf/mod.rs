@@ -93,6 +93,7 @@ mod newton_matrix;
 mod norms;
 pub mod reference;
 mod settings;
+mod sparse_newton;
 mod stats;
 mod step;
 #[cfg(test)]

@@ -363,6 +363,7 @@ impl MultibodyBuilder {
             forces: self.forces,
             parallelism: crate::parallel::Parallelism::serial(),
             force_partials: super::force::ForcePartials::default(),
+            newton_storage: None,
             gravity_w: self.gravity_w,
             layout,
             length_scale,

@@ -195,6 +195,21 @@ impl DaeSystem for MultibodySystem {
         self.compute_newton_matrix(t, y, yp, c, out)
     }
 
+    fn newton_storage(&self) -> crate::NewtonStorage {
+        MultibodySystem::newton_storage(self)
+    }
+
+    fn newton_entries(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        c: f64,
+        out: &mut Vec<(usize, usize, f64)>,
+    ) -> Result<(), EvaluationError> {
+        self.compute_newton_entries(t, y, yp, c, out)
+    }
+
     /// Forwards to every force element's [`ForceElement::step_accepted`] (skipped if `y` has
     /// no usable part state, which an accepted step cannot have).
     ///

@@ -46,7 +46,14 @@ pub struct MultibodySystem {
     pub(crate) parallelism: crate::parallel::Parallelism,
     /// Where the Newton matrix takes the force elements' partials from.
     pub(crate) force_partials: super::force::ForcePartials,
+    /// The Newton matrix's storage, or `None` to choose by size ([`SPARSE_FROM_SIZE`]).
+    pub(crate) newton_storage: Option<crate::NewtonStorage>,
 }
+
+/// The size `n` of `y` from which the integrator stores the Newton matrix sparse when the
+/// storage is chosen automatically ([`MultibodySystem::set_newton_storage`]): the crossover
+/// where the sparse LU overtakes the dense LU on a pile of spheres (`benches/newton.rs`).
+pub const SPARSE_FROM_SIZE: usize = 400;
 
 impl std::fmt::Debug for MultibodySystem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -196,6 +203,23 @@ impl MultibodySystem {
     /// Where the Newton matrix takes the force elements' partials from.
     pub fn force_partials(&self) -> super::ForcePartials {
         self.force_partials
+    }
+
+    /// Stores the Newton matrix as `storage` from now on, or chooses by size when `None` (the
+    /// default): sparse from [`SPARSE_FROM_SIZE`] unknowns on. Both give the same solution to
+    /// round-off.
+    pub fn set_newton_storage(&mut self, storage: Option<crate::NewtonStorage>) {
+        self.newton_storage = storage;
+    }
+
+    /// The Newton matrix's storage: as set, or chosen by size.
+    pub fn newton_storage(&self) -> crate::NewtonStorage {
+        self.newton_storage
+            .unwrap_or(if self.layout.size() >= SPARSE_FROM_SIZE {
+                crate::NewtonStorage::Sparse
+            } else {
+                crate::NewtonStorage::Dense
+            })
     }
 
     /// Uses `parallelism` to evaluate force elements from now on (results do not depend on it).
