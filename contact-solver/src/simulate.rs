@@ -16,8 +16,9 @@
 
 use super::EvaluationError;
 use super::bdf::{Bdf, IntegratorError, IntegratorSettings, IntegratorStats};
+use super::broad_phase::BroadPhase;
 use super::contact_force::{ContactForce, ContactReport};
-use super::mbs::{MbsError, MultibodySystem, PartState, StateView};
+use super::mbs::{ForceElement, MbsError, MultibodySystem, PartState, StateView};
 use std::sync::Arc;
 
 /// Where in the step a retried step ends: the fraction of the time from the estimated onset
@@ -186,6 +187,14 @@ pub fn simulate_with_progress(
     let mut bdf = Bdf::new(system, start, initial.y, initial.yp, integrator)
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
     let mut summary = RunSummary::default();
+    // Only the contacts whose bounds meet are asked; the others have no contact (their own
+    // `reports` would say so).
+    let broad = BroadPhase::of_elements(contacts.iter().map(|c| {
+        (
+            ForceElement::parts(c.as_ref()),
+            ForceElement::bounds(c.as_ref()),
+        )
+    }));
     let frame_at = |system: &MultibodySystem,
                     t: f64,
                     y: &nalgebra::DVector<f64>|
@@ -194,12 +203,17 @@ pub fn simulate_with_progress(
             .part_states(y)
             .map_err(|source| SimulationError::Evaluation { t, source })?;
         let view = StateView::new(&parts);
-        let contacts = contacts
-            .iter()
-            .map(|c| c.reports(t, &view))
-            .collect::<Result<_, _>>()
-            .map_err(|source| SimulationError::Evaluation { t, source })?;
-        Ok(Frame { t, parts, contacts })
+        let mut reports = vec![Vec::new(); contacts.len()];
+        for k in broad.candidates(&parts) {
+            reports[k] = contacts[k]
+                .reports(t, &view)
+                .map_err(|source| SimulationError::Evaluation { t, source })?;
+        }
+        Ok(Frame {
+            t,
+            parts,
+            contacts: reports,
+        })
     };
     let mut frame = frame_at(system, start, bdf.y())?;
     {

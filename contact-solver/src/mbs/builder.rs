@@ -360,6 +360,7 @@ impl MultibodyBuilder {
         Ok(MultibodySystem {
             parts,
             constraints,
+            broad_phase: crate::broad_phase::BroadPhase::new(&self.forces),
             forces: self.forces,
             parallelism: crate::parallel::Parallelism::serial(),
             force_partials: super::force::ForcePartials::default(),

@@ -112,6 +112,14 @@ pub trait ForceElement: Send + Sync {
         loads: &mut [Load],
     ) -> Result<(), EvaluationError>;
 
+    /// Bounds fixed in the two parts (in [`Self::parts`] order, an element of two parts)
+    /// that hold all the element acts through: its loads are zero whenever they are
+    /// [`apart`](crate::broad_phase::Bounds::apart). `None` (the default) for an
+    /// element that can act at any distance; the broad phase evaluates it always.
+    fn bounds(&self) -> Option<[crate::broad_phase::Bounds; 2]> {
+        None
+    }
+
     /// Analytic partial derivatives of the loads in the layout of the module docs
     /// (`6·parts` rows, `12·parts` columns), or `None` to let the system difference the
     /// element ([`difference_partials`]).

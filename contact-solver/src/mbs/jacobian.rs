@@ -100,11 +100,7 @@ impl MultibodySystem {
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
         let view = StateView::new(states);
-        let all_loads: Vec<_> = self
-            .element_loads(t, states)?
-            .into_iter()
-            .enumerate()
-            .collect();
+        let all_loads = self.active_element_loads(t, states)?;
         // The partials, each element into its own slot (in parallel when configured), are
         // assembled below in index order: the same matrix at every thread count.
         let all_partials = self.parallelism.map_indexed(all_loads.len(), |n| {
