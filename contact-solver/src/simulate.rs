@@ -70,6 +70,11 @@ pub struct RunSummary {
     pub largest_entry_penetration: f64,
     /// Output frames written.
     pub frames: u64,
+    /// Force-element evaluations the system's broad phase let through during the run
+    /// (elements without bounds included).
+    pub broad_phase_evaluated: u64,
+    /// Force-element evaluations the broad phase skipped (bounds apart: loads zero).
+    pub broad_phase_skipped: u64,
 }
 
 /// Where a run is, reported after every accepted step (for a progress display).
@@ -187,6 +192,7 @@ pub fn simulate_with_progress(
     let mut bdf = Bdf::new(system, start, initial.y, initial.yp, integrator)
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
     let mut summary = RunSummary::default();
+    let (evaluated_before, skipped_before) = system.broad_phase_counts();
     // Only the contacts whose bounds meet are asked; the others have no contact (their own
     // `reports` would say so).
     let broad = BroadPhase::of_elements(contacts.iter().map(|c| {
@@ -318,6 +324,9 @@ pub fn simulate_with_progress(
         }
     }
     summary.integrator = *bdf.stats();
+    let (evaluated, skipped) = system.broad_phase_counts();
+    summary.broad_phase_evaluated = evaluated - evaluated_before;
+    summary.broad_phase_skipped = skipped - skipped_before;
     Ok(summary)
 }
 
