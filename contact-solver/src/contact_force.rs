@@ -468,6 +468,10 @@ impl ForceElement for SharedContact {
         self.0.bounds
     }
 
+    fn tracks_steps(&self) -> bool {
+        self.0.planar.is_some() || self.0.multipliers.is_some()
+    }
+
     fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {
         self.0.record_accepted(state);
         let Some(m) = &self.0.multipliers else {

@@ -139,6 +139,14 @@ pub trait ForceElement: Send + Sync {
         true
     }
 
+    /// Whether [`Self::step_accepted`], [`Self::attempt_started`] or
+    /// [`Self::corrector_converged`] do anything for this element. The system calls those
+    /// only on the elements that answer `true` (the default), so a model of many elements
+    /// without step state does not visit them all at every step and Newton pass.
+    fn tracks_steps(&self) -> bool {
+        true
+    }
+
     /// Called once after each step the integrator accepts, with the state at its end: where an
     /// element keeps history (contact onset, augmented-Lagrangian multipliers, output
     /// samples). Evaluations between accepted steps must not change the element. The default

@@ -39,6 +39,8 @@ pub struct MultibodySystem {
     pub(crate) forces: Vec<Box<dyn ForceElement>>,
     /// Which force elements can act at a state.
     pub(crate) broad_phase: crate::broad_phase::BroadPhase,
+    /// The force elements given at build time that [track steps](super::ForceElement::tracks_steps).
+    pub(crate) step_trackers: Vec<usize>,
     pub(crate) gravity_w: Vector3<f64>,
     pub(crate) layout: StateLayout,
     pub(crate) length_scale: f64,
@@ -224,6 +226,17 @@ impl MultibodySystem {
             });
         }
         Ok(loads)
+    }
+
+    /// The force elements that track steps, ascending: those given at build time that say
+    /// so, and every element added since (the quasi-dynamic method's damping).
+    pub(crate) fn step_trackers(&self) -> impl Iterator<Item = usize> {
+        let built = self.broad_phase.len().min(self.forces.len());
+        self.step_trackers
+            .iter()
+            .copied()
+            .filter(move |&k| k < built)
+            .chain(built..self.forces.len())
     }
 
     /// `(evaluated, skipped)`: the force-element evaluations the broad phase let through and
