@@ -17,8 +17,10 @@ use super::sparse_newton::SparseNewton;
 use crate::{DaeSystem, NewtonStorage, VariableKind};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
-/// A factorised, scaled Newton matrix and the `c` it was built with.
-pub(super) struct NewtonMatrix {
+/// A factorised, scaled Newton matrix and the `c` it was built with, dense or sparse as the
+/// system asks ([`DaeSystem::newton_storage`]). The integrator owns one; it is public so that
+/// one factorisation can be timed on its own (`benches/newton.rs`).
+pub struct NewtonMatrix {
     buffer: DMatrix<f64>,
     lu: Option<LU<f64, Dyn, Dyn>>,
     row_scale: DVector<f64>,
