@@ -13,6 +13,7 @@
 //! [`dataset`], [`run`], …). This crate adds:
 //!
 //! - [`geneva`] — the Geneva example's meshes, generated;
+//! - [`pile`] — the sphere-pile example's datasets, generated;
 //! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
 //! - [`peer`] — parry beside our engines, for comparison only (every parry call of the workspace);
 //! - [`tradeoff`] — the accuracy-against-speed measurement and engine selection;
@@ -35,6 +36,7 @@
 pub mod cli;
 pub mod geneva;
 pub mod peer;
+pub mod pile;
 pub mod scenes;
 pub mod tradeoff;
 

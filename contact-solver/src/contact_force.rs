@@ -26,6 +26,7 @@
 //! are checked, and a part that left the plane stops the run with a fatal error naming the
 //! contact, the part and the time (SPEC §3).
 
+use crate::broad_phase::Bounds;
 use crate::contact_multipliers::Multipliers;
 use crate::contact_plane::PlanarGuard;
 use crate::dae::EvaluationError;
@@ -98,6 +99,7 @@ pub struct ContactForce {
     planar: Option<PlanarGuard>,
     multipliers: Option<Multipliers>,
     user: UserLaws,
+    bounds: Option<[Bounds; 2]>,
 }
 
 impl ContactForce {
@@ -165,6 +167,7 @@ impl ContactForce {
             planar: None,
             multipliers,
             user,
+            bounds: None,
         })
     }
 
@@ -188,6 +191,21 @@ impl ContactForce {
             } => Multipliers::new(*law, *al, length).map(Some),
             _ => Ok(None),
         }
+    }
+
+    /// The contact with bounds fixed in its I and J parts that hold its I and J geometry
+    /// lists ([`Bounds::enclosing`]): where they are apart the engine is not asked
+    /// (no contact), and the system's broad phase skips the contact. `None` on either side
+    /// leaves the contact unbounded (asked always).
+    pub fn with_bounds(mut self, i: Option<Bounds>, j: Option<Bounds>) -> Self {
+        self.bounds = i.zip(j).map(|(i, j)| [i, j]);
+        self
+    }
+
+    /// Whether the bounds are apart at these part states (no contact possible).
+    fn apart(&self, si: &crate::mbs::PartState, sj: &crate::mbs::PartState) -> bool {
+        self.bounds
+            .is_some_and(|[bi, bj]| Bounds::apart(&bi.world_box(si), &bj.world_box(sj)))
     }
 
     /// The force-law parameters and the analysis they are evaluated for.
@@ -238,6 +256,9 @@ impl ContactForce {
         let (si, sj) = (state.part(self.parts[0]), state.part(self.parts[1]));
         if let Some(guard) = &self.planar {
             guard.check(&self.name, t, &si.pose_w, &sj.pose_w)?;
+        }
+        if self.apart(si, sj) {
+            return Ok(Vec::new());
         }
         let mut contacts = Vec::new();
         let mut work = WorkCounters::default();
@@ -402,6 +423,10 @@ impl ForceElement for ContactForce {
     fn partials_are_exact(&self) -> bool {
         false
     }
+
+    fn bounds(&self) -> Option<[Bounds; 2]> {
+        self.bounds
+    }
 }
 
 /// A [`ContactForce`] shared between the system (which evaluates it) and the driver (which
@@ -437,6 +462,14 @@ impl ForceElement for SharedContact {
 
     fn partials_are_exact(&self) -> bool {
         self.0.partials_are_exact()
+    }
+
+    fn bounds(&self) -> Option<[Bounds; 2]> {
+        self.0.bounds
+    }
+
+    fn tracks_steps(&self) -> bool {
+        self.0.planar.is_some() || self.0.multipliers.is_some()
     }
 
     fn step_accepted(&mut self, t: f64, state: &StateView<'_>) {

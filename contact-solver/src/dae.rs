@@ -27,6 +27,18 @@ pub enum VariableKind {
     },
 }
 
+/// How the integrator stores and factorises the Newton matrix of a system
+/// ([`DaeSystem::newton_storage`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NewtonStorage {
+    /// A dense `n × n` matrix and nalgebra's LU with partial pivoting: fastest for small
+    /// systems, `n²` storage and `⅔n³` operations per factorisation.
+    Dense,
+    /// Triplets from [`DaeSystem::newton_entries`], compressed columns and a sparse LU (rsparse,
+    /// a port of CSparse): storage and work grow with the nonzeros, for systems of many parts.
+    Sparse,
+}
+
 /// Why the system could not evaluate its equations at the given point. Carries a message the
 /// run's diagnosis prints (which element, which value), and whether a smaller step could help.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -80,6 +92,38 @@ pub trait DaeSystem {
         c: f64,
         out: &mut DMatrix<f64>,
     ) -> Result<(), EvaluationError>;
+
+    /// How the integrator should store this system's Newton matrix. The default,
+    /// [`NewtonStorage::Dense`], suits small systems; a system that writes its entries
+    /// sparse ([`Self::newton_entries`]) answers [`NewtonStorage::Sparse`] when it is large.
+    fn newton_storage(&self) -> NewtonStorage {
+        NewtonStorage::Dense
+    }
+
+    /// Pushes the entries of the Newton matrix `∂F/∂y + c·∂F/∂y′` at `(t, y, y′)` onto `out`
+    /// as `(row, column, value)`; entries at the same place are summed, in the order pushed.
+    /// Every entry that can be nonzero at this point is pushed (zeros included), so the
+    /// pattern depends on the model's structure, not on values. The default assembles the
+    /// dense matrix ([`Self::newton_matrix`]) and pushes every entry (all `n²`): correct, not
+    /// fast; a system meant to run sparse writes its blocks directly.
+    fn newton_entries(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        c: f64,
+        out: &mut Vec<(usize, usize, f64)>,
+    ) -> Result<(), EvaluationError> {
+        let n = self.size();
+        let mut dense = DMatrix::zeros(n, n);
+        self.newton_matrix(t, y, yp, c, &mut dense)?;
+        for j in 0..n {
+            for i in 0..n {
+                out.push((i, j, dense[(i, j)]));
+            }
+        }
+        Ok(())
+    }
 
     /// Called at the start of every step attempt (ending at `t_new`, size `h`), accepted or not,
     /// before any residual of that attempt: a system with state of its own that the corrector

@@ -8,6 +8,7 @@
 //!   implement, with [`VariableKind`] and [`EvaluationError`].
 //! - [`bdf`] — the GSTIFF-style variable-step, variable-order BDF integrator that solves it,
 //!   step by step, with the hooks contact prediction needs.
+//! - [`broad_phase`] — which force elements can act: far contacts are not evaluated.
 //! - [`mbs`] — the multibody equations: parts, joints, JPRIMs, MOTIONs and force elements as an
 //!   index-3 (or stabilized index-2) DAE.
 //! - [`contact_force`] — a CONTACT as a force element: engine kinematics and force laws.
@@ -28,6 +29,7 @@
 )]
 
 pub mod bdf;
+pub mod broad_phase;
 pub mod contact_force;
 pub mod contact_multipliers;
 pub mod contact_partials;
@@ -41,4 +43,4 @@ pub mod parallel;
 pub mod simulate;
 pub mod statics;
 
-pub use dae::{DaeSystem, EvaluationError, VariableKind};
+pub use dae::{DaeSystem, EvaluationError, NewtonStorage, VariableKind};

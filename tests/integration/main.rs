@@ -26,6 +26,7 @@ mod scenes_cli;
 mod select;
 mod select_runs;
 mod session;
+mod sphere_pile;
 mod statics;
 mod statics_augmented;
 mod statics_stability;

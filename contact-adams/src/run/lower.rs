@@ -17,6 +17,7 @@ use crate::model::{
 };
 use crate::user_routines::{UserLaws, UserRoutineError, UserRoutines};
 use contact_core::{GeometryEngine, GeometryInstance, Isometry3, Matrix3, PrepareError};
+use contact_solver::broad_phase::Bounds;
 use contact_solver::contact_force::{Analysis, ContactForce, SharedContact};
 use contact_solver::contact_plane::PlanarGuard;
 use contact_solver::mbs::{
@@ -436,7 +437,8 @@ pub fn lower_with_routines(
             analysis,
             user,
         )
-        .map_err(|e| unsupported(&c.origin, e.to_string()))?;
+        .map_err(|e| unsupported(&c.origin, e.to_string()))?
+        .with_bounds(Bounds::enclosing(&i_list), Bounds::enclosing(&j_list));
         let length = i_list
             .iter()
             .chain(&j_list)

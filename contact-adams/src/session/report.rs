@@ -79,7 +79,7 @@ impl AnalysisReport {
                     summary.rejected_for_contact_onset,
                     summary.integrator.jacobian_evaluations,
                     summary.largest_entry_penetration
-                )
+                ) + &broad_phase_note(summary)
             }
             (&AnalysisStep::Kinematics { start, end, .. }, AnalysisOutcome::Kinematics(s)) => {
                 format!(
@@ -163,6 +163,20 @@ impl AnalysisReport {
     }
 }
 
+/// `; broad phase skipped S of N force-element evaluations (P %)` when it skipped any, else
+/// empty (the line of a model without far contacts is unchanged).
+fn broad_phase_note(summary: &RunSummary) -> String {
+    let (evaluated, skipped) = (summary.broad_phase_evaluated, summary.broad_phase_skipped);
+    if skipped == 0 {
+        return String::new();
+    }
+    let all = evaluated + skipped;
+    format!(
+        "; broad phase skipped {skipped} of {all} force-element evaluations ({:.1} %)",
+        100.0 * skipped as f64 / all as f64
+    )
+}
+
 /// The counters of every dynamics analysis of a run, added up.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct DynamicsTotals {
@@ -180,6 +194,10 @@ pub struct DynamicsTotals {
     pub jacobian_evaluations: u64,
     /// LU factorizations.
     pub lu_factorizations: u64,
+    /// Force-element evaluations the broad phase let through.
+    pub broad_phase_evaluated: u64,
+    /// Force-element evaluations the broad phase skipped.
+    pub broad_phase_skipped: u64,
 }
 
 impl DynamicsTotals {
@@ -195,6 +213,19 @@ impl DynamicsTotals {
         self.newton_iterations += s.newton_iterations;
         self.jacobian_evaluations += s.jacobian_evaluations;
         self.lu_factorizations += s.lu_factorizations;
+        self.broad_phase_evaluated += summary.broad_phase_evaluated;
+        self.broad_phase_skipped += summary.broad_phase_skipped;
+    }
+
+    /// The share of force-element evaluations the broad phase skipped, in `[0, 1]`
+    /// (`skipped / (evaluated + skipped)`; 0 when there were none).
+    pub fn broad_phase_skipped_share(&self) -> f64 {
+        let all = self.broad_phase_evaluated + self.broad_phase_skipped;
+        if all == 0 {
+            0.0
+        } else {
+            self.broad_phase_skipped as f64 / all as f64
+        }
     }
 }
 
@@ -273,6 +304,10 @@ impl RunReport {
             "newton_iterations": totals.newton_iterations,
             "jacobian_evaluations": totals.jacobian_evaluations,
             "lu_factorizations": totals.lu_factorizations,
+            "broad_phase": {
+                "evaluated": totals.broad_phase_evaluated, "skipped": totals.broad_phase_skipped,
+                "skipped_share": totals.broad_phase_skipped_share(),
+            },
             "output_frames": self.output_frames,
             "engine_work": {
                 "queries": work.queries, "geometry_pairs": work.geometry_pairs,

@@ -93,12 +93,14 @@ mod newton_matrix;
 mod norms;
 pub mod reference;
 mod settings;
+mod sparse_newton;
 mod stats;
 mod step;
 #[cfg(test)]
 mod tests;
 
 pub use error::{Dominant, FailureCause, IntegratorError, REMEDIES};
+pub use newton_matrix::NewtonMatrix;
 pub use settings::{Corrector, IntegratorSettings};
 pub use stats::IntegratorStats;
 
@@ -106,7 +108,6 @@ use crate::{DaeSystem, VariableKind};
 use contact_core::InvalidArgument;
 use history::History;
 use nalgebra::DVector;
-use newton_matrix::NewtonMatrix;
 use norms::Norms;
 
 /// Whether the integrator is in its start-up phase (order and step rising every step).

@@ -7,17 +7,26 @@
 //! turns the matrix `[cI, −I, 0; K, cM, Gᵀ; G, 0, 0]` into the O(1) matrix
 //! `[αI, −I, 0; h²K, αM, Gᵀ; G, 0, 0]`, whose conditioning no longer grows like `h⁻³` as the
 //! step shrinks. Scaling changes only the pivoting and round-off, never the solution.
+//!
+//! A system that asks for it ([`DaeSystem::newton_storage`]) has its matrix stored and
+//! factorised sparse instead (`super::sparse_newton`, the same scaling); the dense buffer is
+//! allocated only when the dense path is used.
 
 use super::error::FailureCause;
-use crate::{DaeSystem, VariableKind};
+use super::sparse_newton::SparseNewton;
+use crate::{DaeSystem, NewtonStorage, VariableKind};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
-/// A factorised, scaled Newton matrix and the `c` it was built with.
-pub(super) struct NewtonMatrix {
+/// A factorised, scaled Newton matrix and the `c` it was built with, dense or sparse as the
+/// system asks ([`DaeSystem::newton_storage`]). The integrator owns one; it is public so that
+/// one factorisation can be timed on its own (`benches/newton.rs`).
+pub struct NewtonMatrix {
     buffer: DMatrix<f64>,
     lu: Option<LU<f64, Dyn, Dyn>>,
     row_scale: DVector<f64>,
     col_scale: DVector<f64>,
+    /// The sparse path, when the system asks for it.
+    sparse: Option<SparseNewton>,
     /// `c` at the last factorisation.
     pub cj: f64,
 }
@@ -26,22 +35,29 @@ impl NewtonMatrix {
     /// An empty (not yet factorised) matrix of size `n`.
     pub fn new(n: usize) -> Self {
         Self {
-            buffer: DMatrix::zeros(n, n),
+            buffer: DMatrix::zeros(0, 0),
             lu: None,
             row_scale: DVector::from_element(n, 1.0),
             col_scale: DVector::from_element(n, 1.0),
+            sparse: None,
             cj: 0.0,
         }
     }
 
     /// Whether a factorisation exists.
     pub fn is_factorised(&self) -> bool {
-        self.lu.is_some()
+        match &self.sparse {
+            Some(sparse) => sparse.is_factorised(),
+            None => self.lu.is_some(),
+        }
     }
 
     /// Drops the factorisation so the next iteration rebuilds it.
     pub fn invalidate(&mut self) {
         self.lu = None;
+        if let Some(sparse) = &mut self.sparse {
+            sparse.invalidate();
+        }
     }
 
     /// Evaluates, scales and factorises the matrix at `(t, y, y′)` with coefficient `cj` and
@@ -61,11 +77,21 @@ impl NewtonMatrix {
         kinds: &[VariableKind],
     ) -> Result<(), FailureCause> {
         self.lu = None;
+        if system.newton_storage() == NewtonStorage::Sparse {
+            let sparse = self.sparse.get_or_insert_with(SparseNewton::default);
+            sparse.refresh(system, t, y, yp, cj, h, kinds)?;
+            self.cj = cj;
+            return Ok(());
+        }
+        self.sparse = None;
+        let n = y.len();
+        if self.buffer.nrows() != n {
+            self.buffer = DMatrix::zeros(n, n);
+        }
         self.buffer.fill(0.0);
         system
             .newton_matrix(t, y, yp, cj, &mut self.buffer)
             .map_err(FailureCause::Evaluation)?;
-        let n = y.len();
         for (j, kind) in kinds.iter().enumerate() {
             let s = match kind {
                 VariableKind::Differential => 1.0,
@@ -106,6 +132,9 @@ impl NewtonMatrix {
     /// Solves `J·Δ = r` in place (`r` in, `Δ` out) with the stored factorisation. Returns
     /// false if there is none or the solve failed.
     pub fn solve(&self, r: &mut DVector<f64>) -> bool {
+        if let Some(sparse) = &self.sparse {
+            return sparse.solve(r);
+        }
         let Some(lu) = &self.lu else { return false };
         r.component_mul_assign(&self.row_scale);
         if !lu.solve_mut(r) {

@@ -416,10 +416,16 @@ impl MultibodyBuilder {
         Ok(MultibodySystem {
             parts,
             constraints,
+            broad_phase: crate::broad_phase::BroadPhase::new(&self.forces),
+            step_trackers: (self.forces.iter().enumerate())
+                .filter(|(_, e)| e.tracks_steps())
+                .map(|(k, _)| k)
+                .collect(),
             forces: self.forces,
             parallelism: crate::parallel::Parallelism::serial(),
             force_partials: super::force::ForcePartials::default(),
             output_dynamics: false,
+            newton_storage: None,
             gravity_w: self.gravity_w,
             layout,
             length_scale,

@@ -112,6 +112,14 @@ pub trait ForceElement: Send + Sync {
         loads: &mut [Load],
     ) -> Result<(), EvaluationError>;
 
+    /// Bounds fixed in the two parts (in [`Self::parts`] order, an element of two parts)
+    /// that hold all the element acts through: its loads are zero whenever they are
+    /// [`apart`](crate::broad_phase::Bounds::apart). `None` (the default) for an
+    /// element that can act at any distance; the broad phase evaluates it always.
+    fn bounds(&self) -> Option<[crate::broad_phase::Bounds; 2]> {
+        None
+    }
+
     /// Analytic partial derivatives of the loads in the layout of the module docs
     /// (`6·parts` rows, `12·parts` columns), or `None` to let the system difference the
     /// element ([`difference_partials`]).
@@ -128,6 +136,14 @@ pub trait ForceElement: Send + Sync {
     /// [`ForcePartials::Exact`] differences the elements that answer `false`. The default
     /// answers `true`.
     fn partials_are_exact(&self) -> bool {
+        true
+    }
+
+    /// Whether [`Self::step_accepted`], [`Self::attempt_started`] or
+    /// [`Self::corrector_converged`] do anything for this element. The system calls those
+    /// only on the elements that answer `true` (the default), so a model of many elements
+    /// without step state does not visit them all at every step and Newton pass.
+    fn tracks_steps(&self) -> bool {
         true
     }
 

@@ -17,7 +17,7 @@ use super::force::{ForcePartials, StateView, difference_partials};
 use super::quaternion::{g_matrix, g_transpose_omega_partial, rotation_per_parameter, skew};
 use super::system::MultibodySystem;
 use crate::dae::EvaluationError;
-use nalgebra::{DMatrix, DVector, Matrix3, Matrix4};
+use nalgebra::{DMatrix, DVector, Matrix3, Matrix4, SMatrix};
 
 impl MultibodySystem {
     /// Writes the Newton matrix `∂F/∂y + c·∂F/∂y′` at `(t, y, y′)` into `out` (size² entries).
@@ -26,15 +26,41 @@ impl MultibodySystem {
         &self,
         t: f64,
         y: &DVector<f64>,
-        _yp: &DVector<f64>,
+        yp: &DVector<f64>,
         c: f64,
         out: &mut DMatrix<f64>,
     ) -> Result<(), EvaluationError> {
+        debug_assert_eq!(out.shape(), (self.layout.size(), self.layout.size()));
+        out.fill(0.0);
+        self.assemble_newton_matrix(t, y, yp, c, out)
+    }
+
+    /// The entries of the Newton matrix at `(t, y, y′)` pushed onto `out` as
+    /// `(row, column, value)`, block by block (duplicates to be summed): the same blocks as
+    /// [`Self::compute_newton_matrix`], for the sparse path.
+    pub fn compute_newton_entries(
+        &self,
+        t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        c: f64,
+        out: &mut Vec<(usize, usize, f64)>,
+    ) -> Result<(), EvaluationError> {
+        self.assemble_newton_matrix(t, y, yp, c, &mut Triplets(out))
+    }
+
+    /// Every block of the Newton matrix into `out` (zero before the call).
+    fn assemble_newton_matrix(
+        &self,
+        t: f64,
+        y: &DVector<f64>,
+        _yp: &DVector<f64>,
+        c: f64,
+        out: &mut impl Assembly,
+    ) -> Result<(), EvaluationError> {
         let layout = self.layout;
-        debug_assert_eq!(out.shape(), (layout.size(), layout.size()));
         debug_assert_eq!(y.len(), layout.size());
         let states = self.part_states(y)?;
-        out.fill(0.0);
         for (part, data) in self.moving_parts().zip(&self.parts) {
             let (qo, vo, mo) = (
                 layout.position_offset(part),
@@ -45,24 +71,19 @@ impl MultibodySystem {
             let omega = Self::vector_at(y, vo + 3);
             let mu = y[mo];
             for i in 0..3 {
-                out[(qo + i, qo + i)] = c;
-                out[(qo + i, vo + i)] = -1.0;
+                out.set(qo + i, qo + i, c);
+                out.set(qo + i, vo + i, -1.0);
             }
             let parameter_block =
                 Matrix4::identity() * (c - mu) - g_transpose_omega_partial(&omega) * 0.5;
-            out.fixed_view_mut::<4, 4>(qo + 3, qo + 3)
-                .copy_from(&parameter_block);
-            out.fixed_view_mut::<4, 3>(qo + 3, vo + 3)
-                .copy_from(&(g_matrix(&e).transpose() * -0.5));
-            out.fixed_view_mut::<4, 1>(qo + 3, mo).copy_from(&(-e));
-            out.fixed_view_mut::<3, 3>(vo, vo)
-                .copy_from(&(Matrix3::identity() * (c * data.mass)));
+            out.set_block(qo + 3, qo + 3, &parameter_block);
+            out.set_block(qo + 3, vo + 3, &(g_matrix(&e).transpose() * -0.5));
+            out.set_block(qo + 3, mo, &(-e));
+            out.set_block(vo, vo, &(Matrix3::identity() * (c * data.mass)));
             let j_omega = data.inertia * omega;
             let gyro = skew(&omega) * data.inertia - skew(&j_omega);
-            out.fixed_view_mut::<3, 3>(vo + 3, vo + 3)
-                .copy_from(&(data.inertia * c + gyro));
-            out.fixed_view_mut::<1, 4>(mo, qo + 3)
-                .copy_from(&(e.transpose() * 2.0));
+            out.set_block(vo + 3, vo + 3, &(data.inertia * c + gyro));
+            out.set_block(mo, qo + 3, &(e.transpose() * 2.0));
         }
         self.add_constraint_blocks(y, &states, out)?;
         self.add_force_blocks(t, y, &states, out)?;
@@ -75,15 +96,15 @@ impl MultibodySystem {
         t: f64,
         y: &DVector<f64>,
         states: &[super::force::PartState],
-        out: &mut DMatrix<f64>,
+        out: &mut impl Assembly,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
         let view = StateView::new(states);
-        let all_loads = self.element_loads(t, states)?;
+        let all_loads = self.active_element_loads(t, states)?;
         // The partials, each element into its own slot (in parallel when configured), are
         // assembled below in index order: the same matrix at every thread count.
-        let all_partials = self.parallelism.map_indexed(self.forces.len(), |k| {
-            let element = &self.forces[k];
+        let all_partials = self.parallelism.map_indexed(all_loads.len(), |n| {
+            let element = &self.forces[all_loads[n].0];
             let analytic = match self.force_partials {
                 ForcePartials::Analytic => element.partials(t, &view),
                 ForcePartials::Exact if element.partials_are_exact() => element.partials(t, &view),
@@ -95,7 +116,8 @@ impl MultibodySystem {
                 None => difference_partials(element.as_ref(), t, states, self.length_scale),
             }
         });
-        for ((element, loads), partials) in self.forces.iter().zip(all_loads).zip(all_partials) {
+        for ((k, loads), partials) in all_loads.into_iter().zip(all_partials) {
+            let element = &self.forces[k];
             let partials = partials?;
             let parts = element.parts();
             for (row_slot, &row_part) in parts.iter().enumerate() {
@@ -113,8 +135,7 @@ impl MultibodySystem {
                 let own =
                     skew(&body_torque) * rotation_per_parameter(&self.parameters(y, row_part));
                 let qo_row = layout.position_offset(row_part);
-                let mut block = out.fixed_view_mut::<3, 4>(vo + 3, qo_row + 3);
-                block -= own;
+                out.sub_block(vo + 3, qo_row + 3, &own);
                 for (col_slot, &col_part) in parts.iter().enumerate() {
                     if col_part.is_ground() {
                         continue;
@@ -139,18 +160,105 @@ impl MultibodySystem {
                             rotation_row.transpose()
                         };
                         let d_theta = block(r, 1) - block(r, 3) * skew(&state.angular_velocity_w);
-                        let mut position = out.fixed_view_mut::<3, 3>(vo + r, qo);
-                        position -= to_body * block(r, 0);
-                        let mut parameters = out.fixed_view_mut::<3, 4>(vo + r, qo + 3);
-                        parameters -= to_body * d_theta * per_parameter;
-                        let mut velocity = out.fixed_view_mut::<3, 3>(vo + r, vo_col);
-                        velocity -= to_body * block(r, 2);
-                        let mut angular = out.fixed_view_mut::<3, 3>(vo + r, vo_col + 3);
-                        angular -= to_body * block(r, 3) * rotation;
+                        out.sub_block(vo + r, qo, &(to_body * block(r, 0)));
+                        out.sub_block(vo + r, qo + 3, &(to_body * d_theta * per_parameter));
+                        out.sub_block(vo + r, vo_col, &(to_body * block(r, 2)));
+                        out.sub_block(vo + r, vo_col + 3, &(to_body * block(r, 3) * rotation));
                     }
                 }
             }
         }
         Ok(())
+    }
+}
+
+/// Where the Newton matrix's blocks go: a dense matrix (zeroed first), or triplets for the
+/// sparse path. `set` writes an entry no other block writes; `add` and `sub_block` accumulate.
+pub(crate) trait Assembly {
+    /// Writes `value` at `(row, col)`.
+    fn set(&mut self, row: usize, col: usize, value: f64);
+    /// Adds `value` at `(row, col)`.
+    fn add(&mut self, row: usize, col: usize, value: f64);
+    /// Writes `block` with its first entry at `(row, col)`.
+    fn set_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    );
+    /// Subtracts `block` with its first entry at `(row, col)`.
+    fn sub_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    );
+}
+
+impl Assembly for DMatrix<f64> {
+    fn set(&mut self, row: usize, col: usize, value: f64) {
+        self[(row, col)] = value;
+    }
+
+    fn add(&mut self, row: usize, col: usize, value: f64) {
+        self[(row, col)] += value;
+    }
+
+    fn set_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    ) {
+        self.fixed_view_mut::<R, C>(row, col).copy_from(block);
+    }
+
+    fn sub_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    ) {
+        let mut view = self.fixed_view_mut::<R, C>(row, col);
+        view -= block;
+    }
+}
+
+/// Triplets `(row, column, value)` to be summed.
+pub(crate) struct Triplets<'a>(pub &'a mut Vec<(usize, usize, f64)>);
+
+impl Assembly for Triplets<'_> {
+    fn set(&mut self, row: usize, col: usize, value: f64) {
+        self.0.push((row, col, value));
+    }
+
+    fn add(&mut self, row: usize, col: usize, value: f64) {
+        self.0.push((row, col, value));
+    }
+
+    fn set_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    ) {
+        for j in 0..C {
+            for i in 0..R {
+                self.0.push((row + i, col + j, block[(i, j)]));
+            }
+        }
+    }
+
+    fn sub_block<const R: usize, const C: usize>(
+        &mut self,
+        row: usize,
+        col: usize,
+        block: &SMatrix<f64, R, C>,
+    ) {
+        for j in 0..C {
+            for i in 0..R {
+                self.0.push((row + i, col + j, -block[(i, j)]));
+            }
+        }
     }
 }

@@ -9,13 +9,14 @@
 
 use super::constraints::ConstraintElement;
 use super::force::PartState;
+use super::jacobian::Assembly;
 use super::layout::Formulation;
 use super::part::PartId;
 use super::quaternion::rotation_per_parameter;
 use super::residual::multipliers;
 use super::system::MultibodySystem;
 use crate::dae::EvaluationError;
-use nalgebra::{DMatrix, DVector, Isometry3, Vector3, Vector4};
+use nalgebra::{DVector, Isometry3, Vector3, Vector4};
 
 /// The coordinates `(r, e)` of an element's two parts (zeros for the ground).
 type ElementCoordinates = [[f64; 7]; 2];
@@ -26,7 +27,7 @@ impl MultibodySystem {
         &self,
         y: &DVector<f64>,
         states: &[PartState],
-        out: &mut DMatrix<f64>,
+        out: &mut impl Assembly,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
         let si2 = layout.formulation() == Formulation::Si2;
@@ -51,22 +52,22 @@ impl MultibodySystem {
                     let per_parameter =
                         angular.transpose() * rotation_per_parameter(&self.parameters(y, part));
                     for i in 0..3 {
-                        out[(position_row, qo + i)] += linear[i];
-                        out[(vo + i, lambda_column)] += linear[i];
-                        out[(vo + 3 + i, lambda_column)] += angular[i];
+                        out.add(position_row, qo + i, linear[i]);
+                        out.add(vo + i, lambda_column, linear[i]);
+                        out.add(vo + 3 + i, lambda_column, angular[i]);
                     }
                     for i in 0..4 {
-                        out[(position_row, qo + 3 + i)] += per_parameter[i];
+                        out.add(position_row, qo + 3 + i, per_parameter[i]);
                     }
                     if si2 {
                         // Velocity-constraint row (at λ) in v; kinematic rows in η (at Φ).
                         for i in 0..3 {
-                            out[(lambda_column, vo + i)] += linear[i];
-                            out[(lambda_column, vo + 3 + i)] += angular[i];
-                            out[(qo + i, position_row)] += linear[i];
+                            out.add(lambda_column, vo + i, linear[i]);
+                            out.add(lambda_column, vo + 3 + i, angular[i]);
+                            out.add(qo + i, position_row, linear[i]);
                         }
                         for i in 0..4 {
-                            out[(qo + 3 + i, position_row)] += per_parameter[i];
+                            out.add(qo + 3 + i, position_row, per_parameter[i]);
                         }
                     }
                 }
@@ -81,7 +82,7 @@ impl MultibodySystem {
         &self,
         element: &ConstraintElement,
         y: &DVector<f64>,
-        out: &mut DMatrix<f64>,
+        out: &mut impl Assembly,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
         let parts = [element.part_i, element.part_j];
@@ -150,7 +151,7 @@ impl MultibodySystem {
         y: &DVector<f64>,
         rows: &[Option<usize>],
         value: impl Fn(&[Isometry3<f64>; 2], &ElementCoordinates) -> Vec<f64>,
-        out: &mut DMatrix<f64>,
+        out: &mut impl Assembly,
     ) -> Result<(), EvaluationError> {
         let layout = self.layout;
         let parts = [element.part_i, element.part_j];
@@ -200,7 +201,7 @@ impl MultibodySystem {
                 let backward = value(&poses_of(&minus)?, &minus);
                 for ((row, f), b) in rows.iter().zip(&forward).zip(&backward) {
                     if let Some(row) = row {
-                        out[(*row, qo + coordinate)] += (f - b) / (2.0 * h);
+                        out.add(*row, qo + coordinate, (f - b) / (2.0 * h));
                     }
                 }
             }

@@ -102,4 +102,4 @@ pub use layout::{Formulation, StateLayout};
 pub use motion::{MarkerMotionAxis, MotionDof, TimeFunction};
 pub use part::{MarkerId, PartId, PartSpec};
 pub use springs::{RotationalSpringDamper, SpringParams, TranslationalSpringDamper};
-pub use system::MultibodySystem;
+pub use system::{MultibodySystem, SPARSE_FROM_SIZE};

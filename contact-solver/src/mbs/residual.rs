@@ -195,40 +195,66 @@ impl DaeSystem for MultibodySystem {
         self.compute_newton_matrix(t, y, yp, c, out)
     }
 
-    /// Forwards to every force element's [`ForceElement::step_accepted`] (skipped if `y` has
-    /// no usable part state, which an accepted step cannot have).
-    ///
-    /// [`ForceElement::step_accepted`]: super::ForceElement::step_accepted
-    /// Forwards to every force element's [`ForceElement::attempt_started`].
+    fn newton_storage(&self) -> crate::NewtonStorage {
+        MultibodySystem::newton_storage(self)
+    }
+
+    fn newton_entries(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        yp: &DVector<f64>,
+        c: f64,
+        out: &mut Vec<(usize, usize, f64)>,
+    ) -> Result<(), EvaluationError> {
+        self.compute_newton_entries(t, y, yp, c, out)
+    }
+
+    /// Forwards to every force element's [`ForceElement::attempt_started`] (those that
+    /// [track steps](super::ForceElement::tracks_steps)).
     ///
     /// [`ForceElement::attempt_started`]: super::ForceElement::attempt_started
     fn attempt_started(&mut self, _t_new: f64, _h: f64) {
-        for element in &mut self.forces {
-            element.attempt_started();
+        let trackers: Vec<usize> = self.step_trackers().collect();
+        for k in trackers {
+            self.forces[k].attempt_started();
         }
     }
 
-    /// Forwards to every force element's [`ForceElement::corrector_converged`] (all of them,
-    /// so each updates at the same state) and asks for another pass if any asked for one.
+    /// Forwards to every force element's [`ForceElement::corrector_converged`] (all of those
+    /// that track steps, so each updates at the same state) and asks for another pass if any
+    /// asked for one.
     ///
     /// [`ForceElement::corrector_converged`]: super::ForceElement::corrector_converged
     fn corrector_converged(&mut self, t: f64, y: &DVector<f64>, _yp: &DVector<f64>) -> bool {
+        let trackers: Vec<usize> = self.step_trackers().collect();
+        if trackers.is_empty() {
+            return false;
+        }
         let Ok(states) = self.part_states(y) else {
             return false;
         };
         let view = StateView::new(&states);
         let mut again = false;
-        for element in &mut self.forces {
-            again |= element.corrector_converged(t, &view);
+        for k in trackers {
+            again |= self.forces[k].corrector_converged(t, &view);
         }
         again
     }
 
+    /// Forwards to every force element's [`ForceElement::step_accepted`] (those that track
+    /// steps; skipped if `y` has no usable part state, which an accepted step cannot have).
+    ///
+    /// [`ForceElement::step_accepted`]: super::ForceElement::step_accepted
     fn step_accepted(&mut self, t: f64, y: &DVector<f64>, _yp: &DVector<f64>) {
+        let trackers: Vec<usize> = self.step_trackers().collect();
+        if trackers.is_empty() {
+            return;
+        }
         if let Ok(states) = self.part_states(y) {
             let view = StateView::new(&states);
-            for element in &mut self.forces {
-                element.step_accepted(t, &view);
+            for k in trackers {
+                self.forces[k].step_accepted(t, &view);
             }
         }
     }

@@ -37,6 +37,10 @@ pub struct MultibodySystem {
     pub(crate) parts: Vec<PartData>,
     pub(crate) constraints: Vec<ConstraintElement>,
     pub(crate) forces: Vec<Box<dyn ForceElement>>,
+    /// Which force elements can act at a state.
+    pub(crate) broad_phase: crate::broad_phase::BroadPhase,
+    /// The force elements given at build time that [track steps](super::ForceElement::tracks_steps).
+    pub(crate) step_trackers: Vec<usize>,
     pub(crate) gravity_w: Vector3<f64>,
     pub(crate) layout: StateLayout,
     pub(crate) length_scale: f64,
@@ -48,7 +52,16 @@ pub struct MultibodySystem {
     pub(crate) force_partials: super::force::ForcePartials,
     /// Whether output frames carry accelerations and reactions ([`crate::frame::FrameDynamics`]).
     pub(crate) output_dynamics: bool,
+    /// The Newton matrix's storage, or `None` to choose by size ([`SPARSE_FROM_SIZE`]).
+    pub(crate) newton_storage: Option<crate::NewtonStorage>,
 }
+
+/// The size `n` of `y` from which the integrator stores the Newton matrix sparse when the
+/// storage is chosen automatically ([`MultibodySystem::set_newton_storage`]). Every model of
+/// up to three parts stays below it and keeps the dense LU; at 896 unknowns (the pile of 64
+/// spheres) the sparse path is already about a hundred times faster (`benches/newton.rs`).
+/// The exact crossover has not been measured.
+pub const SPARSE_FROM_SIZE: usize = 400;
 
 impl std::fmt::Debug for MultibodySystem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -166,27 +179,74 @@ impl MultibodySystem {
         let view = StateView::new(states);
         // Each element into its own slot (in parallel when configured), then the first error
         // in index order: the same answer at every thread count.
-        let results = self.parallelism.map_indexed(self.forces.len(), |k| {
-            let element = &self.forces[k];
-            {
-                let mut loads = vec![Load::default(); element.parts().len()];
-                element.evaluate(t, &view, &mut loads)?;
-                if let Some(bad) = loads.iter().find(|l| {
-                    !l.force_w
-                        .iter()
-                        .chain(l.torque_w.iter())
-                        .all(|x| x.is_finite())
-                }) {
-                    return Err(EvaluationError {
-                        element: element.name().to_owned(),
-                        message: format!("non-finite load {bad:?}"),
-                        fatal: false,
-                    });
-                }
-                Ok(loads)
-            }
+        let results = self
+            .parallelism
+            .map_indexed(self.forces.len(), |k| self.checked_loads(k, t, &view));
+        results.into_iter().collect()
+    }
+
+    /// The loads of the force elements the broad phase lets through at `states`, as
+    /// `(element index, loads)` in index order; every other element's loads are zero.
+    pub(crate) fn active_element_loads(
+        &self,
+        t: f64,
+        states: &[PartState],
+    ) -> Result<Vec<(usize, Vec<Load>)>, EvaluationError> {
+        // Elements added after the system was built (the quasi-dynamic method's damping)
+        // are evaluated always.
+        let mut active = self.broad_phase.candidates(states);
+        active.retain(|&k| k < self.forces.len());
+        active.extend(self.broad_phase.len()..self.forces.len());
+        let view = StateView::new(states);
+        // Each element into its own slot (in parallel when configured), then the first error
+        // in index order: the same answer at every thread count.
+        let results = self.parallelism.map_indexed(active.len(), |n| {
+            let k = active[n];
+            self.checked_loads(k, t, &view).map(|loads| (k, loads))
         });
         results.into_iter().collect()
+    }
+
+    /// The loads of element `k`, or an error naming it when one is not finite.
+    fn checked_loads(
+        &self,
+        k: usize,
+        t: f64,
+        view: &StateView<'_>,
+    ) -> Result<Vec<Load>, EvaluationError> {
+        let element = &self.forces[k];
+        let mut loads = vec![Load::default(); element.parts().len()];
+        element.evaluate(t, view, &mut loads)?;
+        if let Some(bad) = loads.iter().find(|l| {
+            !l.force_w
+                .iter()
+                .chain(l.torque_w.iter())
+                .all(|x| x.is_finite())
+        }) {
+            return Err(EvaluationError {
+                element: element.name().to_owned(),
+                message: format!("non-finite load {bad:?}"),
+                fatal: false,
+            });
+        }
+        Ok(loads)
+    }
+
+    /// The force elements that track steps, ascending: those given at build time that say
+    /// so, and every element added since (the quasi-dynamic method's damping).
+    pub(crate) fn step_trackers(&self) -> impl Iterator<Item = usize> {
+        let built = self.broad_phase.len().min(self.forces.len());
+        self.step_trackers
+            .iter()
+            .copied()
+            .filter(move |&k| k < built)
+            .chain(built..self.forces.len())
+    }
+
+    /// `(evaluated, skipped)`: the force-element evaluations the broad phase let through and
+    /// those it skipped, since the system was built.
+    pub fn broad_phase_counts(&self) -> (u64, u64) {
+        self.broad_phase.counts()
     }
 
     /// Takes the force elements' partials in the Newton matrix from `source` from now on
@@ -198,6 +258,23 @@ impl MultibodySystem {
     /// Where the Newton matrix takes the force elements' partials from.
     pub fn force_partials(&self) -> super::ForcePartials {
         self.force_partials
+    }
+
+    /// Stores the Newton matrix as `storage` from now on, or chooses by size when `None` (the
+    /// default): sparse from [`SPARSE_FROM_SIZE`] unknowns on. Both give the same solution to
+    /// round-off.
+    pub fn set_newton_storage(&mut self, storage: Option<crate::NewtonStorage>) {
+        self.newton_storage = storage;
+    }
+
+    /// The Newton matrix's storage: as set, or chosen by size.
+    pub fn newton_storage(&self) -> crate::NewtonStorage {
+        self.newton_storage
+            .unwrap_or(if self.layout.size() >= SPARSE_FROM_SIZE {
+                crate::NewtonStorage::Sparse
+            } else {
+                crate::NewtonStorage::Dense
+            })
     }
 
     /// Uses `parallelism` to evaluate force elements from now on (results do not depend on it).
@@ -222,8 +299,8 @@ impl MultibodySystem {
                 .copy_from(&(self.gravity_w * data.mass));
             q.fixed_rows_mut::<3>(6 * k + 3).copy_from(&(-gyro));
         }
-        for (element, loads) in self.forces.iter().zip(self.element_loads(t, states)?) {
-            for (part, load) in element.parts().iter().zip(loads) {
+        for (k, loads) in self.active_element_loads(t, states)? {
+            for (part, load) in self.forces[k].parts().iter().zip(loads) {
                 if part.is_ground() {
                     continue;
                 }

@@ -114,3 +114,59 @@ fn variable_kinds_follow_the_layout() {
         );
     }
 }
+
+#[test]
+fn the_sparse_entries_sum_to_the_dense_matrix() {
+    // Every element kind, both formulations: the triplets, summed in the order written, are
+    // the dense matrix entry for entry (the same additions in the same order).
+    for (seed, formulation) in [(1, Formulation::I3), (3, Formulation::Si2)] {
+        let mut system = every_element_system(seed, formulation);
+        let (y, yp) = random_state(&system, seed + 50);
+        let (t, c) = (0.37, 250.0);
+        let n = system.size();
+        let mut dense = DMatrix::zeros(n, n);
+        system.newton_matrix(t, &y, &yp, c, &mut dense).unwrap();
+        let mut entries = Vec::new();
+        system.newton_entries(t, &y, &yp, c, &mut entries).unwrap();
+        let mut summed = DMatrix::<f64>::zeros(n, n);
+        let mut written = DMatrix::from_element(n, n, false);
+        for &(i, j, v) in &entries {
+            summed[(i, j)] = if written[(i, j)] {
+                summed[(i, j)] + v
+            } else {
+                v
+            };
+            written[(i, j)] = true;
+        }
+        for j in 0..n {
+            for i in 0..n {
+                assert!(
+                    summed[(i, j)] == dense[(i, j)],
+                    "seed {seed} {formulation:?} ({i}, {j}): {} against {}",
+                    summed[(i, j)],
+                    dense[(i, j)]
+                );
+                if dense[(i, j)] != 0.0 {
+                    assert!(written[(i, j)], "({i}, {j}) nonzero but not written");
+                }
+            }
+        }
+        // Sparse: far fewer entries than n².
+        assert!(entries.len() < n * n / 2, "{} of {}", entries.len(), n * n);
+    }
+}
+
+#[test]
+fn the_storage_is_chosen_by_size_unless_set() {
+    let mut system = every_element_system(1, Formulation::I3);
+    assert!(system.size() < crate::mbs::SPARSE_FROM_SIZE);
+    assert_eq!(
+        DaeSystem::newton_storage(&system),
+        crate::NewtonStorage::Dense
+    );
+    system.set_newton_storage(Some(crate::NewtonStorage::Sparse));
+    assert_eq!(
+        DaeSystem::newton_storage(&system),
+        crate::NewtonStorage::Sparse
+    );
+}
