@@ -5,8 +5,10 @@
 #![no_main]
 
 use contact::cli::query::{parse_geometry, parse_poses};
+use contact_core::nalgebra::{Quaternion, UnitQuaternion};
 use contact_core::{
-    FacetingTolerance, GeometryEngine, GeometryInstance, Isometry3, PreparedPair, WorkCounters,
+    FacetingTolerance, GeometryEngine, GeometryInstance, Isometry3, PreparedPair, Vector3,
+    WorkCounters,
 };
 use contact::engine_choice::build_engine;
 use contact_core::GeometryLibrary;
@@ -47,14 +49,40 @@ fn prepared() -> &'static Vec<Box<dyn PreparedPair>> {
     })
 }
 
+/// Each line's seven finite numbers as a pose with its quaternion normalised, whatever its
+/// norm: the parser refuses a quaternion that is not unit, which random bytes almost never
+/// are, and the queries are to be fuzzed all the same.
+fn lenient_poses(text: &str) -> Vec<Isometry3> {
+    text.lines()
+        .filter_map(|line| {
+            let v: Vec<f64> = line
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|s| !s.is_empty())
+                .map(str::parse)
+                .collect::<Result<_, _>>()
+                .ok()?;
+            let [x, y, z, w, i, j, k] = v[..] else {
+                return None;
+            };
+            let q = Quaternion::new(w, i, j, k);
+            let usable = v.iter().all(|a| a.is_finite()) && q.norm().is_finite() && q.norm() > 0.0;
+            usable.then(|| {
+                Isometry3::from_parts(
+                    Vector3::new(x, y, z).into(),
+                    UnitQuaternion::from_quaternion(q),
+                )
+            })
+        })
+        .collect()
+}
+
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
-    let Ok(poses) = parse_poses(&text) else {
-        return;
-    };
+    let parsed = parse_poses(&text).unwrap_or_default();
+    let lenient = lenient_poses(&text);
     let mut contacts = Vec::new();
     let mut work = WorkCounters::default();
-    for pose in poses.iter().take(MAX_POSES) {
+    for pose in parsed.iter().chain(&lenient).take(MAX_POSES) {
         for pair in prepared() {
             if pair
                 .query(pose, &Isometry3::identity(), &mut contacts, &mut work)
