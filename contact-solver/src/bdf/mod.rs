@@ -19,9 +19,13 @@
 //!    rebuilt when Newton fails with an old matrix or needed 4 or more iterations with it,
 //!    when `c` moved out of `[0.6, 1.67]×` its value at factorisation, or on request ([`Bdf::request_newton_matrix`]); a stale matrix's
 //!    corrections are damped by `2/(1 + c/c_old)`. Convergence: the rate `ρ` of successive
-//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step on
-//!    all variables and `‖Δ‖` over the variables [`Corrector`] names (a first correction below
-//!    0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail. A system with an inner
+//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33·s` (DASSL's test, in the ERROR-weighted norm), with
+//!    `ρ` measured within the step on all variables, `‖Δ‖` over the variables [`Corrector`]
+//!    names, and `s` the last accepted step's error-test value clamped to `[1e-6, 1]`: the
+//!    corrector converges to a third of the local error the steps make, so steps held small
+//!    by HMAX do not pile up corrector errors of ERROR's size (a first correction below
+//!    `0.0033·s` also converges). `ρ > 0.9` or MAXIT iterations fail, unless the correction is
+//!    already within DASSL's unscaled test (round-off reached). A system with an inner
 //!    iteration (augmented Lagrangian) may ask for further passes
 //!    ([`DaeSystem::corrector_converged`]);
 //! 3. estimates the local error `ck·‖y − y⁽⁰⁾‖` in the weighted RMS norm over the differential
@@ -40,7 +44,7 @@
 //! # Index-3 DAEs
 //! Variables of kind [`VariableKind::Algebraic`] never enter the error test, their Newton
 //! columns are scaled by `h^(1−index)` (see `newton_matrix`), and [`Corrector::Full`] weights
-//! them by `h^(index−1)` in the convergence test. For Adams' I3 formulation mark positions
+//! them by `h^(max(index−2, 0))` in the convergence test. For Adams' I3 formulation mark positions
 //! differential, velocities `Algebraic { index: 2 }` and multipliers `Algebraic { index: 3 }`
 //! (as RADAU5's NIND2/NIND3): the error is then tested on displacements only, as Adams does.
 //!
@@ -148,6 +152,9 @@ pub struct Bdf {
     /// The order the last error test suggested and its estimate (for the retry after a
     /// failed test).
     last_estimate: (usize, f64),
+    /// The factor on the Newton tolerance: the last accepted step's error-test value, clamped
+    /// (see `step.rs`).
+    newton_scale: f64,
     stats: IntegratorStats,
 }
 
@@ -232,6 +239,7 @@ impl Bdf {
             before_last_step: None,
             last_order: 0,
             last_estimate: (1, 0.0),
+            newton_scale: 1.0,
             stats: IntegratorStats::default(),
         })
     }

@@ -52,12 +52,12 @@ impl Norms {
     fn convergence_factor(&self, i: usize, h: f64, corrector: Corrector) -> Option<f64> {
         match (self.kinds[i], corrector) {
             (VariableKind::Differential, _) => Some(1.0),
-            (VariableKind::Algebraic { .. }, Corrector::Modified)
+            (VariableKind::Algebraic { index: 3 }, Corrector::Modified)
                 if self.differential_count > 0 =>
             {
                 None
             }
-            (VariableKind::Algebraic { index }, _) => Some(h.powi(i32::from(index) - 1)),
+            (VariableKind::Algebraic { index }, _) => Some(h.powi((i32::from(index) - 2).max(0))),
         }
     }
 
@@ -78,8 +78,9 @@ impl Norms {
     }
 
     /// Weighted RMS of a Newton correction over the variables the corrector tests: all of
-    /// them with algebraic ones scaled by `h^(index−1)` ([`Corrector::Full`]), or the
-    /// differential ones only ([`Corrector::Modified`]; all if there are none).
+    /// them with algebraic ones of index `i ≥ 2` scaled by `h^(i−2)` ([`Corrector::Full`]), or
+    /// the differential and index-2 ones only ([`Corrector::Modified`]; all if nothing is
+    /// differential).
     pub fn convergence_norm(&self, v: &DVector<f64>, h: f64, corrector: Corrector) -> f64 {
         let mut sum = 0.0;
         let mut count = 0usize;

@@ -14,6 +14,14 @@ const CJ_RATIO_LIMIT: f64 = 0.6;
 /// Newton stops when `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL's constant), i.e. the remaining correction is
 /// a third of the error tolerance.
 const NEWTON_TOLERANCE: f64 = 0.33;
+/// The Newton tolerance is `NEWTON_TOLERANCE` times the last accepted step's error-test value
+/// `err ∈ [0, 1]` (`ck·‖y − y⁽⁰⁾‖`, 1 at the ERROR limit), clamped to `[NEWTON_SCALE_FLOOR, 1]`:
+/// the corrector converges to a third of the local error the steps actually make, not of the
+/// error they are allowed. Steps held far below the error-controlled size (HMAX, output times)
+/// make local errors far below ERROR; a corrector left at a third of ERROR there adds an error of
+/// that size at every step, which grows with the number of steps (HMAX = 1e-5 was less accurate
+/// than no HMAX). Below the floor the iteration would chase round-off.
+const NEWTON_SCALE_FLOOR: f64 = 1e-6;
 /// Newton counts as diverging when successive corrections shrink by less than this.
 const MAX_RATE: f64 = 0.9;
 /// A step that needed more Newton iterations than this with an old matrix asks for a fresh one
@@ -21,6 +29,9 @@ const MAX_RATE: f64 = 0.9;
 const SLOW_ITERATIONS: usize = 4;
 /// Most convergence or evaluation failures of one step before giving up (DASSL's 10).
 const MAX_CONVERGENCE_FAILURES: u32 = 10;
+/// A step to a stop time may exceed HMAX by this factor: the round-off of times that are sums
+/// of many HMAX steps (ulp(t)/HMAX is 1e-10 at t = 5 with HMAX = 1e-5).
+const HMAX_ROUNDOFF: f64 = 1.0 + 1e-9;
 /// Most failed attempts of one step in all.
 const MAX_FAILURES: u32 = 20;
 
@@ -178,12 +189,18 @@ impl Bdf {
         };
         if let Some(stop) = stop {
             let to_stop = stop - self.t;
-            // Land on the stop time instead of leaving a sliver of less than 1% of a step
-            // (unless that would exceed HMAX).
+            // Land on the stop time instead of leaving a sliver of less than 1% of a step:
+            // take the whole span when HMAX allows it (up to round-off in the times), else
+            // split it in two equal steps. A sliver step would divide the Newton corrections
+            // of the positions by its size in the velocities (`y′ = c·(y − ψ)`, c ~ 1/h).
             let hmax = self.settings.hmax.unwrap_or(f64::INFINITY);
-            if to_stop <= h || (h * 1.01 >= to_stop && to_stop <= hmax) {
+            if to_stop <= h || (h * 1.01 >= to_stop && to_stop <= hmax * HMAX_ROUNDOFF) {
                 self.h = to_stop;
                 return (to_stop, stop);
+            }
+            if h * 1.01 >= to_stop {
+                self.h = 0.5 * to_stop;
+                return (self.h, self.t + self.h);
             }
         }
         self.h = h;
@@ -340,8 +357,8 @@ impl Bdf {
             state.yp.axpy(-cj, &delta, 1.0);
             let norm = self.norms.convergence_norm(&delta, h, corrector);
             // The rate is a property of the whole iteration: measure it on every variable
-            // (algebraic ones weighted by h^(index−1)) even when the stopping test looks at the
-            // differential ones only. Measured on displacements alone it was noisy near
+            // (algebraic ones weighted by h^(index−2)) even when the stopping test looks at the
+            // differential and index-2 ones only. Measured on displacements alone it was noisy near
             // convergence and triggered 4× the Newton-matrix refreshes on the pendulum.
             let rate_norm = self.norms.convergence_norm(&delta, h, Corrector::Full);
             if m == 0 {
@@ -352,14 +369,22 @@ impl Bdf {
             } else {
                 let rate = (rate_norm / old_norm).powf(1.0 / m as f64);
                 if rate > MAX_RATE {
+                    // Stalled below the unscaled tolerance: converged to round-off.
+                    if 100.0 * norm <= NEWTON_TOLERANCE {
+                        return Ok(());
+                    }
                     return self.not_converged(fresh, &delta, h);
                 }
                 rate_factor = rate / (1.0 - rate);
             }
-            if rate_factor * norm <= NEWTON_TOLERANCE {
+            if rate_factor * norm <= NEWTON_TOLERANCE * self.newton_scale {
                 if m + 1 >= SLOW_ITERATIONS && !fresh {
                     self.newton.invalidate();
                 }
+                return Ok(());
+            }
+            // Out of iterations but within the unscaled tolerance: as converged as DASSL's test.
+            if m + 1 == self.settings.maxit && rate_factor * norm <= NEWTON_TOLERANCE {
                 return Ok(());
             }
         }
@@ -453,6 +478,7 @@ impl Bdf {
             };
             (k_next, h_next)
         };
+        self.newton_scale = estimates.err.clamp(NEWTON_SCALE_FLOOR, 1.0);
         history.accept(&converged.e, k, kmax);
         history.k = k_next;
         self.h = h_next;
