@@ -357,7 +357,7 @@ impl MultibodyBuilder {
                 inertia: spec.inertia_cm,
             })
             .collect();
-        Ok(MultibodySystem {
+        let mut system = MultibodySystem {
             parts,
             constraints,
             forces: self.forces,
@@ -367,6 +367,9 @@ impl MultibodyBuilder {
             layout,
             length_scale,
             initial_y,
-        })
+            redundant: Vec::new(),
+        };
+        system.remove_redundant_equations()?;
+        Ok(system)
     }
 }

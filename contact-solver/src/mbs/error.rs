@@ -96,6 +96,22 @@ pub enum MbsError {
         /// The time of the initial conditions.
         time: f64,
     },
+    /// Equations removed as redundant at the initial configuration do not hold once the
+    /// other equations are assembled: the constraints contradict each other (two REVOLUTEs on
+    /// one part with different axes).
+    #[error(
+        "inconsistent redundant constraints between {}: {}; the joints cannot all hold, \
+         remove or realign one of them",
+        elements.join(", "),
+        equations.join("; ")
+    )]
+    InconsistentRedundancy {
+        /// The elements involved, sorted.
+        elements: Vec<String>,
+        /// Each violated equation: element, equation, what it constrains, what implies it and
+        /// its relative value.
+        equations: Vec<String>,
+    },
     /// The system has no moving part (only ground): no analysis has anything to solve.
     #[error("the model has no moving part: nothing to simulate")]
     NoMovingPart,

@@ -46,6 +46,9 @@ pub struct MultibodySystem {
     pub(crate) parallelism: crate::parallel::Parallelism,
     /// Where the Newton matrix takes the force elements' partials from.
     pub(crate) force_partials: super::force::ForcePartials,
+    /// The equations removed as redundant, each with its element reduced to that equation
+    /// (for the consistency check after assembly).
+    pub(crate) redundant: Vec<(super::RedundantEquation, ConstraintElement)>,
 }
 
 impl std::fmt::Debug for MultibodySystem {
@@ -60,6 +63,7 @@ impl std::fmt::Debug for MultibodySystem {
             .field("gravity_w", &self.gravity_w)
             .field("layout", &self.layout)
             .field("length_scale", &self.length_scale)
+            .field("redundant", &self.redundant)
             .finish()
     }
 }
