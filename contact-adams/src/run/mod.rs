@@ -8,4 +8,5 @@ pub mod measures;
 pub mod motion_level;
 pub mod output;
 pub mod plan;
+pub mod redundancy;
 pub mod sforce;
