@@ -7,7 +7,7 @@ use contact_adams::dataset::{self, Diagnostic, Severity};
 use contact_adams::session::{RunOptions, RunSink, check_constraints, run_files};
 use contact_solver::simulate::Frame;
 use std::f64::consts::PI;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 const R: f64 = 0.1;
 const L: f64 = 0.3;
@@ -83,7 +83,7 @@ impl RunSink for Collect {
 }
 
 /// What `contact check` adds for the model's constraints.
-fn check(adm: &PathBuf) -> Vec<Diagnostic> {
+fn check(adm: &Path) -> Vec<Diagnostic> {
     let model = dataset::read(adm, None).unwrap().model;
     let engine = contact_adams::engine_choice::build_engine(
         model.preferences.geometry_library,

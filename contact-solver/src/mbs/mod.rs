@@ -17,6 +17,9 @@
 //!   DAE and its Newton matrix, assembled by blocks.
 //! - [`MultibodySystem::compute_initial_state`]: assembly, consistent velocities, initial
 //!   accelerations and multipliers.
+//! - [`MultibodySystem::redundant_equations`]: the equations the builder removed as redundant
+//!   at the given configuration (`redundancy` module: column-pivoted QR of the constraint
+//!   Jacobian); assembly refuses an inconsistent redundancy naming the elements.
 //!
 //! Sign convention: the constraint reaction on the parts is `−Φ_vᵀλ`
 //! ([`MultibodySystem::constraint_reactions`]).
