@@ -19,7 +19,7 @@ pub enum VariableKind {
     /// error-tested); quaternion-norm multipliers have index 3. The integrator multiplies the
     /// variable's Newton column by `h^(1 − index)` and then equilibrates the rows, which keeps
     /// the matrix O(1) as `h → 0` (Bottasso, Bauchau & Cardona 2007); with
-    /// `CORRECTOR=ORIGINAL` its Newton corrections are weighted by `h^(max(index − 2, 0))`.
+    /// `CORRECTOR=ORIGINAL` its Newton corrections are weighted by `h^(index − 1)`.
     /// Allowed range of `index`: 1..=3.
     Algebraic {
         /// The DAE index of the variable (1, 2 or 3).

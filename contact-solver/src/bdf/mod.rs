@@ -21,11 +21,12 @@
 //!    corrections are damped by `2/(1 + c/c_old)`. Convergence: the rate `ρ` of successive
 //!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33·s` (DASSL's test, in the ERROR-weighted norm), with
 //!    `ρ` measured within the step on all variables, `‖Δ‖` over the variables [`Corrector`]
-//!    names, and `s` the last accepted step's error-test value clamped to `[1e-6, 1]`: the
-//!    corrector converges to a third of the local error the steps make, so steps held small
-//!    by HMAX do not pile up corrector errors of ERROR's size (a first correction below
-//!    `0.0033·s` also converges). `ρ > 0.9` or MAXIT iterations fail, unless the correction is
-//!    already within DASSL's unscaled test (round-off reached). A system with an inner
+//!    names, and `s = 1`, or in steps HMAX holds below the error-controlled size, the last
+//!    accepted step's error-test value clamped to `[1e-6, 1]`: the corrector converges to a
+//!    third of the local error such steps make, so they do not pile up corrector errors of
+//!    ERROR's size (a first correction below `0.0033·s` also converges). `ρ > 0.9` or MAXIT
+//!    iterations fail, unless (in such a step) the correction is already within DASSL's
+//!    unscaled test (round-off reached). A system with an inner
 //!    iteration (augmented Lagrangian) may ask for further passes
 //!    ([`DaeSystem::corrector_converged`]);
 //! 3. estimates the local error `ck·‖y − y⁽⁰⁾‖` in the weighted RMS norm over the differential
@@ -44,7 +45,7 @@
 //! # Index-3 DAEs
 //! Variables of kind [`VariableKind::Algebraic`] never enter the error test, their Newton
 //! columns are scaled by `h^(1−index)` (see `newton_matrix`), and [`Corrector::Full`] weights
-//! them by `h^(max(index−2, 0))` in the convergence test. For Adams' I3 formulation mark positions
+//! them by `h^(index−1)` in the convergence test. For Adams' I3 formulation mark positions
 //! differential, velocities `Algebraic { index: 2 }` and multipliers `Algebraic { index: 3 }`
 //! (as RADAU5's NIND2/NIND3): the error is then tested on displacements only, as Adams does.
 //!
@@ -155,6 +156,8 @@ pub struct Bdf {
     /// The factor on the Newton tolerance: the last accepted step's error-test value, clamped
     /// (see `step.rs`).
     newton_scale: f64,
+    /// Whether HMAX bounds the step being attempted (the error control chose HMAX or more).
+    hmax_bound: bool,
     stats: IntegratorStats,
 }
 
@@ -240,6 +243,7 @@ impl Bdf {
             last_order: 0,
             last_estimate: (1, 0.0),
             newton_scale: 1.0,
+            hmax_bound: false,
             stats: IntegratorStats::default(),
         })
     }

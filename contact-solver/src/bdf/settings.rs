@@ -7,16 +7,15 @@ use contact_core::InvalidArgument;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Corrector {
     /// Adams `CORRECTOR=ORIGINAL`: every variable takes part in the convergence test; an
-    /// algebraic variable of index `i ≥ 2` is weighted by `h^(i−2)` (index-2 velocities as
-    /// they are, index-3 multipliers, whose corrections grow like `1/h` relative to the
-    /// velocities', times `h`), index 1 by 1.
+    /// algebraic variable of index `i` is weighted by `h^(i−1)` (as RADAU5 does), so multipliers
+    /// whose corrections grow like `1/h²` near small steps do not stall the test.
     Full,
-    /// Adams `CORRECTOR=MODIFIED`: the variables in the local error test
-    /// ([`VariableKind::Differential`](crate::VariableKind::Differential)) and the index-2
-    /// variables (the velocities of an index-3 mechanism, which the next steps' positions are
-    /// integrated from) must have converged; index-3 multipliers do not take part (all
-    /// variables do when nothing is differential). Adams switches to it automatically for
-    /// models with contacts; it is the default.
+    /// Adams `CORRECTOR=MODIFIED`: only the variables in the local error test
+    /// ([`VariableKind::Differential`](crate::VariableKind::Differential)) must have
+    /// converged; in steps HMAX holds below the error-controlled size, the index-2 variables of
+    /// a system with index-3 ones (a mechanism's velocities under I3, which the next steps'
+    /// positions are integrated from) too. Adams switches to it automatically for models with
+    /// contacts; it is the default.
     #[default]
     Modified,
 }

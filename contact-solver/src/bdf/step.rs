@@ -14,13 +14,15 @@ const CJ_RATIO_LIMIT: f64 = 0.6;
 /// Newton stops when `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL's constant), i.e. the remaining correction is
 /// a third of the error tolerance.
 const NEWTON_TOLERANCE: f64 = 0.33;
-/// The Newton tolerance is `NEWTON_TOLERANCE` times the last accepted step's error-test value
-/// `err ∈ [0, 1]` (`ck·‖y − y⁽⁰⁾‖`, 1 at the ERROR limit), clamped to `[NEWTON_SCALE_FLOOR, 1]`:
-/// the corrector converges to a third of the local error the steps actually make, not of the
-/// error they are allowed. Steps held far below the error-controlled size (HMAX, output times)
-/// make local errors far below ERROR; a corrector left at a third of ERROR there adds an error of
-/// that size at every step, which grows with the number of steps (HMAX = 1e-5 was less accurate
-/// than no HMAX). Below the floor the iteration would chase round-off.
+/// In a step that HMAX holds below the size the error control asks for, the Newton tolerance is
+/// `NEWTON_TOLERANCE` times the last accepted step's error-test value `err ∈ [0, 1]`
+/// (`ck·‖y − y⁽⁰⁾‖`, 1 at the ERROR limit), clamped to `[NEWTON_SCALE_FLOOR, 1]`: the corrector
+/// converges to a third of the local error such steps actually make, not of the error they are
+/// allowed. Their local errors are far below ERROR; a corrector left at a third of ERROR adds an
+/// error of that size at every step, which grows with the number of steps (HMAX = 1e-5 was less
+/// accurate than no HMAX). Steps the error control sizes keep DASSL's test (their `err` is O(1)
+/// by construction; iterating deeper there only moves results by round-off-sized amounts that
+/// change the step sequence). Below the floor the iteration would chase round-off.
 const NEWTON_SCALE_FLOOR: f64 = 1e-6;
 /// Newton counts as diverging when successive corrections shrink by less than this.
 const MAX_RATE: f64 = 0.9;
@@ -180,9 +182,12 @@ impl Bdf {
     /// the time it ends at (exactly the stop time when capped by it).
     fn capped_step(&mut self) -> (f64, f64) {
         let mut h = self.h;
+        self.hmax_bound = false;
         if let Some(hmax) = self.settings.hmax {
+            self.hmax_bound = h >= hmax;
             h = h.min(hmax);
         }
+        self.norms.test_index_two(self.hmax_bound);
         let stop = match (self.stop_time, self.retry_target) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, b) => a.or(b),
@@ -357,8 +362,8 @@ impl Bdf {
             state.yp.axpy(-cj, &delta, 1.0);
             let norm = self.norms.convergence_norm(&delta, h, corrector);
             // The rate is a property of the whole iteration: measure it on every variable
-            // (algebraic ones weighted by h^(index−2)) even when the stopping test looks at the
-            // differential and index-2 ones only. Measured on displacements alone it was noisy near
+            // (algebraic ones weighted by h^(index−1)) even when the stopping test looks at the
+            // differential ones only. Measured on displacements alone it was noisy near
             // convergence and triggered 4× the Newton-matrix refreshes on the pendulum.
             let rate_norm = self.norms.convergence_norm(&delta, h, Corrector::Full);
             if m == 0 {
@@ -370,21 +375,29 @@ impl Bdf {
                 let rate = (rate_norm / old_norm).powf(1.0 / m as f64);
                 if rate > MAX_RATE {
                     // Stalled below the unscaled tolerance: converged to round-off.
-                    if 100.0 * norm <= NEWTON_TOLERANCE {
+                    if self.hmax_bound && 100.0 * norm <= NEWTON_TOLERANCE {
                         return Ok(());
                     }
                     return self.not_converged(fresh, &delta, h);
                 }
                 rate_factor = rate / (1.0 - rate);
             }
-            if rate_factor * norm <= NEWTON_TOLERANCE * self.newton_scale {
+            let scale = if self.hmax_bound {
+                self.newton_scale
+            } else {
+                1.0
+            };
+            if rate_factor * norm <= NEWTON_TOLERANCE * scale {
                 if m + 1 >= SLOW_ITERATIONS && !fresh {
                     self.newton.invalidate();
                 }
                 return Ok(());
             }
             // Out of iterations but within the unscaled tolerance: as converged as DASSL's test.
-            if m + 1 == self.settings.maxit && rate_factor * norm <= NEWTON_TOLERANCE {
+            if self.hmax_bound
+                && m + 1 == self.settings.maxit
+                && rate_factor * norm <= NEWTON_TOLERANCE
+            {
                 return Ok(());
             }
         }
