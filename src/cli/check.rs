@@ -330,6 +330,13 @@ pub fn run_with(
     let engine_line = match engines(library) {
         Some(engine) => {
             diagnostics.extend(check_contacts(&model, engine.as_ref()));
+            if model.has_moving_part() && !diagnostics.iter().any(Diagnostic::is_error) {
+                diagnostics.extend(crate::session::check_constraints(
+                    &model,
+                    engine.as_ref(),
+                    0.0,
+                ));
+            }
             format!("{} (from {source})", engine.name())
         }
         None => {

@@ -8,6 +8,7 @@ pub mod measures;
 pub mod motion_level;
 pub mod output;
 pub mod plan;
+pub mod redundancy;
 pub mod request_file;
 pub mod requests;
 pub mod sforce;

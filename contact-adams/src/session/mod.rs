@@ -64,7 +64,7 @@ mod runner;
 pub use error::{AnalysisError, RunError, RunFailure, no_moving_part};
 pub use files::ResultFiles;
 pub use report::{AnalysisOutcome, AnalysisReport, DynamicsTotals, RunReport};
-pub use runner::run_model;
+pub use runner::{check_constraints, run_model};
 
 use crate::dataset::{self, Diagnostic, Loaded, Severity};
 use crate::engine_choice::EngineSelection;

@@ -5,10 +5,12 @@ use super::analysis::{FrameFilter, run_analysis};
 use super::error::{RunError, RunFailure};
 use super::report::{AnalysisOutcome, DynamicsTotals, RunReport};
 use super::{RunLayout, RunOptions, RunSink};
+use crate::dataset::Diagnostic;
 use crate::engine_choice::{self, Overrides};
 use crate::model::{MeshFile, Model};
 use crate::run::lower::{LowerError, LoweredModel, lower};
 use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
+use crate::run::redundancy::{redundancy_diagnostics, redundancy_warnings};
 use crate::run::request_file::{RequestOutput, units_tag};
 use crate::run::requests::RequestSet;
 use contact_core::{FacetingTolerance, GeometryEngine, GeometryInstance, WorkCounters};
@@ -70,6 +72,8 @@ pub fn run_model(
     };
     let first_analysis = solver_analysis(first);
     let current = (first_analysis, lowering.lower(first_analysis)?);
+    sink.diagnostics(&redundancy_warnings(model, &current.1.system))
+        .map_err(RunError::Output)?;
     let contacts: Vec<String> = model
         .contacts
         .iter()
@@ -241,6 +245,20 @@ fn request_output(
         reqsave,
         file_name,
     }))
+}
+
+/// What `contact check` says of the model's constraints: the equations found redundant at the
+/// initial configuration (warnings at their statements) and an inconsistent redundancy (an
+/// error naming the joints), from the model lowered with `engine` as `contact run` lowers it
+/// for dynamics (meshes at the default faceting tolerance: the constraints do not depend on
+/// it), assembled at `t`. A model that does not lower gives nothing here: `contact run`
+/// reports why.
+pub fn check_constraints(model: &Model, engine: &dyn GeometryEngine, t: f64) -> Vec<Diagnostic> {
+    let read = |f: &MeshFile| read_mesh(f, FacetingTolerance::DEFAULT);
+    match lower(model, engine, Analysis::Dynamics, &read) {
+        Ok(lowered) => redundancy_diagnostics(model, &lowered.system, t),
+        Err(_) => Vec::new(),
+    }
 }
 
 /// A mesh file (STL, OBJ, a Parasolid body tessellated at the model-wide `tolerance` unless

@@ -19,9 +19,14 @@
 //!    rebuilt when Newton fails with an old matrix or needed 4 or more iterations with it,
 //!    when `c` moved out of `[0.6, 1.67]×` its value at factorisation, or on request ([`Bdf::request_newton_matrix`]); a stale matrix's
 //!    corrections are damped by `2/(1 + c/c_old)`. Convergence: the rate `ρ` of successive
-//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL), with `ρ` measured within the step on
-//!    all variables and `‖Δ‖` over the variables [`Corrector`] names (a first correction below
-//!    0.0033 also converges); `ρ > 0.9` or MAXIT iterations fail. A system with an inner
+//!    corrections gives `ρ/(1−ρ)·‖Δ‖ ≤ 0.33·s` (DASSL's test, in the ERROR-weighted norm), with
+//!    `ρ` measured within the step on all variables, `‖Δ‖` over the variables [`Corrector`]
+//!    names, and `s = 1`, or in steps HMAX holds below the error-controlled size, the last
+//!    accepted step's error-test value clamped to `[1e-6, 1]`: the corrector converges to a
+//!    third of the local error such steps make, so they do not pile up corrector errors of
+//!    ERROR's size (a first correction below `0.0033·s` also converges). `ρ > 0.9` or MAXIT
+//!    iterations fail, unless (in such a step) the correction is already within DASSL's
+//!    unscaled test (round-off reached). A system with an inner
 //!    iteration (augmented Lagrangian) may ask for further passes
 //!    ([`DaeSystem::corrector_converged`]);
 //! 3. estimates the local error `ck·‖y − y⁽⁰⁾‖` in the weighted RMS norm over the differential
@@ -149,6 +154,11 @@ pub struct Bdf {
     /// The order the last error test suggested and its estimate (for the retry after a
     /// failed test).
     last_estimate: (usize, f64),
+    /// The factor on the Newton tolerance: the last accepted step's error-test value, clamped
+    /// (see `step.rs`).
+    newton_scale: f64,
+    /// Whether HMAX bounds the step being attempted (the error control chose HMAX or more).
+    hmax_bound: bool,
     stats: IntegratorStats,
 }
 
@@ -233,6 +243,8 @@ impl Bdf {
             before_last_step: None,
             last_order: 0,
             last_estimate: (1, 0.0),
+            newton_scale: 1.0,
+            hmax_bound: false,
             stats: IntegratorStats::default(),
         })
     }

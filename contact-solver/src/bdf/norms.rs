@@ -16,6 +16,11 @@ pub(super) struct Norms {
     scales: DVector<f64>,
     error: f64,
     differential_count: usize,
+    /// Whether any variable has index 3 (an index-3 mechanism, whose index-2 variables are
+    /// the velocities).
+    has_index_three: bool,
+    /// See [`Norms::test_index_two`].
+    index_two: bool,
 }
 
 impl Norms {
@@ -26,12 +31,17 @@ impl Norms {
             .iter()
             .filter(|k| matches!(k, VariableKind::Differential))
             .count();
+        let has_index_three = kinds
+            .iter()
+            .any(|k| matches!(k, VariableKind::Algebraic { index: 3 }));
         Self {
             kinds,
             weights: DVector::from_element(n, error),
             scales,
             error,
             differential_count,
+            has_index_three,
+            index_two: false,
         }
     }
 
@@ -52,6 +62,11 @@ impl Norms {
     fn convergence_factor(&self, i: usize, h: f64, corrector: Corrector) -> Option<f64> {
         match (self.kinds[i], corrector) {
             (VariableKind::Differential, _) => Some(1.0),
+            (VariableKind::Algebraic { index: 2 }, Corrector::Modified)
+                if self.differential_count > 0 && self.has_index_three && self.index_two =>
+            {
+                Some(1.0)
+            }
             (VariableKind::Algebraic { .. }, Corrector::Modified)
                 if self.differential_count > 0 =>
             {
@@ -59,6 +74,14 @@ impl Norms {
             }
             (VariableKind::Algebraic { index }, _) => Some(h.powi(i32::from(index) - 1)),
         }
+    }
+
+    /// Whether [`Corrector::Modified`] tests the index-2 variables of a system with index-3
+    /// ones (the velocities of a mechanism under I3) as well, unscaled: the integrator asks
+    /// for it in steps HMAX holds below the error-controlled size, where corrector errors of
+    /// the velocities would otherwise accumulate over many steps into the positions.
+    pub fn test_index_two(&mut self, on: bool) {
+        self.index_two = on;
     }
 
     /// Weighted RMS of `v` over the differential variables (0 when there are none): the local
@@ -79,7 +102,8 @@ impl Norms {
 
     /// Weighted RMS of a Newton correction over the variables the corrector tests: all of
     /// them with algebraic ones scaled by `h^(index−1)` ([`Corrector::Full`]), or the
-    /// differential ones only ([`Corrector::Modified`]; all if there are none).
+    /// differential ones only, with the index-2 ones when [`Norms::test_index_two`] asks
+    /// ([`Corrector::Modified`]; all if nothing is differential).
     pub fn convergence_norm(&self, v: &DVector<f64>, h: f64, corrector: Corrector) -> f64 {
         let mut sum = 0.0;
         let mut count = 0usize;

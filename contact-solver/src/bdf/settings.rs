@@ -12,7 +12,10 @@ pub enum Corrector {
     Full,
     /// Adams `CORRECTOR=MODIFIED`: only the variables in the local error test
     /// ([`VariableKind::Differential`](crate::VariableKind::Differential)) must have
-    /// converged. Adams switches to it automatically for models with contacts; it is the default.
+    /// converged; in steps HMAX holds below the error-controlled size, the index-2 variables of
+    /// a system with index-3 ones (a mechanism's velocities under I3, which the next steps'
+    /// positions are integrated from) too. Adams switches to it automatically for models with
+    /// contacts; it is the default.
     #[default]
     Modified,
 }

@@ -14,6 +14,16 @@ const CJ_RATIO_LIMIT: f64 = 0.6;
 /// Newton stops when `ρ/(1−ρ)·‖Δ‖ ≤ 0.33` (DASSL's constant), i.e. the remaining correction is
 /// a third of the error tolerance.
 const NEWTON_TOLERANCE: f64 = 0.33;
+/// In a step that HMAX holds below the size the error control asks for, the Newton tolerance is
+/// `NEWTON_TOLERANCE` times the last accepted step's error-test value `err ∈ [0, 1]`
+/// (`ck·‖y − y⁽⁰⁾‖`, 1 at the ERROR limit), clamped to `[NEWTON_SCALE_FLOOR, 1]`: the corrector
+/// converges to a third of the local error such steps actually make, not of the error they are
+/// allowed. Their local errors are far below ERROR; a corrector left at a third of ERROR adds an
+/// error of that size at every step, which grows with the number of steps (HMAX = 1e-5 was less
+/// accurate than no HMAX). Steps the error control sizes keep DASSL's test (their `err` is O(1)
+/// by construction; iterating deeper there only moves results by round-off-sized amounts that
+/// change the step sequence). Below the floor the iteration would chase round-off.
+const NEWTON_SCALE_FLOOR: f64 = 1e-6;
 /// Newton counts as diverging when successive corrections shrink by less than this.
 const MAX_RATE: f64 = 0.9;
 /// A step that needed more Newton iterations than this with an old matrix asks for a fresh one
@@ -21,6 +31,9 @@ const MAX_RATE: f64 = 0.9;
 const SLOW_ITERATIONS: usize = 4;
 /// Most convergence or evaluation failures of one step before giving up (DASSL's 10).
 const MAX_CONVERGENCE_FAILURES: u32 = 10;
+/// A step to a stop time may exceed HMAX by this factor: the round-off of times that are sums
+/// of many HMAX steps (ulp(t)/HMAX is 1e-10 at t = 5 with HMAX = 1e-5).
+const HMAX_ROUNDOFF: f64 = 1.0 + 1e-9;
 /// Most failed attempts of one step in all.
 const MAX_FAILURES: u32 = 20;
 
@@ -169,21 +182,30 @@ impl Bdf {
     /// the time it ends at (exactly the stop time when capped by it).
     fn capped_step(&mut self) -> (f64, f64) {
         let mut h = self.h;
+        self.hmax_bound = false;
         if let Some(hmax) = self.settings.hmax {
+            self.hmax_bound = h >= hmax;
             h = h.min(hmax);
         }
+        self.norms.test_index_two(self.hmax_bound);
         let stop = match (self.stop_time, self.retry_target) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, b) => a.or(b),
         };
         if let Some(stop) = stop {
             let to_stop = stop - self.t;
-            // Land on the stop time instead of leaving a sliver of less than 1% of a step
-            // (unless that would exceed HMAX).
+            // Land on the stop time instead of leaving a sliver of less than 1% of a step:
+            // take the whole span when HMAX allows it (up to round-off in the times), else
+            // split it in two equal steps. A sliver step would divide the Newton corrections
+            // of the positions by its size in the velocities (`y′ = c·(y − ψ)`, c ~ 1/h).
             let hmax = self.settings.hmax.unwrap_or(f64::INFINITY);
-            if to_stop <= h || (h * 1.01 >= to_stop && to_stop <= hmax) {
+            if to_stop <= h || (h * 1.01 >= to_stop && to_stop <= hmax * HMAX_ROUNDOFF) {
                 self.h = to_stop;
                 return (to_stop, stop);
+            }
+            if h * 1.01 >= to_stop {
+                self.h = 0.5 * to_stop;
+                return (self.h, self.t + self.h);
             }
         }
         self.h = h;
@@ -352,14 +374,30 @@ impl Bdf {
             } else {
                 let rate = (rate_norm / old_norm).powf(1.0 / m as f64);
                 if rate > MAX_RATE {
+                    // Stalled below the unscaled tolerance: converged to round-off.
+                    if self.hmax_bound && 100.0 * norm <= NEWTON_TOLERANCE {
+                        return Ok(());
+                    }
                     return self.not_converged(fresh, &delta, h);
                 }
                 rate_factor = rate / (1.0 - rate);
             }
-            if rate_factor * norm <= NEWTON_TOLERANCE {
+            let scale = if self.hmax_bound {
+                self.newton_scale
+            } else {
+                1.0
+            };
+            if rate_factor * norm <= NEWTON_TOLERANCE * scale {
                 if m + 1 >= SLOW_ITERATIONS && !fresh {
                     self.newton.invalidate();
                 }
+                return Ok(());
+            }
+            // Out of iterations but within the unscaled tolerance: as converged as DASSL's test.
+            if self.hmax_bound
+                && m + 1 == self.settings.maxit
+                && rate_factor * norm <= NEWTON_TOLERANCE
+            {
                 return Ok(());
             }
         }
@@ -453,6 +491,7 @@ impl Bdf {
             };
             (k_next, h_next)
         };
+        self.newton_scale = estimates.err.clamp(NEWTON_SCALE_FLOOR, 1.0);
         history.accept(&converged.e, k, kmax);
         history.k = k_next;
         self.h = h_next;

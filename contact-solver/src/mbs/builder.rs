@@ -413,7 +413,7 @@ impl MultibodyBuilder {
                 inertia: spec.inertia_cm,
             })
             .collect();
-        Ok(MultibodySystem {
+        let mut system = MultibodySystem {
             parts,
             constraints,
             broad_phase: crate::broad_phase::BroadPhase::new(&self.forces),
@@ -430,6 +430,9 @@ impl MultibodyBuilder {
             layout,
             length_scale,
             initial_y,
-        })
+            redundant: Vec::new(),
+        };
+        system.remove_redundant_equations()?;
+        Ok(system)
     }
 }

@@ -86,15 +86,34 @@ pub enum MbsError {
         /// The element with the largest residual.
         worst: String,
     },
-    /// The constraint equations are redundant or inconsistent at the initial configuration:
-    /// the acceleration-level system [M Φ_vᵀ; Φ_v 0] is singular.
+    /// The acceleration-level system [M Φ_vᵀ; Φ_v 0] is singular at the assembled
+    /// configuration although the equations were independent at the given one (equations
+    /// redundant there were removed when the system was built): the assembly moved the
+    /// mechanism into a singular (toggle) position, or a part has no mass in a free direction.
     #[error(
         "the constraints are redundant or singular at t = {time}: [M Φ_vᵀ; Φ_v 0] cannot be \
-         factored; remove duplicated joints or JPRIMs"
+         factored; the assembled positions are a singular configuration of the joints (start \
+         the mechanism away from it) or a part lacks mass or inertia in a free direction"
     )]
     SingularConstraints {
         /// The time of the initial conditions.
         time: f64,
+    },
+    /// Equations removed as redundant at the initial configuration do not hold once the
+    /// other equations are assembled: the constraints contradict each other (two REVOLUTEs on
+    /// one part with different axes).
+    #[error(
+        "inconsistent redundant constraints between {}: {}; the joints cannot all hold, \
+         remove or realign one of them",
+        elements.join(", "),
+        equations.join("; ")
+    )]
+    InconsistentRedundancy {
+        /// The elements involved, sorted.
+        elements: Vec<String>,
+        /// Each violated equation: element, equation, what it constrains, what implies it and
+        /// its relative value.
+        equations: Vec<String>,
     },
     /// The system has no moving part (only ground): no analysis has anything to solve.
     #[error("the model has no moving part: nothing to simulate")]

@@ -8,7 +8,8 @@
 //! 2. **Velocities**: the minimum-norm correction `v = v₀ − Φ_v⁺(Φ_v v₀ + Φ_t)`.
 //! 3. **Accelerations and multipliers**: `[M Φ_vᵀ; Φ_v 0] [v̇; λ] = [Q − ω′×Jω′; γ]` with
 //!    `γ = −Φ_tt − (dΦ_v/dt) v`; the last term is a central difference of `Φ_v v` along the
-//!    motion. Redundant constraints (rank-deficient `Φ_v`) are an error.
+//!    motion. Redundant equations were removed when the system was built
+//!    ([`MultibodySystem::redundant_equations`]); a singular matrix here is an error.
 
 use super::error::MbsError;
 use super::part::PartId;
@@ -76,7 +77,8 @@ impl MultibodySystem {
     }
 
     /// Moves the positions in `y` onto `Φ(q, t) = 0` by the smallest correction; returns the
-    /// iterations used.
+    /// iterations used. Then checks that the equations removed as redundant hold too
+    /// ([`MbsError::InconsistentRedundancy`] otherwise).
     pub fn assemble(&self, t: f64, y: &mut DVector<f64>) -> Result<usize, MbsError> {
         // Every analysis starts here; with only ground there is nothing to assemble or solve.
         if self.parts.is_empty() {
@@ -87,6 +89,7 @@ impl MultibodySystem {
             let states = self.part_states(y)?;
             let phi = self.constraint_values(t, &states)?;
             if self.worst_constraint(&phi).0 <= ASSEMBLY_TOLERANCE {
+                self.check_redundant_equations(t, y)?;
                 return Ok(iterations);
             }
             iterations += 1;
@@ -122,6 +125,7 @@ impl MultibodySystem {
         let phi = self.constraint_values(t, &states)?;
         let worst = self.worst_constraint(&phi);
         if worst.0 <= ASSEMBLY_TOLERANCE {
+            self.check_redundant_equations(t, y)?;
             return Ok(iterations);
         }
         Err(MbsError::AssemblyFailed {

@@ -17,6 +17,9 @@
 //!   DAE and its Newton matrix, assembled by blocks.
 //! - [`MultibodySystem::compute_initial_state`]: assembly, consistent velocities, initial
 //!   accelerations and multipliers.
+//! - [`MultibodySystem::redundant_equations`]: the equations the builder removed as redundant
+//!   at the given configuration (`redundancy` module: column-pivoted QR of the constraint
+//!   Jacobian); assembly refuses an inconsistent redundancy naming the elements.
 //!
 //! Sign convention: the constraint reaction on the parts is `−Φ_vᵀλ`
 //! ([`MultibodySystem::constraint_reactions`]).
@@ -83,6 +86,7 @@ mod layout;
 mod motion;
 mod part;
 pub(crate) mod quaternion;
+mod redundancy;
 mod residual;
 mod springs;
 mod system;
@@ -101,5 +105,6 @@ pub use initial::InitialState;
 pub use layout::{Formulation, StateLayout};
 pub use motion::{MarkerMotionAxis, MotionDof, TimeFunction};
 pub use part::{MarkerId, PartId, PartSpec};
+pub use redundancy::{CONSISTENCY_TOLERANCE, RANK_TOLERANCE, RedundantEquation};
 pub use springs::{RotationalSpringDamper, SpringParams, TranslationalSpringDamper};
 pub use system::{MultibodySystem, SPARSE_FROM_SIZE};

@@ -54,6 +54,9 @@ pub struct MultibodySystem {
     pub(crate) output_dynamics: bool,
     /// The Newton matrix's storage, or `None` to choose by size ([`SPARSE_FROM_SIZE`]).
     pub(crate) newton_storage: Option<crate::NewtonStorage>,
+    /// The equations removed as redundant, each with its element reduced to that equation
+    /// (for the consistency check after assembly).
+    pub(crate) redundant: Vec<(super::RedundantEquation, ConstraintElement)>,
 }
 
 /// The size `n` of `y` from which the integrator stores the Newton matrix sparse when the
@@ -75,6 +78,7 @@ impl std::fmt::Debug for MultibodySystem {
             .field("gravity_w", &self.gravity_w)
             .field("layout", &self.layout)
             .field("length_scale", &self.length_scale)
+            .field("redundant", &self.redundant)
             .finish()
     }
 }

@@ -194,28 +194,11 @@ fn part_with_two_markers(builder: &mut MultibodyBuilder) -> (MarkerId, MarkerId)
 }
 
 #[test]
-fn duplicated_joint_is_reported_as_redundant() {
-    let mut builder = MultibodyBuilder::new(Vector3::new(0.0, 0.0, -9.81));
-    let (near, _) = part_with_two_markers(&mut builder);
-    let ground = builder
-        .add_marker(PartId::GROUND, Isometry3::identity())
-        .unwrap();
-    builder
-        .add_constraint("JOINT/1", ConstraintKind::Revolute, near, ground)
-        .unwrap();
-    builder
-        .add_constraint("JOINT/2", ConstraintKind::Revolute, near, ground)
-        .unwrap();
-    let system = builder.build().unwrap();
-    assert_eq!(
-        system.compute_initial_state(0.0).unwrap_err(),
-        MbsError::SingularConstraints { time: 0.0 }
-    );
-}
-
-#[test]
-fn joints_that_cannot_close_fail_assembly_naming_an_element() {
-    // The part's markers are 1 apart, the ground's 5 apart: two SPHERICAL joints cannot both close.
+fn joints_that_cannot_close_are_refused_naming_both() {
+    // The part's markers are 1 apart, the ground's 5 apart: two SPHERICAL joints cannot both
+    // close. Along the line of the markers the second joint's equation repeats the first's
+    // gradient (a rotation does not move either point along it), so it is the redundant one
+    // that cannot hold: 4 units off, over L = 5.
     let mut builder = MultibodyBuilder::new(Vector3::zeros());
     let (near, far) = part_with_two_markers(&mut builder);
     let ground_near = builder
@@ -232,15 +215,17 @@ fn joints_that_cannot_close_fail_assembly_naming_an_element() {
         .unwrap();
     let system = builder.build().unwrap();
     let error = system.compute_initial_state(0.0).unwrap_err();
-    let MbsError::AssemblyFailed {
-        residual, worst, ..
+    let MbsError::InconsistentRedundancy {
+        elements,
+        equations,
     } = &error
     else {
         panic!("{error}")
     };
-    // Least squares splits the 4-unit gap evenly: 2 per joint, over L = 5.
-    assert!((residual - 0.4).abs() < 1e-9, "{error}");
-    assert!(worst.starts_with("JOINT/"), "{error}");
+    assert_eq!(elements, &["JOINT/1".to_string(), "JOINT/2".to_string()]);
+    assert_eq!(equations.len(), 1, "{error}");
+    assert!(equations[0].contains("translation along X"), "{error}");
+    assert!(equations[0].contains("value -8.000e-1"), "{error}");
 }
 
 #[test]

@@ -10,6 +10,7 @@ mod dynamics;
 mod errors;
 mod mechanisms;
 mod newton_matrix;
+mod redundancy;
 mod springs;
 
 use super::*;
