@@ -215,19 +215,16 @@ fn matches_adams(case: &str, until: f64) {
 }
 
 #[test]
-#[ignore = "integrator accuracy at the dataset's HMAX = 1e-5 (issue #30 point 4): position and velocity about 1e-3 of their peaks off; at ERROR = 1e-7 the same model matches (distance_case01_at_a_tight_error_matches_adams)"]
 fn distance_case01_matches_adams() {
     matches_adams("Distance_Case01", 5.0);
 }
 
 #[test]
-#[ignore = "integrator accuracy at the dataset's HMAX = 1e-5 on a chaotic run (issue #30 point 4): every quantity out of tolerance by 1.5 s"]
 fn distance_case02_matches_adams_to_1_5_s() {
     matches_adams("Distance_Case02", 1.5);
 }
 
 #[test]
-#[ignore = "integrator accuracy at the dataset's HMAX = 1e-5 (issue #30 point 4), and the shortened last step at END disturbs the velocities and reactions at t = 5; at ERROR = 1e-7 the same model matches (revolute_case02_at_a_tight_error_matches_adams)"]
 fn revolute_case02_matches_adams() {
     matches_adams("Revolute_Case02", 5.0);
 }
@@ -245,7 +242,6 @@ fn universal_case02_matches_adams() {
 }
 
 #[test]
-#[ignore = "the shortened last step at END (t = 5) disturbs the pinion's angular velocity and acceleration; up to t = 4.99 every column is within tolerance"]
 fn rackpinion_case01_matches_adams() {
     matches_adams("RackPinion_Case01", 5.0);
 }
