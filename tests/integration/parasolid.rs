@@ -7,8 +7,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 fn frs5() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/frs5/FRS5_doe_8_LAUL_analysis.adm")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/frs5/FRS5_doe_8_LAUL_analysis.adm")
 }
 
 fn check(engine: Option<&str>) -> String {
