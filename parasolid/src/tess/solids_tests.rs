@@ -228,3 +228,65 @@ fn a_roller_spun_from_a_b_curve_profile_closes_and_converges() {
     let body = prism(side, circle(0.0), circle(H));
     converges(&body, v, Point3::new(0.0, 0.0, mz / v));
 }
+
+/// A thin cylinder (r = 2.5 mm, h = 23 mm) whose top circle's samples sit a twist φ round
+/// from its bottom circle's, at tolerances coarse enough that the chord deviation δ = L/FT
+/// runs from 0.3 r to 0.99 r, where the chord bound alone spaces the lateral grid by up to
+/// half a turn: at φ = π/2 and δ ≥ 0.8 r a grid column then lies exactly half a turn from
+/// the seam's middle point. It closes at each, with its volume within δ·A of π r² h (A the
+/// mesh's area: every mesh point lies within δ of the surface).
+#[test]
+fn a_thin_cylinder_closes_at_tolerances_near_its_radius() {
+    let (r, h) = (0.0025, 0.023);
+    let circle = |z: f64, phi: f64| Curve::Ellipse {
+        c: Point3::new(0.0, 0.0, z),
+        x: Vector3::new(phi.cos(), phi.sin(), 0.0),
+        y: Vector3::new(-phi.sin(), phi.cos(), 0.0),
+        a: r,
+        b: r,
+    };
+    let side = Surface::Cone {
+        o: Point3::origin(),
+        a: Vector3::z(),
+        x: Vector3::x(),
+        y: Vector3::y(),
+        r,
+        tan: 0.0,
+    };
+    let part = Part::empty(std::path::Path::new("built.x_t"));
+    let length = (8.0 * r * r + h * h).sqrt();
+    let volume = std::f64::consts::PI * r * r * h;
+    let mut failures = Vec::new();
+    for phi in (0..8).map(|k| k as f64 * std::f64::consts::PI / 12.0) {
+        let body = Body {
+            node: node(1),
+            faces: vec![
+                face(2, side.clone(), vec![fin(0, true), fin(1, false)]),
+                face(3, plane(0.0), vec![fin(0, false)]),
+                face(4, plane(h), vec![fin(1, true)]),
+            ],
+            edges: vec![ring(5, circle(0.0, 0.0)), ring(6, circle(h, phi))],
+            vertices: Vec::new(),
+        };
+        for k in 0..=40 {
+            let delta = r * (0.3 + 0.69 * k as f64 / 40.0);
+            let at = format!("φ {phi:.3}, δ/r {:.3}", delta / r);
+            let tol = FacetingTolerance::new(length / delta).unwrap();
+            let mesh = match body_mesh(&part, &body, tol, "cylinder") {
+                Ok(m) => m,
+                Err(e) => {
+                    failures.push(format!("{at}: {e}"));
+                    continue;
+                }
+            };
+            let area: f64 = (0..mesh.triangles().len())
+                .map(|i| mesh.triangle_area(i))
+                .sum();
+            let v = mesh.signed_volume();
+            if (v - volume).abs() >= delta * area {
+                failures.push(format!("{at}: volume {v:e} against {volume:e}"));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
