@@ -1,5 +1,5 @@
 //! The integrator against Adams' own output and the closed form, on the Adams test model
-//! `Revolute_Case02` (`../shared/datasets/adams-tests/`): a compound pendulum on a REVOLUTE
+//! `Revolute_Case02` (`tests/data/adams-tests/`, copied from the shared datasets): a compound pendulum on a REVOLUTE
 //! joint at (1, 2, 3) with axis (0, 1, 1)/√2, CM 2 m from the axis, m = 1 kg, I_zz = 0.1 kg·m²
 //! about the axis through the CM, released at rest with the arm horizontal (90° from the
 //! bottom of its swing plane), g = 9.80665 m/s² along −Z.
@@ -22,13 +22,13 @@ const MASS: f64 = 1.0;
 const ARM: f64 = 2.0;
 const I_AXIS: f64 = 0.1;
 
-/// The case's folder in the shared datasets (beside the repository).
+/// The case's folder: a copy of the shared dataset in tests/data (see its PROVENANCE.md).
 fn case_dir() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/datasets/adams-tests/Revolute_Case02");
+    let dir =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/adams-tests/Revolute_Case02");
     assert!(
         dir.is_dir(),
-        "{} is missing: the Adams test models are expected beside the repository",
+        "{} is missing: the Adams test models are kept in tests/data/adams-tests",
         dir.display()
     );
     dir
