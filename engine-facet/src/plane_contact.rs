@@ -24,10 +24,58 @@ use crate::plane_support::{
 };
 use crate::scratch::{RegionSums, Scratch};
 use contact_core::geometry::Plane;
-use contact_core::{Isometry3, Vector3, WorkCounters};
+use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
+
+/// The pose `X_AP` of plane P in mesh A's frame from the world poses `X_WA` and `X_WP`.
+///
+/// An unbounded plane's frame is first slid along the plane to the foot of A's origin, so the
+/// translation is A's height above the plane, `R_AP · (0, 0, −h)`, computed from A's position in
+/// P's frame: a mesh far along the plane from P's origin (1e85 away, 0.1 above it) keeps its
+/// 0.1, which `X_WA⁻¹ · X_WP` loses to cancellation. A bounded plane keeps its frame (its
+/// XMIN…YMAX are measured from it).
+pub(crate) fn plane_pose_in_mesh_frame(
+    pose_wa: &Isometry3,
+    pose_wp: &Isometry3,
+    plane: &Plane,
+) -> Isometry3 {
+    if !plane.is_unbounded() {
+        return pose_wa.inv_mul(pose_wp);
+    }
+    let pose_pa = pose_wp.inv_mul(pose_wa);
+    let rotation_ap = pose_pa.rotation.inverse();
+    let height = pose_pa.translation.vector.z;
+    Isometry3::from_parts(
+        (rotation_ap * Vector3::new(0.0, 0.0, -height)).into(),
+        rotation_ap,
+    )
+}
+
+/// The plane's frame in A's frame: axes, origin, normal.
+#[derive(Clone, Copy)]
+struct PlaneFrame {
+    rot: Matrix3,
+    origin: Vector3,
+    n: Vector3,
+}
+
+impl PlaneFrame {
+    fn new(pose_a_plane: &Isometry3) -> Self {
+        let rot = pose_a_plane.rotation.to_rotation_matrix().into_inner();
+        Self {
+            rot,
+            origin: pose_a_plane.translation.vector,
+            n: rot.column(2).into_owned(),
+        }
+    }
+
+    /// The height of `v` above the plane, along its normal.
+    fn height(&self, v: &Vector3) -> f64 {
+        self.n.dot(&(v - self.origin))
+    }
+}
 
 /// All contacts of mesh A (taken as I) with the half-space whose frame is at `pose_a_plane`
-/// (`X_AP`) in A's frame; appends them in A's frame to `out`.
+/// (`X_AP`, from [`plane_pose_in_mesh_frame`]) in A's frame; appends them in A's frame to `out`.
 pub(crate) fn mesh_plane(
     a: &FacetMesh,
     plane: &Plane,
@@ -36,10 +84,9 @@ pub(crate) fn mesh_plane(
     work: &mut WorkCounters,
     out: &mut Vec<LocalContact>,
 ) {
-    let rot = pose_a_plane.rotation.to_rotation_matrix().into_inner();
-    let origin = pose_a_plane.translation.vector;
-    let n = rot.column(2).into_owned();
-    let height = |v: &Vector3| n.dot(&(v - origin));
+    let frame = PlaneFrame::new(pose_a_plane);
+    let n = frame.n;
+    let height = |v: &Vector3| frame.height(v);
     if plane.is_unbounded()
         && let Some(found) = sphere_on_plane(a, &n, &height)
     {
@@ -55,7 +102,7 @@ pub(crate) fn mesh_plane(
         if cap.weight < 1.0 {
             // Deeper: blended with the facets' one region (none while they stay above).
             let start = out.len();
-            facets_plane(a, plane, pose_a_plane, s, work, out);
+            facets_plane(a, plane, &frame, s, work, out);
             match out.len() - start {
                 0 => out.push(alone_contact(&cap, &n)),
                 1 => out[start] = blended(&out[start], &cap, &n),
@@ -66,7 +113,7 @@ pub(crate) fn mesh_plane(
         }
         return;
     }
-    facets_plane(a, plane, pose_a_plane, s, work, out);
+    facets_plane(a, plane, &frame, s, work, out);
 }
 
 /// The facets' contacts of mesh A with the plane (a tessellated sphere's blended with the
@@ -74,15 +121,13 @@ pub(crate) fn mesh_plane(
 fn facets_plane(
     a: &FacetMesh,
     plane: &Plane,
-    pose_a_plane: &Isometry3,
+    frame: &PlaneFrame,
     s: &mut Scratch,
     work: &mut WorkCounters,
     out: &mut Vec<LocalContact>,
 ) {
-    let rot = pose_a_plane.rotation.to_rotation_matrix().into_inner();
-    let origin = pose_a_plane.translation.vector;
-    let n = rot.column(2).into_owned();
-    let height = |v: &Vector3| n.dot(&(v - origin));
+    let PlaneFrame { rot, origin, n } = *frame;
+    let height = |v: &Vector3| frame.height(v);
     let [x0, x1] = plane.x_range();
     let [y0, y1] = plane.y_range();
     let bounded = !plane.is_unbounded();

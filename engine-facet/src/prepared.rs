@@ -3,7 +3,7 @@
 use crate::contact_region::{LocalContact, mesh_mesh};
 use crate::facet_mesh::FacetMesh;
 use crate::planar::{self, Planar, PlanarContact};
-use crate::plane_contact::mesh_plane;
+use crate::plane_contact::{mesh_plane, plane_pose_in_mesh_frame};
 use crate::scratch::with_scratch;
 use crate::solid_on_face::implied_solid_on_face;
 use contact_core::geometry::Plane;
@@ -127,12 +127,12 @@ impl PreparedPair for PreparedFacetPair {
                             }
                         }
                         (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
-                            let pose_ab = pose_wa.inv_mul(&pose_wb);
+                            let pose_ab = plane_pose_in_mesh_frame(&pose_wa, &pose_wb, p);
                             mesh_plane(ma, p, &pose_ab, s, work, &mut local);
                             contacts.extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
                         }
                         (Shape::HalfSpace(p), Shape::Mesh(mb)) => {
-                            let pose_ba = pose_wb.inv_mul(&pose_wa);
+                            let pose_ba = plane_pose_in_mesh_frame(&pose_wb, &pose_wa, p);
                             mesh_plane(mb, p, &pose_ba, s, work, &mut local);
                             contacts.extend(
                                 local

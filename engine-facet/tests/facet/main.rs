@@ -4,6 +4,7 @@ mod common;
 mod concave_regions;
 mod convergence;
 mod engine;
+mod far_from_plane;
 mod grazing_corner;
 mod implied_ellipsoid;
 mod obj_files;
