@@ -20,6 +20,7 @@ use super::broad_phase::BroadPhase;
 use super::contact_force::{ContactForce, ContactReport};
 use super::frame::FrameDynamics;
 use super::mbs::{ForceElement, MbsError, MultibodySystem, PartState, StateView};
+use std::ops::ControlFlow;
 use std::sync::Arc;
 
 /// Where in the step a retried step ends: the fraction of the time from the estimated onset
@@ -164,17 +165,24 @@ pub fn simulate(
     settings: &DynamicsSettings,
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
 ) -> Result<RunSummary, SimulationError> {
-    simulate_with_progress(system, contacts, settings, sink, &mut |_| {})
+    simulate_with_progress(system, contacts, settings, sink, &mut |_| {
+        ControlFlow::Continue(())
+    })
 }
 
 /// [`simulate`], calling `progress` after every accepted step (contact-onset retries
 /// included). `progress` must be cheap: it runs once per step; a display throttles itself.
+///
+/// `progress` returning [`ControlFlow::Break`] ends the run at that step: the output frames
+/// due up to it are delivered, then the step's own state as one more frame (off the output
+/// grid unless it falls on it), and the run returns [`SimulationError::Output`] with
+/// [`std::io::ErrorKind::Interrupted`] (or the sink's own error for that frame).
 pub fn simulate_with_progress(
     system: &mut MultibodySystem,
     contacts: &[Arc<ContactForce>],
     settings: &DynamicsSettings,
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
-    progress: &mut dyn FnMut(&Progress),
+    progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
 ) -> Result<RunSummary, SimulationError> {
     let DynamicsSettings {
         start,
@@ -313,13 +321,15 @@ pub fn simulate_with_progress(
             (window_start, window_steps) = (t, 0);
         }
         let stats = bdf.stats();
-        progress(&Progress {
+        let stop = progress(&Progress {
             t,
             start,
             end,
             steps: stats.steps,
             rejected: stats.rejected(),
-        });
+        })
+        .is_break();
+        let mut written_at = None;
         while next_output <= outputs && output_time(next_output) <= t {
             let t_out = output_time(next_output);
             let (mut output, y) = if t_out == t {
@@ -340,6 +350,26 @@ pub fn simulate_with_progress(
             sink(&output).map_err(|source| SimulationError::Output { t: t_out, source })?;
             summary.frames += 1;
             next_output += 1;
+            written_at = Some(t_out);
+        }
+        if stop {
+            if written_at != Some(t) {
+                if system.output_dynamics() {
+                    frame.dynamics = Some(
+                        system
+                            .frame_dynamics(t, bdf.y())
+                            .map_err(|source| SimulationError::Evaluation { t, source })?,
+                    );
+                }
+                sink(&frame).map_err(|source| SimulationError::Output { t, source })?;
+            }
+            return Err(SimulationError::Output {
+                t,
+                source: std::io::Error::new(
+                    std::io::ErrorKind::Interrupted,
+                    "stopped on request: the run ended at this step",
+                ),
+            });
         }
     }
     summary.integrator = *bdf.stats();

@@ -411,6 +411,78 @@ fn an_interrupted_run_ends_at_its_frame_with_whole_records_and_says_so() {
     assert!(!dir.join("summary.json.partial").exists());
 }
 
+/// `ResultFiles` whose interrupt flag is raised after `after` accepted steps, as a signal
+/// arriving mid-run would.
+struct SignalAfter {
+    files: contact::session::ResultFiles,
+    flag: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    after: u64,
+    last_t: f64,
+}
+
+impl contact::session::RunSink for SignalAfter {
+    fn start(&mut self, layout: &contact::session::RunLayout<'_>) -> std::io::Result<()> {
+        self.files.start(layout)
+    }
+    fn progress(&mut self, p: &contact::solver::simulate::Progress) {
+        if p.steps >= self.after {
+            self.flag.store(true, std::sync::atomic::Ordering::Relaxed);
+            self.last_t = self.last_t.max(p.t);
+        }
+    }
+    fn stop_requested(&self) -> bool {
+        self.files.stop_requested()
+    }
+    fn frame(&mut self, frame: &contact::solver::simulate::Frame) -> std::io::Result<()> {
+        self.files.frame(frame)
+    }
+    fn finish(&mut self, report: &contact::session::RunReport) -> std::io::Result<()> {
+        self.files.finish(report)
+    }
+}
+
+#[test]
+fn an_interrupt_between_output_frames_ends_the_run_at_the_current_step() {
+    use std::sync::Arc;
+    use std::sync::atomic::AtomicBool;
+    // One output step over the whole second: without the per-step check the run would go on
+    // to t = 1 after the signal.
+    let dir = scratch("interrupt-mid-step").join("out");
+    let flag = Arc::new(AtomicBool::new(false));
+    let mut sink = SignalAfter {
+        files: contact::session::ResultFiles::new(&dir).interrupted_by(flag.clone()),
+        flag,
+        after: 20,
+        last_t: 0.0,
+    };
+    let options = contact::session::RunOptions {
+        end: Some(1.0),
+        steps: Some(1),
+        ..Default::default()
+    };
+    let error = contact::session::run_files(&example("ball/ball.adm"), None, &options, &mut sink)
+        .unwrap_err();
+    let contact::session::RunError::Stopped(report) = error else {
+        panic!("{error}")
+    };
+    assert!(report.interrupted(), "{report:?}");
+    assert_eq!(report.output_frames, 2);
+    let parts = std::fs::read_to_string(dir.join("parts.csv")).unwrap();
+    let times: Vec<f64> = parts
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    // The start, then the step the signal arrived at: not the output grid's t = 1.
+    assert_eq!(times.len(), 2, "{parts}");
+    assert_eq!(times[0], 0.0);
+    assert!(times[1] > 0.0 && times[1] < 1.0, "{times:?}");
+    assert_eq!(times[1], sink.last_t, "{times:?}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "interrupted");
+}
+
 #[test]
 fn a_mass_at_the_floating_point_limit_is_diagnosed_as_such() {
     // No joint: the message must not blame redundant joints, nor claim results it has not.

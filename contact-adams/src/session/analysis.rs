@@ -12,6 +12,7 @@ use contact_solver::mbs::PartState;
 use contact_solver::simulate::{DynamicsSettings, Frame, simulate_with_progress};
 use contact_solver::statics::solve_statics;
 use std::cell::RefCell;
+use std::ops::ControlFlow;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -105,7 +106,15 @@ fn compute(
                 contacts,
                 &settings,
                 &mut |frame| filter.deliver(frame, &mut **sink.borrow_mut()),
-                &mut |p| sink.borrow_mut().progress(p),
+                &mut |p| {
+                    let mut sink = sink.borrow_mut();
+                    sink.progress(p);
+                    if sink.stop_requested() {
+                        ControlFlow::Break(())
+                    } else {
+                        ControlFlow::Continue(())
+                    }
+                },
             );
             result
                 .map(AnalysisOutcome::Dynamics)

@@ -36,13 +36,22 @@ impl ResultFiles {
         }
     }
 
-    /// Ends the run at the current frame once `flag` is set (`contact run` sets it on SIGINT
-    /// and SIGTERM): the frame is written whole, the next is refused with
+    /// Ends the run once `flag` is set (`contact run` sets it on SIGINT and SIGTERM): a
+    /// dynamics analysis stops at its next accepted step and writes that step as its last
+    /// frame ([`RunSink::stop_requested`]); any other frame is written whole and the next is
+    /// refused with
     /// [`std::io::ErrorKind::Interrupted`], and the plots and `summary.json` (status
     /// `"interrupted"`) are written as after any stop.
     pub fn interrupted_by(mut self, flag: Arc<AtomicBool>) -> Self {
         self.interrupt = Some(flag);
         self
+    }
+
+    /// Whether the interrupt flag is set.
+    fn interrupted(&self) -> bool {
+        self.interrupt
+            .as_ref()
+            .is_some_and(|flag| flag.load(Ordering::Relaxed))
     }
 
     /// The directory written to.
@@ -99,17 +108,17 @@ impl RunSink for ResultFiles {
         writer.write(frame).inspect_err(|e| {
             self.write_error = Some(std::io::Error::new(e.kind(), e.to_string()));
         })?;
-        if self
-            .interrupt
-            .as_ref()
-            .is_some_and(|flag| flag.load(Ordering::Relaxed))
-        {
+        if self.interrupted() {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::Interrupted,
                 "interrupted (SIGINT or SIGTERM): the run ended at this frame",
             ));
         }
         Ok(())
+    }
+
+    fn stop_requested(&self) -> bool {
+        self.interrupted()
     }
 
     fn eigenvalues(&mut self, linear: &Linearization, damping: bool) -> std::io::Result<()> {

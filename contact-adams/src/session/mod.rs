@@ -145,6 +145,13 @@ pub trait RunSink {
     /// Where a dynamics analysis is, after every accepted integrator step (keep it cheap).
     fn progress(&mut self, _progress: &Progress) {}
 
+    /// Whether the run should end now (polled after every accepted dynamics step, with
+    /// [`progress`](Self::progress)): a dynamics analysis then delivers its state at that step
+    /// as a last [`frame`](Self::frame) and stops as interrupted, whatever the output step.
+    fn stop_requested(&self) -> bool {
+        false
+    }
+
     /// One output frame.
     fn frame(&mut self, frame: &Frame) -> std::io::Result<()>;
 
