@@ -14,17 +14,29 @@
 //! curved triangle, the facets answer as before; the two answers differ there by at most A's
 //! chord deviation.
 //!
+//! **The hand-over is continuous.** Let `d` be the least unit-ball distance from `E`'s centre
+//! to a triangle of B that is not on the face (off its plane, or curved), and
+//! `β = min(ℓ/a_min, ½)` a band of about one facet of A (`ℓ` A's longest edge, `a_min` the
+//! least semi-axis). With `x = (d − 1)/β`, the plane answer has weight
+//! `w = 3x² − 2x³` on `[0, 1]` (1 beyond the band, 0 as `E` reaches the other triangle) and the
+//! facets' contact `1 − w`: depths and areas mix linearly, points by each answer's share of the
+//! depth, the normal is the normalised weighted sum. Facets that miss the shallow contact count
+//! as depth 0, so the contact fades in as their answer does. Inside the band both answers hold
+//! (the section is still inside the face), and they differ by at most the chord deviation, so
+//! the mix is too; a pair whose answers have different numbers of regions there is left to the
+//! facets.
+//!
 //! "Reaches" is exact: a triangle reaches into `E` when its closest point to the centre, in
 //! the affine frame where `E` is the unit ball, lies within distance 1. The candidates are the
 //! leaves of B's OBB tree whose box meets `E`'s bounding sphere.
 
-use crate::contact_region::LocalContact;
+use crate::contact_region::{LocalContact, mesh_mesh};
 use crate::facet_mesh::FacetMesh;
 use crate::plane_contact::mesh_plane;
 use crate::scratch::Scratch;
 use contact_core::geometry::{Plane, closest_point_on_triangle};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// Coplanarity tolerance: facet normals equal to 1e-9 (unit vectors), offsets to 1e-9 of B's size.
 const COPLANAR: f64 = 1e-9;
@@ -62,48 +74,138 @@ pub(crate) fn implied_solid_on_face(
     let to_a = pose_ab.rotation;
     let bound = semi.max();
     let to_unit_ball = |p: &Point3| (to_a * (p - centre)).component_div(&semi);
+    let band = (a.longest_edge / semi.min()).min(0.5);
     // The plane `n·x = offset` of the first triangle reaching E; cleared (`coplanar` false)
     // by a curved triangle or one off that plane.
     let face: Cell<Option<(Vector3, f64)>> = Cell::new(None);
     let coplanar = Cell::new(true);
+    // Triangles within the band outside E: (triangle, unit-ball distance).
+    let near = RefCell::new(Vec::new());
     b.tree.visit(
-        |obb| coplanar.get() && obb_reaches(obb, &centre.coords, bound),
+        |obb| coplanar.get() && obb_reaches(obb, &centre.coords, bound * (1.0 + band)),
         |t| {
             let [p, q, r] = b.triangles[t as usize].map(|v| b.vertices[v as usize]);
             let [p1, q1, r1] = [p, q, r].map(|x| Point3::from(to_unit_ball(&x)));
-            let closest = closest_point_on_triangle(&Point3::origin(), &p1, &q1, &r1);
-            if !coplanar.get() || closest.coords.norm() >= 1.0 {
+            let distance = closest_point_on_triangle(&Point3::origin(), &p1, &q1, &r1)
+                .coords
+                .norm();
+            if !coplanar.get() || distance >= 1.0 + band {
+                return;
+            }
+            if distance >= 1.0 {
+                near.borrow_mut().push((t, distance));
                 return;
             }
             let n = b.face_normals[t as usize];
-            let flat = b.corner_normals[t as usize]
-                .iter()
-                .all(|c| (c - n).norm() <= COPLANAR);
             let on_face = match face.get() {
                 None => {
                     face.set(Some((n, n.dot(&p.coords))));
                     true
                 }
-                Some((n0, o0)) => {
-                    (n - n0).norm() <= COPLANAR
-                        && [p, q, r]
-                            .iter()
-                            .all(|x| (n0.dot(&x.coords) - o0).abs() <= COPLANAR * b.size)
-                }
+                Some(plane) => on_plane(b, t, plane),
             };
-            coplanar.set(flat && on_face);
+            coplanar.set(flat(b, t) && on_face);
         },
     );
     if !coplanar.get() {
         return false;
     }
-    let Some((n_b, offset)) = face.get() else {
+    let Some(plane) = face.get() else {
         // Nothing reaches E: apart, or one body wholly inside the other (the facets' test).
         return false;
     };
-    let pose_a_plane = pose_ab * face_frame(&n_b, offset);
-    mesh_plane(a, &Plane::unbounded(), &pose_a_plane, s, work, out);
-    true
+    // The plane answer's weight: 1 unless a triangle off the face is within the band.
+    let weight = near
+        .borrow()
+        .iter()
+        .filter(|&&(t, _)| !(flat(b, t) && on_plane(b, t, plane)))
+        .map(|&(_, distance)| {
+            let x = ((distance - 1.0) / band).clamp(0.0, 1.0);
+            x * x * (3.0 - 2.0 * x)
+        })
+        .fold(1.0, f64::min);
+    if weight <= 0.0 {
+        return false;
+    }
+    let pose_a_plane = pose_ab * face_frame(&plane.0, plane.1);
+    if weight >= 1.0 {
+        mesh_plane(a, &Plane::unbounded(), &pose_a_plane, s, work, out);
+        return true;
+    }
+    let (mut on_plane_answer, mut facets) = (Vec::new(), Vec::new());
+    mesh_plane(
+        a,
+        &Plane::unbounded(),
+        &pose_a_plane,
+        s,
+        work,
+        &mut on_plane_answer,
+    );
+    mesh_mesh(a, b, pose_ab, s, work, &mut facets);
+    match (on_plane_answer.as_slice(), facets.as_slice()) {
+        ([], []) => true,
+        ([plane_contact], []) => {
+            out.push(mixed(plane_contact, None, weight));
+            true
+        }
+        ([plane_contact], [facet_contact]) => {
+            out.push(mixed(plane_contact, Some(facet_contact), weight));
+            true
+        }
+        // Regions that do not pair up: the facets answer (see the module docs).
+        _ => false,
+    }
+}
+
+/// Whether triangle `t` of `b` is flat: its corner normals are its facet normal.
+fn flat(b: &FacetMesh, t: u32) -> bool {
+    let n = b.face_normals[t as usize];
+    b.corner_normals[t as usize]
+        .iter()
+        .all(|c| (c - n).norm() <= COPLANAR)
+}
+
+/// Whether triangle `t` of `b` lies in the plane `n0·x = o0` (its normal along `n0`).
+fn on_plane(b: &FacetMesh, t: u32, (n0, o0): (Vector3, f64)) -> bool {
+    let n = b.face_normals[t as usize];
+    (n - n0).norm() <= COPLANAR
+        && b.triangles[t as usize]
+            .iter()
+            .all(|&v| (n0.dot(&b.vertices[v as usize].coords) - o0).abs() <= COPLANAR * b.size)
+}
+
+/// The plane answer with weight `w` mixed with the facets' (`None`: no contact, depth 0):
+/// depths and areas linearly, points by each answer's share of the depth, the normal as the
+/// normalised weighted sum.
+fn mixed(plane: &LocalContact, facets: Option<&LocalContact>, w: f64) -> LocalContact {
+    let Some(facets) = facets else {
+        return LocalContact {
+            penetration: w * plane.penetration,
+            area: w * plane.area,
+            point_j: plane.point_i + (plane.point_j - plane.point_i) * w,
+            ..*plane
+        };
+    };
+    let (wp, wf) = (w * plane.penetration, (1.0 - w) * facets.penetration);
+    let depth = wp + wf;
+    let normal = (plane.normal * w + facets.normal * (1.0 - w))
+        .try_normalize(0.0)
+        .unwrap_or(plane.normal);
+    let (point_i, point_j) = if depth > 0.0 {
+        (
+            (plane.point_i * wp + facets.point_i * wf) / depth,
+            (plane.point_j * wp + facets.point_j * wf) / depth,
+        )
+    } else {
+        (plane.point_i, plane.point_j)
+    };
+    LocalContact {
+        point_i,
+        point_j,
+        normal,
+        penetration: depth,
+        area: w * plane.area + (1.0 - w) * facets.area,
+    }
 }
 
 /// Whether the box `obb` comes within `radius` of `centre`.

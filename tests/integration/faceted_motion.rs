@@ -79,6 +79,7 @@ fn run(
     };
     let part = model.parts[0].0.0;
     let mut samples = Vec::new();
+    let started = std::time::Instant::now();
     let summary = simulate(
         &mut model.system,
         &model.contacts,
@@ -93,6 +94,15 @@ fn run(
         },
     )
     .unwrap_or_else(|e| panic!("{}: {e}", engine.name()));
+    // The speed record (`--nocapture`), never asserted on: steps and wall time per run.
+    println!(
+        "  run: {}, {} s: {} steps, {} rejected, {:.2} ms wall",
+        engine.name(),
+        end,
+        summary.integrator.steps,
+        summary.integrator.rejected(),
+        started.elapsed().as_secs_f64() * 1e3
+    );
     (samples, summary)
 }
 

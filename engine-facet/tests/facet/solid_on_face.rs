@@ -140,3 +140,49 @@ fn over_an_edge_the_facets_answer_within_the_chord_deviation() {
         }
     }
 }
+
+#[test]
+fn the_hand_over_to_the_facets_at_an_edge_is_continuous() {
+    // The solid slid at a fixed height across the face towards the edge x = 1, through the
+    // band where the plane answer hands over to the facets' (the module docs of
+    // `solid_on_face`): consecutive contacts differ by at most a few times the slide step, and
+    // every one is within the chord deviation of the exact engine's solid–box contact. A
+    // switch without the blend moves the point by up to 2e-4 (0.2 % of the radius) in one step.
+    let (ground, ground_pose) = ground();
+    let step = 1e-5;
+    for semi in [SPHERE, ELLIPSOID] {
+        let length = solid(semi).characteristic_length().unwrap();
+        for ft in [300.0028, 3000.0] {
+            let deviation = FacetingTolerance::new(ft).unwrap().chord_deviation(length);
+            let on_box = prepare(&engine(ft), solid(semi), ground.clone());
+            let base = pose(semi, &mut Rng(0xed9f), 0.0, 0.3, 0.0625);
+            let mut last: Option<Contact> = None;
+            let (mut depth_step, mut point_step) = (0.0f64, 0.0f64);
+            for k in 0..7_000 {
+                let mut pose = base;
+                pose.translation.vector.x = 0.93 + step * f64::from(k);
+                let (got, _) = query_pair(on_box.as_ref(), pose, ground_pose);
+                let label = format!("{semi:?}, FT {ft}, x = {}", pose.translation.vector.x);
+                assert_eq!(got.len(), 1, "{label}: {got:?}");
+                let c = got[0];
+                if k % 10 == 0 {
+                    let want = exact(semi, ground.clone(), &pose, &ground_pose);
+                    assert_eq!(want.len(), 1, "{label}: {want:?}");
+                    assert!(
+                        (c.penetration - want[0].penetration).abs() <= deviation,
+                        "{label}: {c:?} against {want:?}"
+                    );
+                }
+                if let Some(l) = last {
+                    depth_step = depth_step.max((c.penetration - l.penetration).abs());
+                    point_step = point_step.max((c.point_i_w - l.point_i_w).norm());
+                }
+                last = Some(c);
+            }
+            assert!(
+                depth_step <= 5.0 * step && point_step <= 5.0 * step,
+                "{semi:?}, FT {ft}: depth step {depth_step:e}, point step {point_step:e}"
+            );
+        }
+    }
+}
