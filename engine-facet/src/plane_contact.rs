@@ -256,11 +256,24 @@ fn facets_plane(
         polygon_next,
         ..
     } = s;
-    for r in regions.iter_mut() {
-        let a_point = if r.loop_length > 0.0 {
-            r.loop_moment / r.loop_length
-        } else {
-            a.centroid.coords
+    // A region whose waterline has no length only touches the plane (at a vertex or an edge
+    // exactly on it): its point is its lowest corner, with no depth. Without crossing
+    // triangles the whole body is under the plane and its centroid is the region's.
+    let mut touching: Vec<Option<(f64, Vector3)>> = vec![None; regions.len()];
+    for node in nodes.iter().filter(|node| node.crossing) {
+        let slot = &mut touching[node.region as usize];
+        for v in a.corners(node.tri) {
+            let h = height(&v);
+            if slot.is_none_or(|(lowest, _)| h < lowest) {
+                *slot = Some((h, v));
+            }
+        }
+    }
+    for (r, touching) in regions.iter_mut().zip(&touching) {
+        let a_point = match touching {
+            _ if r.loop_length > 0.0 => r.loop_moment / r.loop_length,
+            Some((_, lowest)) => *lowest,
+            None => a.centroid.coords,
         };
         r.apex = a_point - n * height(&a_point);
     }

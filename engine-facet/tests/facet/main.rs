@@ -12,6 +12,7 @@ mod patches;
 mod pinned;
 mod planar;
 mod planar_overlap;
+mod rolling;
 mod solid_on_face;
 mod stl_files;
 mod tessellation;
