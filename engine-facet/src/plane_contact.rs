@@ -22,7 +22,7 @@ use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
 use crate::plane_support::{
     Support, alone_contact, blended, ellipsoid_on_plane, sphere_on_plane, supports_by_region,
 };
-use crate::scratch::{RegionSums, Scratch};
+use crate::scratch::{RegionNode, RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
 
@@ -301,18 +301,6 @@ fn facets_plane(
         } else {
             r.apex
         };
-        r.best_i = (f64::INFINITY, r.centroid, u32::MAX);
-    }
-    for node in nodes
-        .iter()
-        .filter(|node| !smooth_only[node.region as usize])
-    {
-        let r = &mut regions[node.region as usize];
-        let p = a.closest_on_triangle(node.tri, &r.centroid);
-        let d = (p - r.centroid).norm_squared();
-        if d < r.best_i.0 {
-            r.best_i = (d, p, node.tri);
-        }
     }
     for (index, r) in regions.iter().enumerate() {
         let support = by_region[index];
@@ -330,7 +318,7 @@ fn facets_plane(
             .map(|node| node.tri);
         let (tri, on_facet) = a
             .first_ray_hit_among(in_region, &g, &(-n))
-            .unwrap_or((r.best_i.2, r.best_i.1));
+            .unwrap_or_else(|| closest_in_region(a, nodes, index, &g));
         let point_i = if tri == u32::MAX {
             on_facet
         } else {
@@ -354,4 +342,23 @@ fn facets_plane(
         });
     }
     out.extend(alone.iter().map(|s| alone_contact(s, &n)));
+}
+
+/// The point of region `index`'s triangles closest to `g`, with its triangle (`u32::MAX` and
+/// `g` itself for a region without triangles): where the ray from `g` meets none of them.
+fn closest_in_region(
+    a: &FacetMesh,
+    nodes: &[RegionNode],
+    index: usize,
+    g: &Vector3,
+) -> (u32, Vector3) {
+    let mut best = (f64::INFINITY, u32::MAX, *g);
+    for node in nodes.iter().filter(|node| node.region as usize == index) {
+        let p = a.closest_on_triangle(node.tri, g);
+        let d = (p - g).norm_squared();
+        if d < best.0 {
+            best = (d, node.tri, p);
+        }
+    }
+    (best.1, best.2)
 }
