@@ -110,12 +110,7 @@ impl MultibodySystem {
                     &states[element.part_i.0].pose_w,
                     &states[element.part_j.0].pose_w,
                 );
-                let slice: Vec<f64> = lambda
-                    .rows(element.row, element.primitives.len())
-                    .iter()
-                    .copied()
-                    .collect();
-                let g = element.generalized_reaction(pose_a, pose_b, &slice);
+                let g = element.generalized_reaction_in(&states, lambda.as_view());
                 let frames = element.frames(pose_a, pose_b);
                 // −Φ_vᵀλ: the force at the CM and the body torque about it, the torque moved
                 // to the marker origin `r + s`: τ_p = τ_cm + (r − p) × f = τ_cm − s × f.

@@ -93,10 +93,7 @@ impl NewtonMatrix {
             .newton_matrix(t, y, yp, cj, &mut self.buffer)
             .map_err(FailureCause::Evaluation)?;
         for (j, kind) in kinds.iter().enumerate() {
-            let s = match kind {
-                VariableKind::Differential => 1.0,
-                VariableKind::Algebraic { index } => h.powi(1 - i32::from(*index)),
-            };
+            let s = column_scale(*kind, h);
             self.col_scale[j] = s;
             if s != 1.0 {
                 self.buffer.column_mut(j).scale_mut(s);
@@ -142,5 +139,15 @@ impl NewtonMatrix {
         }
         r.component_mul_assign(&self.col_scale);
         true
+    }
+}
+
+/// The index-3 column scale of a variable for step size `h`: 1 for a differential one,
+/// `h^(1 − index)` for an algebraic one of that index (multipliers of position constraints
+/// scaled by `h²`), the same for the dense and the sparse matrix.
+pub(super) fn column_scale(kind: VariableKind, h: f64) -> f64 {
+    match kind {
+        VariableKind::Differential => 1.0,
+        VariableKind::Algebraic { index } => h.powi(1 - i32::from(index)),
     }
 }

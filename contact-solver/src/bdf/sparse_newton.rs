@@ -12,6 +12,7 @@
 //! it in or out).
 
 use super::error::FailureCause;
+use super::newton_matrix::column_scale;
 use crate::{DaeSystem, VariableKind};
 use nalgebra::DVector;
 use rsparse::data::{Nmrc, Sprs, Symb};
@@ -95,10 +96,8 @@ impl SparseNewton {
             }
         };
         self.col_scale.clear();
-        self.col_scale.extend(kinds.iter().map(|kind| match kind {
-            VariableKind::Differential => 1.0,
-            VariableKind::Algebraic { index } => h.powi(1 - i32::from(*index)),
-        }));
+        self.col_scale
+            .extend(kinds.iter().map(|&kind| column_scale(kind, h)));
         for (j, &s) in self.col_scale.iter().enumerate() {
             if s != 1.0 {
                 let range = column(&matrix, j);

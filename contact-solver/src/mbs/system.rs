@@ -445,12 +445,7 @@ impl MultibodySystem {
                 &states[element.part_i.0].pose_w,
                 &states[element.part_j.0].pose_w,
             );
-            let slice: Vec<f64> = lambda
-                .rows(element.row, element.primitives.len())
-                .iter()
-                .copied()
-                .collect();
-            let g = element.generalized_reaction(pose_a, pose_b, &slice);
+            let g = element.generalized_reaction_in(&states, lambda);
             for (part, pose, force, torque_body) in [
                 (element.part_i, pose_a, g[0], g[1]),
                 (element.part_j, pose_b, g[2], g[3]),

@@ -199,6 +199,22 @@ impl ConstraintElement {
         sum
     }
 
+    /// [`Self::generalized_reaction`] at the parts' `states`, this element's multipliers read
+    /// from the whole multiplier vector `lambda_all` (its rows from `self.row`).
+    pub fn generalized_reaction_in(
+        &self,
+        states: &[crate::mbs::PartState],
+        lambda_all: nalgebra::DVectorView<'_, f64>,
+    ) -> WorldGradient {
+        let slice: Vec<f64> = lambda_all
+            .rows(self.row, self.primitives.len())
+            .iter()
+            .copied()
+            .collect();
+        let (pose_a, pose_b) = (&states[self.part_i.0].pose_w, &states[self.part_j.0].pose_w);
+        self.generalized_reaction(pose_a, pose_b, &slice)
+    }
+
     /// `Φ_v v` of each equation (without `Φ_t`) at the poses, for part velocities
     /// `[[u_a, ω′_a], [u_b, ω′_b]]` (body-frame angular velocities).
     pub fn velocity_rates(
