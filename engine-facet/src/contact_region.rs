@@ -494,7 +494,9 @@ fn finish_region(r: &RegionSums) -> LocalContact {
     // its section is the thinnest such body): the penetration of such a region is held to
     // that, the point on J moved along the normal with it.
     if r.held_to_bound {
-        let bound = 3.0 * r.volume / area;
+        // The clipped volume can come out below zero where J is concave (see the error bound
+        // in the module docs): no depth then, never a negative one.
+        let bound = 3.0 * r.volume.max(0.0) / area;
         return LocalContact {
             point_i: pi,
             point_j: pi + normal * bound,
