@@ -107,6 +107,17 @@ pub enum PrepareError {
         /// The engine's limit.
         limit: u64,
     },
+    /// The faceted engine could not tessellate a geometry (its tessellation would not be a
+    /// closed mesh in `f64`); the geometry is named, the other side of the pair is not involved.
+    #[error(
+        "geometry '{label}' ({kind}) cannot be tessellated: its size or proportions are beyond what the faceted engine resolves in f64; use the exact engine or rescale the model"
+    )]
+    NotTessellated {
+        /// The geometry's label.
+        label: String,
+        /// Its kind.
+        kind: GeometryKind,
+    },
     /// A placement or setting is out of range.
     #[error("geometry '{label}': {source}")]
     InvalidArgument {

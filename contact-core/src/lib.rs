@@ -79,7 +79,7 @@ pub use engine::{
     GeometryEngine, PrepareError, PreparedPair, PreparedStats, QueryError, Side, Unsupported,
     WorkCounters, check_lists, format_pose,
 };
-pub use error::InvalidArgument;
+pub use error::{InvalidArgument, LENGTH_RANGE, MAX_ASPECT_RATIO};
 pub use estimate::{SmallPartEstimate, estimate_small_part};
 pub use geometry::{Geometry, GeometryKind};
 pub use instance::GeometryInstance;

@@ -94,11 +94,9 @@ impl FacetEngine {
             }
             other => {
                 let tolerance = g.faceting_tolerance.unwrap_or(self.faceting_tolerance);
-                let unsupported = || Unsupported {
-                    engine: "faceted",
-                    i: other.kind(),
-                    j: other.kind(),
-                    reason: "this geometry has no triangle tessellation",
+                let unsupported = || PrepareError::NotTessellated {
+                    label: g.label.clone(),
+                    kind: other.kind(),
                 };
                 let counts = tessellate::counts(other, tolerance).ok_or_else(unsupported)?;
                 if counts.triangles > self.max_triangles {

@@ -137,7 +137,30 @@ pub fn parse_geometry(
             .trim()
             .parse()
             .map_err(|_| bad(format!("'{value}' is not a number")))?;
-        values.push((key.trim().to_string(), value));
+        let key = key.trim().to_string();
+        if values.iter().any(|(k, _)| *k == key) {
+            return Err(bad(format!("{key}= is given twice")));
+        }
+        values.push((key, value));
+    }
+    let keys: &[&str] = match kind.trim().to_ascii_lowercase().as_str() {
+        "sphere" => &["r"],
+        "ellipsoid" => &["a", "b", "c"],
+        "box" => &["x", "y", "z"],
+        "cylinder" => &["r", "l"],
+        "frustum" => &["r0", "r1", "l"],
+        "torus" => &["R", "r"],
+        _ => &[],
+    };
+    if let Some((key, _)) = values.iter().find(|(k, _)| !keys.contains(&k.as_str())) {
+        return Err(bad(format!(
+            "unknown argument {key}= (this shape takes {})",
+            if keys.is_empty() {
+                "none".to_string()
+            } else {
+                keys.join(", ")
+            }
+        )));
     }
     let get = |key: &str| -> Result<f64, QueryCliError> {
         values

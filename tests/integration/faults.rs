@@ -530,3 +530,21 @@ fn a_pose_quaternion_that_is_not_unit_is_refused_with_its_line() {
         assert_eq!(parse_poses(&text).unwrap_err().0, 1, "{scale}");
     }
 }
+
+#[test]
+fn a_geometry_spec_with_a_repeated_unknown_or_out_of_range_argument_is_refused() {
+    use contact::cli::query::parse_geometry;
+    let refused = |spec: &str| parse_geometry(spec, false).unwrap_err().to_string();
+    let e = refused("sphere:r=1,r=2");
+    assert!(e.contains("r= is given twice"), "{e}");
+    let e = refused("sphere:r=1,q=2");
+    assert!(
+        e.contains("unknown argument q=") && e.contains("takes r"),
+        "{e}"
+    );
+    let e = refused("sphere:r=1e300");
+    assert!(e.contains("RADIUS") && e.contains("LENGTH_RANGE"), "{e}");
+    let e = refused("box:x=1e-300,y=1,z=1");
+    assert!(e.contains("LENGTH_RANGE"), "{e}");
+    assert!(parse_geometry("torus:R=1,r=0.3", false).is_ok());
+}

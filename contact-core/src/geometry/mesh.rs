@@ -31,6 +31,26 @@ pub enum MeshError {
         /// Its coordinates.
         coordinates: [f64; 3],
     },
+    /// A vertex coordinate is beyond the largest size a geometry may have.
+    #[error(
+        "vertex {vertex} has a coordinate beyond ±{:e} (LENGTH_RANGE): {coordinates:?}",
+        crate::LENGTH_RANGE[1]
+    )]
+    VertexOutOfRange {
+        /// Vertex index.
+        vertex: usize,
+        /// Its coordinates.
+        coordinates: [f64; 3],
+    },
+    /// The mesh's bounding-box diagonal is below the smallest size a geometry may have.
+    #[error(
+        "the mesh is {size:e} across (its bounding-box diagonal), below {:e} (LENGTH_RANGE)",
+        crate::LENGTH_RANGE[0]
+    )]
+    TooSmall {
+        /// The bounding-box diagonal.
+        size: f64,
+    },
     /// A triangle has (relatively) zero area.
     #[error("triangle {triangle} has zero area (area {area:e} against the mesh size {size:e})")]
     ZeroAreaFacet {
@@ -135,6 +155,12 @@ impl TriangleMesh {
                     coordinates: [v.x, v.y, v.z],
                 });
             }
+            if v.iter().any(|c| c.abs() > crate::LENGTH_RANGE[1]) {
+                return Err(MeshError::VertexOutOfRange {
+                    vertex: i,
+                    coordinates: [v.x, v.y, v.z],
+                });
+            }
         }
         for (t, tri) in triangles.iter().enumerate() {
             for &v in tri {
@@ -153,6 +179,9 @@ impl TriangleMesh {
             closed: false,
         };
         let size = mesh.bounding_box_diagonal();
+        if size < crate::LENGTH_RANGE[0] {
+            return Err(MeshError::TooSmall { size });
+        }
         for t in 0..mesh.triangles.len() {
             let area = mesh.triangle_area(t);
             if area.is_nan() || area <= ZERO_AREA_RELATIVE * size * size {

@@ -2,7 +2,7 @@
 //! binormal is +z of `G`. A 2-D contact acts in that plane.
 
 use crate::Isometry3;
-use crate::error::{InvalidArgument, positive};
+use crate::error::InvalidArgument;
 use std::f64::consts::TAU;
 
 /// Largest angle (rad) between the planes of a 2-D pair (either orientation of their normals).
@@ -75,7 +75,7 @@ impl Circle {
     /// A circle of `radius` > 0.
     pub fn new(radius: f64) -> Result<Self, InvalidArgument> {
         Ok(Self {
-            radius: positive("RADIUS", radius)?,
+            radius: crate::error::length("RADIUS", radius)?,
         })
     }
 
@@ -96,7 +96,7 @@ pub struct Arc {
 impl Arc {
     /// An arc with `radius` > 0 and `0 < range_angle ≤ 2π` (RANGLE, radians).
     pub fn new(radius: f64, range_angle: f64) -> Result<Self, InvalidArgument> {
-        let radius = positive("RADIUS", radius)?;
+        let radius = crate::error::length("RADIUS", radius)?;
         if !(range_angle.is_finite() && range_angle > 0.0 && range_angle <= TAU) {
             return Err(InvalidArgument::new(
                 "RANGLE",

@@ -3,7 +3,7 @@
 //! Every constructor validates its arguments; a value out of range gives an
 //! [`InvalidArgument`] naming the Adams argument, the value and the allowed range.
 
-use crate::error::{InvalidArgument, positive};
+use crate::error::{InvalidArgument, length, proportions};
 use crate::{Point3, Vector3};
 
 /// An ellipsoid centred on the origin of `G` with semi-axes along x, y and z.
@@ -16,30 +16,36 @@ pub struct Ellipsoid {
 }
 
 impl Ellipsoid {
-    /// An ellipsoid with the given semi-axes (each finite and > 0).
+    /// An ellipsoid with the given semi-axes (each in [`LENGTH_RANGE`](crate::LENGTH_RANGE),
+    /// within [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other).
     pub fn new(a: f64, b: f64, c: f64) -> Result<Self, InvalidArgument> {
+        let axes = [("XSCALE/2", a), ("YSCALE/2", b), ("ZSCALE/2", c)];
+        for (argument, value) in axes {
+            length(argument, value)?;
+        }
+        proportions(&axes)?;
         Ok(Self {
-            semi_axes: Vector3::new(
-                positive("XSCALE/2", a)?,
-                positive("YSCALE/2", b)?,
-                positive("ZSCALE/2", c)?,
-            ),
+            semi_axes: Vector3::new(a, b, c),
         })
     }
 
-    /// An ellipsoid from Adams' full diameters XSCALE, YSCALE, ZSCALE (each finite and > 0).
+    /// An ellipsoid from Adams' full diameters XSCALE, YSCALE, ZSCALE (each in
+    /// [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other).
     pub fn from_diameters(x: f64, y: f64, z: f64) -> Result<Self, InvalidArgument> {
-        positive("XSCALE", x)?;
-        positive("YSCALE", y)?;
-        positive("ZSCALE", z)?;
+        let diameters = [("XSCALE", x), ("YSCALE", y), ("ZSCALE", z)];
+        for (argument, value) in diameters {
+            length(argument, value)?;
+        }
+        proportions(&diameters)?;
         Ok(Self {
             semi_axes: Vector3::new(0.5 * x, 0.5 * y, 0.5 * z),
         })
     }
 
-    /// A sphere of the given radius (finite and > 0).
+    /// A sphere of the given radius (in [`LENGTH_RANGE`](crate::LENGTH_RANGE)).
     pub fn sphere(radius: f64) -> Result<Self, InvalidArgument> {
-        let r = positive("RADIUS", radius)?;
+        let r = length("RADIUS", radius)?;
         Ok(Self {
             semi_axes: Vector3::new(r, r, r),
         })
@@ -66,14 +72,20 @@ pub struct Cylinder {
 }
 
 impl Cylinder {
-    /// A cylinder of `radius` > 0 and `length` > 0.
+    /// A cylinder of `radius` and `length` in [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other.
     ///
     /// Adams allows a negative LENGTH (the cylinder then extends along −z); the dataset reader
     /// turns that into a positive length and a reference frame flipped about x.
-    pub fn new(radius: f64, length: f64) -> Result<Self, InvalidArgument> {
+    pub fn new(radius: f64, length_z: f64) -> Result<Self, InvalidArgument> {
+        let dimensions = [("RADIUS", radius), ("LENGTH", length_z)];
+        for (argument, value) in dimensions {
+            length(argument, value)?;
+        }
+        proportions(&dimensions)?;
         Ok(Self {
-            radius: positive("RADIUS", radius)?,
-            length: positive("LENGTH", length)?,
+            radius,
+            length: length_z,
         })
     }
 
@@ -97,31 +109,37 @@ pub struct Cuboid {
 }
 
 impl Cuboid {
-    /// A box from the corner at the origin with extents `x`, `y`, `z` (each finite and ≠ 0).
+    /// A box from the corner at the origin with extents `x`, `y`, `z` (each ≠ 0, its magnitude
+    /// in [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other).
     pub fn from_corner(x: f64, y: f64, z: f64) -> Result<Self, InvalidArgument> {
         let check = |argument, v: f64| {
             if v.is_finite() && v != 0.0 {
-                Ok(v)
+                length(argument, v.abs()).map(|_| v)
             } else {
                 Err(InvalidArgument::new(argument, v, "finite and != 0"))
             }
         };
         let extents = Vector3::new(check("X", x)?, check("Y", y)?, check("Z", z)?);
+        proportions(&[("X", x.abs()), ("Y", y.abs()), ("Z", z.abs())])?;
         Ok(Self {
             center: Point3::from(0.5 * extents),
             half_extents: 0.5 * extents.abs(),
         })
     }
 
-    /// A box centred on the origin of `G` with the given half extents (each finite and > 0).
+    /// A box centred on the origin of `G` with the given half extents (each in
+    /// [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other).
     pub fn centered(hx: f64, hy: f64, hz: f64) -> Result<Self, InvalidArgument> {
+        let halves = [("X/2", hx), ("Y/2", hy), ("Z/2", hz)];
+        for (argument, value) in halves {
+            length(argument, value)?;
+        }
+        proportions(&halves)?;
         Ok(Self {
             center: Point3::origin(),
-            half_extents: Vector3::new(
-                positive("X/2", hx)?,
-                positive("Y/2", hy)?,
-                positive("Z/2", hz)?,
-            ),
+            half_extents: Vector3::new(hx, hy, hz),
         })
     }
 
@@ -146,17 +164,33 @@ pub struct Frustum {
 }
 
 impl Frustum {
-    /// A frustum with radii ≥ 0 (not both zero) and `length` > 0.
-    pub fn new(bottom_radius: f64, top_radius: f64, length: f64) -> Result<Self, InvalidArgument> {
+    /// A frustum with radii ≥ 0 (not both zero) and `length` > 0: the length and each
+    /// non-zero radius in [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other (a zero radius is a cone's
+    /// apex).
+    pub fn new(
+        bottom_radius: f64,
+        top_radius: f64,
+        length_z: f64,
+    ) -> Result<Self, InvalidArgument> {
         let bottom = crate::error::non_negative("BOTTOM", bottom_radius)?;
         let top = crate::error::non_negative("TOP", top_radius)?;
         if bottom == 0.0 && top == 0.0 {
             return Err(InvalidArgument::new("TOP", top, "> 0 when BOTTOM = 0"));
         }
+        let dimensions: Vec<(&'static str, f64)> = [("BOTTOM", bottom), ("TOP", top)]
+            .into_iter()
+            .filter(|d| d.1 > 0.0)
+            .chain([("LENGTH", length_z)])
+            .collect();
+        for &(argument, value) in &dimensions {
+            length(argument, value)?;
+        }
+        proportions(&dimensions)?;
         Ok(Self {
             bottom_radius: bottom,
             top_radius: top,
-            length: positive("LENGTH", length)?,
+            length: length_z,
         })
     }
 
@@ -187,9 +221,13 @@ pub struct Torus {
 impl Torus {
     /// A torus with `0 < minor_radius < major_radius` (a ring torus: a horn or spindle torus
     /// has no hole and is rejected).
+    ///
+    /// Both radii lie in [`LENGTH_RANGE`](crate::LENGTH_RANGE), within
+    /// [`MAX_ASPECT_RATIO`](crate::MAX_ASPECT_RATIO) of each other.
     pub fn new(major_radius: f64, minor_radius: f64) -> Result<Self, InvalidArgument> {
-        let major = positive("MAJOR_RADIUS", major_radius)?;
-        let minor = positive("MINOR_RADIUS", minor_radius)?;
+        let major = length("MAJOR_RADIUS", major_radius)?;
+        let minor = length("MINOR_RADIUS", minor_radius)?;
+        proportions(&[("MAJOR_RADIUS", major), ("MINOR_RADIUS", minor)])?;
         if minor >= major {
             return Err(InvalidArgument::new(
                 "MINOR_RADIUS",

@@ -12,27 +12,27 @@ fn every_geometry_argument_is_range_checked() {
     let cases: Vec<(String, &str)> = vec![
         (
             message(Ellipsoid::from_diameters(0.0, 1.0, 1.0)),
-            "XSCALE = 0.0 is out of range: must be finite and > 0",
+            "XSCALE = 0.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Ellipsoid::from_diameters(1.0, -1.0, 1.0)),
-            "YSCALE = -1.0 is out of range: must be finite and > 0",
+            "YSCALE = -1.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Ellipsoid::from_diameters(1.0, 1.0, f64::NAN)),
-            "ZSCALE = NaN is out of range: must be finite and > 0",
+            "ZSCALE = NaN is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Ellipsoid::sphere(f64::INFINITY)),
-            "RADIUS = inf is out of range: must be finite and > 0",
+            "RADIUS = inf is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Cylinder::new(0.0, 1.0)),
-            "RADIUS = 0.0 is out of range: must be finite and > 0",
+            "RADIUS = 0.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Cylinder::new(1.0, -2.0)),
-            "LENGTH = -2.0 is out of range: must be finite and > 0",
+            "LENGTH = -2.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Cuboid::from_corner(0.0, 1.0, 1.0)),
@@ -56,11 +56,11 @@ fn every_geometry_argument_is_range_checked() {
         ),
         (
             message(Frustum::new(1.0, 1.0, 0.0)),
-            "LENGTH = 0.0 is out of range: must be finite and > 0",
+            "LENGTH = 0.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Torus::new(0.0, 1.0)),
-            "MAJOR_RADIUS = 0.0 is out of range: must be finite and > 0",
+            "MAJOR_RADIUS = 0.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Torus::new(1.0, 1.0)),
@@ -84,7 +84,7 @@ fn every_geometry_argument_is_range_checked() {
         ),
         (
             message(Circle::new(-3.0)),
-            "RADIUS = -3.0 is out of range: must be finite and > 0",
+            "RADIUS = -3.0 is out of range: must be finite, from 1e-30 to 1e30 (LENGTH_RANGE)",
         ),
         (
             message(Arc::new(1.0, 7.0)),
