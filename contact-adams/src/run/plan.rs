@@ -23,6 +23,7 @@ use crate::dataset::Origin;
 use crate::model::{
     Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
 };
+use crate::run::active::{ElementClass, Inactive};
 use crate::run::lower::LowerError;
 use contact_core::InvalidArgument;
 use contact_solver::bdf::{Corrector, IntegratorSettings};
@@ -168,6 +169,8 @@ struct Span {
     output: Option<OutputSteps>,
     integrator: IntegratorSettings,
     transient: Option<TransientChoice>,
+    /// The elements switched off when it started.
+    inactive: Inactive,
 }
 
 /// Why a run's analyses could not be planned.
@@ -238,6 +241,18 @@ pub enum PlanError {
         /// `span / output_step`.
         frames: f64,
     },
+    /// An analysis would run with a MOTION on a deactivated JOINT.
+    #[error(
+        "{origin}: MOTION/{motion} drives JOINT/{joint}, which is deactivated: deactivate the MOTION too"
+    )]
+    OrphanMotion {
+        /// The analysis command.
+        origin: Origin,
+        /// The MOTION.
+        motion: u32,
+        /// Its JOINT.
+        joint: u32,
+    },
     /// INTEGRATOR/HMAX is too small for the span to be integrated in a bounded number of steps.
     #[error(
         "{}INTEGRATOR/HMAX = {hmax:?} over a span of {span:?} needs more than 1e10 steps: HMAX must be >= {:?} (the span × {MIN_HMAX_FRACTION:e})",
@@ -257,7 +272,9 @@ impl PlanError {
     /// The command the error is about, when it has one.
     pub fn origin(&self) -> Option<&Origin> {
         match self {
-            Self::Transient { origin, .. } | Self::NoSpan { origin } => Some(origin),
+            Self::Transient { origin, .. }
+            | Self::NoSpan { origin }
+            | Self::OrphanMotion { origin, .. } => Some(origin),
             Self::Span { origin, .. }
             | Self::OutputStep { origin, .. }
             | Self::TooManyFrames { origin, .. }
@@ -306,22 +323,60 @@ pub enum DegreesOfFreedomError {
     Assembly(#[from] MbsError),
 }
 
-/// The analyses of `model`'s command file, in order, with notes on anything interpreted.
-///
-/// `degrees_of_freedom(t)` gives the model's degrees of freedom at its configuration assembled
-/// at time `t`; it is asked only for a SIMULATE/TRANSIENT (at that command's start time).
+/// The analyses of `model`'s command file, in order, with notes on anything interpreted (see
+/// [`plan_run`], which also gives the elements each analysis runs without).
 pub fn plan_analyses(
     model: &Model,
     overrides: PlanOverrides,
     degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, DegreesOfFreedomError>,
 ) -> Result<(Vec<AnalysisStep>, Vec<String>), PlanError> {
+    let plan = plan_run(model, overrides, &mut |t, _| degrees_of_freedom(t))?;
+    Ok((plan.steps, plan.notes))
+}
+
+/// A run's analyses, with the elements each runs without.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunPlan {
+    /// The analyses, in order.
+    pub steps: Vec<AnalysisStep>,
+    /// Per analysis, the elements DEACTIVATE has switched off by its start.
+    pub inactive: Vec<Inactive>,
+    /// Notes on anything interpreted, each ACTIVATE/DEACTIVATE's effect among them.
+    pub notes: Vec<String>,
+    /// What each ACTIVATE/DEACTIVATE does, at the command.
+    pub switches: Vec<(Origin, String)>,
+}
+
+/// The analyses of `model`'s command file, in order, each with the elements switched off
+/// (ACTIVATE/DEACTIVATE take effect at the next analysis, as in Adams), and notes.
+///
+/// `degrees_of_freedom(t, inactive)` gives the model's degrees of freedom, without the
+/// `inactive` elements, at its configuration assembled at time `t`; it is asked only for a
+/// SIMULATE/TRANSIENT (at that command's start time). An analysis that would run with an
+/// active MOTION on a deactivated JOINT is refused.
+pub fn plan_run(
+    model: &Model,
+    overrides: PlanOverrides,
+    degrees_of_freedom: &mut dyn FnMut(f64, &Inactive) -> Result<usize, DegreesOfFreedomError>,
+) -> Result<RunPlan, PlanError> {
     let mut notes = Vec::new();
+    let mut switches = Vec::new();
     let mut integrator = convert_integrator(&model.integrator)?;
     let mut equilibrium = model.equilibrium.clone();
-    let mut steps = Vec::new();
+    let mut steps: Vec<(AnalysisStep, Inactive)> = Vec::new();
     let mut span: Option<Span> = None;
     let mut time = 0.0;
+    let mut inactive = Inactive::default();
     for (origin, command) in &model.commands {
+        if matches!(command, Command::Simulate { .. } | Command::Linear { .. })
+            && let Some((motion, joint)) = inactive.orphan_motion(model)
+        {
+            return Err(PlanError::OrphanMotion {
+                origin: origin.clone(),
+                motion,
+                joint,
+            });
+        }
         match command {
             Command::Integrator(s) => integrator = convert_integrator(s)?,
             Command::Equilibrium(s) => equilibrium = s.clone(),
@@ -335,12 +390,12 @@ pub fn plan_analyses(
                     ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
                     ModelAnalysis::Transient => {
                         let choice = TransientChoice {
-                            degrees_of_freedom: degrees_of_freedom(time).map_err(|source| {
-                                PlanError::Transient {
+                            degrees_of_freedom: degrees_of_freedom(time, &inactive).map_err(
+                                |source| PlanError::Transient {
                                     origin: origin.clone(),
                                     source,
-                                }
-                            })?,
+                                },
+                            )?,
                         };
                         notes.push(format!("{origin}: {choice}"));
                         transient = Some(choice);
@@ -357,14 +412,15 @@ pub fn plan_analyses(
                     if let Some(done) = span.take() {
                         steps.push(finish(done, overrides, &mut notes, false)?);
                     }
-                    steps.push(if *analysis == ModelAnalysis::Statics {
+                    let step = if *analysis == ModelAnalysis::Statics {
                         AnalysisStep::Statics {
                             t: time,
                             settings: convert_equilibrium(&equilibrium, integrator),
                         }
                     } else {
                         AnalysisStep::InitialConditions { t: time }
-                    });
+                    };
+                    steps.push((step, inactive.clone()));
                     continue;
                 };
                 let stop = match when {
@@ -389,6 +445,7 @@ pub fn plan_analyses(
                     output: *output,
                     integrator,
                     transient,
+                    inactive: inactive.clone(),
                 });
                 time = stop;
             }
@@ -396,10 +453,16 @@ pub fn plan_analyses(
                 if let Some(done) = span.take() {
                     steps.push(finish(done, overrides, &mut notes, false)?);
                 }
-                steps.push(AnalysisStep::Linear {
+                let step = AnalysisStep::Linear {
                     t: time,
                     settings: LinearSettings { damping: *damping },
-                });
+                };
+                steps.push((step, inactive.clone()));
+            }
+            Command::Activate { active, class, ids } => {
+                let text = switch(&mut inactive, *active, class, ids, time);
+                notes.push(format!("{origin}: {command}: {text}"));
+                switches.push((origin.clone(), format!("{command}: {text}")));
             }
             Command::Stop => break,
             other => notes.push(format!(
@@ -419,6 +482,7 @@ pub fn plan_analyses(
                 output: None,
                 integrator,
                 transient: None,
+                inactive,
             };
             steps.push(finish(done, overrides, &mut notes, true)?);
         }
@@ -430,7 +494,53 @@ pub fn plan_analyses(
             }
         }
     }
-    Ok((steps, notes))
+    let (steps, inactive) = steps.into_iter().unzip();
+    Ok(RunPlan {
+        steps,
+        inactive,
+        notes,
+        switches,
+    })
+}
+
+/// Applies one ACTIVATE (`active`) or DEACTIVATE of `ids` of `class` to `inactive`, from
+/// `time` on; what it did, in words.
+fn switch(inactive: &mut Inactive, active: bool, class: &str, ids: &[u32], time: f64) -> String {
+    // The dataset reader accepts only the classes that can be switched.
+    let Some(class) = ElementClass::from_keyword(class) else {
+        return format!("{class} elements cannot be switched: the command is ignored");
+    };
+    let (changed, unchanged): (Vec<u32>, Vec<u32>) =
+        ids.iter().partition(|&&id| inactive.set(class, id, active));
+    let names = |ids: &[u32]| {
+        let names: Vec<String> = ids
+            .iter()
+            .map(|id| format!("{}/{id}", class.keyword()))
+            .collect();
+        names.join(", ")
+    };
+    let mut parts = Vec::new();
+    if !changed.is_empty() {
+        parts.push(if active {
+            format!(
+                "{} back in the model from t = {time:?} (the next analysis)",
+                names(&changed)
+            )
+        } else {
+            format!(
+                "{} removed from the model from t = {time:?} (the next analysis) until ACTIVATE",
+                names(&changed)
+            )
+        });
+    }
+    if !unchanged.is_empty() {
+        parts.push(format!(
+            "{} already {}: no change",
+            names(&unchanged),
+            if active { "active" } else { "deactivated" }
+        ));
+    }
+    parts.join("; ")
 }
 
 /// The step of a finished span; `last` when `--end` may override its END. Refuses a span
@@ -442,7 +552,7 @@ fn finish(
     overrides: PlanOverrides,
     notes: &mut Vec<String>,
     last: bool,
-) -> Result<AnalysisStep, PlanError> {
+) -> Result<(AnalysisStep, Inactive), PlanError> {
     let (end, end_by) = match overrides.end {
         Some(end) if last => (end, "--end"),
         _ => (
@@ -501,7 +611,7 @@ fn finish(
             span: duration,
         });
     }
-    Ok(match span.analysis {
+    let step = match span.analysis {
         ModelAnalysis::Kinematics => AnalysisStep::Kinematics {
             start: span.start,
             end,
@@ -515,7 +625,8 @@ fn finish(
             integrator: span.integrator,
             transient: span.transient,
         },
-    })
+    };
+    Ok((step, span.inactive))
 }
 
 /// The solver's EQUILIBRIUM settings.
