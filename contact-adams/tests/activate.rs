@@ -70,6 +70,31 @@ simulate/dynamics, end = 2.0, dtout = 0.01
 stop
 ";
 
+/// A sphere of radius 0.1 and 1 kg resting on a ground plane through an IMPACT CONTACT.
+const SPHERE: &str = "\
+Sphere on a plane
+UNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND
+ACCGRAV/ KGRAV = -9.81
+PART/1, GROUND
+MARKER/10, PART = 1
+PART/2, MASS = 1, CM = 20, IP = 0.004, 0.004, 0.004
+MARKER/20, PART = 2, QP = 0, 0, 0.1
+GRAPHICS/1, ELLIPSOID, CM = 20, XSCALE = 0.2, YSCALE = 0.2, ZSCALE = 0.2
+GRAPHICS/2, PLANE, RM = 10
+CONTACT/1, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E6, EXPONENT = 1.5, DAMPING = 50, DMAX = 1E-4
+END
+";
+
+const SPHERE_ACF: &str = "\
+sphere.adm
+out
+integrator/ error = 1e-6
+simulate/dynamics, end = 0.2, dtout = 0.01
+deactivate/contact, id = 1
+simulate/dynamics, end = 0.5, dtout = 0.01
+stop
+";
+
 /// Writes the dataset and its command file in a fresh folder.
 fn files(name: &str, adm: &str, acf: &str) -> (PathBuf, PathBuf) {
     let dir = std::env::temp_dir().join(format!("activate_{}_{name}", std::process::id()));
@@ -224,6 +249,38 @@ fn a_spring_switched_off_and_on_again_follows_the_closed_forms() {
         (energy(last) - e1).abs() < 1e-4 * e1,
         "{} vs {e1}",
         energy(last)
+    );
+}
+
+#[test]
+fn a_deactivated_contact_lets_the_sphere_fall_through_the_plane() {
+    let (sink, result) = run("sphere", SPHERE, SPHERE_ACF);
+    result.unwrap();
+    // Every frame keeps the model's one CONTACT; it reports contact only while active.
+    assert!(sink.frames.iter().all(|f| f.contacts.len() == 1));
+    let before = at(&sink.frames, 0.2);
+    assert!(!before.contacts[0].is_empty(), "resting on the plane");
+    let state = before.parts[1];
+    let (z0, vz0) = (state.pose_w.translation.vector.z, state.velocity_w.z);
+    assert!((z0 - 0.1).abs() < 1e-3, "{z0}");
+    let after: Vec<&Frame> = sink.frames.iter().filter(|f| f.t > 0.2 + 1e-9).collect();
+    assert_eq!(after.len(), 30);
+    let mut worst: f64 = 0.0;
+    for f in after {
+        assert!(f.contacts[0].is_empty(), "t = {}", f.t);
+        let tau = f.t - 0.2;
+        let z = z0 + vz0 * tau - 0.5 * G * tau * tau;
+        worst = worst.max((f.parts[1].pose_w.translation.vector.z - z).abs());
+    }
+    // Free fall through the plane: a quadratic in time, integrated to round-off.
+    assert!(worst < 1e-9, "{worst}");
+    assert!(
+        sink.frames.last().unwrap().parts[1]
+            .pose_w
+            .translation
+            .vector
+            .z
+            < -0.2
     );
 }
 
