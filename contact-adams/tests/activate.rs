@@ -8,7 +8,7 @@
 
 use contact_adams::dataset::{self, Diagnostic};
 use contact_adams::run::plan::{PlanOverrides, plan_run};
-use contact_adams::session::{RunError, RunOptions, RunSink, run_files};
+use contact_adams::session::{ResultFiles, RunError, RunOptions, RunSink, run_files};
 use contact_solver::simulate::Frame;
 use nalgebra::Vector3;
 use std::path::{Path, PathBuf};
@@ -282,6 +282,84 @@ fn a_deactivated_contact_lets_the_sphere_fall_through_the_plane() {
             .z
             < -0.2
     );
+}
+
+/// The rows of `requests.csv` for request `id`: time and the six columns.
+fn request_rows(csv: &str, id: &str) -> Vec<(f64, [f64; 6])> {
+    csv.lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|row| row[1] == id)
+        .map(|row| {
+            let value = |k: usize| row[k].parse::<f64>().unwrap();
+            (value(0), std::array::from_fn(|c| value(3 + c)))
+        })
+        .collect()
+}
+
+/// Runs `adm` with `acf` into result files; `requests.csv`.
+fn requests_csv(name: &str, adm: &str, acf: &str) -> String {
+    let (adm_path, acf_path) = files(name, adm, acf);
+    let out = adm_path.parent().unwrap().join("out");
+    let mut sink = ResultFiles::new(&out);
+    run_files(
+        &adm_path,
+        Some(&acf_path),
+        &RunOptions::default(),
+        &mut sink,
+    )
+    .unwrap();
+    std::fs::read_to_string(out.join("requests.csv")).unwrap()
+}
+
+/// REQUESTs read what the elements apply: a switched-off SFORCE's force is zero while off,
+/// the spring's `−K·(DM − L₀)` while on.
+#[test]
+fn requests_read_no_force_from_a_switched_off_sforce() {
+    let adm = SPRING.replace(
+        "END\n",
+        "REQUEST/1, D, I = 20, J = 10\nREQUEST/2, F2=SFORCE(1,0,2,0)\nEND\n",
+    );
+    let csv = requests_csv("sforce_requests", &adm, SPRING_ACF);
+    let (d, f) = (request_rows(&csv, "1"), request_rows(&csv, "2"));
+    assert_eq!((d.len(), f.len()), (201, 201));
+    let (mut on, mut off) = (0, 0);
+    for ((t, d), (_, f)) in d.iter().zip(&f) {
+        let expected = if *t > 0.5 + 1e-9 && *t <= 1.0 + 1e-9 {
+            off += 1;
+            0.0
+        } else {
+            on += 1;
+            -200.0 * (d[0] - 6.0)
+        };
+        assert!(
+            (f[0] - expected).abs() <= 1e-9 * (1.0 + expected.abs()),
+            "t = {t}: {} vs {expected}",
+            f[0]
+        );
+    }
+    assert_eq!((on, off), (151, 50));
+}
+
+/// A FORCE REQUEST on a switched-off JOINT reads zero: the pendulum's pivot carries a
+/// reaction until the release (at t = 0, from rest, `m·g·I_cm/(I_cm + m·L²)` = 0.2857 N up),
+/// nothing after it.
+#[test]
+fn requests_read_no_reaction_from_a_switched_off_joint() {
+    let adm = PENDULUM.replace("END\n", "REQUEST/1, FORCE, I = 21, J = 10\nEND\n");
+    let csv = requests_csv("joint_requests", &adm, PENDULUM_ACF);
+    let rows = request_rows(&csv, "1");
+    assert_eq!(rows.len(), 101);
+    let start = G * 0.03 / 1.03;
+    assert!((rows[0].1[1] - start).abs() < 1e-6, "{:?}", rows[0]);
+    for (t, f) in rows {
+        let force = Vector3::new(f[0], f[1], f[2]).norm();
+        if t <= 0.5 + 1e-9 {
+            assert!(force > 0.9 * start, "t = {t}: {f:?}");
+        } else {
+            assert_eq!(f, [0.0; 6], "t = {t}");
+        }
+    }
 }
 
 /// The errors a command file's switches can have, as `contact check` reads them.

@@ -101,6 +101,14 @@ impl Inactive {
         }
     }
 
+    /// The ids of the switched-off elements of `class`, in order.
+    pub fn ids(&self, class: ElementClass) -> impl Iterator<Item = u32> + '_ {
+        self.0
+            .iter()
+            .filter(move |(c, _)| *c == class)
+            .map(|(_, id)| *id)
+    }
+
     /// The switched-off elements as `JOINT/1, SFORCE/3`.
     pub fn names(&self) -> String {
         let names: Vec<String> = self

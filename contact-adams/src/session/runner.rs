@@ -169,6 +169,9 @@ fn run_analyses(
                         whole.iter().map(String::as_str),
                         &names,
                     );
+                    if *inactive != current.inactive {
+                        sink.elements_switched(inactive);
+                    }
                     current = Current {
                         analysis,
                         inactive: inactive.clone(),
