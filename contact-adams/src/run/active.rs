@@ -119,6 +119,46 @@ impl Inactive {
         names.join(", ")
     }
 
+    /// Applies one ACTIVATE (`active`) or DEACTIVATE of `ids` of `class`, from `time` on;
+    /// what it did, in words.
+    pub fn switch(&mut self, active: bool, class: &str, ids: &[u32], time: f64) -> String {
+        // The dataset reader accepts only the classes that can be switched.
+        let Some(class) = ElementClass::from_keyword(class) else {
+            return format!("{class} elements cannot be switched: the command is ignored");
+        };
+        let (changed, unchanged): (Vec<u32>, Vec<u32>) =
+            ids.iter().partition(|&&id| self.set(class, id, active));
+        let names = |ids: &[u32]| {
+            let names: Vec<String> = ids
+                .iter()
+                .map(|id| format!("{}/{id}", class.keyword()))
+                .collect();
+            names.join(", ")
+        };
+        let mut parts = Vec::new();
+        if !changed.is_empty() {
+            parts.push(if active {
+                format!(
+                    "{} back in the model from t = {time:?} (the next analysis)",
+                    names(&changed)
+                )
+            } else {
+                format!(
+                    "{} removed from the model from t = {time:?} (the next analysis) until ACTIVATE",
+                    names(&changed)
+                )
+            });
+        }
+        if !unchanged.is_empty() {
+            parts.push(format!(
+                "{} already {}: no change",
+                names(&unchanged),
+                if active { "active" } else { "deactivated" }
+            ));
+        }
+        parts.join("; ")
+    }
+
     /// An active MOTION on a switched-off JOINT, as `(motion, joint)`: the motion has nothing
     /// to drive.
     pub fn orphan_motion(&self, model: &Model) -> Option<(u32, u32)> {
