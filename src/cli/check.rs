@@ -123,13 +123,19 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
 /// setting out of range, a span that is empty, an output step that is not positive, more
 /// output frames than the bound, an HMAX too small for its span), as errors at the command.
 /// A model without a command file is planned at `run` time from `--end`, so only its
-/// INTEGRATOR settings are checked here.
+/// INTEGRATOR settings are checked here. What each ACTIVATE/DEACTIVATE does is listed as a
+/// note at the command.
 pub fn check_run_settings(model: &Model, dataset: &std::path::Path) -> Vec<Diagnostic> {
-    use crate::run::plan::{PlanError, PlanOverrides, plan_analyses};
+    use crate::run::plan::{PlanError, PlanOverrides, plan_run};
     // The degrees of freedom only choose kinematics or dynamics for a SIMULATE/TRANSIENT;
     // planning it as dynamics checks the stricter settings.
-    match plan_analyses(model, PlanOverrides::default(), &mut |_| Ok(1)) {
-        Ok(_) | Err(PlanError::NoEnd) => Vec::new(),
+    match plan_run(model, PlanOverrides::default(), &mut |_, _| Ok(1)) {
+        Ok(plan) => plan
+            .switches
+            .into_iter()
+            .map(|(origin, text)| Diagnostic::note(origin, text))
+            .collect(),
+        Err(PlanError::NoEnd) => Vec::new(),
         Err(e) => {
             let origin = e.origin().cloned().unwrap_or_else(|| dataset::Origin {
                 file: std::sync::Arc::from(dataset),

@@ -229,6 +229,10 @@ impl RunSink for CliSink<'_> {
         }
     }
 
+    fn elements_switched(&mut self, inactive: &contact_adams::run::active::Inactive) {
+        self.files.elements_switched(inactive);
+    }
+
     fn frame(&mut self, frame: &Frame) -> std::io::Result<()> {
         self.files.frame(frame)
     }

@@ -313,3 +313,53 @@ fn the_binary_checks_both_public_datasets() {
         .unwrap();
     assert_eq!(output.status.code(), Some(1));
 }
+
+/// A pendulum whose command file switches its JOINT off and on: `check` lists what each
+/// command does, and refuses an id the model does not have at the id, as `run` does.
+#[test]
+fn check_lists_what_each_activate_and_deactivate_does() {
+    let adm = "pendulum\nUNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND\nPART/1, GROUND\nMARKER/10, PART = 1\n\
+PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\nMARKER/20, PART = 2, QP = 1, 0, 0\nMARKER/21, PART = 2\n\
+JOINT/1, REVOLUTE, I = 21, J = 10\nEND\n";
+    let model = write_model("check_switch.adm", adm);
+    let acf = "check_switch.adm\nout\nsimulate/dyn, end = 1, dtout = 0.1\ndeactivate/joint, id = 1\n\
+simulate/dyn, end = 2, dtout = 0.1\nactivate/joint, id = 1, 7\nsimulate/dyn, end = 3, dtout = 0.1\nstop\n";
+    let commands = write_model("check_switch.acf", acf);
+    let engines = |_: GeometryLibrary| -> Option<Box<dyn GeometryEngine>> {
+        Some(Box::new(SpherePlaneEngine))
+    };
+    let check = |commands: PathBuf| {
+        let mut out = Vec::new();
+        let args = CheckArgs {
+            commands: Some(commands),
+            ..args(model.clone())
+        };
+        let code = run_with(&args, &mut out, &engines).unwrap();
+        (code, String::from_utf8(out).unwrap())
+    };
+    let (code, text) = check(commands.clone());
+    assert_eq!(code, 1, "{text}");
+    let at = commands.display();
+    assert!(
+        text.contains(&format!(
+            "{at}:6:25: error: ACTIVATE/JOINT: the model has no JOINT/7\n"
+        )),
+        "{text}"
+    );
+    let fixed = write_model("check_switch_ok.acf", &acf.replace("id = 1, 7", "id = 1"));
+    let (code, text) = check(fixed.clone());
+    assert_eq!(code, 0, "{text}");
+    let at = fixed.display();
+    for line in [
+        format!(
+            "{at}:4:1: note: DEACTIVATE/JOINT, ID = 1: JOINT/1 removed from the model from t = 1.0 (the next analysis) until ACTIVATE\n"
+        ),
+        format!(
+            "{at}:6:1: note: ACTIVATE/JOINT, ID = 1: JOINT/1 back in the model from t = 2.0 (the next analysis)\n"
+        ),
+    ] {
+        assert!(text.contains(&line), "{line}\n{text}");
+    }
+    assert!(!text.contains("Activate {"), "{text}");
+    assert!(text.ends_with("0 error(s), 0 warning(s)\n"), "{text}");
+}

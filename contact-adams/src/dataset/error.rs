@@ -49,6 +49,8 @@ pub enum Severity {
     Error,
     /// The input is used, but something was ignored or assumed.
     Warning,
+    /// What a command does (not a problem): `contact check` lists it.
+    Note,
 }
 
 impl fmt::Display for Severity {
@@ -56,6 +58,7 @@ impl fmt::Display for Severity {
         f.write_str(match self {
             Self::Error => "error",
             Self::Warning => "warning",
+            Self::Note => "note",
         })
     }
 }
@@ -86,6 +89,15 @@ impl Diagnostic {
     pub fn warning(origin: Origin, message: impl Into<String>) -> Self {
         Self {
             severity: Severity::Warning,
+            origin,
+            message: message.into(),
+        }
+    }
+
+    /// A note at `origin`: what a command does.
+    pub fn note(origin: Origin, message: impl Into<String>) -> Self {
+        Self {
+            severity: Severity::Note,
             origin,
             message: message.into(),
         }

@@ -1,6 +1,7 @@
 //! Running a model: the dataset's [`Model`](crate::model::Model) lowered onto the solver
 //! ([`lower`]), with the measures its expressions read ([`measures`]).
 
+pub mod active;
 pub mod eigenvalues;
 pub mod frames;
 pub mod lower;

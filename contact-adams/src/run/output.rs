@@ -126,6 +126,14 @@ impl ResultWriter {
         &self.dir
     }
 
+    /// The elements switched off from the next frame on (the requests reading their forces
+    /// read zero while they are off).
+    pub fn elements_switched(&mut self, inactive: &crate::run::active::Inactive) {
+        if let Some(requests) = &mut self.requests {
+            requests.elements_switched(inactive);
+        }
+    }
+
     /// Writes one frame to every stream (flushed at most every [`FLUSH_INTERVAL`]).
     pub fn write(&mut self, frame: &Frame) -> std::io::Result<()> {
         let t = frame.t;

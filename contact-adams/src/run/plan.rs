@@ -17,12 +17,16 @@
 //! - LINEAR/EIGENSOL linearizes at the state reached so far, at the current time: after a
 //!   SIMULATE/STATICS the equilibrium, after a SIMULATE/DYNAMICS its last state, first in the
 //!   file the initial state ([`contact_solver::linear`]). It ends a span of SIMULATEs.
+//! - ACTIVATE/DEACTIVATE switch elements on and off from the next analysis on; each analysis
+//!   records the elements switched off at its start ([`RunPlan::inactive`], see
+//!   [`super::active`]).
 //! - Without SIMULATE commands: dynamics from 0 to `--end`.
 
 use crate::dataset::Origin;
 use crate::model::{
     Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
 };
+use crate::run::active::Inactive;
 use crate::run::lower::LowerError;
 use contact_core::InvalidArgument;
 use contact_solver::bdf::{Corrector, IntegratorSettings};
@@ -168,6 +172,8 @@ struct Span {
     output: Option<OutputSteps>,
     integrator: IntegratorSettings,
     transient: Option<TransientChoice>,
+    /// The elements switched off when it started.
+    inactive: Inactive,
 }
 
 /// Why a run's analyses could not be planned.
@@ -238,6 +244,18 @@ pub enum PlanError {
         /// `span / output_step`.
         frames: f64,
     },
+    /// An analysis would run with a MOTION on a deactivated JOINT.
+    #[error(
+        "{origin}: MOTION/{motion} drives JOINT/{joint}, which is deactivated: deactivate the MOTION too"
+    )]
+    OrphanMotion {
+        /// The analysis command.
+        origin: Origin,
+        /// The MOTION.
+        motion: u32,
+        /// Its JOINT.
+        joint: u32,
+    },
     /// INTEGRATOR/HMAX is too small for the span to be integrated in a bounded number of steps.
     #[error(
         "{}INTEGRATOR/HMAX = {hmax:?} over a span of {span:?} needs more than 1e10 steps: HMAX must be >= {:?} (the span × {MIN_HMAX_FRACTION:e})",
@@ -257,7 +275,9 @@ impl PlanError {
     /// The command the error is about, when it has one.
     pub fn origin(&self) -> Option<&Origin> {
         match self {
-            Self::Transient { origin, .. } | Self::NoSpan { origin } => Some(origin),
+            Self::Transient { origin, .. }
+            | Self::NoSpan { origin }
+            | Self::OrphanMotion { origin, .. } => Some(origin),
             Self::Span { origin, .. }
             | Self::OutputStep { origin, .. }
             | Self::TooManyFrames { origin, .. }
@@ -306,22 +326,60 @@ pub enum DegreesOfFreedomError {
     Assembly(#[from] MbsError),
 }
 
-/// The analyses of `model`'s command file, in order, with notes on anything interpreted.
-///
-/// `degrees_of_freedom(t)` gives the model's degrees of freedom at its configuration assembled
-/// at time `t`; it is asked only for a SIMULATE/TRANSIENT (at that command's start time).
+/// The analyses of `model`'s command file, in order, with notes on anything interpreted (see
+/// [`plan_run`], which also gives the elements each analysis runs without).
 pub fn plan_analyses(
     model: &Model,
     overrides: PlanOverrides,
     degrees_of_freedom: &mut dyn FnMut(f64) -> Result<usize, DegreesOfFreedomError>,
 ) -> Result<(Vec<AnalysisStep>, Vec<String>), PlanError> {
+    let plan = plan_run(model, overrides, &mut |t, _| degrees_of_freedom(t))?;
+    Ok((plan.steps, plan.notes))
+}
+
+/// A run's analyses, with the elements each runs without.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunPlan {
+    /// The analyses, in order.
+    pub steps: Vec<AnalysisStep>,
+    /// Per analysis, the elements DEACTIVATE has switched off by its start.
+    pub inactive: Vec<Inactive>,
+    /// Notes on anything interpreted, each ACTIVATE/DEACTIVATE's effect among them.
+    pub notes: Vec<String>,
+    /// What each ACTIVATE/DEACTIVATE does, at the command.
+    pub switches: Vec<(Origin, String)>,
+}
+
+/// The analyses of `model`'s command file, in order, each with the elements switched off
+/// (ACTIVATE/DEACTIVATE take effect at the next analysis, as in Adams), and notes.
+///
+/// `degrees_of_freedom(t, inactive)` gives the model's degrees of freedom, without the
+/// `inactive` elements, at its configuration assembled at time `t`; it is asked only for a
+/// SIMULATE/TRANSIENT (at that command's start time). An analysis that would run with an
+/// active MOTION on a deactivated JOINT is refused.
+pub fn plan_run(
+    model: &Model,
+    overrides: PlanOverrides,
+    degrees_of_freedom: &mut dyn FnMut(f64, &Inactive) -> Result<usize, DegreesOfFreedomError>,
+) -> Result<RunPlan, PlanError> {
     let mut notes = Vec::new();
+    let mut switches = Vec::new();
     let mut integrator = convert_integrator(&model.integrator)?;
     let mut equilibrium = model.equilibrium.clone();
-    let mut steps = Vec::new();
+    let mut steps: Vec<(AnalysisStep, Inactive)> = Vec::new();
     let mut span: Option<Span> = None;
     let mut time = 0.0;
+    let mut inactive = Inactive::default();
     for (origin, command) in &model.commands {
+        if matches!(command, Command::Simulate { .. } | Command::Linear { .. })
+            && let Some((motion, joint)) = inactive.orphan_motion(model)
+        {
+            return Err(PlanError::OrphanMotion {
+                origin: origin.clone(),
+                motion,
+                joint,
+            });
+        }
         match command {
             Command::Integrator(s) => integrator = convert_integrator(s)?,
             Command::Equilibrium(s) => equilibrium = s.clone(),
@@ -335,12 +393,12 @@ pub fn plan_analyses(
                     ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
                     ModelAnalysis::Transient => {
                         let choice = TransientChoice {
-                            degrees_of_freedom: degrees_of_freedom(time).map_err(|source| {
-                                PlanError::Transient {
+                            degrees_of_freedom: degrees_of_freedom(time, &inactive).map_err(
+                                |source| PlanError::Transient {
                                     origin: origin.clone(),
                                     source,
-                                }
-                            })?,
+                                },
+                            )?,
                         };
                         notes.push(format!("{origin}: {choice}"));
                         transient = Some(choice);
@@ -357,14 +415,15 @@ pub fn plan_analyses(
                     if let Some(done) = span.take() {
                         steps.push(finish(done, overrides, &mut notes, false)?);
                     }
-                    steps.push(if *analysis == ModelAnalysis::Statics {
+                    let step = if *analysis == ModelAnalysis::Statics {
                         AnalysisStep::Statics {
                             t: time,
                             settings: convert_equilibrium(&equilibrium, integrator),
                         }
                     } else {
                         AnalysisStep::InitialConditions { t: time }
-                    });
+                    };
+                    steps.push((step, inactive.clone()));
                     continue;
                 };
                 let stop = match when {
@@ -389,6 +448,7 @@ pub fn plan_analyses(
                     output: *output,
                     integrator,
                     transient,
+                    inactive: inactive.clone(),
                 });
                 time = stop;
             }
@@ -396,10 +456,16 @@ pub fn plan_analyses(
                 if let Some(done) = span.take() {
                     steps.push(finish(done, overrides, &mut notes, false)?);
                 }
-                steps.push(AnalysisStep::Linear {
+                let step = AnalysisStep::Linear {
                     t: time,
                     settings: LinearSettings { damping: *damping },
-                });
+                };
+                steps.push((step, inactive.clone()));
+            }
+            Command::Activate { active, class, ids } => {
+                let text = inactive.switch(*active, class, ids, time);
+                notes.push(format!("{origin}: {command}: {text}"));
+                switches.push((origin.clone(), format!("{command}: {text}")));
             }
             Command::Stop => break,
             other => notes.push(format!(
@@ -419,6 +485,7 @@ pub fn plan_analyses(
                 output: None,
                 integrator,
                 transient: None,
+                inactive,
             };
             steps.push(finish(done, overrides, &mut notes, true)?);
         }
@@ -430,7 +497,13 @@ pub fn plan_analyses(
             }
         }
     }
-    Ok((steps, notes))
+    let (steps, inactive) = steps.into_iter().unzip();
+    Ok(RunPlan {
+        steps,
+        inactive,
+        notes,
+        switches,
+    })
 }
 
 /// The step of a finished span; `last` when `--end` may override its END. Refuses a span
@@ -442,7 +515,7 @@ fn finish(
     overrides: PlanOverrides,
     notes: &mut Vec<String>,
     last: bool,
-) -> Result<AnalysisStep, PlanError> {
+) -> Result<(AnalysisStep, Inactive), PlanError> {
     let (end, end_by) = match overrides.end {
         Some(end) if last => (end, "--end"),
         _ => (
@@ -501,7 +574,7 @@ fn finish(
             span: duration,
         });
     }
-    Ok(match span.analysis {
+    let step = match span.analysis {
         ModelAnalysis::Kinematics => AnalysisStep::Kinematics {
             start: span.start,
             end,
@@ -515,7 +588,8 @@ fn finish(
             integrator: span.integrator,
             transient: span.transient,
         },
-    })
+    };
+    Ok((step, span.inactive))
 }
 
 /// The solver's EQUILIBRIUM settings.
@@ -559,195 +633,5 @@ pub fn convert_integrator(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::dataset::read_str;
-    use std::path::Path;
-
-    fn plan(acf: &str, overrides: PlanOverrides) -> (Vec<AnalysisStep>, Vec<String>) {
-        plan_with_dof(acf, overrides, None)
-    }
-
-    /// The plan of `acf`, the model having `dof` degrees of freedom (`None`: asking is an
-    /// error, the plan must not need them).
-    fn plan_with_dof(
-        acf: &str,
-        overrides: PlanOverrides,
-        dof: Option<usize>,
-    ) -> (Vec<AnalysisStep>, Vec<String>) {
-        let loaded = read_str(
-            "plan\nPART/1, GROUND\nEND\n",
-            "plan.adm",
-            Some((acf, Path::new("plan.acf"))),
-        );
-        assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-        let mut asked = |_: f64| Ok(dof.expect("the plan must not ask for the degrees of freedom"));
-        plan_analyses(&loaded.model, overrides, &mut asked).unwrap()
-    }
-
-    #[test]
-    fn simulate_commands_become_analyses_in_order_with_the_settings_in_force() {
-        let (steps, notes) = plan(
-            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
-             SIMULATE/DYNAMICS, DURATION = 1, DTOUT = 0.5\nEQUILIBRIUM/ MAXIT = 7, DYNAMIC\nSIMULATE/STATICS\n\
-             SIMULATE/KINEMATICS, DURATION = 0.5, STEPS = 5\nSIMULATE/INITIAL_CONDITIONS\nSTOP\n",
-            PlanOverrides::default(),
-        );
-        assert_eq!(steps.len(), 5, "{steps:?}");
-        // Each SIMULATE/DYNAMICS keeps its own END and DTOUT.
-        let spans: Vec<(f64, f64, f64)> = steps[..2]
-            .iter()
-            .map(|s| match *s {
-                AnalysisStep::Dynamics {
-                    start,
-                    end,
-                    output_step,
-                    ..
-                } => (start, end, output_step),
-                ref other => panic!("{other:?}"),
-            })
-            .collect();
-        assert_eq!(spans, [(0.0, 1.0, 0.1), (1.0, 2.0, 0.5)]);
-        let AnalysisStep::Statics { t, settings } = steps[2] else {
-            panic!("{:?}", steps[2]);
-        };
-        assert_eq!((t, settings.maxit, settings.dynamic), (2.0, 7, true));
-        assert_eq!(
-            steps[3],
-            AnalysisStep::Kinematics {
-                start: 2.0,
-                end: 2.5,
-                output_step: 0.1,
-                transient: None,
-            }
-        );
-        assert_eq!(steps[4], AnalysisStep::InitialConditions { t: 2.5 });
-        assert!(!notes.iter().any(|n| n.contains("one span")), "{notes:?}");
-    }
-
-    /// Three SIMULATEs with output steps 0.01, 1e-6 and 1e-3 keep theirs.
-    #[test]
-    fn each_simulate_keeps_its_own_output_step() {
-        let (steps, _) = plan(
-            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.01\n\
-             SIMULATE/DYNAMICS, END = 1.00001, DTOUT = 1E-6\nSIMULATE/DYNAMICS, DURATION = 1, STEPS = 1000\nSTOP\n",
-            PlanOverrides::default(),
-        );
-        let outputs: Vec<f64> = steps
-            .iter()
-            .map(|s| match *s {
-                AnalysisStep::Dynamics { output_step, .. } => output_step,
-                ref other => panic!("{other:?}"),
-            })
-            .collect();
-        assert_eq!(outputs.len(), 3);
-        assert_eq!(outputs[0], 0.01);
-        assert_eq!(outputs[1], 1e-6);
-        assert!((outputs[2] - 1e-3).abs() < 1e-15, "{outputs:?}");
-    }
-
-    #[test]
-    fn linear_runs_at_the_state_reached_so_far_and_ends_a_span() {
-        let (steps, _) = plan(
-            "plan.adm\nplan\nLINEAR/EIGENSOL\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\n\
-             LIN/EIGEN, NODAMP\nSIMULATE/DYNAMICS, END = 2, DTOUT = 0.1\nSIMULATE/STATICS\nLINEAR/EIGENSOL\nSTOP\n",
-            PlanOverrides::default(),
-        );
-        let names: Vec<&str> = steps.iter().map(AnalysisStep::name).collect();
-        assert_eq!(
-            names,
-            [
-                "LINEAR", "DYNAMICS", "LINEAR", "DYNAMICS", "STATICS", "LINEAR"
-            ]
-        );
-        let undamped = LinearSettings { damping: false };
-        assert_eq!(
-            steps[0],
-            AnalysisStep::Linear {
-                t: 0.0,
-                settings: LinearSettings::default()
-            }
-        );
-        assert_eq!(
-            steps[2],
-            AnalysisStep::Linear {
-                t: 1.0,
-                settings: undamped
-            }
-        );
-        assert!(matches!(steps[5], AnalysisStep::Linear { t: 2.0, .. }));
-    }
-
-    #[test]
-    fn end_overrides_the_last_timed_analysis_and_is_noted_when_unused() {
-        let overrides = PlanOverrides {
-            end: Some(3.0),
-            ..PlanOverrides::default()
-        };
-        let (steps, _) = plan(
-            "plan.adm\nplan\nSIMULATE/STATICS\nSIMULATE/DYNAMICS, END = 1, STEPS = 10\nSTOP\n",
-            overrides,
-        );
-        let AnalysisStep::Dynamics {
-            end, output_step, ..
-        } = steps[1]
-        else {
-            panic!("{:?}", steps[1]);
-        };
-        assert_eq!((end, output_step), (3.0, 0.3));
-        let (steps, notes) = plan("plan.adm\nplan\nSIMULATE/STATICS\nSTOP\n", overrides);
-        assert_eq!(steps.len(), 1);
-        assert!(
-            notes.iter().any(|n| n.contains("--end is not used")),
-            "{notes:?}"
-        );
-    }
-
-    #[test]
-    fn transient_runs_kinematics_without_degrees_of_freedom_and_dynamics_with_them() {
-        let acf = "plan.adm\nplan\nSIMULATE/TRANSIENT, END = 1, DTOUT = 0.1\nSTOP\n";
-        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(0));
-        let choice = TransientChoice {
-            degrees_of_freedom: 0,
-        };
-        assert_eq!(
-            steps,
-            vec![AnalysisStep::Kinematics {
-                start: 0.0,
-                end: 1.0,
-                output_step: 0.1,
-                transient: Some(choice),
-            }]
-        );
-        assert!(
-            notes.iter().any(|n| n.contains("ran as KINEMATICS")),
-            "{notes:?}"
-        );
-        let (steps, notes) = plan_with_dof(acf, PlanOverrides::default(), Some(2));
-        assert_eq!(steps.len(), 1);
-        assert_eq!(steps[0].name(), "DYNAMICS");
-        assert_eq!(steps[0].transient().map(|c| c.degrees_of_freedom), Some(2));
-        assert!(
-            notes
-                .iter()
-                .any(|n| n.contains("ran as DYNAMICS: the model has 2 degrees of freedom")),
-            "{notes:?}"
-        );
-        // A DYNAMICS followed by a TRANSIENT that chooses dynamics: two spans, the second
-        // from where the first ends.
-        let (steps, _) = plan_with_dof(
-            "plan.adm\nplan\nSIMULATE/DYNAMICS, END = 1, DTOUT = 0.1\nSIMULATE/TRANSIENT, END = 2, DTOUT = 0.1\nSTOP\n",
-            PlanOverrides::default(),
-            Some(1),
-        );
-        assert_eq!(steps.len(), 2);
-        assert!(matches!(
-            steps[1],
-            AnalysisStep::Dynamics {
-                start: 1.0,
-                end: 2.0,
-                ..
-            }
-        ));
-    }
-}
+#[path = "plan_tests.rs"]
+mod tests;

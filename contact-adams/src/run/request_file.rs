@@ -72,6 +72,11 @@ impl RequestWriter {
         })
     }
 
+    /// The elements switched off from the next frame on.
+    pub fn elements_switched(&mut self, inactive: &crate::run::active::Inactive) {
+        self.output.set.switch_off(inactive);
+    }
+
     /// Evaluates and writes every request at one output frame.
     pub fn write(&mut self, frame: &contact_solver::simulate::Frame) -> std::io::Result<()> {
         let values = self

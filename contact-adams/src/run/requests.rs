@@ -96,6 +96,8 @@ pub struct RequestSet {
     joints: BTreeMap<u32, (usize, u32, u32)>,
     /// SFORCE id → the element (markers, freedom, FUNCTION), for `SFORCE(id, …)`.
     sforces: BTreeMap<u32, SForce>,
+    /// The SFORCEs switched off by DEACTIVATE: their force reads zero.
+    off_sforces: std::collections::BTreeSet<u32>,
 }
 
 /// Why a request has no value at a frame.
@@ -127,6 +129,15 @@ pub enum RequestError {
 pub const COLUMNS: [&str; 6] = ["F2", "F3", "F4", "F6", "F7", "F8"];
 
 impl RequestSet {
+    /// Switches off the elements `inactive` names (and back on every other): a switched-off
+    /// SFORCE's force reads zero in `SFORCE(id, …)`, as its element applies none. (A
+    /// switched-off constraint's reaction is zero in the frame itself.)
+    pub fn switch_off(&mut self, inactive: &crate::run::active::Inactive) {
+        self.off_sforces = inactive
+            .ids(crate::run::active::ElementClass::Sforce)
+            .collect();
+    }
+
     /// The model's requests; `constraint_names` are the solver's constraint names in
     /// reaction order (`JOINT/3`, `JPRIM/1`, `GCON/2`, …), `markers` and `variables` as the
     /// lowered model has them.
@@ -210,6 +221,7 @@ impl RequestSet {
             variables,
             joints,
             sforces: model.sforces.iter().map(|s| (s.id, s.clone())).collect(),
+            off_sforces: std::collections::BTreeSet::new(),
         }
     }
 
@@ -239,6 +251,7 @@ impl RequestSet {
             dynamics: frame.dynamics.as_ref(),
             joints: &self.joints,
             sforces: &self.sforces,
+            off_sforces: &self.off_sforces,
         };
         let no_dynamics = || RequestError::NoDynamics {
             id: r.id,
@@ -328,6 +341,7 @@ struct RequestContext<'a> {
     dynamics: Option<&'a FrameDynamics>,
     joints: &'a BTreeMap<u32, (usize, u32, u32)>,
     sforces: &'a BTreeMap<u32, SForce>,
+    off_sforces: &'a std::collections::BTreeSet<u32>,
 }
 
 impl RequestContext<'_> {
@@ -390,12 +404,16 @@ impl RequestContext<'_> {
     /// axes, as the solver applies them: TRANSLATIONAL `f·(p_I − p_J)/|p_I − p_J|` on I (`f·z_J`
     /// with ACTIONONLY), the opposite on J (nothing with ACTIONONLY), no torque (the line of
     /// action passes through both markers); ROTATIONAL `f·z_J` torque on I, the opposite on J
-    /// (nothing with ACTIONONLY), no force. `f` is the FUNCTION at this frame.
+    /// (nothing with ACTIONONLY), no force. `f` is the FUNCTION at this frame; zero while the
+    /// SFORCE is switched off.
     fn sforce_load(&self, id: u32, jflag: u32) -> Result<(Vector3, Vector3), EvalError> {
         let s = self
             .sforces
             .get(&id)
             .ok_or(EvalError::NeedsState("SFORCE"))?;
+        if self.off_sforces.contains(&id) {
+            return Ok((Vector3::zeros(), Vector3::zeros()));
+        }
         let value = s.function.eval(&self.state)?;
         let (pose_i, pose_j) = (self.pose(s.i), self.pose(s.j));
         let z_j = pose_j.rotation * Vector3::z();

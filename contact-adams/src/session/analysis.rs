@@ -3,6 +3,7 @@
 use super::RunSink;
 use super::error::AnalysisError;
 use super::report::{AnalysisOutcome, AnalysisReport};
+use crate::run::active::FrameMap;
 use crate::run::lower::LoweredModel;
 use crate::run::plan::AnalysisStep;
 use contact_solver::frame::compute_frame;
@@ -29,6 +30,8 @@ pub(super) struct FrameFilter {
     pub(super) carried: Option<Vec<PartState>>,
     /// Frames delivered.
     pub(super) frames: u64,
+    /// The frames of a model with elements switched off, in the whole model's layout.
+    pub(super) map: Option<FrameMap>,
 }
 
 impl FrameFilter {
@@ -40,7 +43,10 @@ impl FrameFilter {
         }
         self.last_t = Some(frame.t);
         self.frames += 1;
-        sink.frame(frame)
+        match &self.map {
+            Some(map) => sink.frame(&map.remap(frame)),
+            None => sink.frame(frame),
+        }
     }
 }
 

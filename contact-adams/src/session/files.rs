@@ -101,6 +101,12 @@ impl RunSink for ResultFiles {
         Ok(())
     }
 
+    fn elements_switched(&mut self, inactive: &crate::run::active::Inactive) {
+        if let Some(writer) = &mut self.writer {
+            writer.elements_switched(inactive);
+        }
+    }
+
     fn frame(&mut self, frame: &Frame) -> std::io::Result<()> {
         let Some(writer) = &mut self.writer else {
             return Err(std::io::Error::other("a frame before the run started"));

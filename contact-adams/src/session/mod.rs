@@ -142,6 +142,10 @@ pub trait RunSink {
     /// An analysis starts.
     fn analysis_started(&mut self, _step: &AnalysisStep) {}
 
+    /// The elements switched off by DEACTIVATE changed: `inactive` holds for the frames that
+    /// follow (called before the analysis that first runs without them or with them again).
+    fn elements_switched(&mut self, _inactive: &crate::run::active::Inactive) {}
+
     /// Where a dynamics analysis is, after every accepted integrator step (keep it cheap).
     fn progress(&mut self, _progress: &Progress) {}
 

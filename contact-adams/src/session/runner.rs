@@ -8,8 +8,9 @@ use super::{RunLayout, RunOptions, RunSink};
 use crate::dataset::Diagnostic;
 use crate::engine_choice::{self, Overrides};
 use crate::model::{MeshFile, Model};
+use crate::run::active::{FrameMap, Inactive};
 use crate::run::lower::{LowerError, LoweredModel, lower};
-use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, plan_analyses};
+use crate::run::plan::{AnalysisStep, DegreesOfFreedomError, PlanOverrides, RunPlan, plan_run};
 use crate::run::redundancy::{redundancy_diagnostics, redundancy_warnings};
 use crate::run::request_file::{RequestOutput, units_tag};
 use crate::run::requests::RequestSet;
@@ -66,28 +67,31 @@ pub fn run_model(
         prepare: Duration::ZERO,
         output_dynamics: !model.requests.is_empty(),
     };
-    let steps = plan(model, options, &lowering, sink)?;
+    let plan = plan(model, options, &lowering, sink)?;
+    let steps = &plan.steps;
     let Some(first) = steps.first() else {
         return Err(RunError::NoAnalysis);
     };
+    // The whole model, lowered for the first analysis: its layout (parts, CONTACTs,
+    // constraints) is the output's, whatever is switched off.
     let first_analysis = solver_analysis(first);
-    let current = (first_analysis, lowering.lower(first_analysis)?);
-    sink.diagnostics(&redundancy_warnings(model, &current.1.system))
+    let whole = lowering.lower(first_analysis, &Inactive::default())?;
+    sink.diagnostics(&redundancy_warnings(model, &whole.system))
         .map_err(RunError::Output)?;
     let contacts: Vec<String> = model
         .contacts
         .iter()
         .map(|c| format!("CONTACT/{}", c.id))
         .collect();
-    let requests = request_output(model, source, &current.1, sink)?;
+    let requests = request_output(model, source, &whole, sink)?;
     sink.start(&RunLayout {
-        parts: &current.1.parts,
+        parts: &whole.parts,
         contacts: &contacts,
-        analyses: &steps,
+        analyses: steps,
         requests: requests.as_ref(),
     })
     .map_err(RunError::Output)?;
-    let (start, end) = span_of(&steps);
+    let (start, end) = span_of(steps);
     let mut report = RunReport {
         model: source.to_path_buf(),
         selection,
@@ -103,7 +107,13 @@ pub fn run_model(
         engine_work: WorkCounters::default(),
     };
     let started = Instant::now();
-    run_analyses(&steps, &mut lowering, current, sink, &mut report);
+    let current = Current {
+        analysis: first_analysis,
+        inactive: Inactive::default(),
+        map: None,
+        lowered: whole,
+    };
+    run_analyses(&plan, &mut lowering, current, sink, &mut report);
     report.wall = started.elapsed();
     report.prepare = lowering.prepare;
     sink.finish(&report).map_err(RunError::Output)?;
@@ -114,36 +124,73 @@ pub fn run_model(
     }
 }
 
-/// Runs `steps` in order from `current` (the model lowered for the first), lowering it again
-/// when the analysis mode changes; records each analysis, the totals and the first failure in
-/// `report`.
+/// The model as lowered for the analysis at hand.
+struct Current {
+    /// The analysis mode it was lowered for.
+    analysis: Analysis,
+    /// The elements left out.
+    inactive: Inactive,
+    /// Its frames in the whole model's layout (`None`: nothing is left out).
+    map: Option<FrameMap>,
+    /// The model on the solver.
+    lowered: LoweredModel,
+}
+
+/// Runs the plan's steps in order from `current` (the whole model lowered for the first),
+/// lowering it again when the analysis mode or the elements switched off change; records each
+/// analysis, the totals and the first failure in `report`.
 fn run_analyses(
-    steps: &[AnalysisStep],
+    plan: &RunPlan,
     lowering: &mut Lowering<'_>,
-    mut current: (Analysis, LoweredModel),
+    mut current: Current,
     sink: &mut dyn RunSink,
     report: &mut RunReport,
 ) {
     let mut filter = FrameFilter::default();
-    for step in steps {
+    let whole: Vec<String> = current
+        .lowered
+        .system
+        .constraint_rows()
+        .map(|(name, _)| name.to_string())
+        .collect();
+    for (step, inactive) in plan.steps.iter().zip(&plan.inactive) {
         let analysis = solver_analysis(step);
-        if analysis != current.0 {
-            for c in &current.1.contacts {
+        if analysis != current.analysis || *inactive != current.inactive {
+            for c in &current.lowered.contacts {
                 report.engine_work += c.work();
             }
-            match lowering.lower(analysis) {
-                Ok(l) => current = (analysis, l),
+            match lowering.lower(analysis, inactive) {
+                Ok(lowered) => {
+                    let names: Vec<&str> =
+                        lowered.system.constraint_rows().map(|(n, _)| n).collect();
+                    let map = FrameMap::new(
+                        lowering.model,
+                        inactive,
+                        whole.iter().map(String::as_str),
+                        &names,
+                    );
+                    if *inactive != current.inactive {
+                        sink.elements_switched(inactive);
+                    }
+                    current = Current {
+                        analysis,
+                        inactive: inactive.clone(),
+                        map,
+                        lowered,
+                    };
+                }
                 Err(e) => {
                     report.failure = Some(RunFailure::Lower(e));
                     break;
                 }
             }
         }
-        let lowered = &mut current.1;
+        let lowered = &mut current.lowered;
         filter.skip_repeat = matches!(
             step,
             AnalysisStep::Dynamics { .. } | AnalysisStep::Kinematics { .. }
         );
+        filter.map = current.map.clone();
         if let Some(parts) = &filter.carried {
             lowered.system.start_from(parts);
         }
@@ -161,7 +208,7 @@ fn run_analyses(
             break;
         }
     }
-    for c in &current.1.contacts {
+    for c in &current.lowered.contacts {
         report.engine_work += c.work();
     }
     report.output_frames = filter.frames;
@@ -181,25 +228,38 @@ struct Lowering<'a> {
 }
 
 impl Lowering<'_> {
-    /// The model lowered for `analysis` (friction that acts in dynamics only needs the model
-    /// lowered for the analysis at hand; the state passes from one lowering to the next
-    /// through the parts' states).
-    fn lower(&mut self, analysis: Analysis) -> Result<LoweredModel, LowerError> {
+    /// The model without the `inactive` elements, lowered for `analysis` (friction that acts
+    /// in dynamics only needs the model lowered for the analysis at hand; the state passes
+    /// from one lowering to the next through the parts' states).
+    fn lower(
+        &mut self,
+        analysis: Analysis,
+        inactive: &Inactive,
+    ) -> Result<LoweredModel, LowerError> {
         let started = Instant::now();
         let read = |f: &MeshFile| read_mesh(f, self.tolerance);
-        let mut lowered = lower(self.model, self.engine, analysis, &read)?;
+        let mut lowered = if inactive.is_empty() {
+            lower(self.model, self.engine, analysis, &read)?
+        } else {
+            lower(&inactive.apply(self.model), self.engine, analysis, &read)?
+        };
         lowered.system.set_parallelism(self.parallelism.clone());
         lowered.system.set_output_dynamics(self.output_dynamics);
         self.prepare += started.elapsed();
         Ok(lowered)
     }
 
-    /// The model's degrees of freedom at time `t` (SIMULATE/TRANSIENT chooses its analysis by
-    /// them, which the lowered multibody system knows).
-    fn degrees_of_freedom(&self, t: f64) -> Result<usize, DegreesOfFreedomError> {
+    /// The model's degrees of freedom without the `inactive` elements at time `t`
+    /// (SIMULATE/TRANSIENT chooses its analysis by them, which the lowered multibody system
+    /// knows).
+    fn degrees_of_freedom(
+        &self,
+        t: f64,
+        inactive: &Inactive,
+    ) -> Result<usize, DegreesOfFreedomError> {
         let read = |f: &MeshFile| read_mesh(f, self.tolerance);
-        let lowered =
-            lower(self.model, self.engine, Analysis::Quasistatic, &read).map_err(Box::new)?;
+        let model = inactive.apply(self.model);
+        let lowered = lower(&model, self.engine, Analysis::Quasistatic, &read).map_err(Box::new)?;
         Ok(initial_degrees_of_freedom(&lowered.system, t)?)
     }
 }
@@ -279,17 +339,19 @@ fn plan(
     options: &RunOptions,
     lowering: &Lowering<'_>,
     sink: &mut dyn RunSink,
-) -> Result<Vec<AnalysisStep>, RunError> {
+) -> Result<RunPlan, RunError> {
     let overrides = PlanOverrides {
         end: options.end,
         dtout: options.dtout,
         steps: options.steps,
     };
-    let (steps, notes) = plan_analyses(model, overrides, &mut |t| lowering.degrees_of_freedom(t))?;
-    for note in notes {
-        sink.note(&note).map_err(RunError::Output)?;
+    let plan = plan_run(model, overrides, &mut |t, inactive| {
+        lowering.degrees_of_freedom(t, inactive)
+    })?;
+    for note in &plan.notes {
+        sink.note(note).map_err(RunError::Output)?;
     }
-    Ok(steps)
+    Ok(plan)
 }
 
 /// The contact analysis mode a step's model is lowered for (LINEAR linearizes the equations

@@ -7,6 +7,7 @@ use super::elements::{equilibrium, integrator};
 use super::reader::{Problem, Reader};
 use crate::dataset::parser::{ParsedFile, Statement};
 use crate::model::{Analysis, Command, Model, OutputSteps, SimulationSpan};
+use crate::run::active::ElementClass;
 use std::path::Path;
 
 fn simulate(r: &Reader<'_>) -> Result<Command, Problem> {
@@ -103,18 +104,75 @@ fn linear(r: &Reader<'_>) -> Result<Command, Problem> {
     })
 }
 
-fn activate(r: &Reader<'_>, active: bool) -> Result<Command, Problem> {
-    const CLASSES: [&str; 8] = [
-        "JOINT", "JPRIM", "CONTACT", "MOTION", "SFORCE", "SENSOR", "VARIABLE", "REQUEST",
+/// ACTIVATE/DEACTIVATE/class, ID = ids: a class the run can switch (JOINT, JPRIM, GCON,
+/// MOTION, SFORCE, CONTACT) and ids of that class the model has. Any other class, an id the
+/// model does not have, and RANGE are errors at the argument, so `check` reports what `run`
+/// would refuse.
+fn activate(
+    low: &mut Lowering,
+    model: &Model,
+    r: &Reader<'_>,
+    active: bool,
+) -> Result<Command, Problem> {
+    const CLASSES: [&str; 22] = [
+        "JOINT",
+        "JPRIM",
+        "GCON",
+        "CONTACT",
+        "MOTION",
+        "SFORCE",
+        "SENSOR",
+        "VARIABLE",
+        "REQUEST",
+        "BEAM",
+        "BUSHING",
+        "FIELD",
+        "GFORCE",
+        "SPRINGDAMPER",
+        "VFORCE",
+        "VTORQUE",
+        "COUPLER",
+        "DIFF",
+        "LSE",
+        "GSE",
+        "TFSISO",
+        "NFORCE",
     ];
-    let class = r
+    let verb = if active { "ACTIVATE" } else { "DEACTIVATE" };
+    let keyword = r
         .one_of(&CLASSES)?
-        .ok_or_else(|| r.missing(&format!("an element class ({})", CLASSES.join(", "))))?;
+        .ok_or_else(|| r.missing(&format!("an element class ({})", ElementClass::list())))?;
+    let class = ElementClass::from_keyword(keyword).ok_or_else(|| {
+        Problem::new(
+            r.get(keyword).map_or(r.loc_of(keyword), |a| a.loc),
+            format!(
+                "{verb}/{keyword}: {keyword} elements cannot be switched by this solver (it switches {})",
+                ElementClass::list()
+            ),
+        )
+    })?;
+    if r.flag("RANGE") {
+        return Err(Problem::new(
+            r.loc_of("RANGE"),
+            format!("{verb}/{keyword}: RANGE is not supported: list the elements with ID"),
+        ));
+    }
     let ids = r.ids("ID")?.ok_or_else(|| r.missing("ID"))?;
+    let mut known = Vec::new();
+    for (id, loc) in ids {
+        if class.exists(model, id) {
+            known.push(id);
+        } else {
+            low.error(Problem::new(
+                loc,
+                format!("{verb}/{keyword}: the model has no {keyword}/{id}"),
+            ));
+        }
+    }
     Ok(Command::Activate {
         active,
-        class,
-        ids: ids.into_iter().map(|(id, _)| id).collect(),
+        class: class.keyword(),
+        ids: known,
     })
 }
 
@@ -148,12 +206,9 @@ fn command(low: &mut Lowering, model: &mut Model, st: &Statement, adm: &Path) ->
         "SIMULATE" => low.ok(simulate(&r)),
         "LINEAR" => low.ok(linear(&r)),
         "ACTIVATE" | "DEACTIVATE" => {
-            let command = low.ok(activate(&r, st.spec.name == "ACTIVATE"))?;
-            low.warning(
-                st.loc,
-                format!("{command} is not applied by this solver: the command is ignored"),
-            );
-            Some(command)
+            let result = activate(low, model, &r, st.spec.name == "ACTIVATE");
+            low.ok(result)
+                .filter(|c| !matches!(c, Command::Activate { ids, .. } if ids.is_empty()))
         }
         "INTEGRATOR" => integrator(low, st).map(Command::Integrator),
         "EQUILIBRIUM" => equilibrium(low, st).map(Command::Equilibrium),
