@@ -131,6 +131,7 @@ mod tests {
             pose_world_i: Isometry3::identity(),
             pose_world_j: Isometry3::identity(),
             penetration: 1e-3,
+            penetration_rate: 0.0,
             normal_w: Vector3::z(),
             point_w: Point3::origin(),
         }

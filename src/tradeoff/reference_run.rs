@@ -67,6 +67,9 @@ pub struct TouchingPose {
     pub pose_world_j: Isometry3,
     /// The deepest penetration among the contact's points at this frame.
     pub penetration: f64,
+    /// That deepest point's penetration rate `δ̇` (positive while approaching): with the
+    /// penetration it places the contact's onset or release between output frames.
+    pub penetration_rate: f64,
     /// The unit normal (J into I, world) of that deepest point.
     pub normal_w: Vector3,
     /// The deepest contact's point: midway between its points on I and on J (world).
@@ -354,6 +357,7 @@ impl RunSink for Recorder<'_> {
                         pose_world_i,
                         pose_world_j,
                         penetration: deepest.contact.penetration,
+                        penetration_rate: deepest.penetration_rate,
                         normal_w: deepest.contact.normal_w,
                         point_w: nalgebra::center(
                             &deepest.contact.point_i_w,

@@ -16,8 +16,10 @@
 //!   with its error relative to the reference's (none when the reference's is 0); its onsets
 //!   (a frame touching after one that did not) and releases, counted, and the largest time
 //!   from a reference onset (release) to the candidate's nearest one (so an extra or a
-//!   missing event shifts no other pairing; the counts show it). Onsets and releases are seen
-//!   at output frames, so their times are resolved to the output step;
+//!   missing event shifts no other pairing; the counts show it). Onsets and releases are found
+//!   between output frames and timed inside them from the deepest point's penetration and
+//!   rate at the frame where the contact touches, `t − δ/δ̇` (first order: exact for a
+//!   penetration linear in time);
 //! - the wall time per simulated second (the analyses' wall time, one thread; the model's
 //!   lowering and engine preparation are reported apart).
 //!
@@ -26,7 +28,7 @@
 //! faceted engine at its smallest tolerance that does, the faster of the two (the exact engine
 //! on a tie), so timing noise never picks a finer tolerance than needed.
 
-use super::reference_run::{RecordError, RunRecord, Setting, record_run};
+use super::reference_run::{RecordError, RunRecord, Setting, TouchingPose, record_run};
 use crate::model::Model;
 use crate::scenes::{from_model, support};
 use contact_core::{FacetingTolerance, GeometryLibrary, Vector3};
@@ -286,11 +288,13 @@ struct ContactHistory {
 
 fn history(run: &RunRecord, k: usize) -> ContactHistory {
     let force = |i: usize| run.contact_forces[i].get(k).copied().unwrap_or(0.0);
-    let touched: Vec<f64> = run
-        .touching
-        .get(k)
-        .map_or_else(Vec::new, |t| t.iter().map(|p| p.t).collect());
-    let touching = |t: f64| touched.binary_search_by(|x| x.total_cmp(&t)).is_ok();
+    let touched: &[TouchingPose] = run.touching.get(k).map_or(&[], Vec::as_slice);
+    let at = |t: f64| {
+        touched
+            .binary_search_by(|p| p.t.total_cmp(&t))
+            .ok()
+            .map(|i| &touched[i])
+    };
     let mut h = ContactHistory {
         peak: 0.0,
         impulse: 0.0,
@@ -302,14 +306,28 @@ fn history(run: &RunRecord, k: usize) -> ContactHistory {
         if i > 0 {
             let dt = run.times[i] - run.times[i - 1];
             h.impulse += 0.5 * dt * (force(i) + force(i - 1));
-            match (touching(run.times[i - 1]), touching(run.times[i])) {
-                (false, true) => h.onsets.push(run.times[i]),
-                (true, false) => h.releases.push(run.times[i]),
+            let (before, after) = (run.times[i - 1], run.times[i]);
+            match (at(before), at(after)) {
+                (None, Some(p)) => h.onsets.push(event_time(p, -1.0, before, after)),
+                (Some(p), None) => h.releases.push(event_time(p, 1.0, before, after)),
                 _ => {}
             }
         }
     }
     h
+}
+
+/// When the contact touched at `p` began (`direction` −1: before `p`) or ended (+1: after
+/// it), from its penetration and rate at `p` as the solver's onset prediction does:
+/// `p.t − δ/δ̇` or `p.t + δ/(−δ̇)`, clamped to the frames `[before, after]` around the event;
+/// the frame after it where the rate says nothing (a contact not approaching at its onset).
+fn event_time(p: &TouchingPose, direction: f64, before: f64, after: f64) -> f64 {
+    let closing = -direction * p.penetration_rate;
+    if closing > 0.0 && p.penetration.is_finite() {
+        (p.t + direction * p.penetration / closing).clamp(before, after)
+    } else {
+        after
+    }
 }
 
 fn contact_errors(

@@ -39,6 +39,7 @@ fn record(
                     pose_world_i: pose(t),
                     pose_world_j: Isometry3::identity(),
                     penetration: 1e-3,
+                    penetration_rate: 0.0,
                     normal_w: Vector3::z(),
                     point_w: Point3::origin(),
                 })
@@ -140,5 +141,49 @@ fn select_run_takes_the_faster_of_exact_and_the_smallest_sufficient_tolerance() 
     assert_eq!(
         e.to_string(),
         "no engine and faceting tolerance meets a run error of 1e-2 (best measured: 5.00e-2)"
+    );
+}
+
+/// The record of a contact whose penetration grows and shrinks at 1 m/s, touching from `on`
+/// to `off` (between output frames 0.1 s apart).
+fn timed_contact(setting: Setting, on: f64, off: f64) -> RunRecord {
+    let times: Vec<f64> = (0..=10).map(|k| 0.1 * f64::from(k)).collect();
+    let mut run = record(
+        setting,
+        &times,
+        |_| 0.0,
+        |_| 0.0,
+        |t| {
+            if (on..=off).contains(&t) { 1.0 } else { 0.0 }
+        },
+    );
+    for p in &mut run.touching[0] {
+        // Approaching while nearer the onset, separating while nearer the release.
+        let (depth, rate) = if p.t - on < off - p.t {
+            (p.t - on, 1.0)
+        } else {
+            (off - p.t, -1.0)
+        };
+        p.penetration = depth;
+        p.penetration_rate = rate;
+    }
+    run
+}
+
+#[test]
+fn onsets_and_releases_are_timed_between_the_output_frames() {
+    let scale = ModelScale {
+        size: 1.0,
+        part_radii: vec![0.0],
+    };
+    // Touching on [0.27, 0.52] against [0.28, 0.515]: the frames see both at 0.3 and 0.6.
+    let reference = timed_contact(Setting::EXACT, 0.27, 0.52);
+    let candidate = timed_contact(faceted(100.0), 0.28, 0.515);
+    let c = &compare_runs(&reference, &candidate, &scale).contacts[0];
+    assert_eq!((c.onsets, c.reference_onsets), (1, 1));
+    assert!((c.onset_time_error.unwrap() - 0.01).abs() < 1e-12, "{c:?}");
+    assert!(
+        (c.release_time_error.unwrap() - 0.005).abs() < 1e-12,
+        "{c:?}"
     );
 }
