@@ -117,7 +117,9 @@ pub(crate) fn mesh_plane(
 }
 
 /// The facets' contacts of mesh A with the plane (a tessellated sphere's blended with the
-/// sphere's support points); as [`mesh_plane`].
+/// sphere's support points); as [`mesh_plane`]: the triangles at or below the plane become
+/// nodes joined into regions by edge adjacency, each region's waterline loop and clipped
+/// volume are summed, and each region gives one contact.
 fn facets_plane(
     a: &FacetMesh,
     plane: &Plane,
@@ -126,6 +128,69 @@ fn facets_plane(
     work: &mut WorkCounters,
     out: &mut Vec<LocalContact>,
 ) {
+    let n = frame.n;
+    let height = |v: &Vector3| frame.height(v);
+    // How far the sphere a tessellated sphere's facets stand for reaches beyond them: the PN
+    // patches' reach, doubled (the sphere's sag over a facet and the patch's differ by the
+    // patch's error, far below either). Other meshes keep their facets' contact.
+    let beyond_facets = if a.implied_sphere.is_some() {
+        2.0 * a.pn_reach
+    } else {
+        0.0
+    };
+    let curved = nodes_below(a, plane, frame, beyond_facets, s, work);
+    let count = label_regions(s);
+    s.regions.clear();
+    s.regions.resize(count, RegionSums::default());
+    // The smooth surface's support points (`plane_support`): a region they answer whole
+    // needs no facet sums.
+    let mut by_region = vec![None; count];
+    let mut alone = Vec::new();
+    if !curved.is_empty() {
+        let region_tris: Vec<(u32, u32)> = s.nodes.iter().map(|n| (n.tri, n.region)).collect();
+        supports_by_region(
+            a,
+            &n,
+            &height,
+            &curved,
+            &region_tris,
+            &mut by_region,
+            &mut alone,
+        );
+    }
+    s.curved = curved;
+    let smooth_only: Vec<bool> = by_region
+        .iter()
+        .map(|b| b.is_some_and(|s: Support| s.weight >= 1.0))
+        .collect();
+    sum_waterlines(a, frame, &smooth_only, s);
+    sum_volumes(a, frame, &smooth_only, s);
+    for (index, r) in s.regions.iter().enumerate() {
+        let support = by_region[index];
+        if let Some(support) = support.filter(|_| smooth_only[index]) {
+            out.push(alone_contact(&support, &n));
+            continue;
+        }
+        let facets = region_contact(a, frame, &s.nodes, index, r);
+        out.push(match support {
+            Some(support) => blended(&facets, &support, &n),
+            None => facets,
+        });
+    }
+    out.extend(alone.iter().map(|s| alone_contact(s, &n)));
+}
+
+/// A node per triangle at or below the plane (within a bounded plane's XMIN…YMAX), joined by
+/// edge adjacency; returns the curved triangles within `beyond_facets` of it (whose smooth
+/// surface may reach below it).
+fn nodes_below(
+    a: &FacetMesh,
+    plane: &Plane,
+    frame: &PlaneFrame,
+    beyond_facets: f64,
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+) -> Vec<u32> {
     let PlaneFrame { rot, origin, n } = *frame;
     let height = |v: &Vector3| frame.height(v);
     let [x0, x1] = plane.x_range();
@@ -139,14 +204,6 @@ fn facets_plane(
             || xs.iter().all(|&u| u > x1)
             || ys.iter().all(|&u| u < y0)
             || ys.iter().all(|&u| u > y1)
-    };
-    // How far the sphere a tessellated sphere's facets stand for reaches beyond them: the PN
-    // patches' reach, doubled (the sphere's sag over a facet and the patch's differ by the
-    // patch's error, far below either). Other meshes keep their facets' contact.
-    let beyond_facets = if a.implied_sphere.is_some() {
-        2.0 * a.pn_reach
-    } else {
-        0.0
     };
     s.nodes.clear();
     s.slots[0].reset(a.triangles.len());
@@ -192,37 +249,20 @@ fn facets_plane(
             }
         }
     }
-    let count = label_regions(s);
-    s.regions.clear();
-    s.regions.resize(count, RegionSums::default());
-    // The smooth surface's support points (`plane_support`): a region they answer whole
-    // needs no facet sums.
-    let mut by_region = vec![None; count];
-    let mut alone = Vec::new();
-    if !curved.is_empty() {
-        let region_tris: Vec<(u32, u32)> = s.nodes.iter().map(|n| (n.tri, n.region)).collect();
-        supports_by_region(
-            a,
-            &n,
-            &height,
-            &curved,
-            &region_tris,
-            &mut by_region,
-            &mut alone,
-        );
-    }
-    s.curved = curved;
-    let smooth_only: Vec<bool> = by_region
-        .iter()
-        .map(|b| b.is_some_and(|s: Support| s.weight >= 1.0))
-        .collect();
-    // Waterline loops, oriented along n_tri × n_plane as mesh–mesh segments are.
+    curved
+}
+
+/// Each region's waterline loop (its vector area, length and length moment), the segments
+/// oriented along `n_tri × n_plane` as mesh–mesh segments are; regions the smooth surface
+/// answers whole are skipped.
+fn sum_waterlines(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
+    let n = frame.n;
     for node in &s.nodes {
         if !node.crossing || smooth_only[node.region as usize] {
             continue;
         }
         let c = a.corners(node.tri);
-        let h = c.map(|v| height(&v));
+        let h = c.map(|v| frame.height(&v));
         let mut pts = [Vector3::zeros(); 2];
         let mut k = 0;
         for i in 0..3 {
@@ -249,6 +289,13 @@ fn facets_plane(
         r.loop_length += len;
         r.loop_moment += len * 0.5 * (pts[0] + pts[1]);
     }
+}
+
+/// Each region's apex (its waterline's centroid on the plane), clipped volume, downward area
+/// and volume centroid; regions the smooth surface answers whole are skipped.
+fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
+    let (n, origin) = (frame.n, frame.origin);
+    let height = |v: &Vector3| frame.height(v);
     let Scratch {
         nodes,
         regions,
@@ -302,46 +349,45 @@ fn facets_plane(
             r.apex
         };
     }
-    for (index, r) in regions.iter().enumerate() {
-        let support = by_region[index];
-        if let Some(support) = support.filter(|_| smooth_only[index]) {
-            out.push(alone_contact(&support, &n));
-            continue;
-        }
-        let g = r.centroid;
-        let point_j = g - n * height(&g);
-        // I's surface straight below g along −n: continuous in the pose, where the closest
-        // point to g jumps between the facets around a vertex.
-        let in_region = nodes
-            .iter()
-            .filter(|node| node.region as usize == index)
-            .map(|node| node.tri);
-        let (tri, on_facet) = a
-            .first_ray_hit_among(in_region, &g, &(-n))
-            .unwrap_or_else(|| closest_in_region(a, nodes, index, &g));
-        let point_i = if tri == u32::MAX {
-            on_facet
+}
+
+/// Region `index`'s contact from its sums: `point_j` the centroid on the plane, `point_i` I's
+/// surface straight below the centroid along −n (continuous in the pose, where the closest
+/// point to it jumps between the facets around a vertex), the area the waterline's (else the
+/// downward area of a body wholly under the plane).
+fn region_contact(
+    a: &FacetMesh,
+    frame: &PlaneFrame,
+    nodes: &[RegionNode],
+    index: usize,
+    r: &RegionSums,
+) -> LocalContact {
+    let n = frame.n;
+    let g = r.centroid;
+    let point_j = g - n * frame.height(&g);
+    let in_region = nodes
+        .iter()
+        .filter(|node| node.region as usize == index)
+        .map(|node| node.tri);
+    let (tri, on_facet) = a
+        .first_ray_hit_among(in_region, &g, &(-n))
+        .unwrap_or_else(|| closest_in_region(a, nodes, index, &g));
+    let point_i = if tri == u32::MAX {
+        on_facet
+    } else {
+        a.lift_to_surface(tri, &on_facet)
+    };
+    LocalContact {
+        point_i,
+        point_j,
+        normal: n,
+        penetration: (point_j - point_i).norm(),
+        area: if r.loop_length > 0.0 {
+            r.vector_area.norm()
         } else {
-            a.lift_to_surface(tri, &on_facet)
-        };
-        let loop_area = r.vector_area.norm();
-        let facets = LocalContact {
-            point_i,
-            point_j,
-            normal: n,
-            penetration: (point_j - point_i).norm(),
-            area: if r.loop_length > 0.0 {
-                loop_area
-            } else {
-                r.down_area
-            },
-        };
-        out.push(match support {
-            Some(support) => blended(&facets, &support, &n),
-            None => facets,
-        });
+            r.down_area
+        },
     }
-    out.extend(alone.iter().map(|s| alone_contact(s, &n)));
 }
 
 /// The point of region `index`'s triangles closest to `g`, with its triangle (`u32::MAX` and
