@@ -272,19 +272,7 @@ pub fn simulate_with_progress(
             .map_err(|source| integrator_failure(t_before, source))?;
         frame = frame_at(system, t, bdf.y())?;
         // Contact prediction: one retry per new contact.
-        let onset = frame
-            .contacts
-            .iter()
-            .zip(&active)
-            .filter(|(now, was)| !**was && !now.is_empty())
-            .filter_map(|(now, _)| {
-                let deepest = now
-                    .iter()
-                    .max_by(|a, b| a.contact.penetration.total_cmp(&b.contact.penetration))?;
-                (deepest.penetration_rate > 0.0)
-                    .then(|| t - deepest.contact.penetration / deepest.penetration_rate)
-            })
-            .fold(f64::INFINITY, f64::min);
+        let onset = earliest_onset(&frame, &active);
         if onset.is_finite() {
             if let Some(retry) = retry_time(onset, t_before, t) {
                 // State kept per accepted step goes back with the step, before the retry.
@@ -298,16 +286,7 @@ pub fn simulate_with_progress(
                 frame = frame_at(system, t, bdf.y())?;
             }
         }
-        for (k, now) in frame.contacts.iter().enumerate() {
-            if !active[k] {
-                let entry = now
-                    .iter()
-                    .map(|r| r.contact.penetration)
-                    .fold(0.0, f64::max);
-                summary.largest_entry_penetration = summary.largest_entry_penetration.max(entry);
-            }
-            active[k] = !now.is_empty();
-        }
+        record_entries(&frame, &mut active, &mut summary);
         window_steps += 1;
         if window_steps == STALL_WINDOW {
             let advanced = t - window_start;
@@ -363,13 +342,7 @@ pub fn simulate_with_progress(
                 }
                 sink(&frame).map_err(|source| SimulationError::Output { t, source })?;
             }
-            return Err(SimulationError::Output {
-                t,
-                source: std::io::Error::new(
-                    std::io::ErrorKind::Interrupted,
-                    "stopped on request: the run ended at this step",
-                ),
-            });
+            return Err(stopped_on_request(t));
         }
     }
     summary.integrator = *bdf.stats();
@@ -377,6 +350,50 @@ pub fn simulate_with_progress(
     summary.broad_phase_evaluated = evaluated - evaluated_before;
     summary.broad_phase_skipped = skipped - skipped_before;
     Ok(summary)
+}
+
+/// The earliest onset `t − δ/δ̇` among the contacts that touch at `frame` and did not at the
+/// step before (`active`), each from its deepest point while it approaches; infinite when none.
+fn earliest_onset(frame: &Frame, active: &[bool]) -> f64 {
+    frame
+        .contacts
+        .iter()
+        .zip(active)
+        .filter(|(now, was)| !**was && !now.is_empty())
+        .filter_map(|(now, _)| {
+            let deepest = now
+                .iter()
+                .max_by(|a, b| a.contact.penetration.total_cmp(&b.contact.penetration))?;
+            (deepest.penetration_rate > 0.0)
+                .then(|| frame.t - deepest.contact.penetration / deepest.penetration_rate)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Records the penetration each newly touching contact entered with, and which touch now.
+fn record_entries(frame: &Frame, active: &mut [bool], summary: &mut RunSummary) {
+    for (k, now) in frame.contacts.iter().enumerate() {
+        if !active[k] {
+            let entry = now
+                .iter()
+                .map(|r| r.contact.penetration)
+                .fold(0.0, f64::max);
+            summary.largest_entry_penetration = summary.largest_entry_penetration.max(entry);
+        }
+        active[k] = !now.is_empty();
+    }
+}
+
+/// The error of a run ended on request (its progress callback returned
+/// [`ControlFlow::Break`]) at the step ending at `t`.
+fn stopped_on_request(t: f64) -> SimulationError {
+    SimulationError::Output {
+        t,
+        source: std::io::Error::new(
+            std::io::ErrorKind::Interrupted,
+            "stopped on request: the run ended at this step",
+        ),
+    }
 }
 
 /// Where a step `[t_before, t]` in which a contact appeared is retried to end, given the
