@@ -8,7 +8,8 @@
 //!
 //! The dense factorisation at 512 spheres takes minutes (`⅔n³ ≈ 2.5·10¹¹` operations), too
 //! long for criterion's ten samples: it is timed once and printed. Short profile (10 samples,
-//! 2 s) otherwise.
+//! 2 s) otherwise. The group `newton_matrix/chain` times both on pendulum chains of 2 to 64
+//! links for the dense/sparse crossover.
 
 use contact::pile::SpherePile;
 use contact::run::lower::{LoweredModel, lower};
@@ -94,8 +95,74 @@ fn newton(c: &mut Criterion) {
     group.finish();
 }
 
+/// A chain of `links` unit rods hanging from the ground on REVOLUTE joints (parallel axes),
+/// lowered, and its initial state: a model whose Newton matrix grows with `links` while each
+/// row stays short, to find where the sparse factorisation overtakes the dense one.
+fn chain(links: usize) -> (LoweredModel, DVector<f64>, DVector<f64>) {
+    let mut text = String::from(
+        "chain\nUNITS/ FORCE = NEWTON, MASS = KILOGRAM, LENGTH = METER, TIME = SECOND\n\
+         PART/1, GROUND\nMARKER/10, PART = 1, REULER = 0, 90D, 0\n",
+    );
+    for k in 0..links {
+        let part = 2 + k;
+        let x = k as f64;
+        text.push_str(&format!(
+            "PART/{part}, MASS = 1, CM = {part}0, IP = 0.1, 0.1, 1E-3\n\
+             MARKER/{part}0, PART = {part}, QP = {}, 0, 0\n\
+             MARKER/{part}1, PART = {part}, QP = {x}, 0, 0, REULER = 0, 90D, 0\n\
+             MARKER/{part}2, PART = {part}, QP = {}, 0, 0, REULER = 0, 90D, 0\n",
+            x + 0.5,
+            x + 1.0
+        ));
+        let j = if k == 0 { 10 } else { (part - 1) * 10 + 2 };
+        text.push_str(&format!("JOINT/{part}, REVOLUTE, I = {part}1, J = {j}\n"));
+    }
+    text.push_str("ACCGRAV/ KGRAV = -9.81\nEND\n");
+    let loaded = contact::dataset::read_str(&text, "chain.adm", None);
+    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
+    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in the chain".to_string());
+    let model = lower(
+        &loaded.model,
+        &engine_exact::ExactEngine,
+        Analysis::Dynamics,
+        &no_meshes,
+    )
+    .unwrap();
+    let initial = model.system.compute_initial_state(0.0).unwrap();
+    (model, initial.y, initial.yp)
+}
+
+/// Dense against sparse on chains of 2 to 64 links: the crossover behind
+/// `contact_solver::mbs::SPARSE_FROM_SIZE`.
+fn crossover(c: &mut Criterion) {
+    let mut group = c.benchmark_group("newton_matrix/chain");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
+    for links in [2, 4, 8, 16, 32, 64] {
+        let (mut model, y, yp) = chain(links);
+        let n = y.len();
+        let sparse = solution(&factorise(&mut model, NewtonStorage::Sparse, &y, &yp), n);
+        let dense = solution(&factorise(&mut model, NewtonStorage::Dense, &y, &yp), n);
+        let gap = (&dense - &sparse).norm() / dense.norm();
+        eprintln!("chain {links}: n = {n}; sparse and dense differ by {gap:.1e} relative");
+        assert!(gap <= 1e-9, "chain {links}: {gap:e}");
+        for (name, storage) in [
+            ("sparse", NewtonStorage::Sparse),
+            ("dense", NewtonStorage::Dense),
+        ] {
+            group.bench_with_input(BenchmarkId::new(name, n), &n, |b, _| {
+                b.iter(|| factorise(&mut model, storage, &y, &yp))
+            });
+        }
+    }
+    group.finish();
+}
+
 fn main() {
     let mut criterion = Criterion::default().configure_from_args();
+    crossover(&mut criterion);
     newton(&mut criterion);
     criterion.final_summary();
 }

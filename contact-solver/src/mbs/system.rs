@@ -61,10 +61,13 @@ pub struct MultibodySystem {
 
 /// The size `n` of `y` from which the integrator stores the Newton matrix sparse when the
 /// storage is chosen automatically ([`MultibodySystem::set_newton_storage`]). Every model of
-/// up to three parts stays below it and keeps the dense LU; at 896 unknowns (the pile of 64
-/// spheres) the sparse path is already about a hundred times faster (`benches/newton.rs`).
-/// The exact crossover has not been measured.
-pub const SPARSE_FROM_SIZE: usize = 400;
+/// up to three parts stays below it and keeps the dense LU. Measured on pendulum chains
+/// (`benches/newton.rs`, group `newton_matrix/chain`, one evaluation and factorisation with
+/// the sparse ordering rebuilt each time, as at a pattern change): the dense LU is faster up to
+/// n = 76 (47 against 131 µs at n = 38, 156 against 313 µs at 76), the sparse from n = 152
+/// (612 against 724 µs; 1.28 against 4.86 ms at 304, 5.9 against 423 ms at 1216); a run
+/// reuses the ordering, so the sparse side is cheaper still there.
+pub const SPARSE_FROM_SIZE: usize = 128;
 
 impl std::fmt::Debug for MultibodySystem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
