@@ -143,16 +143,20 @@ pub fn parse_geometry(
         }
         values.push((key, value));
     }
-    let keys: &[&str] = match kind.trim().to_ascii_lowercase().as_str() {
-        "sphere" => &["r"],
-        "ellipsoid" => &["a", "b", "c"],
-        "box" => &["x", "y", "z"],
-        "cylinder" => &["r", "l"],
-        "frustum" => &["r0", "r1", "l"],
-        "torus" => &["R", "r"],
-        _ => &[],
+    // The arguments each shape takes (an unknown shape is refused below, by name).
+    let keys: Option<&[&str]> = match kind.trim().to_ascii_lowercase().as_str() {
+        "sphere" => Some(&["r"]),
+        "ellipsoid" => Some(&["a", "b", "c"]),
+        "box" => Some(&["x", "y", "z"]),
+        "cylinder" => Some(&["r", "l"]),
+        "frustum" => Some(&["r0", "r1", "l"]),
+        "torus" => Some(&["R", "r"]),
+        "plane" => Some(&[]),
+        _ => None,
     };
-    if let Some((key, _)) = values.iter().find(|(k, _)| !keys.contains(&k.as_str())) {
+    if let Some(keys) = keys
+        && let Some((key, _)) = values.iter().find(|(k, _)| !keys.contains(&k.as_str()))
+    {
         return Err(bad(format!(
             "unknown argument {key}= (this shape takes {})",
             if keys.is_empty() {
