@@ -305,7 +305,9 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
     } = s;
     // A region whose waterline has no length only touches the plane (at a vertex or an edge
     // exactly on it): its point is its lowest corner, with no depth. Without crossing
-    // triangles the whole body is under the plane and its centroid is the region's.
+    // triangles the whole (closed) body is under the plane: its cones sum to its volume from
+    // any apex, and its own centroid keeps them small however deep it lies (an apex on the
+    // plane, 1e66 away, overflows them).
     let mut touching: Vec<Option<(f64, Vector3)>> = vec![None; regions.len()];
     for node in nodes.iter().filter(|node| node.crossing) {
         let slot = &mut touching[node.region as usize];
@@ -317,12 +319,14 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
         }
     }
     for (r, touching) in regions.iter_mut().zip(&touching) {
-        let a_point = match touching {
-            _ if r.loop_length > 0.0 => r.loop_moment / r.loop_length,
-            Some((_, lowest)) => *lowest,
+        r.apex = match touching {
+            _ if r.loop_length > 0.0 => {
+                let on_loop = r.loop_moment / r.loop_length;
+                on_loop - n * height(&on_loop)
+            }
+            Some((_, lowest)) => lowest - n * height(lowest),
             None => a.centroid.coords,
         };
-        r.apex = a_point - n * height(&a_point);
     }
     for node in nodes
         .iter()

@@ -6,7 +6,7 @@
 
 use crate::common::{Rng, engine, prepare, query_pair};
 use contact_core::geometry::{Cuboid, Ellipsoid, Plane};
-use contact_core::{Contact, Geometry, Isometry3, UnitQuaternion, Vector3};
+use contact_core::{Contact, Geometry, GeometryEngine, Isometry3, UnitQuaternion, Vector3};
 
 /// The contacts' depth, normal, area and the points' offsets from the mesh's origin.
 fn relative(contacts: &[Contact], pose_mesh: &Isometry3) -> Vec<[f64; 10]> {
@@ -83,4 +83,52 @@ fn an_ellipsoid_far_along_the_plane_keeps_its_contact() {
 fn a_box_far_along_the_plane_keeps_its_contact() {
     let cube = Geometry::Cuboid(Cuboid::centered(0.5, 1.0, 0.25).unwrap());
     compare(cube, 2.0, &[0.1, 0.3, -0.2]);
+}
+
+#[test]
+fn a_mesh_wholly_under_the_plane_however_deep_has_its_depth() {
+    // A box and an ellipsoid (the `poses` fuzz target's find: an ellipsoid 2.2e66 under the
+    // plane had NaN points and an infinite depth) wholly under the plane: the line through the
+    // centroid leaves the body at its bottom and the half-space at the plane, so the depth is
+    // the centroid's depth plus the body's reach below it, as the exact engine says.
+    let bodies = [
+        Geometry::Cuboid(Cuboid::centered(0.5, 1.0, 0.25).unwrap()),
+        Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.5, 0.3).unwrap()),
+    ];
+    let rotation = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
+    for body in bodies {
+        let exact = engine_exact::ExactEngine
+            .prepare(
+                &[contact_core::GeometryInstance::new(body.clone())],
+                &[contact_core::GeometryInstance::new(Geometry::Plane(
+                    Plane::unbounded(),
+                ))],
+            )
+            .unwrap();
+        let faceted = prepare(
+            &engine(300.0028),
+            body.clone(),
+            Geometry::Plane(Plane::unbounded()),
+        );
+        for depth in [10.0, 1e20, 2.2e66] {
+            let pose = Isometry3::from_parts(Vector3::new(0.3, -0.9, -depth).into(), rotation);
+            let (want, _) = query_pair(exact.as_ref(), pose, Isometry3::identity());
+            let (got, _) = query_pair(faceted.as_ref(), pose, Isometry3::identity());
+            assert_eq!(
+                (got.len(), want.len()),
+                (1, 1),
+                "{body:?} at {depth:e}: {got:?}"
+            );
+            let (g, w) = (got[0], want[0]);
+            // Within the chord deviation of the body's reach, relative to the depth's ulp.
+            assert!(
+                (g.penetration - w.penetration).abs() <= 0.05 + 1e-15 * depth,
+                "{body:?} at {depth:e}: {g:?} against {w:?}"
+            );
+            assert!(
+                (g.normal_w - w.normal_w).norm() < 1e-12,
+                "{g:?} against {w:?}"
+            );
+        }
+    }
 }
