@@ -26,9 +26,15 @@ const H: f64 = 1e-3;
 /// The pile of `count` spheres, lowered with the exact engine, and its initial state.
 fn pile(count: usize) -> (LoweredModel, DVector<f64>, DVector<f64>) {
     let pile = SpherePile::new(count).unwrap();
-    let loaded = contact::dataset::read_str(&pile.dataset(), "pile.adm", None);
+    lowered(&pile.dataset(), "pile.adm")
+}
+
+/// The dataset `text` (no meshes) lowered with the exact engine for dynamics, and its initial
+/// state.
+fn lowered(text: &str, name: &str) -> (LoweredModel, DVector<f64>, DVector<f64>) {
+    let loaded = contact::dataset::read_str(text, name, None);
     assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in the pile".to_string());
+    let no_meshes = |_: &contact::model::MeshFile| Err(format!("no meshes in {name}"));
     let model = lower(
         &loaded.model,
         &engine_exact::ExactEngine,
@@ -118,18 +124,7 @@ fn chain(links: usize) -> (LoweredModel, DVector<f64>, DVector<f64>) {
         text.push_str(&format!("JOINT/{part}, REVOLUTE, I = {part}1, J = {j}\n"));
     }
     text.push_str("ACCGRAV/ KGRAV = -9.81\nEND\n");
-    let loaded = contact::dataset::read_str(&text, "chain.adm", None);
-    assert!(!loaded.has_errors(), "{:?}", loaded.diagnostics);
-    let no_meshes = |_: &contact::model::MeshFile| Err("no meshes in the chain".to_string());
-    let model = lower(
-        &loaded.model,
-        &engine_exact::ExactEngine,
-        Analysis::Dynamics,
-        &no_meshes,
-    )
-    .unwrap();
-    let initial = model.system.compute_initial_state(0.0).unwrap();
-    (model, initial.y, initial.yp)
+    lowered(&text, "chain.adm")
 }
 
 /// Dense against sparse on chains of 2 to 64 links: the crossover behind
