@@ -5,7 +5,9 @@
 //! 1. **Crossings** (`crate::crossings`). The two OBB trees are descended together; leaf
 //!    triangle pairs go to the exact triangle–triangle test ([`crate::triangle_pair`]), which
 //!    returns each crossing segment oriented along `n_I × n_J`.
-//! 2. **Regions.** Each triangle that crosses is a node; a crossing unites its two triangles
+//! 2. **Regions.** Each triangle that crosses is a node, split into pieces where its segments
+//!    bound more than one face inside the other solid ([`crate::triangle_pieces`]: two regions
+//!    crossing one large triangle stay two); a crossing unites the two pieces it bounds
 //!    (union-find). Then each surface is flooded from its crossing triangles into the triangles
 //!    that lie wholly inside the other solid (a neighbour across an edge whose two corners are
 //!    inside — behind every plane of the triangles it crosses — is inside; so is any
@@ -132,7 +134,7 @@ pub(crate) fn mesh_mesh(
         }
         return;
     }
-    build_nodes(a, b, s);
+    build_nodes(a, b, &x, s);
     flood(a, b, &x, s);
     let region_count = label_regions(s);
     s.regions.clear();
@@ -156,6 +158,8 @@ pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u
         hit_start: 0,
         hit_count: 0,
         inside_corners: 0,
+        edges: crate::triangle_pieces::ALL_EDGES,
+        next_piece: crate::triangle_pieces::NO_PIECE,
     });
     s.slots[side as usize].insert(tri, id);
     id
@@ -180,8 +184,10 @@ pub(crate) fn union(nodes: &mut [RegionNode], i: u32, j: u32) {
     }
 }
 
-/// One node per crossing triangle, united across each crossing; hit lists per node (CSR).
-fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
+/// One node per crossing triangle, hit lists per node (CSR), triangles split into the pieces
+/// their hits bound ([`crate::triangle_pieces`]); then the pieces are united across each
+/// crossing and where the intersection curve goes on into a neighbouring triangle.
+fn build_nodes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     s.nodes.clear();
     s.slots[0].reset(a.triangles.len());
     s.slots[1].reset(b.triangles.len());
@@ -197,6 +203,34 @@ fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
         };
         s.nodes[na as usize].hit_count += 1;
         s.nodes[nb as usize].hit_count += 1;
+    }
+    let mut start = 0;
+    for n in s.nodes.iter_mut() {
+        n.hit_start = start;
+        start += n.hit_count;
+        n.hit_count = 0;
+    }
+    s.node_hits.clear();
+    s.node_hits.resize(start as usize, 0);
+    for (h, hit) in s.hits.iter().enumerate() {
+        for (side, tri) in [(0, hit.ta), (1, hit.tb)] {
+            if let Some(id) = s.slots[side].get(tri) {
+                let n = &mut s.nodes[id as usize];
+                s.node_hits[(n.hit_start + n.hit_count) as usize] = h as u32;
+                n.hit_count += 1;
+            }
+        }
+    }
+    crate::triangle_pieces::split_crossing_triangles(a, b, x, s);
+    s.hit_nodes.clear();
+    s.hit_nodes.resize(s.hits.len(), [0; 2]);
+    for (id, n) in s.nodes.iter().enumerate() {
+        for &h in &s.node_hits[n.hit_start as usize..(n.hit_start + n.hit_count) as usize] {
+            s.hit_nodes[h as usize][n.side as usize] = id as u32;
+        }
+    }
+    for h in 0..s.hits.len() {
+        let [na, nb] = s.hit_nodes[h];
         union(&mut s.nodes, na, nb);
     }
     // The intersection curve goes on across the edge (or corner) each segment ends on, into
@@ -216,37 +250,49 @@ fn build_nodes(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
                 // A corner: the edges on both sides of it.
                 Feature::Corner(k) => [k, (k + 2) % 3],
             };
-            let Some(own) = s.slots[side].get(tri) else {
-                continue;
-            };
+            let own = s.hit_nodes[h][side];
             for k in across {
                 let next = mesh.neighbors[tri as usize][k as usize];
                 if next == crate::facet_mesh::NO_NEIGHBOR {
                     continue;
                 }
-                if let Some(other) = s.slots[side].get(next) {
+                if let Some(first) = s.slots[side].get(next) {
+                    let other = continuing_piece(s, first, side as u8, &hit);
                     union(&mut s.nodes, own, other);
                 }
             }
         }
     }
-    let mut start = 0;
-    for n in s.nodes.iter_mut() {
-        n.hit_start = start;
-        start += n.hit_count;
-        n.hit_count = 0;
+}
+
+/// The piece of a neighbouring triangle (its first node `first`) that the curve of `hit` goes
+/// on into: the one holding a hit with the same triangle of the other surface, else the one
+/// holding the segment nearest to `hit`'s.
+fn continuing_piece(s: &Scratch, first: u32, side: u8, hit: &Hit) -> u32 {
+    let mut piece = first;
+    if s.nodes[first as usize].next_piece == crate::triangle_pieces::NO_PIECE {
+        return first;
     }
-    s.node_hits.clear();
-    s.node_hits.resize(start as usize, 0);
-    for (h, hit) in s.hits.iter().enumerate() {
-        for (side, tri) in [(0, hit.ta), (1, hit.tb)] {
-            if let Some(id) = s.slots[side].get(tri) {
-                let n = &mut s.nodes[id as usize];
-                s.node_hits[(n.hit_start + n.hit_count) as usize] = h as u32;
-                n.hit_count += 1;
+    let other = |h: &Hit| if side == 0 { h.tb } else { h.ta };
+    let mut nearest = (f64::INFINITY, first);
+    while piece != crate::triangle_pieces::NO_PIECE {
+        let n = &s.nodes[piece as usize];
+        for &h in &s.node_hits[n.hit_start as usize..(n.hit_start + n.hit_count) as usize] {
+            let next = &s.hits[h as usize];
+            if other(next) == other(hit) {
+                return piece;
+            }
+            let gap = [next.s0, next.s1]
+                .iter()
+                .flat_map(|p| [(p - hit.s0).norm(), (p - hit.s1).norm()])
+                .fold(f64::INFINITY, f64::min);
+            if gap < nearest.0 {
+                nearest = (gap, piece);
             }
         }
+        piece = n.next_piece;
     }
+    nearest.1
 }
 
 /// A triangle's corners in A's frame.
@@ -287,16 +333,10 @@ pub(crate) fn label_regions(s: &mut Scratch) -> usize {
     count as usize
 }
 
-fn region_of_hit(s: &Scratch, hit: &Hit) -> usize {
-    s.slots[0]
-        .get(hit.ta)
-        .map_or(0, |id| s.nodes[id as usize].region as usize)
-}
-
 fn sum_loops(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     for h in 0..s.hits.len() {
         let hit = s.hits[h];
-        let r = region_of_hit(s, &hit);
+        let r = s.nodes[s.hit_nodes[h][0] as usize].region as usize;
         let sums = &mut s.regions[r];
         if !sums.seen {
             sums.seen = true;

@@ -16,6 +16,7 @@ use crate::contact_region::{RelativePose, corners_in_a, other_plane, union};
 use crate::facet_mesh::FacetMesh;
 use crate::patches::PatchIndex;
 use crate::scratch::{NodeMarks, RegionNode, Scratch};
+use crate::triangle_pieces::NO_PIECE;
 use contact_core::Vector3;
 
 /// Floods each surface from its crossing triangles into the triangles inside the other solid,
@@ -58,8 +59,11 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
     ];
     for id in 0..crossing_count as u32 {
         let node = s.nodes[id as usize];
+        // Edge k, both its corners inside, and (in a triangle split into pieces) this piece's.
         let both_inside = |k: usize| {
-            node.inside_corners & (1 << k) != 0 && node.inside_corners & (1 << ((k + 1) % 3)) != 0
+            node.edges & (1 << k) != 0
+                && node.inside_corners & (1 << k) != 0
+                && node.inside_corners & (1 << ((k + 1) % 3)) != 0
         };
         if !(both_inside(0) || both_inside(1) || both_inside(2)) {
             // No edge to flood across: most crossing triangles, so skip the set-up.
@@ -171,7 +175,9 @@ impl Flood<'_> {
         }
         if let Some(mark) = self.slots.get(tri) {
             let owner = mark & !INSIDE_BIT;
-            if owner != self.seed {
+            if mark & INSIDE_BIT == 0 && self.nodes[owner as usize].next_piece != NO_PIECE {
+                self.join_pieces_facing(tri, owner);
+            } else if owner != self.seed {
                 union(self.nodes, self.seed, owner);
             }
             return;
@@ -207,6 +213,26 @@ impl Flood<'_> {
                 block_up(patches, self.blocked, leaf);
                 self.queue.push(tri);
             }
+        }
+    }
+
+    /// A crossing triangle split into pieces, reached by the flood: the seed joins the pieces
+    /// whose edges face what the seed has taken (or the seed's own triangle).
+    fn join_pieces_facing(&mut self, tri: u32, first: u32) {
+        let seed_tri = self.nodes[self.seed as usize].tri;
+        let mut piece = first;
+        while piece != NO_PIECE {
+            let edges = self.nodes[piece as usize].edges;
+            let facing = (0..3).any(|k| {
+                let nb = self.mesh.neighbors[tri as usize][k];
+                edges & (1 << k) != 0
+                    && nb != crate::facet_mesh::NO_NEIGHBOR
+                    && (nb == seed_tri || self.slots.get(nb) == Some(self.seed | INSIDE_BIT))
+            });
+            if facing && piece != self.seed {
+                union(self.nodes, self.seed, piece);
+            }
+            piece = self.nodes[piece as usize].next_piece;
         }
     }
 

@@ -88,6 +88,7 @@ mod solid_on_face;
 pub mod surface_sums;
 pub mod tessellate;
 pub mod triangle_pair;
+pub mod triangle_pieces;
 
 pub use contact_core::mesh_file::{self, obj, stl};
 pub use engine::FacetEngine;

@@ -100,6 +100,11 @@ pub(crate) struct RegionNode {
     pub hit_count: u32,
     /// Bit k set: corner k lies inside the other solid (crossing triangles only).
     pub inside_corners: u8,
+    /// Bit k set: a flood across edge k belongs to this node (all three unless the triangle is
+    /// split into pieces, see [`crate::triangle_pieces`]).
+    pub edges: u8,
+    /// The triangle's next piece, or [`crate::triangle_pieces::NO_PIECE`].
+    pub next_piece: u32,
 }
 
 /// Running sums of one region.
@@ -140,6 +145,10 @@ pub(crate) struct Scratch {
     pub blocked: [NodeMarks; 2],
     pub nodes: Vec<RegionNode>,
     pub node_hits: Vec<u32>,
+    /// Per hit, the node (piece) it lies on in A and in B.
+    pub hit_nodes: Vec<[u32; 2]>,
+    /// Buffers for splitting crossing triangles into pieces.
+    pub pieces: crate::triangle_pieces::PieceScratch,
     pub queue: Vec<u32>,
     /// Curved triangles whose smooth surface may reach below a plane (`crate::plane_support`).
     pub curved: Vec<u32>,

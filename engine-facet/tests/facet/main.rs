@@ -7,6 +7,7 @@ mod engine;
 mod far_from_plane;
 mod grazing_corner;
 mod implied_ellipsoid;
+mod mesh_regions;
 mod obj_files;
 mod patches;
 mod pinned;

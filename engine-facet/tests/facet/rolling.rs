@@ -4,15 +4,13 @@
 //! region's centroid crosses from one facet to the next), every sample stays within the chord
 //! deviation of the exact engine's contact, and a second region appears at depth zero.
 
-use crate::common::{engine, prepare, query_pair};
-use contact_core::geometry::TriangleMesh;
+use crate::common::{engine, prepare, query_pair, u_shape};
 use contact_core::geometry::{Cuboid, Cylinder, Plane, Torus};
 use contact_core::nalgebra::Unit;
 use contact_core::{
-    Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3,
+    Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3,
     PreparedPair, UnitQuaternion, Vector3,
 };
-use std::sync::Arc as Shared;
 
 fn plane() -> Geometry {
     Geometry::Plane(Plane::unbounded())
@@ -93,59 +91,6 @@ fn a_tilting_torus_keeps_a_continuous_contact() {
     };
     let span = 0.3;
     roll("torus", torus, pose, span, 0.25 * span / 4000.0);
-}
-
-/// A U-shaped prism: the profile (x, z) of two legs 0.1 wide and 0.3 tall under a 0.1 bridge,
-/// 0.5 across, extruded 0.1 along y; legs down, their bottoms at z = 0.
-fn u_shape() -> Geometry {
-    let profile = [
-        (0.0, 0.0),
-        (0.1, 0.0),
-        (0.1, 0.3),
-        (0.4, 0.3),
-        (0.4, 0.0),
-        (0.5, 0.0),
-        (0.5, 0.4),
-        (0.0, 0.4),
-    ];
-    let n = profile.len() as u32;
-    let vertices: Vec<Point3> = [0.0, 0.1]
-        .iter()
-        .flat_map(|&y| profile.iter().map(move |&(x, z)| Point3::new(x, y, z)))
-        .collect();
-    // The profile as six triangles (counter-clockwise in (x, z)), each cap and each side quad
-    // oriented to its outward normal.
-    let caps = [
-        [0, 1, 2],
-        [0, 2, 7],
-        [7, 2, 3],
-        [7, 3, 6],
-        [3, 4, 5],
-        [3, 5, 6],
-    ];
-    let mut triangles = Vec::new();
-    let mut push = |t: [u32; 3], outward: Vector3| {
-        let [a, b, c] = t.map(|k| vertices[k as usize]);
-        let normal = (b - a).cross(&(c - a));
-        triangles.push(if normal.dot(&outward) > 0.0 {
-            t
-        } else {
-            [t[0], t[2], t[1]]
-        });
-    };
-    for t in caps {
-        push(t, -Vector3::y());
-        push(t.map(|k| k + n), Vector3::y());
-    }
-    for k in 0..n {
-        let m = (k + 1) % n;
-        let (a, b) = (profile[k as usize], profile[m as usize]);
-        // Counter-clockwise profile: the outward normal of edge a→b is (dz, −dx) in (x, z).
-        let outward = Vector3::new(b.1 - a.1, 0.0, -(b.0 - a.0));
-        push([k, m, m + n], outward);
-        push([k, m + n, k + n], outward);
-    }
-    Geometry::Mesh(Shared::new(TriangleMesh::new(vertices, triangles).unwrap()))
 }
 
 #[test]
