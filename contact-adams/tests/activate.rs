@@ -391,9 +391,25 @@ fn unknown_ids_and_classes_are_errors_at_the_command() {
         ),
         "{errors:?}"
     );
-    let errors = read_errors("p.adm\nout\ndeactivate/joint, range = 1, 2\n");
+    // RANGE: two ids, in order, with an element of the class between them.
+    let errors = read_errors("p.adm\nout\ndeactivate/joint, range = 2, 1\n");
+    assert_eq!(
+        errors,
+        [
+            "data/p.acf:3:30: error: DEACTIVATE/JOINT: RANGE = 2, 1: the last id must be >= the first"
+        ]
+    );
+    let errors = read_errors("p.adm\nout\ndeactivate/joint, range = 5, 9\n");
+    assert_eq!(
+        errors,
+        [
+            "data/p.acf:3:27: error: DEACTIVATE/JOINT: RANGE = 5, 9: the model has no JOINT with an id in it"
+        ]
+    );
+    let errors = read_errors("p.adm\nout\ndeactivate/joint, range = 1\n");
+    assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(
-        errors[0].contains("DEACTIVATE/JOINT: RANGE is not supported"),
+        errors[0].contains("RANGE takes two ids (first, last), got 1"),
         "{errors:?}"
     );
     // `run` refuses the same, with the same message.
@@ -410,6 +426,28 @@ fn unknown_ids_and_classes_are_errors_at_the_command() {
         "{:#?}",
         sink.diagnostics
     );
+}
+
+/// `RANGE = first, last` switches every element of the class with an id in between: the
+/// spring switched off by RANGE runs exactly as switched off by ID.
+#[test]
+fn a_range_switches_the_elements_between_its_ids() {
+    let by_range = SPRING_ACF
+        .replace(
+            "deactivate/sforce, id = 1",
+            "deactivate/sforce, range = 1, 4",
+        )
+        .replace("activate/sforce, id = 1", "activate/sforce, range = 1, 1");
+    assert_ne!(by_range, SPRING_ACF);
+    let (by_id, result) = run("spring_by_id", SPRING, SPRING_ACF);
+    result.unwrap();
+    let (by_range, result) = run("spring_by_range", SPRING, &by_range);
+    result.unwrap();
+    assert_eq!(by_id.frames.len(), by_range.frames.len());
+    for (a, b) in by_id.frames.iter().zip(&by_range.frames) {
+        assert_eq!(a.t, b.t);
+        assert_eq!(a.parts, b.parts, "t = {}", a.t);
+    }
 }
 
 #[test]

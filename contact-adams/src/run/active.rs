@@ -71,6 +71,20 @@ impl ElementClass {
         }
     }
 
+    /// The ids of this class's elements in `model`, ascending.
+    pub fn ids_of(self, model: &Model) -> Vec<u32> {
+        let mut ids: Vec<u32> = match self {
+            Self::Joint => model.joints.iter().map(|e| e.id).collect(),
+            Self::Jprim => model.primitives.iter().map(|e| e.id).collect(),
+            Self::Gcon => model.gcons.iter().map(|e| e.id).collect(),
+            Self::Motion => model.motions.iter().map(|e| e.id).collect(),
+            Self::Sforce => model.sforces.iter().map(|e| e.id).collect(),
+            Self::Contact => model.contacts.iter().map(|e| e.id).collect(),
+        };
+        ids.sort_unstable();
+        ids
+    }
+
     /// The keywords of every class that can be switched, comma-separated.
     pub fn list() -> String {
         Self::ALL.map(Self::keyword).join(", ")

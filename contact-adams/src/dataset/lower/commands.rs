@@ -106,8 +106,9 @@ fn linear(r: &Reader<'_>) -> Result<Command, Problem> {
 
 /// ACTIVATE/DEACTIVATE/class, ID = ids: a class the run can switch (JOINT, JPRIM, GCON,
 /// MOTION, SFORCE, CONTACT) and ids of that class the model has. Any other class, an id the
-/// model does not have, and RANGE are errors at the argument, so `check` reports what `run`
-/// would refuse.
+/// model does not have, and a RANGE holding none of them are errors at the argument, so
+/// `check` reports what `run` would refuse. `RANGE = first, last` adds every element of the
+/// class with an id in between.
 fn activate(
     low: &mut Lowering,
     model: &Model,
@@ -151,15 +152,17 @@ fn activate(
             ),
         )
     })?;
-    if r.flag("RANGE") {
-        return Err(Problem::new(
-            r.loc_of("RANGE"),
-            format!("{verb}/{keyword}: RANGE is not supported: list the elements with ID"),
-        ));
-    }
-    let ids = r.ids("ID")?.ok_or_else(|| r.missing("ID"))?;
-    let mut known = Vec::new();
+    let range = range_ids(model, r, class, &format!("{verb}/{keyword}"))?;
+    let ids = match (r.ids("ID")?, range.is_empty()) {
+        (Some(ids), _) => ids,
+        (None, false) => Vec::new(),
+        (None, true) => return Err(r.missing("ID or RANGE")),
+    };
+    let mut known = range;
     for (id, loc) in ids {
+        if known.contains(&id) {
+            continue;
+        }
         if class.exists(model, id) {
             known.push(id);
         } else {
@@ -174,6 +177,51 @@ fn activate(
         class: class.keyword(),
         ids: known,
     })
+}
+
+/// `RANGE = first, last`: every element of the class the model has with an id from `first` to
+/// `last` (inclusive), as Adams reads it; none when RANGE is not given. Two ids, `first ≤ last`
+/// and at least one element in between, else an error at the argument.
+fn range_ids(
+    model: &Model,
+    r: &Reader<'_>,
+    class: ElementClass,
+    label: &str,
+) -> Result<Vec<u32>, Problem> {
+    let Some(bounds) = r.ids("RANGE")? else {
+        return Ok(Vec::new());
+    };
+    let loc = r.loc_of("RANGE");
+    let [(first, _), (last, last_loc)] = bounds[..] else {
+        return Err(Problem::new(
+            loc,
+            format!(
+                "{label}: RANGE takes two ids (first, last), got {}",
+                bounds.len()
+            ),
+        ));
+    };
+    if last < first {
+        return Err(Problem::new(
+            last_loc,
+            format!("{label}: RANGE = {first}, {last}: the last id must be >= the first"),
+        ));
+    }
+    let ids: Vec<u32> = class
+        .ids_of(model)
+        .into_iter()
+        .filter(|id| (first..=last).contains(id))
+        .collect();
+    if ids.is_empty() {
+        return Err(Problem::new(
+            loc,
+            format!(
+                "{label}: RANGE = {first}, {last}: the model has no {} with an id in it",
+                class.keyword()
+            ),
+        ));
+    }
+    Ok(ids)
 }
 
 /// The model file a command file names (`file/model=name` or the first line) should be the
