@@ -478,20 +478,20 @@ CONTACT/1, IGEOM = 2, JGEOM = 1, IMPACT\nEND\n"
     assert_eq!(answers[0], answers[1]);
 }
 
-/// A VARIABLE whose FUNCTION calls a function the solver does not evaluate (FX) is an error
-/// only where its value is needed: unused, it is a warning (and so is a VARIABLE reading it);
-/// read by an SFORCE, the SFORCE is the error, naming why.
+/// A VARIABLE whose FUNCTION calls a function the solver does not evaluate (CHEBY) is an
+/// error only where its value is needed: unused, it is a warning (and so is a VARIABLE reading
+/// it); read by an SFORCE, the SFORCE is the error, naming why.
 #[test]
 fn an_unsupported_function_is_an_error_only_where_its_value_is_needed() {
     let base = "spring\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1, CM = 2, IP = 1, 1, 1\n\
-MARKER/2, PART = 2\nVARIABLE/1, FUNCTION = FX(2, 1)\nVARIABLE/2, FUNCTION = 2*VARVAL(1)\n\
+MARKER/2, PART = 2\nVARIABLE/1, FUNCTION = CHEBY(TIME, 0, 1)\nVARIABLE/2, FUNCTION = 2*VARVAL(1)\n\
 SFORCE/1, TRANSLATIONAL, I = 2, J = 1, FUNCTION = -10*DZ(2, 1)\n";
     let unused = dataset::read_str(&format!("{base}END\n"), data_dir().join("v.adm"), None);
     let p = printed(&unused);
     assert!(!unused.has_errors(), "{p:#?}");
     assert!(
         p.iter().any(|l| l.starts_with("data/v.adm:6:")
-            && l.ends_with("warning: VARIABLE/1: FUNCTION: unsupported function FX: the variable has no value: an error wherever it is used")),
+            && l.ends_with("warning: VARIABLE/1: FUNCTION: unsupported function CHEBY: the variable has no value: an error wherever it is used")),
         "{p:#?}"
     );
     assert!(
@@ -511,4 +511,39 @@ SFORCE/1, TRANSLATIONAL, I = 2, J = 1, FUNCTION = -10*DZ(2, 1)\n";
             && l.contains("error: SFORCE/2: FUNCTION: VARVAL(2): VARIABLE/2 has no value here")),
         "{p:#?}"
     );
+}
+
+/// The net force at a marker (FX … TM) and element forces are REQUEST output: an SFORCE that
+/// reads one, directly or through a VARIABLE, is an error at check naming it; a VARIABLE
+/// holding one that only a REQUEST reads is no error.
+#[test]
+fn element_forces_in_an_sforce_are_errors_at_check() {
+    let base = "spring\nPART/1, GROUND\nMARKER/1, PART = 1\nPART/2, MASS = 1, CM = 2, IP = 1, 1, 1\n\
+MARKER/2, PART = 2\nVARIABLE/1, FUNCTION = FX(2, 1)\nVARIABLE/2, FUNCTION = 2*VARVAL(1)\n\
+SFORCE/1, TRANSLATIONAL, I = 2, J = 1, FUNCTION = -10*DZ(2, 1)\n";
+    let requested = dataset::read_str(
+        &format!("{base}REQUEST/1, F2 = VARVAL(2)\\F3 = FM(2, 1)\nEND\n"),
+        data_dir().join("v.adm"),
+        None,
+    );
+    assert!(!requested.has_errors(), "{:#?}", printed(&requested));
+    for (function, what) in [
+        ("VARVAL(2)", "FX (through VARIABLE/1)"),
+        ("3 * TM(2, 1)", "TM"),
+        ("JOINT(1, 0, 2, 0)", "JOINT"),
+    ] {
+        let used = dataset::read_str(
+            &format!("{base}SFORCE/2, TRANSLATIONAL, I = 2, J = 1, FUNCTION = {function}\nEND\n"),
+            data_dir().join("v.adm"),
+            None,
+        );
+        let p = printed(&used);
+        assert!(
+            p.iter().any(|l| l.starts_with("data/v.adm:9:")
+                && l.contains(&format!(
+                    "error: SFORCE/2: FUNCTION reads {what}: element forces"
+                ))),
+            "{function}: {p:#?}"
+        );
+    }
 }

@@ -132,10 +132,10 @@ fn measures_go_to_the_context_with_their_markers() {
 
 #[test]
 fn unsupported_functions_are_errors_naming_them() {
-    let e = parse_expr("FX(0201,0101)").unwrap_err();
+    let e = parse_expr("SENVAL(0201)").unwrap_err();
     assert_eq!(
         (e.offset, e.to_string().as_str()),
-        (0, "unsupported function FX")
+        (0, "unsupported function SENVAL")
     );
     let e = parse_expr("2 * CHEBY(TIME, 0, 1)").unwrap_err();
     assert_eq!(

@@ -135,6 +135,60 @@ impl Measure {
     }
 }
 
+/// The net force or torque at a marker, `FX(i[, j[, k]])` … `TM(i[, j])`: the sum of what the
+/// force and constraint elements between markers i and j (every element acting at i when j is
+/// 0 or omitted, as Adams Solver (C++) defines it) apply at marker i, the torque about i's
+/// origin, components in k's axes (ground when 0 or omitted).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ForceMeasure {
+    /// `FX(i[, j[, k]])`.
+    Fx,
+    /// `FY(i[, j[, k]])`.
+    Fy,
+    /// `FZ(i[, j[, k]])`.
+    Fz,
+    /// `FM(i[, j])`: the force's magnitude.
+    Fm,
+    /// `TX(i[, j[, k]])`.
+    Tx,
+    /// `TY(i[, j[, k]])`.
+    Ty,
+    /// `TZ(i[, j[, k]])`.
+    Tz,
+    /// `TM(i[, j])`: the torque's magnitude.
+    Tm,
+}
+
+impl ForceMeasure {
+    /// The Adams name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Fx => "FX",
+            Self::Fy => "FY",
+            Self::Fz => "FZ",
+            Self::Fm => "FM",
+            Self::Tx => "TX",
+            Self::Ty => "TY",
+            Self::Tz => "TZ",
+            Self::Tm => "TM",
+        }
+    }
+
+    /// The value from the force and torque at the marker, both in k's axes.
+    pub fn of(self, force: &contact_core::Vector3, torque: &contact_core::Vector3) -> f64 {
+        match self {
+            Self::Fx => force.x,
+            Self::Fy => force.y,
+            Self::Fz => force.z,
+            Self::Fm => force.norm(),
+            Self::Tx => torque.x,
+            Self::Ty => torque.y,
+            Self::Tz => torque.z,
+            Self::Tm => torque.norm(),
+        }
+    }
+}
+
 /// A force element whose force a function can read: `NAME(id, jflag, component, rm)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ElementKind {
@@ -168,6 +222,8 @@ pub enum Callee {
     VarVal,
     /// A force element's force (arguments are ids and flags).
     Element(ElementKind),
+    /// The net force or torque at a marker (arguments are marker ids).
+    ForceMeasure(ForceMeasure),
     /// `ORIENT(type, component, i, j)`: an orientation of marker i relative to marker j.
     Orient,
     /// `USER(r1, …, r30)`: constants for a user routine; not evaluable.
@@ -219,6 +275,14 @@ pub const FUNCTIONS: &[(&str, Callee, usize, usize)] = &[
     ("AX", Callee::Measure(Measure::Ax), 1, 2),
     ("AY", Callee::Measure(Measure::Ay), 1, 2),
     ("AZ", Callee::Measure(Measure::Az), 1, 2),
+    ("FX", Callee::ForceMeasure(ForceMeasure::Fx), 1, 3),
+    ("FY", Callee::ForceMeasure(ForceMeasure::Fy), 1, 3),
+    ("FZ", Callee::ForceMeasure(ForceMeasure::Fz), 1, 3),
+    ("FM", Callee::ForceMeasure(ForceMeasure::Fm), 1, 2),
+    ("TX", Callee::ForceMeasure(ForceMeasure::Tx), 1, 3),
+    ("TY", Callee::ForceMeasure(ForceMeasure::Ty), 1, 3),
+    ("TZ", Callee::ForceMeasure(ForceMeasure::Tz), 1, 3),
+    ("TM", Callee::ForceMeasure(ForceMeasure::Tm), 1, 2),
     ("VARVAL", Callee::VarVal, 1, 1),
     ("MOTION", Callee::Element(ElementKind::Motion), 4, 4),
     ("JOINT", Callee::Element(ElementKind::Joint), 4, 4),
@@ -247,6 +311,8 @@ pub enum Expr {
     VarVal(u32),
     /// A force element's force `NAME(id, jflag, comp, rm)`.
     Element(ElementKind, [u32; 4]),
+    /// The net force or torque at a marker, `FX(i, j, k)` … (markers as written).
+    ForceMeasure(ForceMeasure, Vec<u32>),
     /// `ORIENT(type, component, i, j)`, the four integers as written. Type 27 is the Euler
     /// parameters of i's axes relative to j's, components 1..=4 = e0 (scalar), e1, e2, e3;
     /// the dataset check refuses any other type.
@@ -271,6 +337,7 @@ impl Expr {
             | Self::Measure(..)
             | Self::VarVal(_)
             | Self::Element(..)
+            | Self::ForceMeasure(..)
             | Self::Orient(_)
             | Self::User(_) => {}
         }
@@ -285,6 +352,7 @@ impl Expr {
                 Self::Measure(..)
                     | Self::VarVal(_)
                     | Self::Element(..)
+                    | Self::ForceMeasure(..)
                     | Self::Orient(_)
                     | Self::User(_)
             ) {
@@ -298,7 +366,7 @@ impl Expr {
     pub fn marker_ids(&self) -> Vec<u32> {
         let mut ids = Vec::new();
         self.walk(&mut |e| match e {
-            Self::Measure(_, markers) => {
+            Self::Measure(_, markers) | Self::ForceMeasure(_, markers) => {
                 ids.extend(markers.iter().copied().filter(|m| *m != 0));
             }
             Self::Orient([_, _, i, j]) => ids.extend([*i, *j].into_iter().filter(|m| *m != 0)),

@@ -1,6 +1,6 @@
 //! Evaluating expressions against a [`Context`] that supplies time and model state.
 
-use super::ast::{BinOp, ElementKind, Expr, MathFn, Measure};
+use super::ast::{BinOp, ElementKind, Expr, ForceMeasure, MathFn, Measure};
 use contact_core::laws::Step;
 use thiserror::Error;
 
@@ -15,6 +15,11 @@ pub trait Context {
     fn variable(&self, id: u32) -> Result<f64, EvalError>;
     /// A force element's force component: `NAME(id, jflag, comp, rm)`.
     fn element_force(&self, kind: ElementKind, args: [u32; 4]) -> Result<f64, EvalError>;
+    /// The net force or torque at a marker, `FX(i, j, k)` …; by default
+    /// [`EvalError::NeedsState`] (only request output, which has the reactions, evaluates it).
+    fn force_measure(&self, measure: ForceMeasure, _markers: &[u32]) -> Result<f64, EvalError> {
+        Err(EvalError::NeedsState(measure.name()))
+    }
     /// `ORIENT(type, component, i, j)`; by default [`EvalError::NeedsState`] (only request
     /// output evaluates it).
     fn orient(&self, _args: [u32; 4]) -> Result<f64, EvalError> {
@@ -214,6 +219,7 @@ impl Expr {
             Self::Measure(m, markers) => ctx.measure(*m, markers)?,
             Self::VarVal(id) => ctx.variable(*id)?,
             Self::Element(kind, args) => ctx.element_force(*kind, *args)?,
+            Self::ForceMeasure(m, markers) => ctx.force_measure(*m, markers)?,
             Self::Orient(args) => ctx.orient(*args)?,
             Self::User(_) => return Err(EvalError::User),
         })

@@ -14,10 +14,12 @@
 
 mod ast;
 mod eval;
+mod jet;
 mod parse;
 
-pub use ast::{BinOp, Callee, ElementKind, Expr, FUNCTIONS, MathFn, Measure};
+pub use ast::{BinOp, Callee, ElementKind, Expr, FUNCTIONS, ForceMeasure, MathFn, Measure};
 pub use eval::{Context, EvalError, TimeOnly};
+pub use jet::Jet;
 pub use parse::{ExprError, ExprErrorKind, MAX_DEPTH, parse_expr};
 
 #[cfg(test)]

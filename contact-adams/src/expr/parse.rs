@@ -340,6 +340,7 @@ impl Parser {
         Ok(match callee {
             Callee::Math(f) => Expr::Math(f, args),
             Callee::Measure(m) => Expr::Measure(m, ids(&args)?),
+            Callee::ForceMeasure(m) => Expr::ForceMeasure(m, ids(&args)?),
             Callee::VarVal => Expr::VarVal(ids(&args)?[0]),
             Callee::Element(kind) => {
                 let v = ids(&args)?;

@@ -347,13 +347,14 @@ pub fn lower_with_routines(
     let part_count = parts.len() + 1;
     for s in &model.sforces {
         let mut uses_element_forces = false;
-        s.function
-            .walk(&mut |e| uses_element_forces |= matches!(e, Expr::Element(..)));
+        s.function.walk(&mut |e| {
+            uses_element_forces |= matches!(e, Expr::Element(..) | Expr::ForceMeasure(..))
+        });
         if uses_element_forces {
             return Err(unsupported(
                 &s.origin,
                 format!(
-                    "SFORCE/{}: FUNCTION reads an element's force (JOINT/MOTION/SFORCE): not supported by the solver",
+                    "SFORCE/{}: FUNCTION reads an element's force (JOINT/MOTION/SFORCE, FX … TM): not supported by the solver",
                     s.id
                 ),
             ));
@@ -500,12 +501,16 @@ pub fn inertia_at_cm(
     at_im_in_cm_axes - (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * mass
 }
 
-/// A MOTION's time function with its first two derivatives by central differences:
-/// `h = 1e-3·max(1, |t|)` for the first (error ~h²·f‴/6) and the second (error ~h²·f⁗/12,
-/// round-off ~4ε|f|/h²), so both are good to ~1e-6 relative for smooth functions of order-1
-/// time scale.
+/// A MOTION's time function with its first two derivatives: those of its jet
+/// ([`Expr::time_jet`], exact to round-off) where every function in it has a rule, else
+/// central differences, `h = 1e-3·max(1, |t|)` for the first (error ~h²·f‴/6) and the second
+/// (error ~h²·f⁗/12, round-off ~4ε|f|/h²), good to ~1e-6 relative for smooth functions of
+/// order-1 time scale.
 fn time_function(function: Expr) -> TimeFunction {
     Arc::new(move |t: f64| {
+        if let Some(jet) = function.time_jet(t) {
+            return (jet.value, jet.first, jet.second);
+        }
         let f = |t: f64| function.eval(&TimeOnly(t)).unwrap_or(f64::NAN);
         let h = 1e-3 * t.abs().max(1.0);
         let (minus, here, plus) = (f(t - h), f(t), f(t + h));

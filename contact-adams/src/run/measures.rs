@@ -29,7 +29,7 @@ pub struct StateContext<'a> {
 }
 
 /// The deepest VARVAL nesting allowed before a cycle is assumed.
-const MAX_VARIABLE_DEPTH: usize = 64;
+pub(crate) const MAX_VARIABLE_DEPTH: usize = 64;
 
 impl StateContext<'_> {
     fn pose(&self, id: u32) -> Result<Isometry3, EvalError> {

@@ -10,6 +10,7 @@ pub mod motion_level;
 pub mod output;
 pub mod plan;
 pub mod redundancy;
+mod request_context;
 pub mod request_file;
 pub mod requests;
 pub mod sforce;

@@ -67,6 +67,15 @@ impl Integrals {
         self.function.eval(&TimeOnly(t)).unwrap_or(f64::NAN)
     }
 
+    /// The function's TIME derivative: its jet's, else a central difference.
+    fn slope(&self, t: f64) -> f64 {
+        if let Some(jet) = self.function.time_jet(t) {
+            return jet.first;
+        }
+        let h = 1e-3 * t.abs().max(1.0);
+        (self.value(t + h) - self.value(t - h)) / (2.0 * h)
+    }
+
     fn over(&self, a: f64, b: f64) -> (f64, f64) {
         let f = |s: f64| self.value(s);
         let whole = rule(&f, a, b);
@@ -124,8 +133,7 @@ pub fn integrated_motion(
         MotionLevel::Displacement => None,
         MotionLevel::Velocity => Some(Arc::new(move |t: f64| {
             let (f, _) = integrals.at(t);
-            let h = 1e-3 * t.abs().max(1.0);
-            let slope = (integrals.value(t + h) - integrals.value(t - h)) / (2.0 * h);
+            let slope = integrals.slope(t);
             (ic_displacement + f, integrals.value(t), slope)
         })),
         MotionLevel::Acceleration => Some(Arc::new(move |t: f64| {

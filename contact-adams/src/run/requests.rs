@@ -6,23 +6,24 @@
 //! | DISPLACEMENT (`D`) | `x y z` of I's origin relative to J's, in RM's axes; `ψ θ φ`, the body-fixed 3-1-3 Euler angles of I's axes relative to J's, in degrees (θ in [0°, 180°], ψ and φ in (−180°, 180°]) |
 //! | VELOCITY (`V`) | `v_I − v_J` and `ω_I − ω_J`, in RM's axes (derivatives taken in ground) |
 //! | ACCELERATION (`A`) | `a_I − a_J` and `α_I − α_J`, in RM's axes |
-//! | FORCE (`F`) | the force and torque (about I's origin) on I's part from every joint, JPRIM and GCON between markers I and J, in RM's axes |
+//! | FORCE (`F`) | the force and torque (about I's origin) at marker I from every JOINT, JPRIM, GCON, MOTION and SFORCE between markers I and J (J omitted: the action-only SFORCEs at I), in RM's axes |
 //! | F2 … F8 | F2 F3 F4 F6 F7 F8 (F1 and F5 are not written; a component not given is 0) |
 //!
 //! RM omitted (or 0) means ground. In expressions, `ORIENT(27, k, i, j)` is the k-th Euler
 //! parameter (e0 scalar first) of I's axes relative to J's, and `JOINT(id, jflag, comp, rm)`
-//! the joint's reaction on its I marker (jflag 0) or J marker (1): comp 1 |F|, 2–4 F, 5 |T|,
-//! 6–8 T (about that marker's origin), in rm's axes (0: ground). Accelerations and reactions
-//! come from the frame's [`FrameDynamics`]: the solution of the equations of motion at the
-//! frame's state.
+//! (and `MOTION`, `SFORCE`) the element's force on its I marker (jflag 0) or J marker (1):
+//! comp 1 |F|, 2–4 F, 5 |T|, 6–8 T (about that marker's origin), in rm's axes (0: ground);
+//! `FX(i, j, k)` … `TM(i, j)` the net force and torque at a marker (see `request_context`).
+//! Accelerations and reactions come from the frame's
+//! [`FrameDynamics`](contact_solver::frame::FrameDynamics): the solution of the equations of
+//! motion at the frame's state.
 
 use super::frames::MarkerTable;
 use super::measures::StateContext;
-use crate::expr::{Context, ElementKind, EvalError, Expr, Measure, parse_expr};
-use crate::model::{Freedom, Model, SForce};
-use contact_core::{Isometry3, UnitQuaternion, Vector3};
-use contact_solver::frame::FrameDynamics;
-use contact_solver::mbs::PartState;
+use super::request_context::RequestContext;
+use crate::expr::{EvalError, Expr, parse_expr};
+use crate::model::{Model, MotionTarget, SForce};
+use contact_core::{UnitQuaternion, Vector3};
 use contact_solver::simulate::Frame;
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -80,9 +81,6 @@ pub struct RequestSpec {
     /// The expressions of F2 F3 F4 F6 F7 F8 (columns 1–6), `None` where not given or not
     /// evaluable (the check warned).
     pub functions: [Option<Expr>; 6],
-    /// FORCE: the constraint elements between I and J, as (index into the frame's
-    /// reactions, whether I is the element's I marker).
-    pub elements: Vec<(usize, bool)>,
 }
 
 /// Every REQUEST of a model, with what evaluating them needs.
@@ -94,6 +92,10 @@ pub struct RequestSet {
     variables: Arc<BTreeMap<u32, Expr>>,
     /// JOINT id → index into the frame's reactions (and the joint's I, J markers).
     joints: BTreeMap<u32, (usize, u32, u32)>,
+    /// MOTION id → index into the frame's reactions.
+    motions: BTreeMap<u32, usize>,
+    /// Every constraint element with markers: (index into the frame's reactions, I, J).
+    constraints: Vec<(usize, u32, u32)>,
     /// SFORCE id → the element (markers, freedom, FUNCTION), for `SFORCE(id, …)`.
     sforces: BTreeMap<u32, SForce>,
     /// The SFORCEs switched off by DEACTIVATE: their force reads zero.
@@ -157,6 +159,19 @@ impl RequestSet {
         for g in &model.gcons {
             element_markers.insert(format!("GCON/{}", g.id), (g.i, g.j));
         }
+        for m in &model.motions {
+            let markers = match m.target {
+                MotionTarget::Joint { joint, .. } => model
+                    .joints
+                    .iter()
+                    .find(|j| j.id == joint)
+                    .map(|j| (j.i, j.j)),
+                MotionTarget::Markers { i, j, .. } => Some((i, j)),
+            };
+            if let Some(markers) = markers {
+                element_markers.insert(format!("MOTION/{}", m.id), markers);
+            }
+        }
         let placed: Vec<(usize, String, u32, u32)> = constraint_names
             .enumerate()
             .filter_map(|(k, name)| {
@@ -171,6 +186,11 @@ impl RequestSet {
                 Some((id, (*k, *i, *j)))
             })
             .collect();
+        let motions = placed
+            .iter()
+            .filter_map(|(k, name, _, _)| Some((name.strip_prefix("MOTION/")?.parse().ok()?, *k)))
+            .collect();
+        let constraints = placed.iter().map(|(k, _, i, j)| (*k, *i, *j)).collect();
         let requests = model
             .requests
             .iter()
@@ -189,18 +209,6 @@ impl RequestSet {
                     }
                 }
                 let [i, j, rm] = r.markers.map(|m| m.unwrap_or(0));
-                let elements = if kind == RequestKind::Force {
-                    placed
-                        .iter()
-                        .filter_map(|(k, _, ei, ej)| match (*ei, *ej) {
-                            (a, b) if a == i && b == j => Some((*k, true)),
-                            (a, b) if a == j && b == i => Some((*k, false)),
-                            _ => None,
-                        })
-                        .collect()
-                } else {
-                    Vec::new()
-                };
                 RequestSpec {
                     id: r.id,
                     kind,
@@ -211,7 +219,6 @@ impl RequestSet {
                     },
                     comment: r.comment.clone().unwrap_or_default(),
                     functions,
-                    elements,
                 }
             })
             .collect();
@@ -220,6 +227,8 @@ impl RequestSet {
             markers,
             variables,
             joints,
+            motions,
+            constraints,
             sforces: model.sforces.iter().map(|s| (s.id, s.clone())).collect(),
             off_sforces: std::collections::BTreeSet::new(),
         }
@@ -250,6 +259,8 @@ impl RequestSet {
             },
             dynamics: frame.dynamics.as_ref(),
             joints: &self.joints,
+            motions: &self.motions,
+            constraints: &self.constraints,
             sforces: &self.sforces,
             off_sforces: &self.off_sforces,
         };
@@ -285,18 +296,15 @@ impl RequestSet {
                 pack(in_rm(ai - aj), in_rm(bi - bj))
             }
             RequestKind::Force => {
-                let dynamics = ctx.dynamics.ok_or_else(no_dynamics)?;
-                let (mut f, mut t) = (Vector3::zeros(), Vector3::zeros());
-                for &(k, on_i) in &r.elements {
-                    let e = &dynamics.reactions[k];
-                    let (force, torque) = if on_i {
-                        (e.force_i_w, e.torque_i_w)
-                    } else {
-                        (e.force_j_w, e.torque_j_w)
-                    };
-                    f += force;
-                    t += torque;
-                }
+                ctx.dynamics.ok_or_else(no_dynamics)?;
+                let (f, t) =
+                    ctx.force_request(i, j)
+                        .map_err(|source| RequestError::Expression {
+                            id: r.id,
+                            column: "FORCE",
+                            t: frame.t,
+                            source,
+                        })?;
                 pack(in_rm(f), in_rm(t))
             }
             RequestKind::Expressions => {
@@ -332,163 +340,6 @@ pub fn euler_313(r: &UnitQuaternion) -> [f64; 3] {
     let psi = m[(0, 2)].atan2(-m[(1, 2)]);
     let phi = m[(2, 0)].atan2(m[(2, 1)]);
     [psi, theta, phi]
-}
-
-/// The expression context of request output: the state's measures, plus ORIENT and JOINT
-/// reactions from the frame's dynamics.
-struct RequestContext<'a> {
-    state: StateContext<'a>,
-    dynamics: Option<&'a FrameDynamics>,
-    joints: &'a BTreeMap<u32, (usize, u32, u32)>,
-    sforces: &'a BTreeMap<u32, SForce>,
-    off_sforces: &'a std::collections::BTreeSet<u32>,
-}
-
-impl RequestContext<'_> {
-    fn pose(&self, id: u32) -> Isometry3 {
-        if id == 0 {
-            return Isometry3::identity();
-        }
-        self.state
-            .markers
-            .pose_w(id, self.state.parts)
-            .unwrap_or_else(Isometry3::identity)
-    }
-
-    fn axes(&self, id: u32) -> UnitQuaternion {
-        self.pose(id).rotation
-    }
-
-    fn velocity(&self, id: u32) -> (Vector3, Vector3) {
-        if id == 0 {
-            return (Vector3::zeros(), Vector3::zeros());
-        }
-        self.state
-            .markers
-            .velocity_w(id, self.state.parts)
-            .unwrap_or_default()
-    }
-
-    /// The world acceleration of marker `id`'s origin and its part's angular acceleration:
-    /// `a = a_cm + α × r + ω × (ω × r)`, `r` from the CM to the marker.
-    fn acceleration(&self, id: u32) -> Option<(Vector3, Vector3)> {
-        if id == 0 {
-            return Some((Vector3::zeros(), Vector3::zeros()));
-        }
-        let dynamics = self.dynamics?;
-        let m = self.state.markers.markers.get(&id)?;
-        let s: &PartState = self.state.parts.get(m.part.0)?;
-        let (a_cm, alpha) = *dynamics.accelerations.get(m.part.0)?;
-        let r = s.pose_w.rotation * m.pose_cm_marker.translation.vector;
-        let w = s.angular_velocity_w;
-        Some((a_cm + alpha.cross(&r) + w.cross(&w.cross(&r)), alpha))
-    }
-
-    /// JOINT/`id`'s reaction force and torque on its I marker (`jflag` 0) or J marker (1),
-    /// world axes.
-    fn joint_reaction(&self, id: u32, jflag: u32) -> Result<(Vector3, Vector3), EvalError> {
-        let (&(k, _, _), dynamics) = self
-            .joints
-            .get(&id)
-            .zip(self.dynamics)
-            .ok_or(EvalError::NeedsState("JOINT"))?;
-        let e = &dynamics.reactions[k];
-        Ok(if jflag == 0 {
-            (e.force_i_w, e.torque_i_w)
-        } else {
-            (e.force_j_w, e.torque_j_w)
-        })
-    }
-
-    /// SFORCE/`id`'s force and torque on its I marker (`jflag` 0) or J marker (1), world
-    /// axes, as the solver applies them: TRANSLATIONAL `f·(p_I − p_J)/|p_I − p_J|` on I (`f·z_J`
-    /// with ACTIONONLY), the opposite on J (nothing with ACTIONONLY), no torque (the line of
-    /// action passes through both markers); ROTATIONAL `f·z_J` torque on I, the opposite on J
-    /// (nothing with ACTIONONLY), no force. `f` is the FUNCTION at this frame; zero while the
-    /// SFORCE is switched off.
-    fn sforce_load(&self, id: u32, jflag: u32) -> Result<(Vector3, Vector3), EvalError> {
-        let s = self
-            .sforces
-            .get(&id)
-            .ok_or(EvalError::NeedsState("SFORCE"))?;
-        if self.off_sforces.contains(&id) {
-            return Ok((Vector3::zeros(), Vector3::zeros()));
-        }
-        let value = s.function.eval(&self.state)?;
-        let (pose_i, pose_j) = (self.pose(s.i), self.pose(s.j));
-        let z_j = pose_j.rotation * Vector3::z();
-        let sign = match (jflag, s.action_only) {
-            (0, _) => 1.0,
-            (_, true) => 0.0,
-            (_, false) => -1.0,
-        };
-        Ok(match s.freedom {
-            Freedom::Translational => {
-                let direction = if s.action_only {
-                    z_j
-                } else {
-                    let d = pose_i.translation.vector - pose_j.translation.vector;
-                    let length = d.norm();
-                    if length == 0.0 {
-                        return Err(EvalError::NeedsState(
-                            "an SFORCE whose I and J markers coincide",
-                        ));
-                    }
-                    d / length
-                };
-                (direction * (value * sign), Vector3::zeros())
-            }
-            Freedom::Rotational => (Vector3::zeros(), z_j * (value * sign)),
-        })
-    }
-}
-
-impl Context for RequestContext<'_> {
-    fn time(&self) -> f64 {
-        self.state.t
-    }
-
-    fn measure(&self, measure: Measure, markers: &[u32]) -> Result<f64, EvalError> {
-        self.state.measure(measure, markers)
-    }
-
-    fn variable(&self, id: u32) -> Result<f64, EvalError> {
-        self.state.variable(id)
-    }
-
-    fn element_force(&self, kind: ElementKind, args: [u32; 4]) -> Result<f64, EvalError> {
-        let [id, jflag, component, rm] = args;
-        let (force, torque) = match kind {
-            ElementKind::Joint => self.joint_reaction(id, jflag)?,
-            ElementKind::Sforce => self.sforce_load(id, jflag)?,
-            ElementKind::Motion => return Err(EvalError::NeedsState(kind.name())),
-        };
-        let axes = self.axes(rm);
-        let (f, t) = (
-            axes.inverse_transform_vector(&force),
-            axes.inverse_transform_vector(&torque),
-        );
-        Ok(match component {
-            1 => f.norm(),
-            2..=4 => f[component as usize - 2],
-            5 => t.norm(),
-            6..=8 => t[component as usize - 6],
-            _ => {
-                return Err(EvalError::NeedsState(
-                    "an element force with a component outside 1..=8",
-                ));
-            }
-        })
-    }
-
-    fn orient(&self, [kind, component, i, j]: [u32; 4]) -> Result<f64, EvalError> {
-        if kind != 27 || !(1..=4).contains(&component) {
-            return Err(EvalError::NeedsState("ORIENT of a type other than 27"));
-        }
-        let q = self.axes(j).inverse() * self.axes(i);
-        let q = q.quaternion();
-        Ok([q.w, q.i, q.j, q.k][component as usize - 1])
-    }
 }
 
 #[cfg(test)]

@@ -319,7 +319,15 @@ pub(crate) fn lower_sforces(low: &mut Lowering, model: &mut Model, sforces: &[&S
                 None => return Err(r.missing("TRANSLATIONAL or ROTATIONAL")),
             };
             let (i, j) = marker_pair(model, &r)?;
-            let (function, _) = function(model, &r, "FUNCTION")?;
+            let (function, loc) = function(model, &r, "FUNCTION")?;
+            if let Some(what) = reads_reactions(model, &function) {
+                return Err(Problem::new(
+                    loc,
+                    format!(
+                        "SFORCE/{id}: FUNCTION reads {what}: element forces (JOINT, MOTION, SFORCE, FX … TM) are evaluated for REQUEST output only, not while the solver integrates"
+                    ),
+                ));
+            }
             Ok(SForce {
                 id,
                 origin: low.origin(st.loc),
@@ -334,6 +342,38 @@ pub(crate) fn lower_sforces(low: &mut Lowering, model: &mut Model, sforces: &[&S
             model.sforces.push(f);
         }
     }
+}
+
+/// What in `e` (or in a VARIABLE it reads, however deep) needs the constraint reactions: the
+/// function's name, and the VARIABLE it is in when it is not `e` itself.
+fn reads_reactions(model: &Model, e: &Expr) -> Option<String> {
+    let direct = |e: &Expr| {
+        let mut found = None;
+        e.walk(&mut |node| match node {
+            Expr::Element(kind, _) if found.is_none() => found = Some(kind.name()),
+            Expr::ForceMeasure(m, _) if found.is_none() => found = Some(m.name()),
+            _ => {}
+        });
+        found
+    };
+    if let Some(name) = direct(e) {
+        return Some(name.to_string());
+    }
+    let mut seen = std::collections::BTreeSet::new();
+    let mut stack = e.variable_ids();
+    while let Some(v) = stack.pop() {
+        if !seen.insert(v) {
+            continue;
+        }
+        let Some(var) = model.variables.iter().find(|x| x.id == v) else {
+            continue;
+        };
+        if let Some(name) = direct(&var.function) {
+            return Some(format!("{name} (through VARIABLE/{v})"));
+        }
+        stack.extend(var.function.variable_ids());
+    }
+    None
 }
 
 fn positive(r: &Reader<'_>, name: &str) -> Result<Option<f64>, Problem> {

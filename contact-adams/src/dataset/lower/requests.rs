@@ -132,9 +132,6 @@ fn check_function(
             }
             Expr::Element(kind, args) => {
                 problem = check_element(model, id, name, *kind, *args, &at).err();
-                if problem.is_none() && *kind == ElementKind::Motion {
-                    unevaluated = Some(kind.name());
-                }
             }
             Expr::VarVal(v) if !model.variables.iter().any(|var| var.id == *v) => {
                 problem = Some(Problem::new(
