@@ -17,13 +17,14 @@
 //! 3. **Per region.** The oriented loop gives the vector area `S = ½ Σ s₀ × s₁`: the normal is
 //!    `−S/|S|` (from J into I) and the area is `|S|`, the patch's area projected on the contact
 //!    plane. The intersection volume is bounded by I's surface inside J and J's surface inside
-//!    I; the divergence theorem over those pieces (a crossing triangle is clipped by the planes
-//!    of the triangles it crosses), as tetrahedra from the region's apex, gives its volume and
-//!    centroid `g` (the loop's open lid cancels between the two sides). The apex is the loop's
-//!    length-weighted centroid: where the other surface is concave the clipped pieces do not
-//!    quite close (see the error bound below) and the sums then depend on the apex, so it is
-//!    one that follows the region, depends on no order of the search and moves continuously
-//!    with the pose. The flood lists what it takes, and its cones are summed once the regions,
+//!    I; the divergence theorem over those pieces (a crossing triangle's inside part bounded by
+//!    its own trace, [`crate::piece_boundary`]; clipped by the planes of the triangles it
+//!    crosses only where its trace does not form clean chains), as tetrahedra from the region's
+//!    apex, gives its volume and centroid `g` (the loop's open lid cancels between the two
+//!    sides): those of the polyhedral intersection of the two meshes. The apex is the loop's
+//!    length-weighted centroid, one that follows the region, depends on no order of the search
+//!    and moves continuously with the pose (where a plane clip stands in over a concave
+//!    surface, the pieces do not quite close and the sums depend on it). The flood lists what it takes, and its cones are summed once the regions,
 //!    and so their apexes, are known. The contact points are where the line through `g` along
 //!    the normal meets each surface (I's along `−n`, J's along `+n`; the closest points to `g`
 //!    when the loop is degenerate or the line meets nothing), lifted from the facet onto the
@@ -47,13 +48,17 @@
 //! boundary; the penetration and contact points therefore carry an error of order `δ` (first
 //! order in `1/FT`) from the closest-point search on the facets, reduced by the PN lift where
 //! the facets approximate a smooth primitive, and the normal (from the loop's vector area, an average over the loop) an error
-//! of order `δ/ℓ` with `ℓ` the loop's size. Clipping by the crossed triangles' planes is exact
-//! where the other surface is locally convex and underestimates the volume where it is concave.
+//! of order `δ/ℓ` with `ℓ` the loop's size. On the meshes as given, the volume, centroid and
+//! area vector are the polyhedral intersection's to round-off (tested against convex clips of
+//! a non-convex mesh built from convex pieces); a triangle whose trace is not clean falls back
+//! to the plane clip, exact where the other surface is locally convex, an underestimate where
+//! it is concave.
 
 use crate::facet_mesh::FacetMesh;
 use crate::inside_flood::PATCH_BIT;
 use crate::inside_flood::flood;
 use crate::obb::boxes_overlap;
+use crate::piece_boundary::{add_inside_part, corner_inside};
 use crate::scratch::{Hit, RegionNode, RegionSums, Scratch};
 use crate::triangle_pair::Feature;
 use contact_core::{Isometry3, Matrix3, Point3, Vector3, WorkCounters};
@@ -160,6 +165,7 @@ pub(crate) fn new_node(s: &mut Scratch, side: u8, tri: u32, crossing: bool) -> u
         inside_corners: 0,
         edges: crate::triangle_pieces::ALL_EDGES,
         next_piece: crate::triangle_pieces::NO_PIECE,
+        split: false,
     });
     s.slots[side as usize].insert(tri, id);
     id
@@ -381,6 +387,7 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         polygon,
         polygon_next,
         taken,
+        boundary,
         ..
     } = s;
     // Each region's cones about its own apex (its loop's centroid, see `sum_loops`), in A's
@@ -388,10 +395,41 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
     for r in regions.iter_mut() {
         r.apex_b = x.inverse_apply(&r.apex);
     }
+    let touch = 1e-10 * a.size.max(b.size);
     for node in nodes.iter() {
         let mesh = if node.side == 0 { a } else { b };
+        let corners = corners_in_a(mesh, node.side, node.tri, x);
+        let r = &mut regions[node.region as usize];
+        // The inside part from the triangle's trace (`crate::piece_boundary`), each segment
+        // turned to have the other solid's inside on its left.
+        boundary.segments.clear();
+        for i in 0..node.hit_count {
+            let hit = &hits[node_hits[(node.hit_start + i) as usize] as usize];
+            boundary.segments.push(if node.side == 0 {
+                (hit.s0, hit.s1)
+            } else {
+                (hit.s1, hit.s0)
+            });
+        }
+        let normal = (corners[1] - corners[0]).cross(&(corners[2] - corners[0]));
+        let whole_boundary = |segments: &[(Vector3, Vector3)]| {
+            (!node.split)
+                .then(|| corner_inside(segments, &normal, &corners[0]))
+                .flatten()
+        };
+        if add_inside_part(
+            &corners,
+            boundary,
+            whole_boundary,
+            touch,
+            &r.apex,
+            &mut r.sums_a,
+        ) {
+            continue;
+        }
+        // Chains that are not clean: the triangle clipped by the planes it crosses.
         polygon.clear();
-        polygon.extend_from_slice(&corners_in_a(mesh, node.side, node.tri, x));
+        polygon.extend_from_slice(&corners);
         for i in 0..node.hit_count {
             let hit = hits[node_hits[(node.hit_start + i) as usize] as usize];
             let (n, p0) = other_plane(node.side, &hit);
@@ -401,7 +439,6 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
                 break;
             }
         }
-        let r = &mut regions[node.region as usize];
         r.sums_a.add_polygon(polygon, &r.apex);
     }
     // The flood's takings, each in its own mesh's frame about its region's apex there.

@@ -78,6 +78,7 @@ mod inside_flood;
 pub mod obb;
 pub mod obb_tree;
 pub mod patches;
+pub mod piece_boundary;
 pub mod planar;
 mod plane_contact;
 mod plane_support;

@@ -105,6 +105,8 @@ pub(crate) struct RegionNode {
     pub edges: u8,
     /// The triangle's next piece, or [`crate::triangle_pieces::NO_PIECE`].
     pub next_piece: u32,
+    /// The triangle is split into pieces (this node holds some of its hits).
+    pub split: bool,
 }
 
 /// Running sums of one region.
@@ -149,6 +151,8 @@ pub(crate) struct Scratch {
     pub hit_nodes: Vec<[u32; 2]>,
     /// Buffers for splitting crossing triangles into pieces.
     pub pieces: crate::triangle_pieces::PieceScratch,
+    /// Buffers for a crossing triangle's inside part.
+    pub boundary: crate::piece_boundary::BoundaryScratch,
     pub queue: Vec<u32>,
     /// Curved triangles whose smooth surface may reach below a plane (`crate::plane_support`).
     pub curved: Vec<u32>,

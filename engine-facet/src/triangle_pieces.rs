@@ -232,6 +232,7 @@ fn split(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, id: u3
         piece.hit_start = start;
         piece.hit_count = count;
         piece.edges = w.edges[p as usize];
+        piece.split = true;
         piece.next_piece = NO_PIECE;
         start += count;
         previous = piece_id;

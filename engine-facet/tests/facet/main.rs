@@ -1,6 +1,7 @@
 //! Integration tests of the faceted engine (one binary, modules inside).
 
 mod common;
+mod concave_oracle;
 mod concave_regions;
 mod convergence;
 mod engine;

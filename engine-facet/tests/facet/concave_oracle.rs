@@ -1,0 +1,228 @@
+//! Mesh against a non-convex mesh, as given, against an oracle written apart from the engine:
+//! the L-shaped prism `B = B₁ ∪ B₂` (two boxes meeting along a face) is the union of convex
+//! pieces, so `A ∩ B` for a convex `A` is the sum of the convex clips `A ∩ B₁` and `A ∩ B₂`
+//! (their volumes, moments, and the vector area of A's faces inside each). A box `A` pressed
+//! into the L's concave edge crosses both arms; the faceted engine's contact (its normal, the
+//! line through its centroid, and the depth along that line between the two surfaces) must be
+//! the polyhedral intersection's to round-off — no approximation where B is concave.
+
+use crate::common::{Rng, engine, prepare, query_pair};
+use contact_core::geometry::{Cuboid, TriangleMesh};
+use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector3};
+
+/// The L's profile in (x, z), counter-clockwise, extruded over 0 ≤ y ≤ 1: the arm
+/// `B₁ = [0, 2]×[0, 1]×[0, 1]` and the arm `B₂ = [0, 1]×[0, 1]×[1, 2]`.
+const PROFILE: [(f64, f64); 6] = [
+    (0.0, 0.0),
+    (2.0, 0.0),
+    (2.0, 1.0),
+    (1.0, 1.0),
+    (1.0, 2.0),
+    (0.0, 2.0),
+];
+
+fn l_prism() -> Geometry {
+    let n = PROFILE.len() as u32;
+    let vertices: Vec<Point3> = [0.0, 1.0]
+        .iter()
+        .flat_map(|&y| PROFILE.iter().map(move |&(x, z)| Point3::new(x, y, z)))
+        .collect();
+    let caps = [[0, 1, 2], [0, 2, 3], [0, 3, 5], [3, 4, 5]];
+    let mut triangles = Vec::new();
+    let mut push = |t: [u32; 3], outward: Vector3| {
+        let [a, b, c] = t.map(|k| vertices[k as usize]);
+        let normal = (b - a).cross(&(c - a));
+        triangles.push(if normal.dot(&outward) > 0.0 {
+            t
+        } else {
+            [t[0], t[2], t[1]]
+        });
+    };
+    for t in caps {
+        push(t, -Vector3::y());
+        push(t.map(|k| k + n), Vector3::y());
+    }
+    for k in 0..n {
+        let m = (k + 1) % n;
+        let (a, b) = (PROFILE[k as usize], PROFILE[m as usize]);
+        let outward = Vector3::new(b.1 - a.1, 0.0, -(b.0 - a.0));
+        push([k, m, m + n], outward);
+        push([k, m + n, k + n], outward);
+    }
+    Geometry::Mesh(std::sync::Arc::new(
+        TriangleMesh::new(vertices, triangles).unwrap(),
+    ))
+}
+
+/// A convex polygon clipped to `n·x ≤ d`.
+fn clip(poly: &[Vector3], n: &Vector3, d: f64) -> Vec<Vector3> {
+    let mut out = Vec::new();
+    for k in 0..poly.len() {
+        let (u, v) = (poly[k], poly[(k + 1) % poly.len()]);
+        let (du, dv) = (n.dot(&u) - d, n.dot(&v) - d);
+        if du <= 0.0 {
+            out.push(u);
+        }
+        if du * dv < 0.0 {
+            out.push(u + (v - u) * (du / (du - dv)));
+        }
+    }
+    out
+}
+
+/// The half-spaces `n·x ≤ d` of an axis-aligned box.
+fn box_planes(lo: Vector3, hi: Vector3) -> Vec<(Vector3, f64)> {
+    (0..3)
+        .flat_map(|k| {
+            let e = Vector3::ith(k, 1.0);
+            [(e, hi[k]), (-e, -lo[k])]
+        })
+        .collect()
+}
+
+/// Volume, first moment about the origin, and the vector area of A's faces, of A (its faces,
+/// counter-clockwise outward) clipped to a convex set of half-spaces.
+fn clipped(faces: &[Vec<Vector3>], planes: &[(Vector3, f64)]) -> (f64, Vector3, Vector3) {
+    let mut faces: Vec<Vec<Vector3>> = faces.to_vec();
+    let mut a_area = Vector3::zeros();
+    for f in &faces {
+        let mut p = f.clone();
+        for (n, d) in planes {
+            p = clip(&p, n, *d);
+        }
+        a_area += polygon_area(&p);
+    }
+    for (n, d) in planes {
+        let mut cut: Vec<Vector3> = Vec::new();
+        faces = faces
+            .iter()
+            .map(|f| {
+                let c = clip(f, n, *d);
+                cut.extend(c.iter().filter(|p| (n.dot(p) - d).abs() < 1e-12));
+                c
+            })
+            .filter(|f| f.len() >= 3)
+            .collect();
+        if cut.len() >= 3 {
+            // The cap on the plane, ordered counter-clockwise about n.
+            let centre = cut.iter().sum::<Vector3>() / cut.len() as f64;
+            let u = (cut[0] - centre).normalize();
+            let w = n.cross(&u);
+            cut.sort_by(|a, b| {
+                let angle = |p: &Vector3| (p - centre).dot(&w).atan2((p - centre).dot(&u));
+                angle(a).total_cmp(&angle(b))
+            });
+            faces.push(cut);
+        }
+    }
+    let (mut volume, mut moment) = (0.0, Vector3::zeros());
+    for f in &faces {
+        for k in 1..f.len() - 1 {
+            let v = f[0].dot(&f[k].cross(&f[k + 1])) / 6.0;
+            volume += v;
+            moment += v * (f[0] + f[k] + f[k + 1]) / 4.0;
+        }
+    }
+    (volume, moment, a_area)
+}
+
+fn polygon_area(p: &[Vector3]) -> Vector3 {
+    (1..p.len().saturating_sub(1))
+        .map(|k| 0.5 * (p[k] - p[0]).cross(&(p[k + 1] - p[0])))
+        .sum()
+}
+
+/// The parameters `[t0, t1]` of the line `g + t·n` inside a convex set of half-spaces.
+fn slab(g: &Vector3, n: &Vector3, planes: &[(Vector3, f64)]) -> (f64, f64) {
+    let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+    for (m, d) in planes {
+        let (along, at) = (m.dot(n), d - m.dot(g));
+        if along > 0.0 {
+            t1 = t1.min(at / along);
+        } else if along < 0.0 {
+            t0 = t0.max(at / along);
+        }
+    }
+    (t0, t1)
+}
+
+#[test]
+fn a_box_in_the_concave_edge_of_an_l_is_the_polyhedral_intersection() {
+    let (arm1, arm2) = (
+        box_planes(Vector3::zeros(), Vector3::new(2.0, 1.0, 1.0)),
+        box_planes(Vector3::new(0.0, 0.0, 1.0), Vector3::new(1.0, 1.0, 2.0)),
+    );
+    let l = l_prism();
+    let half = Vector3::new(0.3, 0.2, 0.25);
+    let cuboid = Geometry::Cuboid(Cuboid::centered(half.x, half.y, half.z).unwrap());
+    let pair = prepare(&engine(300.0028), cuboid, l);
+    let mut rng = Rng(0x1A7E);
+    let mut checked = 0;
+    for k in 0..20 {
+        let rotation = UnitQuaternion::from_scaled_axis(rng.unit_vector() * rng.range(0.05, 0.5));
+        let centre = Vector3::new(
+            rng.range(1.15, 1.3),
+            rng.range(0.4, 0.6),
+            rng.range(1.15, 1.3),
+        );
+        let pose = Isometry3::from_parts(centre.into(), rotation);
+        // A's faces in the world, counter-clockwise outward, and its half-spaces.
+        let corner = |s: [f64; 3]| pose * Point3::from(half.component_mul(&Vector3::from(s)));
+        let mut faces = Vec::new();
+        let mut a_planes = Vec::new();
+        for axis in 0..3 {
+            for sign in [-1.0, 1.0] {
+                let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                let quad: Vec<Vector3> = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                    .iter()
+                    .map(|&(a, b)| {
+                        let mut s = [0.0; 3];
+                        s[axis] = sign;
+                        s[u] = a * sign;
+                        s[v] = b;
+                        corner(s).coords
+                    })
+                    .collect();
+                let n = pose.rotation * Vector3::ith(axis, sign);
+                a_planes.push((n, n.dot(&quad[0])));
+                faces.push(quad);
+            }
+        }
+        let (v1, m1, s1) = clipped(&faces, &arm1);
+        let (v2, m2, s2) = clipped(&faces, &arm2);
+        let g = (m1 + m2) / (v1 + v2);
+        let normal = -(s1 + s2).normalize();
+        // The centroid inside both bodies (else the engine holds the depth to its bound).
+        let inside = |planes: &[(Vector3, f64)]| planes.iter().all(|(n, d)| n.dot(&g) < *d);
+        if !(inside(&a_planes) && (inside(&arm1) || inside(&arm2))) {
+            continue;
+        }
+        // I's point: where the line leaves A going along −n; J's: where it leaves B₁ ∪ B₂
+        // going along +n (the two arms' intervals joined where they meet).
+        let t_i = -slab(&g, &normal, &a_planes).0;
+        let (r1, r2) = (slab(&g, &normal, &arm1), slab(&g, &normal, &arm2));
+        let mut t_j = f64::NEG_INFINITY;
+        for (lo, hi) in [r1, r2, r1, r2] {
+            if lo <= t_j.max(0.0) + 1e-12 && hi > t_j {
+                t_j = hi;
+            }
+        }
+        let want_depth = t_i + t_j;
+        let (contacts, _) = query_pair(pair.as_ref(), pose, Isometry3::identity());
+
+        assert_eq!(contacts.len(), 1, "pose {k}: {contacts:?}");
+        let c = &contacts[0];
+        let off_line = (g - c.point_i_w.coords).cross(&c.normal_w).norm();
+        let errors = [
+            (c.normal_w - normal).norm(),
+            off_line,
+            (c.penetration - want_depth).abs(),
+        ];
+        assert!(
+            errors.iter().all(|e| *e <= 1e-9),
+            "pose {k}: errors (normal, centroid off the line, depth) {errors:?}\n{c:?}\ncentroid {g}, depth {want_depth}"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 10, "{checked} poses checked");
+}
