@@ -4,7 +4,8 @@
 //! (their volumes, moments, and the vector area of A's faces inside each). A box `A` pressed
 //! into the L's concave edge crosses both arms; the faceted engine's contact (its normal, the
 //! line through its centroid, and the depth along that line between the two surfaces) must be
-//! the polyhedral intersection's to round-off — no approximation where B is concave.
+//! the polyhedral intersection's to round-off — no approximation where B is concave, and the
+//! same for either triangulation of the L's faces.
 
 use crate::common::{Rng, engine, prepare, query_pair};
 use contact_core::geometry::{Cuboid, TriangleMesh};
@@ -21,13 +22,18 @@ const PROFILE: [(f64, f64); 6] = [
     (0.0, 2.0),
 ];
 
-fn l_prism() -> Geometry {
+/// The L prism, its caps and side quads split one way or the other.
+fn l_prism(other_split: bool) -> Geometry {
     let n = PROFILE.len() as u32;
     let vertices: Vec<Point3> = [0.0, 1.0]
         .iter()
         .flat_map(|&y| PROFILE.iter().map(move |&(x, z)| Point3::new(x, y, z)))
         .collect();
-    let caps = [[0, 1, 2], [0, 2, 3], [0, 3, 5], [3, 4, 5]];
+    let caps = if other_split {
+        [[1, 2, 3], [1, 3, 0], [0, 3, 4], [0, 4, 5]]
+    } else {
+        [[0, 1, 2], [0, 2, 3], [0, 3, 5], [3, 4, 5]]
+    };
     let mut triangles = Vec::new();
     let mut push = |t: [u32; 3], outward: Vector3| {
         let [a, b, c] = t.map(|k| vertices[k as usize]);
@@ -46,8 +52,13 @@ fn l_prism() -> Geometry {
         let m = (k + 1) % n;
         let (a, b) = (PROFILE[k as usize], PROFILE[m as usize]);
         let outward = Vector3::new(b.1 - a.1, 0.0, -(b.0 - a.0));
-        push([k, m, m + n], outward);
-        push([k, m + n, k + n], outward);
+        if other_split {
+            push([k, m, k + n], outward);
+            push([m, m + n, k + n], outward);
+        } else {
+            push([k, m, m + n], outward);
+            push([k, m + n, k + n], outward);
+        }
     }
     Geometry::Mesh(std::sync::Arc::new(
         TriangleMesh::new(vertices, triangles).unwrap(),
@@ -148,14 +159,20 @@ fn slab(g: &Vector3, n: &Vector3, planes: &[(Vector3, f64)]) -> (f64, f64) {
 
 #[test]
 fn a_box_in_the_concave_edge_of_an_l_is_the_polyhedral_intersection() {
+    for other_split in [false, true] {
+        checked_poses(other_split);
+    }
+}
+
+/// The engine against the oracle at seeded poses of the box in the L's concave edge.
+fn checked_poses(other_split: bool) {
     let (arm1, arm2) = (
         box_planes(Vector3::zeros(), Vector3::new(2.0, 1.0, 1.0)),
         box_planes(Vector3::new(0.0, 0.0, 1.0), Vector3::new(1.0, 1.0, 2.0)),
     );
-    let l = l_prism();
     let half = Vector3::new(0.3, 0.2, 0.25);
     let cuboid = Geometry::Cuboid(Cuboid::centered(half.x, half.y, half.z).unwrap());
-    let pair = prepare(&engine(300.0028), cuboid, l);
+    let pair = prepare(&engine(300.0028), cuboid, l_prism(other_split));
     let mut rng = Rng(0x1A7E);
     let mut checked = 0;
     for k in 0..20 {
@@ -220,7 +237,7 @@ fn a_box_in_the_concave_edge_of_an_l_is_the_polyhedral_intersection() {
         ];
         assert!(
             errors.iter().all(|e| *e <= 1e-9),
-            "pose {k}: errors (normal, centroid off the line, depth) {errors:?}\n{c:?}\ncentroid {g}, depth {want_depth}"
+            "pose {k} (other split: {other_split}): errors (normal, centroid off the line, depth) {errors:?}\n{c:?}\ncentroid {g}, depth {want_depth}"
         );
         checked += 1;
     }
