@@ -412,7 +412,14 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
             });
         }
         let normal = (corners[1] - corners[0]).cross(&(corners[2] - corners[0]));
+        // No chain reaches the boundary: all of it is inside or none. With no trace left at
+        // all (the triangle only touches the other surface, at points the nudge of the
+        // triangle tests puts on one side), its corners clear of the other surface say which.
+        let inside_corners = node.inside_corners.count_ones();
         let whole_boundary = |segments: &[(Vector3, Vector3)]| {
+            if segments.is_empty() {
+                return Some(inside_corners >= 2);
+            }
             (!node.split)
                 .then(|| corner_inside(segments, &normal, &corners[0]))
                 .flatten()
@@ -608,8 +615,7 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
     if !boxes_overlap(&ra.half_extents, &rb.half_extents, &r, &t) {
         return None;
     }
-    let a0 = a.vertices[0].coords;
-    if b.contains(&Point3::from(x.inverse_apply(&a0))) {
+    if inside_by_majority(a, |v| b.contains(&Point3::from(x.inverse_apply(v)))) {
         let g = a.centroid.coords;
         let gb = x.inverse_apply(&g);
         let pj = x.apply(&b.closest_point(&gb, &mut Vec::new()).1);
@@ -623,8 +629,7 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
             area: 0.25 * a.area,
         });
     }
-    let b0 = x.apply(&b.vertices[0].coords);
-    if a.contains(&Point3::from(b0)) {
+    if inside_by_majority(b, |v| a.contains(&Point3::from(x.apply(v)))) {
         let g = x.apply(&b.centroid.coords);
         let pi = a.closest_point(&g, &mut Vec::new()).1;
         let n = (g - pi).try_normalize(0.0).unwrap_or_else(Vector3::z);
@@ -638,6 +643,23 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         });
     }
     None
+}
+
+/// Whether `mesh` lies inside the other solid, with no crossing between them: judged by
+/// three of its vertices (first, middle, last), two of which must be inside. A vertex within
+/// the on-plane band of the other surface counts there as outside or inside as the triangle
+/// tests' nudge puts it, which the ray test cannot know; the vote keeps one such vertex (a
+/// corner grazing a face) from deciding alone.
+fn inside_by_majority(mesh: &FacetMesh, inside: impl Fn(&Vector3) -> bool) -> bool {
+    let n = mesh.vertices.len();
+    if n == 0 {
+        return false;
+    }
+    let votes = [0, n / 2, n - 1]
+        .iter()
+        .filter(|&&k| inside(&mesh.vertices[k].coords))
+        .count();
+    votes >= 2
 }
 
 fn support(points: impl Iterator<Item = Vector3>, dir: &Vector3) -> Vector3 {

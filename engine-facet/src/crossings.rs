@@ -1,14 +1,14 @@
 //! Step 1 of [`crate::contact_region`]: the crossing segments of two meshes. The trees are
 //! descended together ([`crate::obb_tree::descend_leaf_pairs`]); each pair of overlapping leaves
 //! screens A's triangles' planes against B's leaf triangles at once, and the pairs left take the
-//! exact triangle test ([`crate::triangle_pair::intersect_on_planes`]) with one on-plane band
+//! exact triangle test ([`crate::triangle_pair::intersect_nudged`]) with one on-plane band
 //! for the whole query.
 
 use crate::contact_region::RelativePose;
 use crate::facet_mesh::FacetMesh;
 use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
 use crate::scratch::{Hit, Scratch};
-use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect_on_planes};
+use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect_nudged};
 use contact_core::{Vector3, WorkCounters};
 
 /// Every crossing of a triangle of `a` with one of `b` (at `x` in A's frame), into `s.hits`.
@@ -77,7 +77,7 @@ pub(crate) fn find_crossings(
                     let (q, nq) = &moved[k];
                     let tb = leaf_b[k];
                     if let (TrianglePair::Segment(s0, s1), ends) =
-                        intersect_on_planes(&p, q, &n, nq, distances[k], band)
+                        intersect_nudged(&p, q, &n, nq, distances[k], band, &NUDGE)
                     {
                         hits.push(Hit {
                             ta,
@@ -95,6 +95,15 @@ pub(crate) fn find_crossings(
     );
     work.primitive_tests += tests;
 }
+
+/// The direction, in A's frame, A is nudged by an infinitesimal amount for the triangle tests
+/// ([`crate::triangle_pair::intersect_nudged`]): generic, so that no face normal of a mesh
+/// built on axes or simple angles is perpendicular to it.
+pub(crate) const NUDGE: Vector3 = Vector3::new(
+    0.318_290_114_925_167_3,
+    0.577_215_664_901_532_9,
+    0.754_877_666_246_692_8,
+);
 
 /// Slots of the direct-mapped store of B leaves moved into A's frame (one query's; 6 KB). A B
 /// leaf meets two or three A leaves, mostly close together in the descent; the contacts do

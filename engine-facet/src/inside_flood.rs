@@ -13,6 +13,7 @@
 //! a few hundred patches).
 
 use crate::contact_region::{RelativePose, corners_in_a, other_plane, union};
+use crate::crossings::NUDGE;
 use crate::facet_mesh::FacetMesh;
 use crate::patches::PatchIndex;
 use crate::scratch::{NodeMarks, RegionNode, Scratch};
@@ -24,7 +25,9 @@ use contact_core::Vector3;
 pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     s.taken.clear();
     let crossing_count = s.nodes.len();
-    // Corners of crossing triangles: inside when strictly behind every crossed plane.
+    // Corners of crossing triangles: inside when behind every crossed plane; a corner on a
+    // plane (within 1e-12 of the mesh's size) lies on the side the triangle tests' nudge puts
+    // it (`crate::triangle_pair::intersect_nudged`: A moved along `NUDGE`).
     for id in 0..crossing_count {
         let node = s.nodes[id];
         let mesh = if node.side == 0 { a } else { b };
@@ -35,7 +38,17 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
             let inside = (0..node.hit_count).all(|i| {
                 let hit = s.hits[s.node_hits[(node.hit_start + i) as usize] as usize];
                 let (n, p0) = other_plane(node.side, &hit);
-                n.dot(&(v - p0)) < -eps
+                let d = n.dot(&(v - p0));
+                if d.abs() > eps {
+                    return d < 0.0;
+                }
+                // A's corner on B's plane moves along NUDGE; B's on A's plane, against it.
+                let along = n.dot(&NUDGE);
+                if node.side == 0 {
+                    along < 0.0
+                } else {
+                    along > 0.0
+                }
             });
             bits |= u8::from(inside) << k;
         }

@@ -67,6 +67,21 @@ fn snapped(d: [f64; 3], band_n_squared: f64) -> [f64; 3] {
     d.map(|v| if v * v <= band_n_squared { 0.0 } else { v })
 }
 
+/// `d` with its zeros given the sign of `toward` (kept at zero where `toward` is zero), at a
+/// magnitude that moves no point formed from them.
+#[inline]
+fn nudged(d: [f64; 3], toward: f64) -> [f64; 3] {
+    let tiny = f64::MIN_POSITIVE;
+    let signed = if toward > 0.0 {
+        tiny
+    } else if toward < 0.0 {
+        -tiny
+    } else {
+        0.0
+    };
+    d.map(|v| if v == 0.0 { signed } else { v })
+}
+
 #[inline]
 fn same_side(d: &[f64; 3]) -> bool {
     // Non-short-circuit: one branch on the outcome rather than one per comparison.
@@ -112,17 +127,44 @@ pub fn intersect_on_planes(
     dq: [f64; 3],
     band: f64,
 ) -> (TrianglePair, [SegmentEnd; 2]) {
+    intersect_nudged(p, q, np, nq, dq, band, &Vector3::zeros())
+}
+
+/// [`intersect_on_planes`] with `p`'s solid moved by an infinitesimal `ε·nudge`
+/// (simulation of simplicity): a vertex within the band of the other triangle's plane is put
+/// on the side the nudge moves it to — `p`'s vertex on `q`'s plane on the side of
+/// `sign(n_q·nudge)`, `q`'s on `p`'s plane on the side of `−sign(n_p·nudge)` — while its point
+/// stays where it is. Every pair of a query classifies a vertex against a plane alike, so the
+/// segments of flush faces, shared edges and vertices on faces close into the loops of the
+/// nudged solids, whose limit the contact is; coplanar triangles come apart. Where the nudge
+/// is perpendicular to a normal (or zero) the vertex stays on the plane.
+#[inline]
+pub fn intersect_nudged(
+    p: &[Vector3; 3],
+    q: &[Vector3; 3],
+    np: &Vector3,
+    nq: &Vector3,
+    dq: [f64; 3],
+    band: f64,
+    nudge: &Vector3,
+) -> (TrianglePair, [SegmentEnd; 2]) {
     let none = [SegmentEnd {
         first: true,
         feature: Feature::Corner(0),
     }; 2];
     let outcome = |pair| (pair, none);
     let band_squared = band * band;
-    let dq = snapped(dq, band_squared * np.norm_squared());
+    let dq = nudged(
+        snapped(dq, band_squared * np.norm_squared()),
+        -np.dot(nudge),
+    );
     if same_side(&dq) {
         return outcome(TrianglePair::Disjoint);
     }
-    let dp = snapped(distances(p, nq, &q[0]), band_squared * nq.norm_squared());
+    let dp = nudged(
+        snapped(distances(p, nq, &q[0]), band_squared * nq.norm_squared()),
+        nq.dot(nudge),
+    );
     if same_side(&dp) {
         return outcome(TrianglePair::Disjoint);
     }
@@ -145,8 +187,10 @@ pub fn intersect_on_planes(
     else {
         return outcome(TrianglePair::Disjoint);
     };
-    // Both cuts lie on the line of the two planes: overlap their intervals along it.
-    if (a1.key < b0.key) | (b1.key < a0.key) {
+    // Both cuts lie on the line of the two planes: overlap their intervals along it. Intervals
+    // that only touch meet in a point (an edge resting on an edge): no crossing, as the
+    // triangles come apart under any nudge that does not push them into each other.
+    if (a1.key <= b0.key) | (b1.key <= a0.key) {
         return outcome(TrianglePair::Disjoint);
     }
     let end_of = |first, feature| SegmentEnd { first, feature };

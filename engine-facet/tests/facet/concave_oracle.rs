@@ -243,3 +243,66 @@ fn checked_poses(other_split: bool) {
     }
     assert!(checked >= 10, "{checked} poses checked");
 }
+
+/// The octahedron `|x| + |y| + |z| ≤ 1` as a closed mesh.
+fn octahedron() -> Geometry {
+    let v = |x: f64, y: f64, z: f64| Point3::new(x, y, z);
+    let vertices = vec![
+        v(1.0, 0.0, 0.0),
+        v(-1.0, 0.0, 0.0),
+        v(0.0, 1.0, 0.0),
+        v(0.0, -1.0, 0.0),
+        v(0.0, 0.0, 1.0),
+        v(0.0, 0.0, -1.0),
+    ];
+    let triangles = vec![
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    Geometry::Mesh(std::sync::Arc::new(
+        TriangleMesh::new(vertices, triangles).unwrap(),
+    ))
+}
+
+/// Vertices and edges exactly on a face's plane: a box whose bottom face holds the
+/// octahedron's four equatorial vertices (and its equator's edges) cuts it in half. Closed
+/// form: one region, the upper half (volume 2/3, centroid (0, 0, 1/4)), I's surface inside J
+/// the square `|x| + |y| ≤ 1` facing down, so the normal is `+z`, and the line through the
+/// centroid leaves the box at z = 0 and the octahedron at its apex: depth 1, area 2. The box
+/// turned about z and the pair moved and turned as a whole.
+#[test]
+fn vertices_on_a_face_plane_cut_exactly() {
+    let box_geometry = Geometry::Cuboid(Cuboid::centered(2.0, 2.0, 1.0).unwrap());
+    let pair = prepare(&engine(300.0028), box_geometry, octahedron());
+    let mut rng = Rng(0x0C7A);
+    for k in 0..12 {
+        let world = Isometry3::from_parts(
+            (rng.unit_vector() * rng.range(0.0, 3.0)).into(),
+            rng.rotation(),
+        );
+        let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.range(-3.2, 3.2));
+        let pose_i = world * Isometry3::from_parts(Vector3::new(0.0, 0.0, 1.0).into(), spin);
+        let (contacts, _) = query_pair(pair.as_ref(), pose_i, world);
+        assert_eq!(contacts.len(), 1, "pose {k}: {contacts:?}");
+        let c = &contacts[0];
+        let up = world.rotation * Vector3::z();
+        let (bottom, apex) = (world * Point3::origin(), world * Point3::new(0.0, 0.0, 1.0));
+        let errors = [
+            (c.normal_w - up).norm(),
+            (c.penetration - 1.0).abs(),
+            (c.point_i_w - bottom).norm(),
+            (c.point_j_w - apex).norm(),
+            (c.area - 2.0).abs(),
+        ];
+        assert!(
+            errors.iter().all(|e| *e <= 1e-9),
+            "pose {k}: {errors:?}\n{c:?}"
+        );
+    }
+}
