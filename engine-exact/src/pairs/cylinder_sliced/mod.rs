@@ -39,6 +39,8 @@
 //! cylinder's nearest face normal (the bottom, then side, then top on ties); area a quarter of
 //! the intersection's surface. Touching (no volume) is no contact.
 
+mod bounds;
+
 use super::revolved_pair;
 use crate::kernel::PairContact;
 use crate::methods::clipped::{HalfSpace, nearest_face, ray_exit, unit_for};
@@ -178,59 +180,131 @@ pub(crate) fn contact_by(
         let frame = Matrix3::identity();
         return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
     }
-    // A box at any other tilt: the divergence theorem over the intersection's boundary, in
-    // closed form, unless a face is nearly parallel to the axis.
-    if let (SlicedSolid::Box(c), Method::ClosedForm) = (b, method) {
-        let centre = (pose_ab * c.center()).coords - centre_a;
-        let half = c.half_extents();
-        work.bounding_volume_tests += 1;
-        let box_a = (
-            Vector3::zeros(),
-            Matrix3::identity(),
-            Vector3::new(ra, ra, hla),
-        );
-        if separated(&box_a, &(centre, rot_ab, half)) {
-            return None;
-        }
-        let faces = cylinder_polyhedron::box_faces(&(centre / unit), &rot_ab, &(half / unit));
-        if let Some(m) = cylinder_polyhedron::box_moments(ra / unit, hla / unit, &faces) {
-            let frame = Matrix3::identity();
-            return finish(a, pose_a, b, pose_b, &m?, (&frame, &centre_a, unit), &[]);
-        }
+    let placed = Placed {
+        ra,
+        hla,
+        unit,
+        pose_ab,
+        rot_ab,
+        centre_a,
+        prism_planes,
+        prism_count,
+    };
+    if let Some(found) = tilted_closed_form(a, pose_a, b, pose_b, work, method, &placed) {
+        return found;
     }
-    // A bounded plane's prism, likewise (its faces cut to the cylinder's reach).
-    if let (SlicedSolid::Plane { .. }, Method::ClosedForm) = (b, method) {
-        if let Some(m) = prism_moments(
-            &prism_planes[..prism_count],
-            (&rot_ab, &pose_ab.translation.vector, &centre_a),
-            (ra, hla, unit),
-        ) {
+    sliced(a, pose_a, b, pose_b, work, &placed)
+}
+
+/// The pair in `a`'s geometry frame, as the closed forms and the slicing take it.
+#[derive(Clone, Copy)]
+struct Placed {
+    /// `a`'s radius.
+    ra: f64,
+    /// `a`'s half-length.
+    hla: f64,
+    /// The working frame's length unit ([`unit_for`] the larger solid's size).
+    unit: f64,
+    /// `b`'s pose in `a`'s geometry frame.
+    pose_ab: Isometry3,
+    /// `pose_ab`'s rotation as a matrix.
+    rot_ab: Matrix3,
+    /// `a`'s centre in its geometry frame (the working frame's origin).
+    centre_a: Vector3,
+    /// A bounded plane's prism as half-spaces in the plane's frame, the first `prism_count`.
+    prism_planes: [HalfSpace; 5],
+    /// How many of `prism_planes` bound the prism (none for a solid `b`).
+    prism_count: usize,
+}
+
+impl Placed {
+    /// The bounded plane's prism planes (empty for a solid `b`).
+    fn prism(&self) -> &[HalfSpace] {
+        &self.prism_planes[..self.prism_count]
+    }
+}
+
+/// The closed forms for a `b` at any tilt, with `method` [`Method::ClosedForm`] only: a box
+/// by the divergence theorem over the intersection's boundary, a bounded plane's prism
+/// likewise (its faces cut to the cylinder's reach), crossed cylinders by the divergence
+/// theorem over the two lateral surfaces. `Some(found)` when one decided the pair (`found`
+/// `None`: no contact); `None` when the pair is to be sliced (a face nearly parallel to the
+/// axis, cylinders near parallel or only grazing).
+fn tilted_closed_form(
+    a: &Cylinder,
+    pose_a: &Isometry3,
+    b: &SlicedSolid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+    method: Method,
+    placed: &Placed,
+) -> Option<Option<PairContact>> {
+    if method != Method::ClosedForm {
+        return None;
+    }
+    let Placed {
+        ra,
+        hla,
+        unit,
+        pose_ab,
+        rot_ab,
+        centre_a,
+        ..
+    } = *placed;
+    let frame = Matrix3::identity();
+    match b {
+        // A box at any other tilt: the divergence theorem over the intersection's boundary,
+        // in closed form, unless a face is nearly parallel to the axis.
+        SlicedSolid::Box(c) => {
+            let centre = (pose_ab * c.center()).coords - centre_a;
+            let half = c.half_extents();
             work.bounding_volume_tests += 1;
-            let frame = Matrix3::identity();
-            return finish(
-                a,
-                pose_a,
-                b,
-                pose_b,
-                &m?,
-                (&frame, &centre_a, unit),
-                &prism_planes[..prism_count],
+            let box_a = (
+                Vector3::zeros(),
+                Matrix3::identity(),
+                Vector3::new(ra, ra, hla),
             );
-        }
-    }
-    // Crossed cylinders: the divergence theorem over the two lateral surfaces, unless they
-    // only graze.
-    if let (SlicedSolid::Cylinder(c), Method::ClosedForm) = (b, method) {
-        let axis = rot_ab.column(2);
-        if axis.x.hypot(axis.y) >= revolved_pair::PARALLEL {
-            let (a, c) = (Solid::Cylinder(*a), Solid::Cylinder(*c));
-            // A grazing sliver it declines is sliced below.
-            if let Ok(found) = revolved_pair::divergence_contact(&a, pose_a, &c, pose_b, work) {
-                return found;
+            if separated(&box_a, &(centre, rot_ab, half)) {
+                return Some(None);
             }
+            let faces = cylinder_polyhedron::box_faces(&(centre / unit), &rot_ab, &(half / unit));
+            let m = cylinder_polyhedron::box_moments(ra / unit, hla / unit, &faces)?;
+            Some(m.and_then(|m| finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), &[])))
+        }
+        // A bounded plane's prism, likewise (its faces cut to the cylinder's reach).
+        SlicedSolid::Plane { .. } => {
+            let m = prism_moments(
+                placed.prism(),
+                (&rot_ab, &pose_ab.translation.vector, &centre_a),
+                (ra, hla, unit),
+            )?;
+            work.bounding_volume_tests += 1;
+            let planes = placed.prism();
+            Some(
+                m.and_then(|m| finish(a, pose_a, b, pose_b, &m, (&frame, &centre_a, unit), planes)),
+            )
+        }
+        // Crossed cylinders: the divergence theorem over the two lateral surfaces, unless
+        // they only graze.
+        SlicedSolid::Cylinder(c) => {
+            let axis = rot_ab.column(2);
+            if axis.x.hypot(axis.y) >= revolved_pair::PARALLEL {
+                let (a, c) = (Solid::Cylinder(*a), Solid::Cylinder(*c));
+                // A grazing sliver it declines is sliced ([`sliced`]).
+                if let Ok(found) = revolved_pair::divergence_contact(&a, pose_a, &c, pose_b, work) {
+                    return Some(found);
+                }
+            }
+            None
         }
     }
-    let n = match b {
+}
+
+/// The slicing direction `n ⟂ ẑ` in `a`'s frame (see the module docs): across both axes for
+/// a cylinder `b`, away from every face normal for a box or a bounded plane's prism
+/// (`planes`, in the plane's frame; `rot_ab` maps `b`'s frame into `a`'s).
+fn slicing_direction(b: &SlicedSolid, rot_ab: &Matrix3, planes: &[HalfSpace]) -> Vector3 {
+    match b {
         SlicedSolid::Cylinder(_) => {
             let axis = rot_ab.column(2);
             let rho = axis.x.hypot(axis.y);
@@ -245,17 +319,36 @@ pub(crate) fn contact_by(
         ),
         SlicedSolid::Plane { .. } => {
             let mut normals = [Vector3::zeros(); 5];
-            for (k, h) in prism_planes[..prism_count].iter().enumerate() {
+            for (k, h) in planes.iter().enumerate() {
                 normals[k] = rot_ab * h.normal;
             }
-            direction_away_from(&normals[..prism_count])
+            direction_away_from(&normals[..planes.len()])
         }
-    };
+    }
+}
+
+/// The pair sliced ([`SlicedPair`]) across [`slicing_direction`], in the working frame F:
+/// axes `(n, ẑ × n, ẑ)` of `a`'s frame, origin at `a`'s centre, lengths divided by the unit;
+/// `b`'s bounds and events from [`bounds`].
+fn sliced(
+    a: &Cylinder,
+    pose_a: &Isometry3,
+    b: &SlicedSolid,
+    pose_b: &Isometry3,
+    work: &mut WorkCounters,
+    placed: &Placed,
+) -> Option<PairContact> {
+    let Placed {
+        ra,
+        hla,
+        unit,
+        rot_ab,
+        centre_a,
+        ..
+    } = *placed;
+    let n = slicing_direction(b, &rot_ab, placed.prism());
     // Working frame F: axes (n, ẑ × n, ẑ) of a's frame, origin at a's centre, lengths / unit.
     let frame = Matrix3::from_columns(&[n, Vector3::z().cross(&n), Vector3::z()]);
-    let to_f = |p: &Vector3| frame.tr_mul(&(p - centre_a)) / unit;
-    let dir_f = |v: &Vector3| frame.tr_mul(v);
-
     let mut pair = SlicedPair {
         radius_a: ra / unit,
         half_length_a: hla / unit,
@@ -275,148 +368,10 @@ pub(crate) fn contact_by(
         Vector3::new(ra, ra, hla) / unit,
     );
     match b {
-        SlicedSolid::Cylinder(c) => {
-            let (r, hl) = (c.radius() / unit, 0.5 * c.length() / unit);
-            let centre = to_f(&(pose_ab * Point3::new(0.0, 0.0, 0.5 * c.length())).coords);
-            let axis = dir_f(&rot_ab.column(2).into_owned());
-            // On the slicing planes (a change at round-off; see the module docs).
-            let (alpha, beta) = (axis.y, axis.z);
-            let norm = alpha.hypot(beta);
-            let (alpha, beta) = (alpha / norm, beta / norm);
-            let across = contact_core::Vector2::new(-beta, alpha);
-            let along = contact_core::Vector2::new(alpha, beta);
-            let box_b = (
-                centre,
-                Matrix3::from_columns(&[
-                    Vector3::x(),
-                    Vector3::new(0.0, across.x, across.y),
-                    Vector3::new(0.0, alpha, beta),
-                ]),
-                Vector3::new(r, r, hl),
-            );
-            work.bounding_volume_tests += 1;
-            if separated(&box_a, &box_b) {
-                return None;
-            }
-            let centre_across = across.dot(&centre.yz());
-            let centre_along = along.dot(&centre.yz());
-            for (k, sign) in [1.0, -1.0].into_iter().enumerate() {
-                pair.bounds[k] = Bound::Side {
-                    across,
-                    centre: centre_across,
-                    sign,
-                    t0: centre.x,
-                    radius: r,
-                };
-                pair.bounds[2 + k] = Bound::Plane {
-                    normal: Vector3::new(0.0, sign * alpha, sign * beta),
-                    offset: sign * centre_along + hl,
-                };
-            }
-            pair.bound_count = 4;
-            pair.range_b = (centre.x - r, centre.x + r);
-            pair.push_cut(centre.x - r);
-            pair.push_cut(centre.x + r);
-            pair.add_rim_plane_events();
-            pair.add_cylinder_events(&centre, &Vector3::new(0.0, alpha, beta), r, hl);
-        }
-        SlicedSolid::Box(c) => {
-            let centre = to_f(&(pose_ab * c.center()).coords);
-            let axes = frame.tr_mul(&rot_ab);
-            let half = c.half_extents() / unit;
-            work.bounding_volume_tests += 1;
-            if separated(&box_a, &(centre, axes, half)) {
-                return None;
-            }
-            for k in 0..3 {
-                let axis = axes.column(k).into_owned();
-                for (s, sign) in [1.0, -1.0].into_iter().enumerate() {
-                    pair.bounds[2 * k + s] = Bound::Plane {
-                        normal: sign * axis,
-                        offset: sign * axis.dot(&centre) + half[k],
-                    };
-                }
-            }
-            pair.bound_count = 6;
-            let mut range = (f64::INFINITY, f64::NEG_INFINITY);
-            let mut corners = [Vector3::zeros(); 8];
-            for (v, corner) in corners.iter_mut().enumerate() {
-                let s = |bit: usize| if v & (1 << bit) != 0 { 1.0 } else { -1.0 };
-                *corner = centre + axes * Vector3::new(s(0) * half.x, s(1) * half.y, s(2) * half.z);
-                range = (range.0.min(corner.x), range.1.max(corner.x));
-            }
-            pair.range_b = range;
-            // The twelve edges: along each axis, from the corners with that bit clear.
-            let mut edges = [(Vector3::zeros(), Vector3::zeros()); 12];
-            let mut count = 0;
-            for k in 0..3 {
-                for (v, corner) in corners.iter().enumerate() {
-                    if v & (1 << k) == 0 {
-                        edges[count] = (*corner, axes.column(k).into_owned());
-                        count += 1;
-                    }
-                }
-            }
-            pair.add_polyhedron_events(&corners, &edges);
-            pair.add_rim_plane_events();
-        }
+        SlicedSolid::Cylinder(c) => bounds::cylinder(&mut pair, c, &frame, &box_a, placed, work)?,
+        SlicedSolid::Box(c) => bounds::cuboid(&mut pair, c, &frame, &box_a, placed, work)?,
         SlicedSolid::Plane { plane, .. } => {
-            let to_world_f = frame.tr_mul(&rot_ab);
-            let origin = to_f(&pose_ab.translation.vector);
-            for (k, h) in prism_planes[..prism_count].iter().enumerate() {
-                let normal = to_world_f * h.normal;
-                pair.bounds[k] = Bound::Plane {
-                    normal,
-                    offset: normal.dot(&origin) + h.offset / unit,
-                };
-            }
-            pair.bound_count = prism_count;
-            work.bounding_volume_tests += 1;
-            // The cylinder's lowest point along each prism plane's normal: outside one, apart.
-            let apart = pair.bounds[..prism_count].iter().any(|bound| match *bound {
-                Bound::Plane { normal, offset } => {
-                    let reach = box_a.2.x * normal.x.hypot(normal.y) + box_a.2.z * normal.z.abs();
-                    -reach >= offset
-                }
-                Bound::Side { .. } => false,
-            });
-            if apart {
-                return None;
-            }
-            let [x0, x1] = plane.x_range();
-            let [y0, y1] = plane.y_range();
-            let at = |x: f64, y: f64| origin + to_world_f * Vector3::new(x, y, 0.0) / unit;
-            let (dx, dy, dz) = (
-                to_world_f.column(0).into_owned(),
-                to_world_f.column(1).into_owned(),
-                to_world_f.column(2).into_owned(),
-            );
-            let mut corners = [Vector3::zeros(); 4];
-            let mut corner_count = 0;
-            // The prism's edges: the top's edges (lines along y at a finite x bound, along
-            // x at a finite y bound) and the vertical edges down from the top's corners.
-            let mut edges = [(Vector3::zeros(), Vector3::zeros()); 8];
-            let mut edge_count = 0;
-            for x in [x0, x1].into_iter().filter(|x| x.is_finite()) {
-                edges[edge_count] = (at(x, 0.0), dy);
-                edge_count += 1;
-            }
-            for y in [y0, y1].into_iter().filter(|y| y.is_finite()) {
-                edges[edge_count] = (at(0.0, y), dx);
-                edge_count += 1;
-            }
-            for x in [x0, x1] {
-                for y in [y0, y1] {
-                    if x.is_finite() && y.is_finite() {
-                        corners[corner_count] = at(x, y);
-                        edges[edge_count] = (at(x, y), dz);
-                        corner_count += 1;
-                        edge_count += 1;
-                    }
-                }
-            }
-            pair.add_polyhedron_events(&corners[..corner_count], &edges[..edge_count]);
-            pair.add_rim_plane_events();
+            bounds::prism(&mut pair, plane, &frame, &box_a, placed, work)?
         }
     }
     let m = pair.integrate(work)?;
@@ -427,7 +382,7 @@ pub(crate) fn contact_by(
         pose_b,
         &m,
         (&frame, &centre_a, unit),
-        &prism_planes[..prism_count],
+        placed.prism(),
     )
 }
 
