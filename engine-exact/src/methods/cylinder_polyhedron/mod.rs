@@ -58,7 +58,7 @@ pub(crate) mod mesh;
 mod section_cap;
 mod trig;
 
-use super::disc_region::{RimArc, disc_region};
+use super::disc_region::{DiscRegion, RimArc, disc_region};
 use super::section::Polygon;
 use super::sliced::SlicedMoments;
 use contact_core::{Matrix3, Vector2, Vector3};
@@ -189,6 +189,67 @@ pub(crate) enum Caps<'a> {
     Section(&'a [[Vector3; 3]]),
 }
 
+/// The intersection's boundary pieces found so far: the flat ones (the caps' and the faces')
+/// and the rim arcs bounding its part of the cylinder's side, and whether more arcs came than
+/// `ARCS` holds.
+struct Pieces<const FLATS: usize, const ARCS: usize> {
+    flats: [Flat; FLATS],
+    flat_count: usize,
+    bounds: [Bound; ARCS],
+    arc_count: usize,
+    overflow: bool,
+}
+
+impl<const FLATS: usize, const ARCS: usize> Pieces<FLATS, ARCS> {
+    /// None found yet.
+    fn new() -> Self {
+        Self {
+            flats: [Flat {
+                normal: Vector3::zeros(),
+                offset: 0.0,
+                area: 0.0,
+                moment: Vector3::zeros(),
+                cap: false,
+            }; FLATS],
+            flat_count: 0,
+            bounds: [Bound {
+                arc: RimArc {
+                    start: 0.0,
+                    half_angle: 0.0,
+                    half_chord: 0.0,
+                },
+                sign: 0.0,
+                z: [0.0; 3],
+                owner: 0,
+            }; ARCS],
+            arc_count: 0,
+            overflow: false,
+        }
+    }
+
+    /// Keeps the rim arc `arc` of the bound `z` (`sign` +1 for an upper bound, −1 for a
+    /// lower one) lying on the piece `owner`, or notes the overflow past `ARCS` arcs.
+    fn keep(&mut self, arc: &RimArc, sign: f64, z: [f64; 3], owner: usize) {
+        if self.arc_count < ARCS {
+            self.bounds[self.arc_count] = Bound {
+                arc: *arc,
+                sign,
+                z,
+                owner: owner as u8,
+            };
+            self.arc_count += 1;
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    /// Adds a flat piece (at most `FLATS`: the caller admits two caps and `FLATS − 2` faces).
+    fn push(&mut self, flat: Flat) {
+        self.flats[self.flat_count] = flat;
+        self.flat_count += 1;
+    }
+}
+
 /// [`moments`] with the caps found as `caps` says, and, when `links` is given, each face with
 /// a piece inside the cylinder marked there and the pieces the caps and the side join
 /// joined, so that the caller can tell whether the intersection is one region.
@@ -206,167 +267,178 @@ pub(crate) fn moments_of<const FLATS: usize, const ARCS: usize>(
     {
         return None;
     }
-    let square = Vector2::new(r, r);
-    let mut bounds = [Bound {
-        arc: RimArc {
-            start: 0.0,
-            half_angle: 0.0,
-            half_chord: 0.0,
-        },
-        sign: 0.0,
-        z: [0.0; 3],
-        owner: 0,
-    }; ARCS];
-    let mut arc_count = 0;
-    let mut overflow = false;
-    let mut keep = |arc: &RimArc, sign: f64, z: [f64; 3], owner: usize| {
-        if arc_count < ARCS {
-            bounds[arc_count] = Bound {
-                arc: *arc,
-                sign,
-                z,
-                owner: owner as u8,
-            };
-            arc_count += 1;
-        } else {
-            overflow = true;
-        }
-    };
-    let mut flats = [Flat {
-        normal: Vector3::zeros(),
-        offset: 0.0,
-        area: 0.0,
-        moment: Vector3::zeros(),
-        cap: false,
-    }; FLATS];
-    let mut flat_count = 0;
+    let mut pieces = Pieces::<FLATS, ARCS>::new();
     // The caps: the disc inside the polyhedron's section.
     for (z, sign) in [(h, 1.0), (-h, -1.0)] {
-        let cap = match caps {
-            Caps::Convex => {
-                let mut section = Polygon::rectangle(square);
-                for f in faces {
-                    section.clip(&f.normal.xy(), f.offset - f.normal.z * z, 4);
-                }
-                let arcs = |arc: &RimArc| keep(arc, sign, [z, 0.0, 0.0], 0);
-                disc_region(r, section.vertices(), arcs)
-            }
-            Caps::Section(triangles) => {
-                // A rim arc lies on the cap's region by the chord it leaves from, and joins
-                // that chord's triangle to the one it enters by; the whole rim is its own node.
-                let rim = if sign > 0.0 {
-                    links::TOP_RIM
-                } else {
-                    links::TOP_RIM + 1
-                };
-                let arcs = |arc: &RimArc, chords: Option<(usize, usize)>| {
-                    let owner = match chords {
-                        Some((from, to)) => {
-                            if let Some(links) = links.as_deref_mut() {
-                                links.join(from, to);
-                            }
-                            from
-                        }
-                        None => {
-                            if let Some(links) = links.as_deref_mut() {
-                                links.piece(rim);
-                            }
-                            rim
-                        }
-                    };
-                    keep(arc, sign, [z, 0.0, 0.0], owner)
-                };
-                section_cap::cap_region(r, z, triangles, arcs)?
-            }
-        };
+        let cap = cap_region_of(r, (z, sign), faces, caps, &mut pieces, links.as_deref_mut())?;
         if let Some(cap) = cap {
-            flats[flat_count] = Flat {
+            pieces.push(Flat {
                 normal: Vector3::z() * sign,
                 offset: h,
                 area: cap.area,
                 moment: Vector3::new(cap.moment.x, cap.moment.y, z * cap.area),
                 cap: true,
-            };
-            flat_count += 1;
+            });
         }
     }
     // The faces' pieces inside the cylinder.
     for (k, f) in faces.iter().enumerate() {
-        let (n, d) = (f.normal, f.offset);
-        if n.z == 0.0 {
-            // Parallel to the axis: the strip |t| ≤ w of the plane inside the cylinder.
-            let across = n.xy();
-            let length = across.norm();
-            let q = d / length;
-            let w2 = (r - q.abs()) * (r + q.abs());
-            if w2.is_nan() || w2 <= 0.0 {
-                continue;
-            }
-            let along = Vector2::new(-across.y, across.x) / length;
-            let mut strip = Polygon::rectangle(Vector2::new(w2.sqrt(), h));
-            // (t, z) is right-handed seen from outside: the corners stay counter-clockwise.
-            let corners = f.corners.map(|c| Vector2::new(along.dot(&c.xy()), c.z));
-            clip_to(&mut strip, &corners[..f.count], 1.0);
-            let m = strip.measures();
-            if m.area > 0.0 {
-                if let Some(links) = links.as_deref_mut() {
-                    links.piece(k);
-                }
-                let xy = across * (q / length * m.area) + along * m.moment.x;
-                flats[flat_count] = Flat {
-                    normal: n,
-                    offset: d,
-                    area: m.area,
-                    moment: Vector3::new(xy.x, xy.y, m.moment.y),
-                    cap: false,
-                };
-                flat_count += 1;
-            }
-            continue;
-        }
-        // Seen along the axis: the projected face within the slab |z(p)| ≤ h.
-        let orient = n.z.signum();
-        let mut projected = Polygon::rectangle(square);
-        clip_to(
-            &mut projected,
-            &f.corners.map(|c| c.xy())[..f.count],
-            orient,
-        );
-        let (nh, nz) = (n.xy(), n.z.abs());
-        projected.clip(&(-orient * nh), h * nz - orient * d, 4);
-        projected.clip(&(orient * nh), h * nz + orient * d, 4);
-        let z = [d / n.z, -r * n.x / n.z, -r * n.y / n.z];
-        let arcs = |arc: &RimArc| keep(arc, orient, z, k);
-        if let Some(part) = disc_region(r, projected.vertices(), arcs) {
+        let piece = if f.normal.z == 0.0 {
+            strip_piece(r, h, f)
+        } else {
+            face_piece(r, h, k, f, &mut pieces)
+        };
+        if let Some(flat) = piece {
             if let Some(links) = links.as_deref_mut() {
                 links.piece(k);
             }
-            let m = part.moment / nz;
-            let mz = (d * part.area - nh.dot(&part.moment)) / (n.z * nz);
-            flats[flat_count] = Flat {
-                normal: n,
-                offset: d,
-                area: part.area / nz,
-                moment: Vector3::new(m.x, m.y, mz),
-                cap: false,
-            };
-            flat_count += 1;
+            pieces.push(flat);
         }
     }
-    if overflow {
+    if pieces.overflow {
         return None;
     }
+    let bounds = &pieces.bounds[..pieces.arc_count];
     if let Some(links) = links {
         if !links.one() {
-            links::join_across_side(links, &bounds[..arc_count]);
+            links::join_across_side(links, bounds);
         }
     }
-    let flats = &flats[..flat_count];
+    Some(divergence_moments(
+        r,
+        &pieces.flats[..pieces.flat_count],
+        bounds,
+    ))
+}
+
+/// The cap at `z` (`sign` +1 for the top, −1 for the bottom) inside the polyhedron, found as
+/// `caps` says, its rim arcs kept in `pieces`; with `links`, each rim arc joins the pieces it
+/// connects. `None` when [`section_cap::cap_region`] declines the section (sliced instead).
+fn cap_region_of<const FLATS: usize, const ARCS: usize>(
+    r: f64,
+    (z, sign): (f64, f64),
+    faces: &[Face],
+    caps: Caps,
+    pieces: &mut Pieces<FLATS, ARCS>,
+    mut links: Option<&mut links::Links>,
+) -> Option<Option<DiscRegion>> {
+    let square = Vector2::new(r, r);
+    Some(match caps {
+        Caps::Convex => {
+            let mut section = Polygon::rectangle(square);
+            for f in faces {
+                section.clip(&f.normal.xy(), f.offset - f.normal.z * z, 4);
+            }
+            let arcs = |arc: &RimArc| pieces.keep(arc, sign, [z, 0.0, 0.0], 0);
+            disc_region(r, section.vertices(), arcs)
+        }
+        Caps::Section(triangles) => {
+            // A rim arc lies on the cap's region by the chord it leaves from, and joins
+            // that chord's triangle to the one it enters by; the whole rim is its own node.
+            let rim = if sign > 0.0 {
+                links::TOP_RIM
+            } else {
+                links::TOP_RIM + 1
+            };
+            let arcs = |arc: &RimArc, chords: Option<(usize, usize)>| {
+                let owner = match chords {
+                    Some((from, to)) => {
+                        if let Some(links) = links.as_deref_mut() {
+                            links.join(from, to);
+                        }
+                        from
+                    }
+                    None => {
+                        if let Some(links) = links.as_deref_mut() {
+                            links.piece(rim);
+                        }
+                        rim
+                    }
+                };
+                pieces.keep(arc, sign, [z, 0.0, 0.0], owner)
+            };
+            section_cap::cap_region(r, z, triangles, arcs)?
+        }
+    })
+}
+
+/// The piece inside the cylinder (radius `r`, caps at `z = ±h`) of the face `f`, parallel to
+/// the axis: the strip `|t| ≤ w` of its plane, clipped to the face; `None` when it has no
+/// area.
+fn strip_piece(r: f64, h: f64, f: &Face) -> Option<Flat> {
+    let (n, d) = (f.normal, f.offset);
+    // Parallel to the axis: the strip |t| ≤ w of the plane inside the cylinder.
+    let across = n.xy();
+    let length = across.norm();
+    let q = d / length;
+    let w2 = (r - q.abs()) * (r + q.abs());
+    if w2.is_nan() || w2 <= 0.0 {
+        return None;
+    }
+    let along = Vector2::new(-across.y, across.x) / length;
+    let mut strip = Polygon::rectangle(Vector2::new(w2.sqrt(), h));
+    // (t, z) is right-handed seen from outside: the corners stay counter-clockwise.
+    let corners = f.corners.map(|c| Vector2::new(along.dot(&c.xy()), c.z));
+    clip_to(&mut strip, &corners[..f.count], 1.0);
+    let m = strip.measures();
+    if m.area > 0.0 {
+        let xy = across * (q / length * m.area) + along * m.moment.x;
+        return Some(Flat {
+            normal: n,
+            offset: d,
+            area: m.area,
+            moment: Vector3::new(xy.x, xy.y, m.moment.y),
+            cap: false,
+        });
+    }
+    None
+}
+
+/// The piece inside the cylinder (radius `r`, caps at `z = ±h`) of face `k` (`f`, not
+/// parallel to the axis): seen along the axis, the projected face within the slab
+/// `|z(p)| ≤ h` and the disc, its rim arcs kept in `pieces`; `None` when it has none.
+fn face_piece<const FLATS: usize, const ARCS: usize>(
+    r: f64,
+    h: f64,
+    k: usize,
+    f: &Face,
+    pieces: &mut Pieces<FLATS, ARCS>,
+) -> Option<Flat> {
+    let (n, d) = (f.normal, f.offset);
+    // Seen along the axis: the projected face within the slab |z(p)| ≤ h.
+    let orient = n.z.signum();
+    let mut projected = Polygon::rectangle(Vector2::new(r, r));
+    clip_to(
+        &mut projected,
+        &f.corners.map(|c| c.xy())[..f.count],
+        orient,
+    );
+    let (nh, nz) = (n.xy(), n.z.abs());
+    projected.clip(&(-orient * nh), h * nz - orient * d, 4);
+    projected.clip(&(orient * nh), h * nz + orient * d, 4);
+    let z = [d / n.z, -r * n.x / n.z, -r * n.y / n.z];
+    let arcs = |arc: &RimArc| pieces.keep(arc, orient, z, k);
+    let part = disc_region(r, projected.vertices(), arcs)?;
+    let m = part.moment / nz;
+    let mz = (d * part.area - nh.dot(&part.moment)) / (n.z * nz);
+    Some(Flat {
+        normal: n,
+        offset: d,
+        area: part.area / nz,
+        moment: Vector3::new(m.x, m.y, mz),
+        cap: false,
+    })
+}
+
+/// The intersection's moments by the divergence theorem from its boundary: the flat pieces
+/// `flats` and the side of the cylinder (radius `r`) between the rim arcs `bounds`; `None`
+/// when it has no volume.
+fn divergence_moments(r: f64, flats: &[Flat], bounds: &[Bound]) -> Option<SlicedMoments> {
     // The divergence theorem about a point of the intersection (the flat pieces' centroid:
     // the intersection is convex), so a shallow region's terms are as small as it is.
     let flat_area: f64 = flats.iter().map(|f| f.area).sum();
     if flat_area.is_nan() || flat_area <= 0.0 {
-        return Some(None);
+        return None;
     }
     let o = flats.iter().fold(Vector3::zeros(), |s, f| s + f.moment) / flat_area;
     // 3V and 4∫(x − o) dV, and the surfaces.
@@ -388,7 +460,7 @@ pub(crate) fn moments_of<const FLATS: usize, const ARCS: usize>(
     // its vector), with `ζ = z − o_z`.
     let (mut side_volume, mut side_moment) = (0.0, Vector3::zeros());
     let (mut side_area, mut side_vector) = (0.0, Vector2::zeros());
-    for bound in &bounds[..arc_count] {
+    for bound in bounds {
         let half = bound.arc.half_angle;
         let arc = Arc::new(bound.arc.start + half, half);
         let zeta = arc.local(bound.z[0] - o.z, bound.z[1], bound.z[2]);
@@ -411,15 +483,15 @@ pub(crate) fn moments_of<const FLATS: usize, const ARCS: usize>(
     moment4 += r * side_moment;
     let volume = volume3 / 3.0;
     if volume.is_nan() || volume <= 0.0 {
-        return Some(None);
+        return None;
     }
-    Some(Some(SlicedMoments {
+    Some(SlicedMoments {
         volume,
         centroid: o + moment4 / (4.0 * volume),
         area_vector_a: Vector3::new(r * side_vector.x, r * side_vector.y, caps_z),
         area_a: area_a + r * side_area,
         area_b,
-    }))
+    })
 }
 
 #[cfg(test)]
