@@ -171,6 +171,47 @@ pub(crate) fn contacts(
         .iter()
         .map(|v| Point3::from((relative * v).coords / unit))
         .collect();
+    let clipped = clip_triangles(mesh, &local, &half, work);
+    let inside = |p: &Point3| inside_mesh(mesh, &local, p);
+    if clipped.polygons.is_empty() && !inside(&Point3::origin()) {
+        return;
+    }
+    let (mut forest, intervals, face_cuts) = regions(mesh, &clipped, &half, inside);
+    let sums = region_sums(
+        &clipped.polygons,
+        &face_cuts,
+        &half,
+        &intervals,
+        &mut forest,
+    );
+    for (root, s) in sums.iter().enumerate() {
+        let Some(o) = s.anchor else { continue };
+        if forest.find(root as u32) as usize != root {
+            continue;
+        }
+        if let Some(c) = region_contact(s, &o, &half, mesh, pose_mesh, &frame, unit) {
+            emit(c);
+        }
+    }
+}
+
+/// The mesh's triangles clipped to the box: the polygons left, and for each its triangle's
+/// (unnormalised) normal and index; for each triangle, its polygon (`NONE` when none).
+struct ClippedMesh {
+    polygons: Vec<Clipped>,
+    normals: Vec<Vector3>,
+    triangle_of: Vec<usize>,
+    polygon_of: Vec<u32>,
+}
+
+/// Clips each triangle of `mesh` (its vertices `local`, in the box's frame and unit) that
+/// reaches the box of half extents `half` to the box.
+fn clip_triangles(
+    mesh: &PreparedMesh,
+    local: &[Point3],
+    half: &Vector3,
+    work: &mut WorkCounters,
+) -> ClippedMesh {
     let mut polygons = Vec::new();
     let mut normals = Vec::new();
     let mut triangle_of = Vec::new();
@@ -184,34 +225,53 @@ pub(crate) fn contacts(
         }
         work.primitive_tests += 1;
         let mut poly = Clipped::triangle(a, b, c);
-        if poly.clip_to_box(&half) {
+        if poly.clip_to_box(half) {
             polygon_of[t] = polygons.len() as u32;
             polygons.push(poly);
             normals.push((b - a).cross(&(c - a)));
             triangle_of.push(t);
         }
     }
-    let inside = |p: &Point3| {
-        let winding: f64 = mesh
-            .triangles
-            .iter()
-            .map(|tri| {
-                let [a, b, c] = tri.map(|v| local[v as usize]);
-                solid_angle(p, &a, &b, &c)
-            })
-            .sum();
-        // Inside-out, the sum is −4π inside the mesh and 0 outside, where its solid is.
-        let threshold = if mesh.inverted { -2.0 } else { 2.0 };
-        winding > threshold * std::f64::consts::PI
-    };
-    if polygons.is_empty() && !inside(&Point3::origin()) {
-        return;
+    ClippedMesh {
+        polygons,
+        normals,
+        triangle_of,
+        polygon_of,
     }
+}
+
+/// True when `p` is inside `mesh`'s solid (its vertices `local`), by the winding number
+/// (the solid angles' sum over `4π`).
+fn inside_mesh(mesh: &PreparedMesh, local: &[Point3], p: &Point3) -> bool {
+    let winding: f64 = mesh
+        .triangles
+        .iter()
+        .map(|tri| {
+            let [a, b, c] = tri.map(|v| local[v as usize]);
+            solid_angle(p, &a, &b, &c)
+        })
+        .sum();
+    // Inside-out, the sum is −4π inside the mesh and 0 outside, where its solid is.
+    let threshold = if mesh.inverted { -2.0 } else { 2.0 };
+    winding > threshold * std::f64::consts::PI
+}
+
+/// The regions (see the module doc): the clipped polygons joined across the mesh's edges
+/// inside the box, along the box's edges (`inside` tells a box corner's side) and from each
+/// hole in a face's caps to the cap around it, in a union–find over the polygons and the
+/// box's corners; with the box edges' intervals and each face's cuts, which the caps take.
+fn regions(
+    mesh: &PreparedMesh,
+    clipped: &ClippedMesh,
+    half: &Vector3,
+    inside: impl Fn(&Point3) -> bool,
+) -> (UnionFind, faces::Intervals, Vec<Vec<(u32, usize)>>) {
+    let polygons = &clipped.polygons;
     let count = polygons.len();
     let mut forest = UnionFind::new(count + 8);
     let next_polygon = |i: u32, k: u8| -> u32 {
-        let t = triangle_of[i as usize];
-        polygon_of[mesh.neighbours[t][k as usize] as usize]
+        let t = clipped.triangle_of[i as usize];
+        clipped.polygon_of[mesh.neighbours[t][k as usize] as usize]
     };
     // Clipped triangles sharing a mesh edge inside the box.
     for (i, poly) in polygons.iter().enumerate() {
@@ -226,9 +286,9 @@ pub(crate) fn contacts(
     }
     let mut intervals = faces::Intervals::new();
     faces::box_edges(
-        &polygons,
-        &normals,
-        &half,
+        polygons,
+        &clipped.normals,
+        half,
         &mut forest,
         |c| {
             let corner = Point3::new(
@@ -240,7 +300,7 @@ pub(crate) fn contacts(
         },
         &mut intervals,
     );
-    let face_cuts: Vec<Vec<(u32, usize)>> = (0..6).map(|f| faces::cuts(&polygons, f)).collect();
+    let face_cuts: Vec<Vec<(u32, usize)>> = (0..6).map(|f| faces::cuts(polygons, f)).collect();
     let mut cut_index = vec![NONE; count];
     for (f, cuts) in face_cuts.iter().enumerate() {
         cut_index.fill(NONE);
@@ -248,16 +308,29 @@ pub(crate) fn contacts(
             cut_index[i as usize] = s as u32;
         }
         faces::join_holes(
-            &polygons,
+            polygons,
             f,
             cuts,
             &cut_index,
             next_polygon,
-            &half,
+            half,
             &intervals,
             &mut forest,
         );
     }
+    (forest, intervals, face_cuts)
+}
+
+/// The sums of each region (see the module doc), at its root in `forest`: its clipped
+/// polygons' flux, moment and area, and its caps' areas on the box's faces.
+fn region_sums(
+    polygons: &[Clipped],
+    face_cuts: &[Vec<(u32, usize)>],
+    half: &Vector3,
+    intervals: &faces::Intervals,
+    forest: &mut UnionFind,
+) -> Vec<Sums> {
+    let count = polygons.len();
     // The sums of each region, at its root.
     let mut sums = vec![Sums::default(); count + 8];
     for (i, poly) in polygons.iter().enumerate() {
@@ -280,22 +353,14 @@ pub(crate) fn contacts(
     }
     for (f, cuts) in face_cuts.iter().enumerate() {
         let (axis, sign) = plane(f);
-        faces::cap_pieces(&polygons, f, cuts, &half, &intervals, |node, p, q| {
+        faces::cap_pieces(polygons, f, cuts, half, intervals, |node, p, q| {
             let root = forest.find(node) as usize;
             let s = &mut sums[root];
             let o = *s.anchor.get_or_insert(Point3::origin());
             s.caps[f] += 0.5 * sign * (p - o).cross(&(q - o))[axis];
         });
     }
-    for (root, s) in sums.iter().enumerate() {
-        let Some(o) = s.anchor else { continue };
-        if forest.find(root as u32) as usize != root {
-            continue;
-        }
-        if let Some(c) = region_contact(s, &o, &half, mesh, pose_mesh, &frame, unit) {
-            emit(c);
-        }
-    }
+    sums
 }
 
 /// The contact of one region from its sums (see the module doc), in the world.
