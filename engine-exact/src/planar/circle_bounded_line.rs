@@ -116,19 +116,69 @@ fn cross(a: &Vector2, b: &Vector2) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
+/// The stretches of `H`'s edges inside `D` (see [`edge_stretches`]), with their lengths.
+struct Stretches {
+    /// Each stretch as (start, end, whether the centre lies on its material side), in
+    /// counter-clockwise order; the first `count` are set.
+    list: [(Vector2, Vector2, bool); 3],
+    /// How many stretches there are.
+    count: usize,
+    /// `L`: the line's stretch inside the disc.
+    top: f64,
+    /// `h₀`: the vertical through `a` inside `R`.
+    h0: f64,
+    /// `h₁`: the vertical through `b` inside `R`.
+    h1: f64,
+}
+
 /// The contact of the disc of radius `r` about the origin with the half-strip
 /// `a ≤ u ≤ b, v ≤ k` (`a < b`, either may be infinite); `None` when they share no area.
 pub(crate) fn local_contact(r: f64, k: f64, a: f64, b: f64) -> Option<Local> {
     if !(k > -r && a < r && b > -r && r > 0.0) {
         return None;
     }
+    let edges = edge_stretches(r, k, a, b);
+    let whole_disc = edges.count == 0;
+    if whole_disc && !(a <= -r && b >= r && k >= r) {
+        return None;
+    }
+    let (pieces, n) = outline(r, &edges.list[..edges.count]);
+    let pieces = &pieces[..n];
+    let (area, centroid) = if whole_disc {
+        (std::f64::consts::PI * r * r, Vector2::zeros())
+    } else {
+        moments(r, pieces)
+    };
+    if !(area > 0.0 && area.is_finite()) {
+        return None;
+    }
+    // S = ½(S_a − S_b) with S_a = (h₀ − h₁, −L) and S_b = (0, W).
+    let width = if k > 0.0 {
+        b.min(r) - a.max(-r)
+    } else {
+        edges.top
+    };
+    let s = Vector2::new(0.5 * (edges.h0 - edges.h1), -0.5 * (edges.top + width));
+    let normal = -s / s.norm();
+    let (on_line, on_circle) = contact_points(r, k, (a, b), &centroid, &normal);
+    Some(Local {
+        normal,
+        on_circle,
+        on_line,
+        area,
+        centroid,
+        length: extent_across(r, k, (a, b), pieces, &normal),
+    })
+}
+
+/// The stretches of `H`'s edges inside `D`, in counter-clockwise order: the line (towards
+/// −u), the vertical through `a` (downwards), the vertical through `b` (upwards).
+fn edge_stretches(r: f64, k: f64, a: f64, b: f64) -> Stretches {
     let half = |t: f64| ((r - t) * (r + t)).sqrt();
     // Each corner is judged once, so the two edges through it agree.
     let corner_a = a * a + k * k < r * r;
     let corner_b = b * b + k * k < r * r;
-    // The stretches of H's edges inside D, in counter-clockwise order: the line (towards
-    // −u), the vertical through `a` (downwards), the vertical through `b` (upwards). Each with
-    // whether the centre lies on its material side (for a lone stretch's arc).
+    // Each with whether the centre lies on its material side (for a lone stretch's arc).
     let mut stretches = [(Vector2::zeros(), Vector2::zeros(), false); 3];
     let mut count = 0;
     let (mut top, mut h0, mut h1) = (0.0, 0.0, 0.0);
@@ -160,11 +210,19 @@ pub(crate) fn local_contact(r: f64, k: f64, a: f64, b: f64) -> Option<Local> {
             count += 1;
         }
     }
-    let whole_disc = count == 0;
-    if whole_disc && !(a <= -r && b >= r && k >= r) {
-        return None;
+    Stretches {
+        list: stretches,
+        count,
+        top,
+        h0,
+        h1,
     }
-    // The outline: each stretch, then the arc to the next one's start.
+}
+
+/// `R`'s outline from its `stretches` (at least one): each stretch, then the arc of the
+/// circle (radius `r`) to the next one's start; the pieces and how many there are.
+fn outline(r: f64, stretches: &[(Vector2, Vector2, bool)]) -> ([Piece; 6], usize) {
+    let count = stretches.len();
     let mut pieces = [Piece::default(); 6];
     let mut n = 0;
     for s in 0..count {
@@ -203,23 +261,23 @@ pub(crate) fn local_contact(r: f64, k: f64, a: f64, b: f64) -> Option<Local> {
             n += 1;
         }
     }
-    let pieces = &pieces[..n];
-    let (area, centroid) = if whole_disc {
-        (std::f64::consts::PI * r * r, Vector2::zeros())
-    } else {
-        moments(r, pieces)
-    };
-    if !(area > 0.0 && area.is_finite()) {
-        return None;
-    }
-    // S = ½(S_a − S_b) with S_a = (h₀ − h₁, −L) and S_b = (0, W).
-    let width = if k > 0.0 { b.min(r) - a.max(-r) } else { top };
-    let s = Vector2::new(0.5 * (h0 - h1), -0.5 * (top + width));
-    let normal = -s / s.norm();
+    (pieces, n)
+}
+
+/// The contact points from the centroid `centroid` along the unit `normal`: along `+n` to
+/// the line `v = k`, clamped to the range `(a, b)`, and along `−n` to the circle of radius
+/// `r`; (on the line, on the circle).
+fn contact_points(
+    r: f64,
+    k: f64,
+    (a, b): (f64, f64),
+    centroid: &Vector2,
+    normal: &Vector2,
+) -> (Vector2, Vector2) {
     // Along +n from g to the line, clamped to the range; along −n to the circle.
     let reach = (k - centroid.y) / normal.y;
     let on_line = Vector2::new((centroid.x + reach * normal.x).clamp(a, b), k);
-    let gn = centroid.dot(&normal);
+    let gn = centroid.dot(normal);
     let g_norm = centroid.norm();
     let inside = (r - g_norm) * (r + g_norm);
     let root = (gn * gn + inside).max(0.0).sqrt();
@@ -229,6 +287,13 @@ pub(crate) fn local_contact(r: f64, k: f64, a: f64, b: f64) -> Option<Local> {
         inside / (root - gn)
     };
     let on_circle = centroid - back * normal;
+    (on_line, on_circle)
+}
+
+/// `R`'s extent across the unit `normal`: over the outline's vertices (the `pieces`' starts),
+/// and the circle's own extremes (radius `r`) where they lie on `R`'s arcs (in the half-strip
+/// `a ≤ u ≤ b, v ≤ k`).
+fn extent_across(r: f64, k: f64, (a, b): (f64, f64), pieces: &[Piece], normal: &Vector2) -> f64 {
     // Extent across n: the outline's vertices, and the circle's own extremes where they lie
     // on R's arcs (in H).
     let across = Vector2::new(-normal.y, normal.x);
@@ -244,14 +309,7 @@ pub(crate) fn local_contact(r: f64, k: f64, a: f64, b: f64) -> Option<Local> {
     if in_strip(-r * across) {
         extent[0] = -r;
     }
-    Some(Local {
-        normal,
-        on_circle,
-        on_line,
-        area,
-        centroid,
-        length: extent[1] - extent[0],
-    })
+    extent[1] - extent[0]
 }
 
 /// Area and centroid of the convex region bounded by `pieces` (arcs of the circle of radius
