@@ -236,55 +236,7 @@ pub(crate) fn contact(
         let [x, y, z] = [half.x, half.y, half.z];
         (center, [0.5; 3], 2.0 * (x * y + y * z + z * x))
     } else {
-        let (step_i, step_j, step_m) = (2.0 * rise[i], 2.0 * rise[j], 2.0 * rise[m]);
-        let per_step = 1.0 / step_m;
-        // The cap over the square: `p = p₀ + a·E_i + b·E_j + N·E_m` on the plane, so
-        // `|∂_a p × ∂_b p|` is the component along `n` of the cross product of
-        // `E_i − (r_i/r_m)·E_m` and `E_j − (r_j/r_m)·E_m`, from three triple products.
-        let (cross_j, cross_m) = (up[j].cross(&normal), up[m].cross(&normal));
-        let (rho_i, rho_j) = (step_i * per_step, step_j * per_step);
-        let slope = 4.0
-            * (up[i].dot(&cross_j) - rho_j * up[i].dot(&cross_m) - rho_i * up[m].dot(&cross_j))
-                .abs();
-        // Depths below the plane at the square's corners on the bottom face (`c = 0`) and the
-        // top (`c = 1`), each from its face centre's height and then the two smaller rises
-        // (see the module's precision notes).
-        let (ri, rj, rm) = (rise[i], rise[j], rise[m]);
-        let (bottom_face, top_face) = (height - rm, height + rm);
-        let levels = [-ri - rj, ri - rj, ri + rj, rj - ri];
-        let bottom = [
-            -(bottom_face + levels[0]),
-            -(bottom_face + levels[1]),
-            -(bottom_face + levels[2]),
-            -(bottom_face + levels[3]),
-        ];
-        let z = moments(clip_square(bottom));
-        let (o, strip) = if -(top_face + levels[0]) > 0.0 {
-            // The top face dips below too: its part is taken off, and the section is the
-            // strip between the two lines, cut out directly rather than as a difference of
-            // two areas that may nearly cancel.
-            let top = [
-                -(top_face + levels[0]),
-                -(top_face + levels[1]),
-                -(top_face + levels[2]),
-                -(top_face + levels[3]),
-            ];
-            (moments(clip_square(top)), strip_area(bottom, top))
-        } else {
-            (Moments::default(), z.area)
-        };
-        let wet = z.first - o.first;
-        if wet <= 0.0 {
-            return None;
-        }
-        // The centroid `(∫a·w, ∫b·w, ∫w²/2)/∫w` in the scaled moments.
-        let per_wet = 1.0 / wet;
-        let a = (z.a - o.a) * (0.25 * per_wet);
-        let b = (z.b - o.b) * (0.25 * per_wet);
-        let c = ((z.second - o.second) * (0.125 * per_step) - o.first) * per_wet;
-        let corner = center - up[0] - up[1] - up[2];
-        let g = corner + 2.0 * (a * up[i] + b * up[j] + c * up[m]);
-        (g, [a, b, c], 0.5 * slope * strip)
+        wet_prism(&up, rise, (i, j, m), height, &normal, &center)?
     };
     // Along `−n` a box coordinate `x_k` falls at `2r_k/|E_k|²` per unit length (`|E_k|² =
     // 4h_k²`), so from `g` the line leaves through the bottom face that comes first,
@@ -307,6 +259,71 @@ pub(crate) fn contact(
         depth: (exit - below) * unit,
         area: area * unit * unit,
     })
+}
+
+/// The part of the box below the plane when a corner lies on each side: the prism along
+/// axis `m` over the unit square in `(a, b)` (see the module doc), from the half axes `up`
+/// turned to rise, their `rise`s along the outward `normal` and the centre's `height` above
+/// the plane (`center` in the working frame). Its centroid, its `(a, b, c)` in the prism's
+/// coordinates and the section's area; `None` when no volume is below.
+// Inlined, as its caller is, so the moments stay in registers.
+#[inline(always)]
+fn wet_prism(
+    up: &[Vector3; 3],
+    rise: [f64; 3],
+    (i, j, m): (usize, usize, usize),
+    height: f64,
+    normal: &Vector3,
+    center: &Vector3,
+) -> Option<(Vector3, [f64; 3], f64)> {
+    let (step_i, step_j, step_m) = (2.0 * rise[i], 2.0 * rise[j], 2.0 * rise[m]);
+    let per_step = 1.0 / step_m;
+    // The cap over the square: `p = p₀ + a·E_i + b·E_j + N·E_m` on the plane, so
+    // `|∂_a p × ∂_b p|` is the component along `n` of the cross product of
+    // `E_i − (r_i/r_m)·E_m` and `E_j − (r_j/r_m)·E_m`, from three triple products.
+    let (cross_j, cross_m) = (up[j].cross(normal), up[m].cross(normal));
+    let (rho_i, rho_j) = (step_i * per_step, step_j * per_step);
+    let slope = 4.0
+        * (up[i].dot(&cross_j) - rho_j * up[i].dot(&cross_m) - rho_i * up[m].dot(&cross_j)).abs();
+    // Depths below the plane at the square's corners on the bottom face (`c = 0`) and the
+    // top (`c = 1`), each from its face centre's height and then the two smaller rises
+    // (see the module's precision notes).
+    let (ri, rj, rm) = (rise[i], rise[j], rise[m]);
+    let (bottom_face, top_face) = (height - rm, height + rm);
+    let levels = [-ri - rj, ri - rj, ri + rj, rj - ri];
+    let bottom = [
+        -(bottom_face + levels[0]),
+        -(bottom_face + levels[1]),
+        -(bottom_face + levels[2]),
+        -(bottom_face + levels[3]),
+    ];
+    let z = moments(clip_square(bottom));
+    let (o, strip) = if -(top_face + levels[0]) > 0.0 {
+        // The top face dips below too: its part is taken off, and the section is the
+        // strip between the two lines, cut out directly rather than as a difference of
+        // two areas that may nearly cancel.
+        let top = [
+            -(top_face + levels[0]),
+            -(top_face + levels[1]),
+            -(top_face + levels[2]),
+            -(top_face + levels[3]),
+        ];
+        (moments(clip_square(top)), strip_area(bottom, top))
+    } else {
+        (Moments::default(), z.area)
+    };
+    let wet = z.first - o.first;
+    if wet <= 0.0 {
+        return None;
+    }
+    // The centroid `(∫a·w, ∫b·w, ∫w²/2)/∫w` in the scaled moments.
+    let per_wet = 1.0 / wet;
+    let a = (z.a - o.a) * (0.25 * per_wet);
+    let b = (z.b - o.b) * (0.25 * per_wet);
+    let c = ((z.second - o.second) * (0.125 * per_step) - o.first) * per_wet;
+    let corner = center - up[0] - up[1] - up[2];
+    let g = corner + 2.0 * (a * up[i] + b * up[j] + c * up[m]);
+    Some((g, [a, b, c], 0.5 * slope * strip))
 }
 
 #[cfg(test)]
