@@ -205,69 +205,8 @@ pub(crate) fn contacts(
         scratch.parent.extend(0..count as u32);
         scratch.sums.clear();
         scratch.sums.resize(count, RegionSums::default());
-        let height = &scratch.height;
-        let below = |tri: &[u32; 3]| tri.iter().any(|&v| height[v as usize] < 0.0);
-        // Regions: union across edges that dip below the plane.
-        for (t, tri) in mesh.triangles.iter().enumerate() {
-            if !below(tri) {
-                continue;
-            }
-            for k in 0..3 {
-                let (a, b) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
-                if height[a].min(height[b]) < 0.0 {
-                    let (ra, rb) = (
-                        find(&mut scratch.parent, t as u32),
-                        find(&mut scratch.parent, mesh.neighbours[t][k]),
-                    );
-                    if ra != rb {
-                        scratch.parent[ra.max(rb) as usize] = ra.min(rb);
-                    }
-                }
-            }
-        }
-        // Sums over each triangle's part below the plane, tetrahedra from the region's anchor
-        // on the plane.
-        for (t, tri) in mesh.triangles.iter().enumerate() {
-            if !below(tri) {
-                continue;
-            }
-            work.primitive_tests += 1;
-            let mut poly = [Point3::origin(); 4];
-            let mut len = 0;
-            for k in 0..3 {
-                let (i, j) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
-                let (p, q) = (mesh.vertices[i], mesh.vertices[j]);
-                let (dp, dq) = (height[i], height[j]);
-                if dp <= 0.0 {
-                    poly[len] = p;
-                    len += 1;
-                }
-                if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
-                    poly[len] = p + (q - p) * (dp / (dp - dq));
-                    len += 1;
-                }
-            }
-            let root = find(&mut scratch.parent, t as u32) as usize;
-            let sums = &mut scratch.sums[root];
-            let o = *sums.anchor.get_or_insert_with(|| {
-                // The foot of a vertex below the plane.
-                let v = tri
-                    .iter()
-                    .copied()
-                    .find(|&v| height[v as usize] < 0.0)
-                    .unwrap_or(tri[0]);
-                mesh.vertices[v as usize] - height[v as usize] * n
-            });
-            let a = poly[0] - o;
-            for k in 1..len.saturating_sub(1) {
-                let (b, c) = (poly[k] - o, poly[k + 1] - o);
-                let v6 = a.dot(&b.cross(&c));
-                sums.six_volume += v6;
-                sums.moment += v6 * (a + b + c);
-                let piece = 0.5 * (poly[k] - poly[0]).cross(&(poly[k + 1] - poly[0]));
-                sums.area += piece;
-            }
-        }
+        join_regions(mesh, &scratch.height, &mut scratch.parent);
+        sum_regions(mesh, &n, scratch, work);
         // One contact per region, in the order of its first triangle (its root).
         for root in 0..count {
             if scratch.parent[root] as usize != root || scratch.sums[root].six_volume <= 0.0 {
@@ -289,6 +228,82 @@ pub(crate) fn contacts(
             });
         }
     });
+}
+
+/// True when a corner of the triangle `tri` lies below the plane (`height` per vertex).
+fn dips_below(height: &[f64], tri: &[u32; 3]) -> bool {
+    tri.iter().any(|&v| height[v as usize] < 0.0)
+}
+
+/// The regions: the triangles that dip below the plane (`height` per vertex) joined in
+/// `parent` (a union–find, each root its region's first triangle) across the edges that dip
+/// below it.
+fn join_regions(mesh: &PreparedMesh, height: &[f64], parent: &mut [u32]) {
+    // Regions: union across edges that dip below the plane.
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        if !dips_below(height, tri) {
+            continue;
+        }
+        for k in 0..3 {
+            let (a, b) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
+            if height[a].min(height[b]) < 0.0 {
+                let (ra, rb) = (find(parent, t as u32), find(parent, mesh.neighbours[t][k]));
+                if ra != rb {
+                    parent[ra.max(rb) as usize] = ra.min(rb);
+                }
+            }
+        }
+    }
+}
+
+/// Each region's sums at its root in `scratch`: over each triangle's part below the plane
+/// (outward normal `n` in the mesh's frame), the tetrahedra from the region's anchor on the
+/// plane.
+fn sum_regions(mesh: &PreparedMesh, n: &Vector3, scratch: &mut Scratch, work: &mut WorkCounters) {
+    let height = &scratch.height;
+    // Sums over each triangle's part below the plane, tetrahedra from the region's anchor
+    // on the plane.
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        if !dips_below(height, tri) {
+            continue;
+        }
+        work.primitive_tests += 1;
+        let mut poly = [Point3::origin(); 4];
+        let mut len = 0;
+        for k in 0..3 {
+            let (i, j) = (tri[k] as usize, tri[(k + 1) % 3] as usize);
+            let (p, q) = (mesh.vertices[i], mesh.vertices[j]);
+            let (dp, dq) = (height[i], height[j]);
+            if dp <= 0.0 {
+                poly[len] = p;
+                len += 1;
+            }
+            if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
+                poly[len] = p + (q - p) * (dp / (dp - dq));
+                len += 1;
+            }
+        }
+        let root = find(&mut scratch.parent, t as u32) as usize;
+        let sums = &mut scratch.sums[root];
+        let o = *sums.anchor.get_or_insert_with(|| {
+            // The foot of a vertex below the plane.
+            let v = tri
+                .iter()
+                .copied()
+                .find(|&v| height[v as usize] < 0.0)
+                .unwrap_or(tri[0]);
+            mesh.vertices[v as usize] - height[v as usize] * n
+        });
+        let a = poly[0] - o;
+        for k in 1..len.saturating_sub(1) {
+            let (b, c) = (poly[k] - o, poly[k + 1] - o);
+            let v6 = a.dot(&b.cross(&c));
+            sums.six_volume += v6;
+            sums.moment += v6 * (a + b + c);
+            let piece = 0.5 * (poly[k] - poly[0]).cross(&(poly[k + 1] - poly[0]));
+            sums.area += piece;
+        }
+    }
 }
 
 /// Where the line from `p` along the unit `direction` first meets the mesh's surface (every
