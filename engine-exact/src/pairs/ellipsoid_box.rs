@@ -52,55 +52,13 @@ pub(crate) fn contact(
     if lo >= hi {
         return None;
     }
-    let mut cuts = [0.0; 33];
-    cuts[0] = lo;
-    cuts[1] = hi;
-    let mut n = 2;
-    let mut push = |t: f64, cuts: &mut [f64; 33]| {
-        if t > lo && t < hi && n < cuts.len() {
-            cuts[n] = t;
-            n += 1;
-        }
-    };
-    let sides = [
-        (Vector2::x(), half.x),
-        (-Vector2::x(), half.x),
-        (Vector2::y(), half.y),
-        (-Vector2::y(), half.y),
-    ];
-    for (normal, d) in sides {
-        let (alpha, beta, gamma) = a.support_terms(&normal);
-        let e = d - alpha;
-        let (roots, count) = quadratic_roots(
-            beta * beta + gamma * gamma,
-            -2.0 * beta * e,
-            e * e - gamma * gamma,
-        );
-        for &tau in &roots[..count] {
-            if tau.abs() < 1.0 {
-                push(a.t_of(tau), &mut cuts);
-            }
-        }
-    }
     let corners = [
         Vector2::new(-half.x, -half.y),
         Vector2::new(half.x, -half.y),
         Vector2::new(half.x, half.y),
         Vector2::new(-half.x, half.y),
     ];
-    let inverse = a.inverse();
-    let rate = inverse.column(2).into_owned();
-    for corner in &corners {
-        let start = inverse * (Vector3::new(corner.x, corner.y, 0.0) - c);
-        let (roots, count) = quadratic_roots(
-            rate.norm_squared(),
-            2.0 * start.dot(&rate),
-            start.norm_squared() - 1.0,
-        );
-        for &t in &roots[..count] {
-            push(t, &mut cuts);
-        }
-    }
+    let (mut cuts, mut n) = side_and_edge_cuts(&a, &c, &half, &corners, (lo, hi));
     let overlap = |t: f64| {
         let sa = a.section(t)?;
         let inverse = sa.matrix.try_inverse()?;
@@ -142,4 +100,61 @@ pub(crate) fn contact(
             }
         },
     )
+}
+
+/// The slice positions in `(lo, hi)` where the section of the ellipsoid `a` (centre `c`) meets
+/// the box (half extents `half`, vertical edges through `corners`) in a new way: where it
+/// touches the plane of each side, and where it passes each vertical edge; `lo` and `hi`
+/// first, at most 33, and their number.
+fn side_and_edge_cuts(
+    a: &SlicedEllipsoid,
+    c: &Vector3,
+    half: &Vector3,
+    corners: &[Vector2<f64>; 4],
+    (lo, hi): (f64, f64),
+) -> ([f64; 33], usize) {
+    let mut cuts = [0.0; 33];
+    cuts[0] = lo;
+    cuts[1] = hi;
+    let mut n = 2;
+    let mut push = |t: f64, cuts: &mut [f64; 33]| {
+        if t > lo && t < hi && n < cuts.len() {
+            cuts[n] = t;
+            n += 1;
+        }
+    };
+    let sides = [
+        (Vector2::x(), half.x),
+        (-Vector2::x(), half.x),
+        (Vector2::y(), half.y),
+        (-Vector2::y(), half.y),
+    ];
+    for (normal, d) in sides {
+        let (alpha, beta, gamma) = a.support_terms(&normal);
+        let e = d - alpha;
+        let (roots, count) = quadratic_roots(
+            beta * beta + gamma * gamma,
+            -2.0 * beta * e,
+            e * e - gamma * gamma,
+        );
+        for &tau in &roots[..count] {
+            if tau.abs() < 1.0 {
+                push(a.t_of(tau), &mut cuts);
+            }
+        }
+    }
+    let inverse = a.inverse();
+    let rate = inverse.column(2).into_owned();
+    for corner in corners {
+        let start = inverse * (Vector3::new(corner.x, corner.y, 0.0) - c);
+        let (roots, count) = quadratic_roots(
+            rate.norm_squared(),
+            2.0 * start.dot(&rate),
+            start.norm_squared() - 1.0,
+        );
+        for &t in &roots[..count] {
+            push(t, &mut cuts);
+        }
+    }
+    (cuts, n)
 }
