@@ -51,15 +51,7 @@ pub(super) fn middle(setup: &Setup, p: usize) -> Option<f64> {
 pub(super) fn label(setup: &Setup, local: &[Vector3]) -> (Labels, UnionFind) {
     let pieces = setup.cuts.len() - 1;
     let mut slice = Slice::default();
-    let mut offsets = Vec::with_capacity(pieces);
-    let mut chords = 0;
-    for p in 0..pieces {
-        offsets.push(chords);
-        if let Some(t) = middle(setup, p) {
-            setup.slice(p, t, &mut slice);
-            chords += slice.chords.len();
-        }
-    }
+    let (offsets, chords) = chord_offsets(setup, &mut slice);
     let mut labels = Labels {
         offsets,
         chords,
@@ -76,31 +68,7 @@ pub(super) fn label(setup: &Setup, local: &[Vector3]) -> (Labels, UnionFind) {
         let (ro, ri) = setup.profile.circles(t);
         setup.slice(p, t, &mut slice);
         let node = |c: usize| (labels.offsets[p] + c) as u32;
-        // Chords joined along their loops: across a mesh edge, the neighbour's segment ends
-        // where this one starts (its last chord) and starts where this one ends (its first).
-        let mut by_triangle = std::collections::HashMap::with_capacity(slice.segments.len());
-        for (k, seg) in slice.segments.iter().enumerate() {
-            by_triangle.insert(seg.0, k);
-        }
-        let (first, last) = chord_ends(&slice);
-        for (c, &(k, a, e, _)) in slice.chords.iter().enumerate() {
-            let (tri, start, start_edge, end, end_edge) = slice.segments[k];
-            let across = |edge: u8| by_triangle.get(&neighbours[tri as usize][edge as usize]);
-            if a == start {
-                if let Some(&j) = across(start_edge) {
-                    if let Some(l) = last[j] {
-                        forest.union(node(c), node(l));
-                    }
-                }
-            }
-            if e == end {
-                if let Some(&j) = across(end_edge) {
-                    if let Some(f) = first[j] {
-                        forest.union(node(c), node(f));
-                    }
-                }
-            }
-        }
+        join_along_loops(&slice, labels.offsets[p], neighbours, &mut forest);
         for (crossings, touching) in [
             (&slice.outer, &mut on_outer[p]),
             (&slice.inner, &mut on_inner[p]),
@@ -142,23 +110,80 @@ pub(super) fn label(setup: &Setup, local: &[Vector3]) -> (Labels, UnionFind) {
         join_holes(&rays, neighbours, &mut forest);
     }
     join_across_cuts(setup, &labels, &mut forest);
-    for (full, on, node) in [
-        (
-            &labels.outer,
-            &on_outer,
-            Labels::outer_node as fn(&Labels, usize) -> usize,
-        ),
-        (&labels.inner, &on_inner, Labels::inner_node),
-    ] {
-        for p in (0..pieces).filter(|&p| full[p]) {
-            for q in [p.wrapping_sub(1), p + 1] {
-                for &n in on.get(q).into_iter().flatten() {
-                    forest.union(node(&labels, p) as u32, n);
+    join_full_circles(&labels, [&on_outer, &on_inner], &mut forest);
+    (labels, forest)
+}
+
+/// Each piece's first chord node (`offsets[p]`), labelling each non-empty piece at its
+/// middle (in `slice`), and the chords in all.
+fn chord_offsets(setup: &Setup, slice: &mut Slice) -> (Vec<usize>, usize) {
+    let pieces = setup.cuts.len() - 1;
+    let mut offsets = Vec::with_capacity(pieces);
+    let mut chords = 0;
+    for p in 0..pieces {
+        offsets.push(chords);
+        if let Some(t) = middle(setup, p) {
+            setup.slice(p, t, slice);
+            chords += slice.chords.len();
+        }
+    }
+    (offsets, chords)
+}
+
+/// Joins the chords of one piece's `slice` (its chord nodes from `offset`) along their loops:
+/// across a mesh edge, the neighbour's segment ends where this one starts (its last chord) and
+/// starts where this one ends (its first).
+fn join_along_loops(slice: &Slice, offset: usize, neighbours: &[[u32; 3]], forest: &mut UnionFind) {
+    let node = |c: usize| (offset + c) as u32;
+    // Chords joined along their loops: across a mesh edge, the neighbour's segment ends
+    // where this one starts (its last chord) and starts where this one ends (its first).
+    let mut by_triangle = std::collections::HashMap::with_capacity(slice.segments.len());
+    for (k, seg) in slice.segments.iter().enumerate() {
+        by_triangle.insert(seg.0, k);
+    }
+    let (first, last) = chord_ends(slice);
+    for (c, &(k, a, e, _)) in slice.chords.iter().enumerate() {
+        let (tri, start, start_edge, end, end_edge) = slice.segments[k];
+        let across = |edge: u8| by_triangle.get(&neighbours[tri as usize][edge as usize]);
+        if a == start {
+            if let Some(&j) = across(start_edge) {
+                if let Some(l) = last[j] {
+                    forest.union(node(c), node(l));
+                }
+            }
+        }
+        if e == end {
+            if let Some(&j) = across(end_edge) {
+                if let Some(f) = first[j] {
+                    forest.union(node(c), node(f));
                 }
             }
         }
     }
-    (labels, forest)
+}
+
+/// Joins each full outer (inner) circle with the nodes touching the outer (inner) circle in
+/// the pieces next to it (`on[0]` per piece for the outer, `on[1]` for the inner): the solid's
+/// surface inside the mesh runs on across the cut.
+fn join_full_circles(labels: &Labels, on: [&Vec<Vec<u32>>; 2], forest: &mut UnionFind) {
+    let pieces = labels.outer.len();
+    let [on_outer, on_inner] = on;
+    for (full, on, node) in [
+        (
+            &labels.outer,
+            on_outer,
+            Labels::outer_node as fn(&Labels, usize) -> usize,
+        ),
+        (&labels.inner, on_inner, Labels::inner_node),
+    ] {
+        for p in (0..pieces).filter(|&p| full[p]) {
+            for q in [p.wrapping_sub(1), p + 1] {
+                for &n in on.get(q).into_iter().flatten() {
+                    forest.union(node(labels, p) as u32, n);
+                }
+            }
+        }
+    }
 }
 
 /// Each segment's first and last chord in the slice.
