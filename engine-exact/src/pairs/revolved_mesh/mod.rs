@@ -328,6 +328,48 @@ pub(crate) fn sliced_regions(
     work: &mut WorkCounters,
     per_region: &mut dyn FnMut(&Region, u32, &mut WorkCounters),
 ) {
+    let (sliced, flat, mut heights) = reaching_triangles(&profile, local, mesh, cofactor, work);
+    events::add_events(&sliced, local, mesh, &profile, &mut heights);
+    let cuts = merged_cuts(heights, profile.range().1);
+    let pieces = cuts.len() - 1;
+    let active = active_triangles(&cuts, &sliced);
+    let setup = Setup {
+        profile,
+        sliced,
+        cuts,
+        active,
+        mesh,
+        cofactor,
+    };
+    let (labels, mut forest) = regions::label(&setup, local);
+    let roots: Vec<u32> = (0..labels.nodes() as u32).map(|n| forest.find(n)).collect();
+    let (found, touched) = found_regions(&setup, &labels, &roots, pieces);
+    let region = Region {
+        setup: &setup,
+        roots: &roots,
+        labels: &labels,
+        flat: &flat,
+        touched: &touched,
+    };
+    for root in found {
+        per_region(&region, root, work);
+    }
+}
+
+/// A triangle parallel to the slices: its index in the mesh and its vertices.
+type FlatTriangle = (u32, [Vector3; 3]);
+
+/// The triangles of `mesh` (vertices `local`) that can reach the bounding box of the solid of
+/// `profile`: those that cross the slices (their area scaled by `cofactor`, see
+/// [`area_scale`]), those parallel to them (`flat`), and the heights where the section may
+/// change (the range's ends and the vertices within it).
+fn reaching_triangles(
+    profile: &Profile,
+    local: &[Vector3],
+    mesh: &PreparedMesh,
+    cofactor: Option<Vector3>,
+    work: &mut WorkCounters,
+) -> (Vec<SlicedTriangle>, Vec<FlatTriangle>, Vec<f64>) {
     let (z0, z1) = profile.range();
     let outer = profile.outer();
     // The triangles that can reach the solid's bounding box.
@@ -355,7 +397,12 @@ pub(crate) fn sliced_regions(
             None => flat.push((t as u32, v)),
         }
     }
-    events::add_events(&sliced, local, mesh, &profile, &mut heights);
+    (sliced, flat, heights)
+}
+
+/// The cuts from the event `heights`, sorted, those closer than [`MERGE`] merged, the last
+/// set to the solid's top `z1`.
+fn merged_cuts(mut heights: Vec<f64>, z1: f64) -> Vec<f64> {
     // Heights closer than `MERGE` are one cut: vertices on one plane of the mesh reach the
     // solid's frame a few ulps apart, and a piece between them would be labelled at a middle
     // whose combinatorics are those of neither side.
@@ -370,9 +417,12 @@ pub(crate) fn sliced_regions(
     if let Some(last) = cuts.last_mut() {
         *last = z1;
     }
-    let pieces = cuts.len() - 1;
-    let active: Vec<Vec<u32>> = cuts
-        .windows(2)
+    cuts
+}
+
+/// Per piece between `cuts`, the `sliced` triangles spanning it (to [`MERGE`]).
+fn active_triangles(cuts: &[f64], sliced: &[SlicedTriangle]) -> Vec<Vec<u32>> {
+    cuts.windows(2)
         .map(|w| {
             (0..sliced.len() as u32)
                 .filter(|&s| {
@@ -381,24 +431,25 @@ pub(crate) fn sliced_regions(
                 })
                 .collect()
         })
-        .collect();
-    let setup = Setup {
-        profile,
-        sliced,
-        cuts,
-        active,
-        mesh,
-        cofactor,
-    };
-    let (labels, mut forest) = regions::label(&setup, local);
-    let roots: Vec<u32> = (0..labels.nodes() as u32).map(|n| forest.find(n)).collect();
+        .collect()
+}
+
+/// The regions' roots (`roots` per node of `labels`), in the order of their smallest node,
+/// and the (triangle, root) pairs of the triangles each touches (for the faces parallel to
+/// the slices), both sorted and without repeats.
+fn found_regions(
+    setup: &Setup,
+    labels: &regions::Labels,
+    roots: &[u32],
+    pieces: usize,
+) -> (Vec<u32>, Vec<(u32, u32)>) {
     // The regions, in the order of their smallest node, and the triangles each touches (for
     // the faces parallel to the slices).
     let mut found: Vec<u32> = Vec::new();
     let mut touched: Vec<(u32, u32)> = Vec::new();
     let mut scratch = Slice::default();
     for p in 0..pieces {
-        let Some(t) = regions::middle(&setup, p) else {
+        let Some(t) = regions::middle(setup, p) else {
             continue;
         };
         setup.slice(p, t, &mut scratch);
@@ -418,14 +469,5 @@ pub(crate) fn sliced_regions(
     touched.dedup();
     found.sort_unstable();
     found.dedup();
-    let region = Region {
-        setup: &setup,
-        roots: &roots,
-        labels: &labels,
-        flat: &flat,
-        touched: &touched,
-    };
-    for root in found {
-        per_region(&region, root, work);
-    }
+    (found, touched)
 }
