@@ -45,6 +45,32 @@ pub(super) fn area_scale(v: &[Vector3; 3], cofactor: Option<Vector3>) -> f64 {
     }
 }
 
+/// At `x` (the height `t` for a frustum, the angle `θ` of `t = ρ sin θ` for a torus): `t`,
+/// `dt/dx`, and per circle (outer, inner) the factor of `r·sweep` in `S_z` and in the
+/// unsigned area; `None` where a torus' `s = ρ cos θ` is not positive.
+fn profile_scales(profile: &Profile, x: f64) -> Option<(f64, f64, (f64, f64), f64)> {
+    // t, dt/dx, and per circle the factor of `r·sweep` in S_z and in the unsigned area.
+    Some(match *profile {
+        Profile::Frustum { slope, .. } => (x, 1.0, (-slope, 0.0), (1.0 + slope * slope).sqrt()),
+        Profile::Torus { small, .. } => {
+            let (sin, cos) = x.sin_cos();
+            let (t, s) = (small * sin, small * cos);
+            if s.is_nan() || s <= 0.0 {
+                return None;
+            }
+            (t, s, (t, t), small)
+        }
+    })
+}
+
+/// Adds a piece's section moments `m` (area, `∫x`, `∫y`), times `sign`, to the integrand
+/// `out`.
+fn add_moments(out: &mut [f64; COMPONENTS], m: [f64; 3], sign: f64) {
+    out[0] += sign * m[0];
+    out[2] += sign * m[1];
+    out[3] += sign * m[2];
+}
+
 /// What a region's integration reads.
 pub(crate) struct Region<'a> {
     pub(crate) setup: &'a Setup<'a>,
@@ -62,17 +88,9 @@ impl Region<'_> {
     fn integrand(&self, root: u32, x: f64, slice: &mut Slice) -> [f64; COMPONENTS] {
         let setup = self.setup;
         let mut out = [0.0; COMPONENTS];
-        // t, dt/dx, and per circle the factor of `r·sweep` in S_z and in the unsigned area.
-        let (t, jacobian, (sz_outer, sz_inner), unsigned) = match setup.profile {
-            Profile::Frustum { slope, .. } => (x, 1.0, (-slope, 0.0), (1.0 + slope * slope).sqrt()),
-            Profile::Torus { small, .. } => {
-                let (sin, cos) = x.sin_cos();
-                let (t, s) = (small * sin, small * cos);
-                if s.is_nan() || s <= 0.0 {
-                    return out;
-                }
-                (t, s, (t, t), small)
-            }
+        let Some((t, jacobian, (sz_outer, sz_inner), unsigned)) = profile_scales(&setup.profile, x)
+        else {
+            return out;
         };
         let labels = self.labels;
         let pieces = labels.outer.len();
@@ -87,20 +105,7 @@ impl Region<'_> {
         }
         setup.slice(p, t, slice);
         let node = |c: usize| labels.offsets[p] + c;
-        let mut mesh_area = 0.0;
-        let mut add = |m: [f64; 3], sign: f64| {
-            out[0] += sign * m[0];
-            out[2] += sign * m[1];
-            out[3] += sign * m[2];
-        };
-        for (c, &(k, a, e, _)) in slice.chords.iter().enumerate() {
-            if self.roots.get(node(c)) != Some(&root) {
-                continue;
-            }
-            add(chord_moments(&a, &e), 1.0);
-            let tri = &setup.sliced[setup.active[p][k] as usize];
-            mesh_area += (e - a).norm() / tri.slope * tri.scale;
-        }
+        let mesh_area = self.chord_terms(root, p, slice, &mut out);
         // Per circle: radius, orientation (+1 outer, −1 inner), S_z factor, crossings, full.
         let mut lateral = [0.0; 4];
         let circles = [
@@ -127,7 +132,7 @@ impl Region<'_> {
             }
             let mut swept = |start: f64, sweep: f64| {
                 let (m, normal) = arc_moments(r, start, sweep);
-                add(m, sign);
+                add_moments(&mut out, m, sign);
                 lateral[0] += sign * r * normal.x;
                 lateral[1] += sign * r * normal.y;
                 lateral[2] += sz * r * sweep;
@@ -163,6 +168,23 @@ impl Region<'_> {
         out[7] = lateral[3];
         out[8] = mesh_area * jacobian;
         out
+    }
+
+    /// The chords of region `root` in piece `p`'s `slice`: their section moments added to
+    /// `out` (see [`add_moments`]), and the mesh's surface they sweep per unit of `t`.
+    fn chord_terms(&self, root: u32, p: usize, slice: &Slice, out: &mut [f64; COMPONENTS]) -> f64 {
+        let setup = self.setup;
+        let node = |c: usize| self.labels.offsets[p] + c;
+        let mut mesh_area = 0.0;
+        for (c, &(k, a, e, _)) in slice.chords.iter().enumerate() {
+            if self.roots.get(node(c)) != Some(&root) {
+                continue;
+            }
+            add_moments(out, chord_moments(&a, &e), 1.0);
+            let tri = &setup.sliced[setup.active[p][k] as usize];
+            mesh_area += (e - a).norm() / tri.slope * tri.scale;
+        }
+        mesh_area
     }
 
     /// Region `root`'s contact with the revolved `solid`.
