@@ -399,48 +399,72 @@ pub(crate) fn contacts(
     } else {
         &parts[..wedge_count]
     };
-    let solid_b = *solid;
-    let solid_a = Solid::Box(*cuboid);
-    let rot_b = pose_b.rotation;
+    let (solid_a, solid_b) = (Solid::Box(*cuboid), *solid);
     for wedge in regions {
-        let mut r = integrate(&setup, wedge, &cuts[..count], work);
-        let (mut s_z, mut solid_area, mut box_area) = (r[6], r[7], r[8]);
-        setup.flat_terms(wedge, &mut s_z, &mut solid_area, &mut box_area);
-        r[6] = s_z;
-        let volume = r[0];
-        if volume.is_nan() || volume <= 0.0 {
-            continue;
-        }
-        let centroid_b = Vector3::new(r[2], r[3], r[1]) / volume * unit;
-        let centroid = pose_b * Point3::from(centroid_b);
-        let s_solid = rot_b * Vector3::new(r[4], r[5], r[6]) * (unit * unit);
-        let moments = VolumeMoments {
-            volume: volume * unit * unit * unit,
-            centroid,
-            area_vector_a: -s_solid,
-            surface_area: (solid_area + box_area) * unit * unit,
-            length: unit,
-        };
-        let box_inside = solid_area <= ENCLOSED * (solid_area + box_area);
-        let fallback = || {
-            if box_inside {
-                let p = pose_b.inverse_transform_point(&centroid).coords;
-                rot_b * signed_distance(&solid_b, &p).2
-            } else {
-                let p = pose_a.inverse_transform_point(&centroid).coords;
-                -(pose_a.rotation * signed_distance(&solid_a, &p).2)
-            }
-        };
-        let convex = matches!(profile, Profile::Frustum { .. });
-        let found = volume_contact::contact_of_region(
-            &moments,
-            |g, d| surface_point_along_w(&solid_a, pose_a, g, d),
-            |g, d| surface_point_along_w(&solid_b, pose_b, g, d),
-            fallback,
-            convex,
+        let found = region_contact(
+            &setup,
+            wedge,
+            &cuts[..count],
+            (&solid_a, pose_a),
+            (&solid_b, pose_b),
+            unit,
+            work,
         );
         if let Some(c) = found {
             emit(c);
         }
     }
+}
+
+/// The contact of the region of `setup`'s intersection within `wedge` (all of it for a
+/// frustum), integrated between `cuts`: the box `a` (`solid_a` at `pose_a`) against the
+/// frustum or torus `b` (`solid_b` at `pose_b`), lengths over `unit`; `None` when the region
+/// has no volume.
+fn region_contact(
+    setup: &Setup,
+    wedge: &Wedge,
+    cuts: &[f64],
+    (solid_a, pose_a): (&Solid, &Isometry3),
+    (solid_b, pose_b): (&Solid, &Isometry3),
+    unit: f64,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let profile = setup.profile;
+    let rot_b = pose_b.rotation;
+    let mut r = integrate(setup, wedge, cuts, work);
+    let (mut s_z, mut solid_area, mut box_area) = (r[6], r[7], r[8]);
+    setup.flat_terms(wedge, &mut s_z, &mut solid_area, &mut box_area);
+    r[6] = s_z;
+    let volume = r[0];
+    if volume.is_nan() || volume <= 0.0 {
+        return None;
+    }
+    let centroid_b = Vector3::new(r[2], r[3], r[1]) / volume * unit;
+    let centroid = pose_b * Point3::from(centroid_b);
+    let s_solid = rot_b * Vector3::new(r[4], r[5], r[6]) * (unit * unit);
+    let moments = VolumeMoments {
+        volume: volume * unit * unit * unit,
+        centroid,
+        area_vector_a: -s_solid,
+        surface_area: (solid_area + box_area) * unit * unit,
+        length: unit,
+    };
+    let box_inside = solid_area <= ENCLOSED * (solid_area + box_area);
+    let fallback = || {
+        if box_inside {
+            let p = pose_b.inverse_transform_point(&centroid).coords;
+            rot_b * signed_distance(solid_b, &p).2
+        } else {
+            let p = pose_a.inverse_transform_point(&centroid).coords;
+            -(pose_a.rotation * signed_distance(solid_a, &p).2)
+        }
+    };
+    let convex = matches!(profile, Profile::Frustum { .. });
+    volume_contact::contact_of_region(
+        &moments,
+        |g, d| surface_point_along_w(solid_a, pose_a, g, d),
+        |g, d| surface_point_along_w(solid_b, pose_b, g, d),
+        fallback,
+        convex,
+    )
 }
