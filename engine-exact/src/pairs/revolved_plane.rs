@@ -330,37 +330,7 @@ pub(crate) fn contact(
     side: f64,
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
-    let (profile, size) = match *solid {
-        Solid::Cylinder(c) => {
-            let (r, len) = (c.radius(), c.length());
-            (Profile::Frustum { r0: r, r1: r, len }, r.max(len))
-        }
-        Solid::Frustum(f) => {
-            let (r0, r1, len) = (f.bottom_radius(), f.top_radius(), f.length());
-            (Profile::Frustum { r0, r1, len }, r0.max(r1).max(len))
-        }
-        Solid::Torus(t) => (
-            Profile::Torus {
-                big: t.major_radius(),
-                small: t.minor_radius(),
-            },
-            t.major_radius() + t.minor_radius(),
-        ),
-        Solid::Box(_) => return None,
-    };
-    // Working unit: lengths divided by a power of two near the solid's size.
-    let unit = crate::methods::clipped::unit_for(size);
-    let profile = match profile {
-        Profile::Frustum { r0, r1, len } => Profile::Frustum {
-            r0: r0 / unit,
-            r1: r1 / unit,
-            len: len / unit,
-        },
-        Profile::Torus { big, small } => Profile::Torus {
-            big: big / unit,
-            small: small / unit,
-        },
-    };
+    let (profile, unit) = working_profile(solid)?;
     let rotation = pose_s.rotation;
     let normal_w = side * (pose_plane.rotation * Vector3::z());
     let n = rotation.inverse_transform_vector(&normal_w);
@@ -401,18 +371,7 @@ pub(crate) fn contact(
     }
     let along_e = sums[1] / sums[0];
     let centroid = Vector3::new(e.x * along_e, e.y * along_e, sums[2] / sums[0]);
-    // Section area across the plane, over |u| ≤ the solid's bounding radius.
-    let bound = match profile {
-        Profile::Frustum { r0, r1, len } => r0.max(r1).hypot(len),
-        Profile::Torus { big, small } => big + small,
-    };
-    let mut cuts = [0.0; 10];
-    let count = section_cuts(&profile, a, b, h, bound, &mut cuts);
-    let mut across = |u: f64| [chord(&profile, a, b, h, u)];
-    // The area may keep an error of 1e-14 of the solid's size² per piece.
-    let area_floor = 1e-14 * bound * bound;
-    let section =
-        ADAPTIVE.integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_floor], work)[0];
+    let section = section_area(&profile, (a, b, h), work);
     let area = if section > 0.0 {
         section
     } else {
@@ -431,6 +390,61 @@ pub(crate) fn contact(
         depth: (on_plane - on_solid).norm(),
         area,
     })
+}
+
+/// The profile of `solid` (a cylinder, frustum or torus) in working units, and the unit: a
+/// power of two near the solid's size. `None` for a box.
+fn working_profile(solid: &Solid) -> Option<(Profile, f64)> {
+    let (profile, size) = match *solid {
+        Solid::Cylinder(c) => {
+            let (r, len) = (c.radius(), c.length());
+            (Profile::Frustum { r0: r, r1: r, len }, r.max(len))
+        }
+        Solid::Frustum(f) => {
+            let (r0, r1, len) = (f.bottom_radius(), f.top_radius(), f.length());
+            (Profile::Frustum { r0, r1, len }, r0.max(r1).max(len))
+        }
+        Solid::Torus(t) => (
+            Profile::Torus {
+                big: t.major_radius(),
+                small: t.minor_radius(),
+            },
+            t.major_radius() + t.minor_radius(),
+        ),
+        Solid::Box(_) => return None,
+    };
+    // Working unit: lengths divided by a power of two near the solid's size.
+    let unit = crate::methods::clipped::unit_for(size);
+    let profile = match profile {
+        Profile::Frustum { r0, r1, len } => Profile::Frustum {
+            r0: r0 / unit,
+            r1: r1 / unit,
+            len: len / unit,
+        },
+        Profile::Torus { big, small } => Profile::Torus {
+            big: big / unit,
+            small: small / unit,
+        },
+    };
+    Some((profile, unit))
+}
+
+/// The area of the solid's section by the plane `n·x = h` (`n = (a·e, b)` in the solid's
+/// frame, working units), integrated across the plane over `|u|` up to the solid's bounding
+/// radius; not positive when the plane does not cut the solid.
+fn section_area(profile: &Profile, (a, b, h): (f64, f64, f64), work: &mut WorkCounters) -> f64 {
+    let profile = *profile;
+    // Section area across the plane, over |u| ≤ the solid's bounding radius.
+    let bound = match profile {
+        Profile::Frustum { r0, r1, len } => r0.max(r1).hypot(len),
+        Profile::Torus { big, small } => big + small,
+    };
+    let mut cuts = [0.0; 10];
+    let count = section_cuts(&profile, a, b, h, bound, &mut cuts);
+    let mut across = |u: f64| [chord(&profile, a, b, h, u)];
+    // The area may keep an error of 1e-14 of the solid's size² per piece.
+    let area_floor = 1e-14 * bound * bound;
+    ADAPTIVE.integrate_pieces(&mut cuts[..count], &mut across, &|_| [area_floor], work)[0]
 }
 
 /// The whole surface of the solid (working units).
