@@ -160,19 +160,11 @@ fn contact_by(
     })
 }
 
-/// The solid's volume, its first moments along `e` (radial, towards the plane's normal) and
-/// along the axis, and the chords' integral where the plane crosses between the caps, for
-/// the plane `a·u + b·z ≤ h` in the cylinder's frame (see the module doc).
+/// The cuts of `u ∈ [−R, R]` for [`slice_moments`]: its ends (`φ = ±π/2`) and between them
+/// the kinks of `ℓ(u)`, where the plane `a·u + b·z = h` meets the planes of the bottom and
+/// top caps (clamped to `±R`), sorted by `u`; the cuts and their number (two to four).
 #[inline(always)]
-fn slice_moments(
-    a: f64,
-    b: f64,
-    h: f64,
-    r: f64,
-    len: f64,
-    rule: Rule,
-    work: &mut WorkCounters,
-) -> (f64, f64, f64, f64) {
+fn kink_cuts(a: f64, b: f64, h: f64, r: f64, len: f64) -> ([Cut; 4], usize) {
     // Kinks of ℓ(u) with the sine u/R of their angle φ = asin(u/R), sorted, with the ends
     // ±π/2. The angle itself (an `asin`) and its cosine are taken only for a piece that
     // needs them: one the end-piece series does not serve.
@@ -216,6 +208,25 @@ fn slice_moments(
     if count == 4 && cuts[1].u.total_cmp(&cuts[2].u).is_gt() {
         cuts.swap(1, 2);
     }
+    (cuts, count)
+}
+
+/// The solid's volume, its first moments along `e` (radial, towards the plane's normal) and
+/// along the axis, and the chords' integral where the plane crosses between the caps, for
+/// the plane `a·u + b·z ≤ h` in the cylinder's frame (see the module doc).
+#[inline(always)]
+fn slice_moments(
+    a: f64,
+    b: f64,
+    h: f64,
+    r: f64,
+    len: f64,
+    rule: Rule,
+    work: &mut WorkCounters,
+) -> (f64, f64, f64, f64) {
+    let (cuts, count) = kink_cuts(a, b, h, r, len);
+    // Divisions are slow and chain: each divisor's reciprocal once.
+    let inv_r = 1.0 / r;
     // Each cut's angle and antiderivatives at most once, for the pieces on both sides of it.
     let (mut antiderivatives, mut formed) = ([[0.0; 3]; 4], [false; 4]);
     let (mut volume, mut moment_u, mut moment_z, mut section) = (0.0, 0.0, 0.0, 0.0);
