@@ -51,6 +51,82 @@ pub(crate) fn cap_region(
     mut arc: impl FnMut(&RimArc, Option<(usize, usize)>),
 ) -> Option<Option<DiscRegion>> {
     let near = NEAR * (r + c.abs());
+    let Chords {
+        mut crossings,
+        count,
+        origin,
+        mut area,
+        mut moment,
+        edge_length,
+        rim_inside,
+    } = chords(r, c, near, triangles)?;
+    let crossings = &mut crossings[..count];
+    crossings.sort_unstable_by(|x, y| x.angle.total_cmp(&y.angle));
+    for k in 0..count {
+        let next = &crossings[(k + 1) % count];
+        if next.leaves == crossings[k].leaves || (next.at - crossings[k].at).norm() <= near {
+            return None;
+        }
+    }
+    if count == 0 && rim_inside {
+        arc(
+            &RimArc {
+                start: 0.0,
+                half_angle: PI,
+                half_chord: 0.0,
+            },
+            None,
+        );
+        area += PI * r * r;
+    }
+    if let Some(o) = origin {
+        for k in (0..count).filter(|&k| crossings[k].leaves) {
+            // The rim from v round to w, counter-clockwise.
+            let (v, w) = (crossings[k].at, crossings[(k + 1) % count].at);
+            let turn = v.perp(&w).atan2(v.dot(&w));
+            let rim = RimArc {
+                start: crossings[k].angle,
+                half_angle: 0.5 * if turn > 0.0 { turn } else { turn + 2.0 * PI },
+                half_chord: 0.5 * (w - v).norm(),
+            };
+            let twice = (v - o).perp(&(w - o));
+            area += 0.5 * twice + r * r * segment_area_factor(rim.half_angle);
+            moment +=
+                twice / 6.0 * (o + v + w) + 2.0 / 3.0 * rim.half_chord.powi(3) * rim.bisector();
+            let next = crossings[(k + 1) % count].owner;
+            arc(&rim, Some((crossings[k].owner, next)));
+        }
+    }
+    Some((area > 0.0).then_some(DiscRegion {
+        area,
+        moment,
+        edge_length,
+    }))
+}
+
+/// The chords of the cap: each segment's part inside the disc, with the rim crossings and the
+/// fan sums they add (see [`cap_region`]).
+struct Chords {
+    /// The rim crossings, the first `count`, in the triangles' order.
+    crossings: [Crossing; MAX_CROSSINGS],
+    /// How many crossings there are.
+    count: usize,
+    /// The fan's origin: the first chord's start (`None` without chords).
+    origin: Option<Vector2>,
+    /// The chords' fan triangles' area.
+    area: f64,
+    /// Their first moment.
+    moment: Vector2,
+    /// The chords' total length.
+    edge_length: f64,
+    /// The parity of the segments crossing the ray from the rim point `(r, 0)` along `+x`.
+    rim_inside: bool,
+}
+
+/// The chords of the disc of radius `r` on the plane `z = c` through the section of
+/// `triangles` (see [`cap_region`]); `None` where the cap is declined: a vertex within `near`
+/// of the plane, a segment's end within `near` of the rim, more crossings than kept.
+fn chords(r: f64, c: f64, near: f64, triangles: &[[Vector3; 3]]) -> Option<Chords> {
     let mut crossings = [Crossing {
         angle: 0.0,
         leaves: false,
@@ -108,48 +184,15 @@ pub(crate) fn cap_region(
     if overflow {
         return None;
     }
-    let crossings = &mut crossings[..count];
-    crossings.sort_unstable_by(|x, y| x.angle.total_cmp(&y.angle));
-    for k in 0..count {
-        let next = &crossings[(k + 1) % count];
-        if next.leaves == crossings[k].leaves || (next.at - crossings[k].at).norm() <= near {
-            return None;
-        }
-    }
-    if count == 0 && rim_inside {
-        arc(
-            &RimArc {
-                start: 0.0,
-                half_angle: PI,
-                half_chord: 0.0,
-            },
-            None,
-        );
-        area += PI * r * r;
-    }
-    if let Some(o) = origin {
-        for k in (0..count).filter(|&k| crossings[k].leaves) {
-            // The rim from v round to w, counter-clockwise.
-            let (v, w) = (crossings[k].at, crossings[(k + 1) % count].at);
-            let turn = v.perp(&w).atan2(v.dot(&w));
-            let rim = RimArc {
-                start: crossings[k].angle,
-                half_angle: 0.5 * if turn > 0.0 { turn } else { turn + 2.0 * PI },
-                half_chord: 0.5 * (w - v).norm(),
-            };
-            let twice = (v - o).perp(&(w - o));
-            area += 0.5 * twice + r * r * segment_area_factor(rim.half_angle);
-            moment +=
-                twice / 6.0 * (o + v + w) + 2.0 / 3.0 * rim.half_chord.powi(3) * rim.bisector();
-            let next = crossings[(k + 1) % count].owner;
-            arc(&rim, Some((crossings[k].owner, next)));
-        }
-    }
-    Some((area > 0.0).then_some(DiscRegion {
+    Some(Chords {
+        crossings,
+        count,
+        origin,
         area,
         moment,
         edge_length,
-    }))
+        rim_inside,
+    })
 }
 
 #[cfg(test)]
