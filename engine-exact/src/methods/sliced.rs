@@ -358,13 +358,9 @@ impl SlicedPair {
         best
     }
 
-    /// The moments of the intersection, or `None` when it has no volume.
-    pub fn integrate(&self, work: &mut WorkCounters) -> Option<SlicedMoments> {
-        let lo = (-self.radius_a).max(self.range_b.0);
-        let hi = self.radius_a.min(self.range_b.1);
-        if lo.is_nan() || hi.is_nan() || lo >= hi {
-            return None;
-        }
+    /// The cuts of `[lo, hi]`: its ends and `b`'s cuts inside it, sorted, those closer than
+    /// round-off of the range dropped; the cuts and their number.
+    fn sorted_cuts(&self, lo: f64, hi: f64) -> ([f64; quadrature::MAX_PIECES + 1], usize) {
         let mut cuts = [0.0; quadrature::MAX_PIECES + 1];
         cuts[0] = lo;
         cuts[1] = hi;
@@ -384,9 +380,15 @@ impl SlicedPair {
                 unique += 1;
             }
         }
-        let count = unique;
+        (cuts, unique)
+    }
+
+    /// The intersection's extent `(t_min, t_max)` within `[lo, hi]`, found from a `t` inside
+    /// it (the middle of a piece between `cuts`, else the largest margin); `None` when there
+    /// is none.
+    fn extent(&self, lo: f64, hi: f64, cuts: &[f64]) -> Option<(f64, f64)> {
         // One t inside the intersection's extent.
-        let inside = cuts[..count]
+        let inside = cuts
             .windows(2)
             .map(|p| 0.5 * (p[0] + p[1]))
             .find(|&t| self.not_empty(t))
@@ -404,6 +406,18 @@ impl SlicedPair {
         } else {
             bisect(hi, inside, |t| self.not_empty(t))
         };
+        Some((t_min, t_max))
+    }
+
+    /// The moments of the intersection, or `None` when it has no volume.
+    pub fn integrate(&self, work: &mut WorkCounters) -> Option<SlicedMoments> {
+        let lo = (-self.radius_a).max(self.range_b.0);
+        let hi = self.radius_a.min(self.range_b.1);
+        if lo.is_nan() || hi.is_nan() || lo >= hi {
+            return None;
+        }
+        let (cuts, count) = self.sorted_cuts(lo, hi);
+        let (t_min, t_max) = self.extent(lo, hi, &cuts[..count])?;
         // Keep the cuts strictly inside [t_min, t_max].
         let mut kept = [0.0; quadrature::MAX_PIECES + 1];
         kept[0] = t_min;
