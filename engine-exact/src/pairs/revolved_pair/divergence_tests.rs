@@ -221,36 +221,7 @@ fn one_lateral_surface_agrees_with_both() {
         tried += 1;
         assert!(tried < 20_000, "{applied:?}");
         let case = tried % 4;
-        let long = |rng: &mut Rng, cylinder: bool| {
-            let (r0, len) = (rng.uniform(0.2, 0.7), rng.uniform(3.0, 6.0));
-            if cylinder {
-                Solid::Cylinder(Cylinder::new(r0, len).unwrap())
-            } else {
-                Solid::Frustum(Frustum::new(r0, rng.uniform(0.1, 0.9), len).unwrap())
-            }
-        };
-        // 0: both cylinders; 1: the cylinder a; 2: the cylinder b; 3: both frusta.
-        let (a, b) = (
-            long(&mut rng, case == 0 || case == 1),
-            long(&mut rng, case == 0 || case == 2),
-        );
-        let (la, lb) = (
-            super::dimensions(&a).unwrap().2,
-            super::dimensions(&b).unwrap().2,
-        );
-        let axis = loop {
-            let v = rng.unit();
-            if v.z.abs() < 0.95 {
-                break v;
-            }
-        };
-        let turn = contact_core::UnitQuaternion::rotation_between(&Vector3::z(), &axis).unwrap();
-        let middle = Vector3::new(
-            rng.uniform(-0.6, 0.6),
-            rng.uniform(-0.6, 0.6),
-            0.5 * la + rng.uniform(-0.5, 0.5),
-        );
-        let pose_b = Isometry3::from_parts((middle - axis * (0.5 * lb)).into(), turn);
+        let (a, b, pose_b, (la, lb)) = long_crossing(&mut rng, case);
         let pose_a = Isometry3::identity();
         let mut work = WorkCounters::default();
         let Some((pair, _, lo, hi)) = super::setup(&a, &pose_a, &b, &pose_b, &mut work) else {
@@ -263,57 +234,116 @@ fn one_lateral_surface_agrees_with_both() {
         let both = divergence_sums(&pair, &across, (lo, hi), Surfaces::Both, &mut work)
             .unwrap()
             .unwrap();
-        let (v1, v2) = (one[0], both[0]);
-        assert!((v1 - v2).abs() <= 1e-12 * v2, "{one:?}\n{both:?}");
-        let centroid = |r: &[f64; 9]| Vector3::new(r[2], r[3], r[1]) / r[0];
-        assert!(
-            (centroid(&one) - centroid(&both)).norm() <= 1e-11,
-            "{one:?}\n{both:?}"
-        );
-        let area = |r: &[f64; 9]| Vector3::new(r[4], r[5], r[6]);
-        assert!(
-            (area(&one) - area(&both)).norm() <= 1e-11 * area(&both).norm(),
-            "{one:?}\n{both:?}"
-        );
-        // The surface integrated (a's, or b's for the fields along a cylinder a's axis) is
-        // the same surface inside the other solid either way.
-        let same = |k: usize| (one[k] - both[k]).abs() <= 1e-11 * both[k];
-        assert!(same(7) || same(8), "{one:?}\n{both:?}");
+        assert_sums_agree(&one, &both);
         applied[case] += 1;
         // Both cylinders: against the polygon slicing. A frustum: against the closer of the
         // polar slicings across either axis, each of which is off by up to 4e-9 in the normal
         // on some of these long crossings (not the same ones; both divergence paths and the
         // other slicing agreeing there to 1e-14).
         let got = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Divergence);
-        let want = if case == 0 {
-            use crate::pairs::cylinder_sliced::{self, SlicedSolid};
-            let (Solid::Cylinder(ca), Solid::Cylinder(cb)) = (a, b) else {
-                unreachable!("case 0 is two cylinders")
-            };
-            let method = cylinder_sliced::Method::Sliced;
-            cylinder_sliced::contact_by(
-                &ca,
-                &pose_a,
-                &SlicedSolid::Cylinder(cb),
-                &pose_b,
-                &mut work,
-                method,
-            )
-        } else {
-            let along_a = contact_by(&a, &pose_a, &b, &pose_b, &mut work, Method::Sliced);
-            let along_b = contact_by(&b, &pose_b, &a, &pose_a, &mut work, Method::Sliced)
-                .map(|c| c.swapped());
-            let off = |c: &Option<PairContact>| match (c, &got) {
-                (Some(c), Some(g)) => g.errors(c, la.max(lb)).iter().copied().fold(0.0, f64::max),
-                _ => f64::INFINITY,
-            };
-            if off(&along_a) <= off(&along_b) {
-                along_a
-            } else {
-                along_b
-            }
-        };
+        let want = slicing_reference(case, (&a, &pose_a), (&b, &pose_b), &got, &mut work);
         tally(&mut worst, (&got, &want), la.max(lb), &(a, b, pose_b));
     }
     eprintln!("one lateral surface, {applied:?} of {tried}: worst against slicing {worst:?}");
+}
+
+/// A long solid crossing another of case `case` (0: both cylinders; 1: the cylinder `a`; 2:
+/// the cylinder `b`; 3: both frusta), drawn from `rng`: `a`, `b`, `b`'s pose (`a` at the
+/// identity) and their lengths.
+fn long_crossing(rng: &mut Rng, case: usize) -> (Solid, Solid, Isometry3, (f64, f64)) {
+    let long = |rng: &mut Rng, cylinder: bool| {
+        let (r0, len) = (rng.uniform(0.2, 0.7), rng.uniform(3.0, 6.0));
+        if cylinder {
+            Solid::Cylinder(Cylinder::new(r0, len).unwrap())
+        } else {
+            Solid::Frustum(Frustum::new(r0, rng.uniform(0.1, 0.9), len).unwrap())
+        }
+    };
+    // 0: both cylinders; 1: the cylinder a; 2: the cylinder b; 3: both frusta.
+    let (a, b) = (
+        long(rng, case == 0 || case == 1),
+        long(rng, case == 0 || case == 2),
+    );
+    let (la, lb) = (
+        super::dimensions(&a).unwrap().2,
+        super::dimensions(&b).unwrap().2,
+    );
+    let axis = loop {
+        let v = rng.unit();
+        if v.z.abs() < 0.95 {
+            break v;
+        }
+    };
+    let turn = contact_core::UnitQuaternion::rotation_between(&Vector3::z(), &axis).unwrap();
+    let middle = Vector3::new(
+        rng.uniform(-0.6, 0.6),
+        rng.uniform(-0.6, 0.6),
+        0.5 * la + rng.uniform(-0.5, 0.5),
+    );
+    let pose_b = Isometry3::from_parts((middle - axis * (0.5 * lb)).into(), turn);
+    (a, b, pose_b, (la, lb))
+}
+
+/// The sums from one lateral surface against both surfaces': volume, centroid, area vector
+/// and the surface integrated (see [`one_lateral_surface_agrees_with_both`]).
+fn assert_sums_agree(one: &[f64; 9], both: &[f64; 9]) {
+    let (v1, v2) = (one[0], both[0]);
+    assert!((v1 - v2).abs() <= 1e-12 * v2, "{one:?}\n{both:?}");
+    let centroid = |r: &[f64; 9]| Vector3::new(r[2], r[3], r[1]) / r[0];
+    assert!(
+        (centroid(one) - centroid(both)).norm() <= 1e-11,
+        "{one:?}\n{both:?}"
+    );
+    let area = |r: &[f64; 9]| Vector3::new(r[4], r[5], r[6]);
+    assert!(
+        (area(one) - area(both)).norm() <= 1e-11 * area(both).norm(),
+        "{one:?}\n{both:?}"
+    );
+    // The surface integrated (a's, or b's for the fields along a cylinder a's axis) is
+    // the same surface inside the other solid either way.
+    let same = |k: usize| (one[k] - both[k]).abs() <= 1e-11 * both[k];
+    assert!(same(7) || same(8), "{one:?}\n{both:?}");
+}
+
+/// The slicing's contact to check the divergence contact `got` against: for two cylinders
+/// the polygon slicing; with a frustum, the closer to `got` of the polar slicings across
+/// either axis.
+fn slicing_reference(
+    case: usize,
+    (a, pose_a): (&Solid, &Isometry3),
+    (b, pose_b): (&Solid, &Isometry3),
+    got: &Option<PairContact>,
+    work: &mut WorkCounters,
+) -> Option<PairContact> {
+    let (la, lb) = (
+        super::dimensions(a).unwrap().2,
+        super::dimensions(b).unwrap().2,
+    );
+    if case == 0 {
+        use crate::pairs::cylinder_sliced::{self, SlicedSolid};
+        let (Solid::Cylinder(ca), Solid::Cylinder(cb)) = (a, b) else {
+            unreachable!("case 0 is two cylinders")
+        };
+        let method = cylinder_sliced::Method::Sliced;
+        cylinder_sliced::contact_by(
+            ca,
+            pose_a,
+            &SlicedSolid::Cylinder(*cb),
+            pose_b,
+            work,
+            method,
+        )
+    } else {
+        let along_a = contact_by(a, pose_a, b, pose_b, work, Method::Sliced);
+        let along_b = contact_by(b, pose_b, a, pose_a, work, Method::Sliced).map(|c| c.swapped());
+        let off = |c: &Option<PairContact>| match (c, got) {
+            (Some(c), Some(g)) => g.errors(c, la.max(lb)).iter().copied().fold(0.0, f64::max),
+            _ => f64::INFINITY,
+        };
+        if off(&along_a) <= off(&along_b) {
+            along_a
+        } else {
+            along_b
+        }
+    }
 }
