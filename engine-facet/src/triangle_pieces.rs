@@ -104,7 +104,6 @@ fn split(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, id: u3
     let node = s.nodes[id as usize];
     let (own_mesh, other_mesh) = if node.side == 0 { (a, b) } else { (b, a) };
     let range = node.hit_start as usize..(node.hit_start + node.hit_count) as usize;
-    let k = range.len();
     let Scratch {
         hits,
         node_hits,
@@ -113,93 +112,24 @@ fn split(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, id: u3
         ..
     } = &mut *s;
     let local: &[u32] = &node_hits[range.clone()];
-    // 1. Chains: hits whose other triangles are edge neighbours.
-    if k <= SMALL && one_chain(node.side, local, hits, other_mesh) {
+    if local.len() <= SMALL && one_chain(node.side, local, hits, other_mesh) {
         return;
     }
-    w.others.clear();
-    w.others.extend(
-        local
-            .iter()
-            .enumerate()
-            .map(|(i, &h)| (other_triangle(node.side, &hits[h as usize]), i as u32)),
-    );
-    w.others.sort_unstable();
-    w.parent.clear();
-    w.parent.extend(0..k as u32);
-    for n in 0..k {
-        let (u, i) = w.others[n];
-        for nb in other_mesh.neighbors[u as usize] {
-            if let Ok(m) = w.others.binary_search_by_key(&nb, |e| e.0) {
-                unite(&mut w.parent, i, w.others[m].1);
-            }
-        }
-    }
-    w.chain_of.clear();
-    let mut chains = 0u32;
-    for i in 0..k as u32 {
-        let root = find(&mut w.parent, i);
-        let c = if root == i {
-            chains += 1;
-            chains - 1
-        } else {
-            w.chain_of[root as usize]
-        };
-        w.chain_of.push(c);
-    }
+    let chains = w.label_chains(node.side, local, hits, other_mesh);
     if chains == 1 {
         return;
     }
-    // 2. Chains bounding one inside face are one piece.
     w.segments.clear();
     w.segments.extend(
         local
             .iter()
             .map(|&h| Segment::of(node.side, &hits[h as usize])),
     );
-    let segments = &w.segments;
-    let normal = segments[0].own_normal;
-    let touch = 1e-12 * own_mesh.size;
-    w.group.clear();
-    w.group.extend(0..chains);
-    for ci in 0..chains {
-        for cj in ci + 1..chains {
-            if find(&mut w.group, ci) == find(&mut w.group, cj) {
-                continue;
-            }
-            if one_face(segments, &w.chain_of, ci, cj, &normal, touch) {
-                unite(&mut w.group, ci, cj);
-            }
-        }
-    }
-    w.piece_of_chain.clear();
-    w.piece_of_chain.resize(chains as usize, NO_PIECE);
-    let mut pieces = 0u32;
-    for c in 0..chains {
-        let root = find(&mut w.group, c);
-        if w.piece_of_chain[root as usize] == NO_PIECE {
-            w.piece_of_chain[root as usize] = pieces;
-            pieces += 1;
-        }
-        w.piece_of_chain[c as usize] = w.piece_of_chain[root as usize];
-    }
-    let piece_of_chain = &w.piece_of_chain;
+    let pieces = w.group_chains(chains, 1e-12 * own_mesh.size);
     if pieces == 1 {
         return;
     }
-    // 3. Each edge to the piece of the segment nearest its midpoint.
-    let corners = corners_in_a(own_mesh, node.side, node.tri, x);
-    w.edges.clear();
-    w.edges.resize(pieces as usize, 0);
-    for e in 0..3 {
-        let mid = 0.5 * (corners[e] + corners[(e + 1) % 3]);
-        let nearest = (0..k)
-            .map(|i| (segments[i].distance_to(&mid), i))
-            .min_by(|u, v| u.0.total_cmp(&v.0))
-            .map_or(0, |(_, i)| i);
-        let p = piece_of_chain[w.chain_of[nearest] as usize] as usize;
-        w.edges[p] |= 1 << e;
-    }
+    w.assign_edges(&corners_in_a(own_mesh, node.side, node.tri, x), pieces);
     // The hits in piece order; the first piece keeps the node, the others get nodes of their
     // own, linked in order.
     w.reordered.clear();
@@ -207,35 +137,135 @@ fn split(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, id: u3
         local
             .iter()
             .enumerate()
-            .map(|(i, &h)| (piece_of_chain[w.chain_of[i] as usize], h)),
+            .map(|(i, &h)| (w.piece_of_chain[w.chain_of[i] as usize], h)),
     );
     w.reordered.sort_by_key(|e| e.0);
-    for (slot, &(_, h)) in node_hits[range.clone()].iter_mut().zip(&w.reordered) {
+    for (slot, &(_, h)) in node_hits[range].iter_mut().zip(&w.reordered) {
         *slot = h;
     }
-    let mut start = node.hit_start;
-    let mut previous = id;
-    for p in 0..pieces {
-        let count = w.reordered.iter().filter(|e| e.0 == p).count() as u32;
-        let piece_id = if p == 0 {
-            id
-        } else {
-            let new_id = nodes.len() as u32;
-            nodes.push(RegionNode {
-                parent: new_id,
-                ..node
-            });
-            nodes[previous as usize].next_piece = new_id;
-            new_id
-        };
-        let piece = &mut nodes[piece_id as usize];
-        piece.hit_start = start;
-        piece.hit_count = count;
-        piece.edges = w.edges[p as usize];
-        piece.split = true;
-        piece.next_piece = NO_PIECE;
-        start += count;
-        previous = piece_id;
+    w.make_pieces(nodes, id, pieces);
+}
+
+impl PieceScratch {
+    /// Step 1: each local hit's chain in `chain_of`; returns the number of chains.
+    fn label_chains(
+        &mut self,
+        side: u8,
+        local: &[u32],
+        hits: &[Hit],
+        other_mesh: &FacetMesh,
+    ) -> u32 {
+        let k = local.len();
+        self.others.clear();
+        self.others.extend(
+            local
+                .iter()
+                .enumerate()
+                .map(|(i, &h)| (other_triangle(side, &hits[h as usize]), i as u32)),
+        );
+        self.others.sort_unstable();
+        self.parent.clear();
+        self.parent.extend(0..k as u32);
+        for n in 0..k {
+            let (u, i) = self.others[n];
+            for nb in other_mesh.neighbors[u as usize] {
+                if let Ok(m) = self.others.binary_search_by_key(&nb, |e| e.0) {
+                    unite(&mut self.parent, i, self.others[m].1);
+                }
+            }
+        }
+        self.chain_of.clear();
+        let mut chains = 0u32;
+        for i in 0..k as u32 {
+            let root = find(&mut self.parent, i);
+            let c = if root == i {
+                chains += 1;
+                chains - 1
+            } else {
+                self.chain_of[root as usize]
+            };
+            self.chain_of.push(c);
+        }
+        chains
+    }
+
+    /// Step 2: chains bounding one inside face are one piece (`piece_of_chain`); returns the
+    /// number of pieces.
+    fn group_chains(&mut self, chains: u32, touch: f64) -> u32 {
+        let normal = self.segments[0].own_normal;
+        self.group.clear();
+        self.group.extend(0..chains);
+        for ci in 0..chains {
+            for cj in ci + 1..chains {
+                if find(&mut self.group, ci) == find(&mut self.group, cj) {
+                    continue;
+                }
+                if one_face(&self.segments, &self.chain_of, ci, cj, &normal, touch) {
+                    unite(&mut self.group, ci, cj);
+                }
+            }
+        }
+        self.piece_of_chain.clear();
+        self.piece_of_chain.resize(chains as usize, NO_PIECE);
+        let mut pieces = 0u32;
+        for c in 0..chains {
+            let root = find(&mut self.group, c);
+            if self.piece_of_chain[root as usize] == NO_PIECE {
+                self.piece_of_chain[root as usize] = pieces;
+                pieces += 1;
+            }
+            self.piece_of_chain[c as usize] = self.piece_of_chain[root as usize];
+        }
+        pieces
+    }
+
+    /// Step 3: each edge of the triangle (`corners`) to the piece of the segment nearest its
+    /// midpoint, in `edges`.
+    fn assign_edges(&mut self, corners: &[Vector3; 3], pieces: u32) {
+        self.edges.clear();
+        self.edges.resize(pieces as usize, 0);
+        for e in 0..3 {
+            let mid = 0.5 * (corners[e] + corners[(e + 1) % 3]);
+            let nearest = self
+                .segments
+                .iter()
+                .enumerate()
+                .map(|(i, s)| (s.distance_to(&mid), i))
+                .min_by(|u, v| u.0.total_cmp(&v.0))
+                .map_or(0, |(_, i)| i);
+            let p = self.piece_of_chain[self.chain_of[nearest] as usize] as usize;
+            self.edges[p] |= 1 << e;
+        }
+    }
+
+    /// The pieces as nodes: node `id` keeps the first, new nodes the others, each holding its
+    /// run of the reordered hits, its edges, and the link to the next.
+    fn make_pieces(&self, nodes: &mut Vec<RegionNode>, id: u32, pieces: u32) {
+        let node = nodes[id as usize];
+        let mut start = node.hit_start;
+        let mut previous = id;
+        for p in 0..pieces {
+            let count = self.reordered.iter().filter(|e| e.0 == p).count() as u32;
+            let piece_id = if p == 0 {
+                id
+            } else {
+                let new_id = nodes.len() as u32;
+                nodes.push(RegionNode {
+                    parent: new_id,
+                    ..node
+                });
+                nodes[previous as usize].next_piece = new_id;
+                new_id
+            };
+            let piece = &mut nodes[piece_id as usize];
+            piece.hit_start = start;
+            piece.hit_count = count;
+            piece.edges = self.edges[p as usize];
+            piece.split = true;
+            piece.next_piece = NO_PIECE;
+            start += count;
+            previous = piece_id;
+        }
     }
 }
 
