@@ -188,9 +188,10 @@ pub fn intersect_nudged(
         return outcome(TrianglePair::Disjoint);
     };
     // Both cuts lie on the line of the two planes: overlap their intervals along it. Intervals
-    // that only touch meet in a point (an edge resting on an edge): no crossing, as the
-    // triangles come apart under any nudge that does not push them into each other.
-    if (a1.key <= b0.key) | (b1.key <= a0.key) {
+    // that overlap by no more than the band only touch (an edge resting on an edge, to
+    // round-off): no crossing, as the triangles come apart under a nudge that does not push
+    // them into each other, and a segment that short bounds nothing.
+    if (a1.key <= b0.key + band) | (b1.key <= a0.key + band) {
         return outcome(TrianglePair::Disjoint);
     }
     let end_of = |first, feature| SegmentEnd { first, feature };

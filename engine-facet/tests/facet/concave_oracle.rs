@@ -306,3 +306,41 @@ fn vertices_on_a_face_plane_cut_exactly() {
         );
     }
 }
+
+/// A box whose faces take the planes of the tube's cell boundaries (z = 1 and 3 pass through
+/// its wall vertices and edges), around the hole: the region is the box's part of the tube,
+/// `[0, 2.5]×[0.5, 2.5]×[1, 3]` less the hole, volume 8 and centroid (1.1875, 1.5, 2) (in the
+/// hole); I's surface inside J is its face x = 2.5 (the y and z faces cancel), so the normal
+/// is `−x`; the line through the centroid leaves the box at x = 2.5 and first meets the tube
+/// at the hole's wall x = 1: depth 1.5.
+#[test]
+fn a_box_on_the_cell_planes_of_a_tube() {
+    let tube = crate::voxels::tube();
+    let half = Vector3::new(1.4, 1.0, 1.0);
+    let box_geometry = Geometry::Cuboid(Cuboid::centered(half.x, half.y, half.z).unwrap());
+    let pair = prepare(&engine(300.0028), box_geometry, tube);
+    let centre = Vector3::new(-0.3 + half.x, 0.5 + half.y, 1.0 + half.z);
+    let mut rng = Rng(0x7B0E);
+    for k in 0..40 {
+        let world = Isometry3::from_parts(
+            (rng.unit_vector() * rng.range(0.0, 3.0)).into(),
+            rng.rotation(),
+        );
+        let pose_i = world * Isometry3::translation(centre.x, centre.y, centre.z);
+        let (contacts, _) = query_pair(pair.as_ref(), pose_i, world);
+        assert_eq!(contacts.len(), 1, "pose {k}: {contacts:?}");
+        let c = &contacts[0];
+        let normal = -(world.rotation * Vector3::x());
+        let g = world * Point3::new(1.1875, 1.5, 2.0);
+        let off_line = (g - c.point_i_w).cross(&c.normal_w).norm();
+        let errors = [
+            (c.normal_w - normal).norm(),
+            off_line,
+            (c.penetration - 1.5).abs(),
+        ];
+        assert!(
+            errors.iter().all(|e| *e <= 1e-9),
+            "pose {k}: {errors:?}\n{c:?}"
+        );
+    }
+}

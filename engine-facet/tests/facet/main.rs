@@ -20,3 +20,4 @@ mod stl_files;
 mod tessellation;
 mod threads;
 mod triangles;
+mod voxels;
