@@ -184,57 +184,20 @@ pub fn simulate_with_progress(
     sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
     progress: &mut dyn FnMut(&Progress) -> ControlFlow<()>,
 ) -> Result<RunSummary, SimulationError> {
+    check_settings(settings)?;
     let DynamicsSettings {
         start,
         end,
         output_step,
         integrator,
     } = *settings;
-    if !(start.is_finite() && end.is_finite() && end > start) {
-        return Err(SimulationError::Settings(format!(
-            "END = {end:?} must be finite and > START = {start:?}"
-        )));
-    }
-    if !(output_step.is_finite() && output_step > 0.0) {
-        return Err(SimulationError::Settings(format!(
-            "DTOUT = {output_step:?} must be finite and > 0"
-        )));
-    }
     let initial = system.compute_initial_state(start)?;
     let mut bdf = Bdf::new(system, start, initial.y, initial.yp, integrator)
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
     let mut summary = RunSummary::default();
     let (evaluated_before, skipped_before) = system.broad_phase_counts();
-    // Only the contacts whose bounds meet are asked; the others have no contact (their own
-    // `reports` would say so).
-    let broad = BroadPhase::of_elements(contacts.iter().map(|c| {
-        (
-            ForceElement::parts(c.as_ref()),
-            ForceElement::bounds(c.as_ref()),
-        )
-    }));
-    let frame_at = |system: &MultibodySystem,
-                    t: f64,
-                    y: &nalgebra::DVector<f64>|
-     -> Result<Frame, SimulationError> {
-        let parts = system
-            .part_states(y)
-            .map_err(|source| SimulationError::Evaluation { t, source })?;
-        let view = StateView::new(&parts);
-        let mut reports = vec![Vec::new(); contacts.len()];
-        for k in broad.candidates(&parts) {
-            reports[k] = contacts[k]
-                .reports(t, &view)
-                .map_err(|source| SimulationError::Evaluation { t, source })?;
-        }
-        Ok(Frame {
-            t,
-            parts,
-            contacts: reports,
-            dynamics: None,
-        })
-    };
-    let mut frame = frame_at(system, start, bdf.y())?;
+    let framer = Framer::new(contacts);
+    let mut frame = framer.at(system, start, bdf.y())?;
     {
         let view = StateView::new(&frame.parts);
         for c in contacts {
@@ -242,35 +205,27 @@ pub fn simulate_with_progress(
         }
     }
     let mut active: Vec<bool> = frame.contacts.iter().map(|c| !c.is_empty()).collect();
-    if system.output_dynamics() {
-        frame.dynamics = Some(
-            system
-                .frame_dynamics(start, bdf.y())
-                .map_err(|source| SimulationError::Evaluation { t: start, source })?,
-        );
-    }
+    attach_dynamics(system, &mut frame, bdf.y())?;
     sink(&frame).map_err(|source| SimulationError::Output { t: start, source })?;
     summary.frames += 1;
-    let outputs = ((end - start) / output_step).round().max(1.0) as u64;
-    let mut next_output = 1u64;
-    let output_time = |k: u64| {
-        if k >= outputs {
-            end
-        } else {
-            start + k as f64 * output_step
-        }
+    let schedule = OutputSchedule {
+        start,
+        end,
+        step: output_step,
+        count: ((end - start) / output_step).round().max(1.0) as u64,
     };
+    let mut next_output = 1u64;
     // Steps end exactly at END; output frames come from the BDF's interpolating polynomial, so
     // frequent output does not shorten the steps.
     bdf.set_stop_time(Some(end))
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
     let (mut window_start, mut window_steps) = (start, 0u64);
-    while next_output <= outputs {
+    while next_output <= schedule.count {
         let t_before = bdf.t();
         let mut t = bdf
             .step(system)
             .map_err(|source| integrator_failure(t_before, source))?;
-        frame = frame_at(system, t, bdf.y())?;
+        frame = framer.at(system, t, bdf.y())?;
         // Contact prediction: one retry per new contact.
         let onset = earliest_onset(&frame, &active);
         if onset.is_finite() {
@@ -283,7 +238,7 @@ pub fn simulate_with_progress(
                     .reject_last_step_and_retry_to(system, retry)
                     .map_err(|source| integrator_failure(t_before, source))?;
                 summary.rejected_for_contact_onset += 1;
-                frame = frame_at(system, t, bdf.y())?;
+                frame = framer.at(system, t, bdf.y())?;
             }
         }
         record_entries(&frame, &mut active, &mut summary);
@@ -308,38 +263,19 @@ pub fn simulate_with_progress(
             rejected: stats.rejected(),
         })
         .is_break();
-        let mut written_at = None;
-        while next_output <= outputs && output_time(next_output) <= t {
-            let t_out = output_time(next_output);
-            let (mut output, y) = if t_out == t {
-                (frame.clone(), bdf.y().clone())
-            } else {
-                let (y, _) = bdf
-                    .interpolate(t_out)
-                    .map_err(|source| SimulationError::Integrator { t, source })?;
-                (frame_at(system, t_out, &y)?, y)
-            };
-            if system.output_dynamics() {
-                output.dynamics = Some(
-                    system
-                        .frame_dynamics(t_out, &y)
-                        .map_err(|source| SimulationError::Evaluation { t: t_out, source })?,
-                );
-            }
-            sink(&output).map_err(|source| SimulationError::Output { t: t_out, source })?;
-            summary.frames += 1;
-            next_output += 1;
-            written_at = Some(t_out);
-        }
+        let written_at = write_due_outputs(
+            system,
+            &bdf,
+            &framer,
+            &frame,
+            &schedule,
+            &mut next_output,
+            sink,
+            &mut summary,
+        )?;
         if stop {
             if written_at != Some(t) {
-                if system.output_dynamics() {
-                    frame.dynamics = Some(
-                        system
-                            .frame_dynamics(t, bdf.y())
-                            .map_err(|source| SimulationError::Evaluation { t, source })?,
-                    );
-                }
+                attach_dynamics(system, &mut frame, bdf.y())?;
                 sink(&frame).map_err(|source| SimulationError::Output { t, source })?;
             }
             return Err(stopped_on_request(t));
@@ -350,6 +286,144 @@ pub fn simulate_with_progress(
     summary.broad_phase_evaluated = evaluated - evaluated_before;
     summary.broad_phase_skipped = skipped - skipped_before;
     Ok(summary)
+}
+
+/// END finite and after START, DTOUT finite and positive.
+fn check_settings(settings: &DynamicsSettings) -> Result<(), SimulationError> {
+    let DynamicsSettings {
+        start,
+        end,
+        output_step,
+        ..
+    } = *settings;
+    if !(start.is_finite() && end.is_finite() && end > start) {
+        return Err(SimulationError::Settings(format!(
+            "END = {end:?} must be finite and > START = {start:?}"
+        )));
+    }
+    if !(output_step.is_finite() && output_step > 0.0) {
+        return Err(SimulationError::Settings(format!(
+            "DTOUT = {output_step:?} must be finite and > 0"
+        )));
+    }
+    Ok(())
+}
+
+/// Output frames from states: the parts, and the reports of the contacts whose bounds meet
+/// (the others have no contact; their own `reports` would say so).
+struct Framer<'a> {
+    contacts: &'a [Arc<ContactForce>],
+    broad: BroadPhase,
+}
+
+impl<'a> Framer<'a> {
+    fn new(contacts: &'a [Arc<ContactForce>]) -> Self {
+        let broad = BroadPhase::of_elements(contacts.iter().map(|c| {
+            (
+                ForceElement::parts(c.as_ref()),
+                ForceElement::bounds(c.as_ref()),
+            )
+        }));
+        Self { contacts, broad }
+    }
+
+    /// The frame at time `t` and state `y` (no dynamics yet).
+    fn at(
+        &self,
+        system: &MultibodySystem,
+        t: f64,
+        y: &nalgebra::DVector<f64>,
+    ) -> Result<Frame, SimulationError> {
+        let parts = system
+            .part_states(y)
+            .map_err(|source| SimulationError::Evaluation { t, source })?;
+        let view = StateView::new(&parts);
+        let mut reports = vec![Vec::new(); self.contacts.len()];
+        for k in self.broad.candidates(&parts) {
+            reports[k] = self.contacts[k]
+                .reports(t, &view)
+                .map_err(|source| SimulationError::Evaluation { t, source })?;
+        }
+        Ok(Frame {
+            t,
+            parts,
+            contacts: reports,
+            dynamics: None,
+        })
+    }
+}
+
+/// The frame's accelerations and reactions at state `y`, when the system outputs them.
+fn attach_dynamics(
+    system: &MultibodySystem,
+    frame: &mut Frame,
+    y: &nalgebra::DVector<f64>,
+) -> Result<(), SimulationError> {
+    if system.output_dynamics() {
+        let t = frame.t;
+        frame.dynamics = Some(
+            system
+                .frame_dynamics(t, y)
+                .map_err(|source| SimulationError::Evaluation { t, source })?,
+        );
+    }
+    Ok(())
+}
+
+/// The output times: `start + k·step` for k < `count`, END for the last.
+struct OutputSchedule {
+    start: f64,
+    end: f64,
+    step: f64,
+    count: u64,
+}
+
+impl OutputSchedule {
+    fn time(&self, k: u64) -> f64 {
+        if k >= self.count {
+            self.end
+        } else {
+            self.start + k as f64 * self.step
+        }
+    }
+}
+
+/// Writes every output frame due by the step just taken to `frame`'s time (the step's own
+/// frame, or one interpolated from the BDF's polynomial); returns the time of the last one
+/// written.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the run loop's state it reads and advances, passed apart rather than bundled for one call"
+)]
+fn write_due_outputs(
+    system: &MultibodySystem,
+    bdf: &Bdf,
+    framer: &Framer<'_>,
+    frame: &Frame,
+    schedule: &OutputSchedule,
+    next_output: &mut u64,
+    sink: &mut dyn FnMut(&Frame) -> std::io::Result<()>,
+    summary: &mut RunSummary,
+) -> Result<Option<f64>, SimulationError> {
+    let t = frame.t;
+    let mut written_at = None;
+    while *next_output <= schedule.count && schedule.time(*next_output) <= t {
+        let t_out = schedule.time(*next_output);
+        let (mut output, y) = if t_out == t {
+            (frame.clone(), bdf.y().clone())
+        } else {
+            let (y, _) = bdf
+                .interpolate(t_out)
+                .map_err(|source| SimulationError::Integrator { t, source })?;
+            (framer.at(system, t_out, &y)?, y)
+        };
+        attach_dynamics(system, &mut output, &y)?;
+        sink(&output).map_err(|source| SimulationError::Output { t: t_out, source })?;
+        summary.frames += 1;
+        *next_output += 1;
+        written_at = Some(t_out);
+    }
+    Ok(written_at)
 }
 
 /// The earliest onset `t − δ/δ̇` among the contacts that touch at `frame` and did not at the
