@@ -63,25 +63,8 @@ pub fn run(
     err: &mut dyn Write,
     progress: &mut dyn FnMut(&str),
 ) -> std::io::Result<u8> {
-    let positive = |x: f64| x.is_finite() && x > 0.0;
-    if args.max_depth_error.is_none() && args.max_run_error.is_none() {
-        writeln!(
-            err,
-            "error: give --max-run-error, --max-depth-error or both"
-        )?;
+    if !targets_valid(args, err)? {
         return Ok(1);
-    }
-    for (name, target) in [
-        ("--max-depth-error", args.max_depth_error),
-        ("--max-run-error", args.max_run_error),
-    ] {
-        if let Some(t) = target.filter(|&t| !positive(t)) {
-            writeln!(
-                err,
-                "error: {name} must be a positive finite number, got {t}"
-            )?;
-            return Ok(1);
-        }
     }
     let model = match load_with_commands(&args.model, args.commands.as_deref()) {
         Ok(model) => model,
@@ -90,27 +73,9 @@ pub fn run(
             return Ok(1);
         }
     };
-    let mut sweep = Sweep::default();
-    if !args.tolerances.is_empty() {
-        match args
-            .tolerances
-            .iter()
-            .map(|&t| FacetingTolerance::new(t))
-            .collect::<Result<Vec<_>, _>>()
-        {
-            Ok(t) => sweep.tolerances = t,
-            Err(e) => {
-                writeln!(err, "error: --tolerances: {e}")?;
-                return Ok(1);
-            }
-        }
-    }
-    if let Some(rounds) = args.rounds {
-        sweep.timing = Timing {
-            rounds: rounds.max(1),
-            ..sweep.timing
-        };
-    }
+    let Some(sweep) = sweep_of(args, err)? else {
+        return Ok(1);
+    };
     progress("the reference run");
     let Some(reference) = reference_run(&model, &args.model, &sweep, engines, args.end, err)?
     else {
@@ -138,66 +103,16 @@ pub fn run(
         }
     }
     if let Some(target) = args.max_run_error {
-        let trade = match tradeoff::trade_runs(
-            &model,
-            &args.model,
-            &reference,
-            &sweep.tolerances,
-            args.end,
-            progress,
-        ) {
-            Ok(trade) => trade,
-            Err(e) => {
-                writeln!(err, "error: {e}")?;
-                return Ok(1);
-            }
+        let Some((value, failed)) = whole_runs(
+            args, &model, &reference, &sweep, target, &mut text, progress, err,
+        )?
+        else {
+            return Ok(1);
         };
-        let choice = tradeoff::select_run(&trade.rows, target);
-        if let Some(path) = &args.csv {
-            if !write_file(path, &tradeoff::run_csv(&trade), err)? {
-                return Ok(1);
-            }
+        doc.insert("runs".into(), value);
+        if failed {
+            code = 1;
         }
-        if let Some(path) = &args.plot {
-            if !write_file(path, &tradeoff::run_plot(&trade).to_svg(), err)? {
-                return Ok(1);
-            }
-        }
-        text.push_str(&tradeoff::run_table(&trade));
-        let _ = writeln!(
-            text,
-            "\ntarget: run error (largest part displacement) <= {target:e} of the model's size"
-        );
-        match &choice {
-            Ok(c) => {
-                let _ = writeln!(
-                    text,
-                    "model (whole runs): {} (run error {:.2e}, {:.1} ms per simulated second{})",
-                    c.setting.describe(),
-                    c.position_error,
-                    c.wall_ms_per_simulated_s,
-                    if c.reference {
-                        "; the reference run itself"
-                    } else {
-                        ""
-                    }
-                );
-            }
-            Err(e) => {
-                writeln!(err, "error: {e}")?;
-                code = 1;
-            }
-        }
-        doc.insert(
-            "runs".into(),
-            json!({
-                "max_run_error": target,
-                "run_error": "the largest displacement between the runs of a point of a part within its contact radius, over time and parts, relative to the model's size (scale.size)",
-                "trade": trade,
-                "recommendation": choice.as_ref().ok(),
-                "no_recommendation": choice.as_ref().err().map(ToString::to_string),
-            }),
-        );
     }
     if let Some(path) = &args.json {
         let json = serde_json::to_string_pretty(&doc).map_err(std::io::Error::other)?;
@@ -207,6 +122,135 @@ pub fn run(
     }
     out.write_all(text.as_bytes())?;
     Ok(code)
+}
+
+/// The targets: at least one given, each positive and finite; false (said on `err`) when not.
+fn targets_valid(args: &SelectArgs, err: &mut dyn Write) -> std::io::Result<bool> {
+    let positive = |x: f64| x.is_finite() && x > 0.0;
+    if args.max_depth_error.is_none() && args.max_run_error.is_none() {
+        writeln!(
+            err,
+            "error: give --max-run-error, --max-depth-error or both"
+        )?;
+        return Ok(false);
+    }
+    for (name, target) in [
+        ("--max-depth-error", args.max_depth_error),
+        ("--max-run-error", args.max_run_error),
+    ] {
+        if let Some(t) = target.filter(|&t| !positive(t)) {
+            writeln!(
+                err,
+                "error: {name} must be a positive finite number, got {t}"
+            )?;
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// The sweep the arguments ask for (`--tolerances`, `--rounds`); `None` (said on `err`) for a
+/// tolerance out of range.
+fn sweep_of(args: &SelectArgs, err: &mut dyn Write) -> std::io::Result<Option<Sweep>> {
+    let mut sweep = Sweep::default();
+    if !args.tolerances.is_empty() {
+        match args
+            .tolerances
+            .iter()
+            .map(|&t| FacetingTolerance::new(t))
+            .collect::<Result<Vec<_>, _>>()
+        {
+            Ok(t) => sweep.tolerances = t,
+            Err(e) => {
+                writeln!(err, "error: --tolerances: {e}")?;
+                return Ok(None);
+            }
+        }
+    }
+    if let Some(rounds) = args.rounds {
+        sweep.timing = Timing {
+            rounds: rounds.max(1),
+            ..sweep.timing
+        };
+    }
+    Ok(Some(sweep))
+}
+
+/// The trade on whole runs against `target`: its table and recommendation appended to `text`,
+/// its CSV and plot written where asked; the JSON value and whether no candidate met the
+/// target, or `None` (said on `err`) when the runs or a file failed.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the command's inputs and its two outputs, passed as the command holds them"
+)]
+fn whole_runs(
+    args: &SelectArgs,
+    model: &Model,
+    reference: &RunRecord,
+    sweep: &Sweep,
+    target: f64,
+    text: &mut String,
+    progress: &mut dyn FnMut(&str),
+    err: &mut dyn Write,
+) -> std::io::Result<Option<(serde_json::Value, bool)>> {
+    let trade = match tradeoff::trade_runs(
+        model,
+        &args.model,
+        reference,
+        &sweep.tolerances,
+        args.end,
+        progress,
+    ) {
+        Ok(trade) => trade,
+        Err(e) => {
+            writeln!(err, "error: {e}")?;
+            return Ok(None);
+        }
+    };
+    let choice = tradeoff::select_run(&trade.rows, target);
+    if let Some(path) = &args.csv {
+        if !write_file(path, &tradeoff::run_csv(&trade), err)? {
+            return Ok(None);
+        }
+    }
+    if let Some(path) = &args.plot {
+        if !write_file(path, &tradeoff::run_plot(&trade).to_svg(), err)? {
+            return Ok(None);
+        }
+    }
+    text.push_str(&tradeoff::run_table(&trade));
+    let _ = writeln!(
+        text,
+        "\ntarget: run error (largest part displacement) <= {target:e} of the model's size"
+    );
+    match &choice {
+        Ok(c) => {
+            let _ = writeln!(
+                text,
+                "model (whole runs): {} (run error {:.2e}, {:.1} ms per simulated second{})",
+                c.setting.describe(),
+                c.position_error,
+                c.wall_ms_per_simulated_s,
+                if c.reference {
+                    "; the reference run itself"
+                } else {
+                    ""
+                }
+            );
+        }
+        Err(e) => {
+            writeln!(err, "error: {e}")?;
+        }
+    }
+    let failed = choice.is_err();
+    let value = json!({
+        "max_run_error": target,
+        "run_error": "the largest displacement between the runs of a point of a part within its contact radius, over time and parts, relative to the model's size (scale.size)",
+        "trade": trade,
+        "recommendation": choice.as_ref().ok(),
+        "no_recommendation": choice.as_ref().err().map(ToString::to_string),
+    });
+    Ok(Some((value, failed)))
 }
 
 /// Writes `text` to `path`; false (said on `err`) when it cannot.
