@@ -135,20 +135,22 @@ pub fn suite() -> Vec<Scene> {
 }
 
 /// The scene called `name`, or `None`.
+pub fn scene(name: &str) -> Option<Scene> {
+    let name: &'static str = NAMES.iter().find(|n| **n == name)?;
+    plane_scene(name)
+        .or_else(|| pair_scene(name))
+        .or_else(|| planar_scene(name))
+        .or_else(|| mesh_scene(name))
+}
+
+/// The scenes of one solid on the plane.
 #[expect(
     clippy::expect_used,
     reason = "literal sizes, all inside their valid ranges"
 )]
-pub fn scene(name: &str) -> Option<Scene> {
-    let name: &'static str = NAMES.iter().find(|n| **n == name)?;
-    let sphere = |r: f64| Geometry::Ellipsoid(Ellipsoid::sphere(r).expect("valid literal"));
-    let cylinder = |r, l| Geometry::Cylinder(Cylinder::new(r, l).expect("valid literal"));
-    // A cylinder or frustum with its part origin at its centre (its frame is at the base).
-    let centred = |g: Geometry, length: f64| {
-        GeometryInstance::new(g).at(Isometry3::translation(0.0, 0.0, -0.5 * length))
-    };
+fn plane_scene(name: &'static str) -> Option<Scene> {
     let free = Orientation::Random;
-    let s = match name {
+    Some(match name {
         "sphere_plane" => Scene::on_plane(
             name,
             "sphere resting on a plane: δ = r − d",
@@ -157,32 +159,11 @@ pub fn scene(name: &str) -> Option<Scene> {
             free,
         )
         .with_closed_form(sphere_plane),
-        "sphere_sphere" => Scene::pair(
-            name,
-            "two spheres: the lens",
-            single(sphere(1.0)),
-            single(sphere(0.7)),
-            0.7,
-            free,
-        )
-        .with_closed_form(sphere_sphere),
         "ellipsoid_plane" => Scene::on_plane(
             name,
             "tilted ellipsoid on a plane: the cap's centroid is off the deepest point's normal",
             single(Geometry::Ellipsoid(
                 Ellipsoid::new(1.0, 0.6, 0.4).expect("valid literal"),
-            )),
-            0.4,
-            free,
-        ),
-        "ellipsoid_ellipsoid" => Scene::pair(
-            name,
-            "two ellipsoids at random orientations",
-            single(Geometry::Ellipsoid(
-                Ellipsoid::new(1.0, 0.6, 0.4).expect("valid literal"),
-            )),
-            single(Geometry::Ellipsoid(
-                Ellipsoid::new(0.8, 0.8, 0.5).expect("valid literal"),
             )),
             0.4,
             free,
@@ -202,22 +183,6 @@ pub fn scene(name: &str) -> Option<Scene> {
             0.5,
             Orientation::Tilted(FRAC_PI_6),
         ),
-        "cylinder_cylinder_parallel" => Scene::pair(
-            name,
-            "two cylinders with parallel axes: a line contact",
-            vec![centred(cylinder(0.5, 2.0), 2.0)],
-            vec![centred(cylinder(0.8, 3.0), 3.0)],
-            0.5,
-            Orientation::ParallelAxes,
-        ),
-        "cylinder_cylinder_crossed" => Scene::pair(
-            name,
-            "two cylinders with crossed axes: a point contact",
-            vec![centred(cylinder(0.5, 2.0), 2.0)],
-            vec![centred(cylinder(0.8, 3.0), 3.0)],
-            0.5,
-            Orientation::CrossedAxes,
-        ),
         "box_plane" => Scene::on_plane(
             name,
             "tilted box on a plane: a vertex or edge digs in",
@@ -226,18 +191,6 @@ pub fn scene(name: &str) -> Option<Scene> {
             )),
             0.5,
             free,
-        ),
-        "box_box" => Scene::pair(
-            name,
-            "a turned box's corner into the middle of a face of another box",
-            single(Geometry::Cuboid(
-                Cuboid::centered(1.0, 0.7, 0.5).expect("valid literal"),
-            )),
-            single(Geometry::Cuboid(
-                Cuboid::centered(0.6, 0.6, 0.9).expect("valid literal"),
-            )),
-            0.5,
-            Orientation::RandomOntoFace,
         ),
         "frustum_plane" => Scene::on_plane(
             name,
@@ -258,6 +211,67 @@ pub fn scene(name: &str) -> Option<Scene> {
             0.3,
             free,
         ),
+        _ => return None,
+    })
+}
+
+/// The scenes of two solids.
+#[expect(
+    clippy::expect_used,
+    reason = "literal sizes, all inside their valid ranges"
+)]
+fn pair_scene(name: &'static str) -> Option<Scene> {
+    let free = Orientation::Random;
+    Some(match name {
+        "sphere_sphere" => Scene::pair(
+            name,
+            "two spheres: the lens",
+            single(sphere(1.0)),
+            single(sphere(0.7)),
+            0.7,
+            free,
+        )
+        .with_closed_form(sphere_sphere),
+        "ellipsoid_ellipsoid" => Scene::pair(
+            name,
+            "two ellipsoids at random orientations",
+            single(Geometry::Ellipsoid(
+                Ellipsoid::new(1.0, 0.6, 0.4).expect("valid literal"),
+            )),
+            single(Geometry::Ellipsoid(
+                Ellipsoid::new(0.8, 0.8, 0.5).expect("valid literal"),
+            )),
+            0.4,
+            free,
+        ),
+        "cylinder_cylinder_parallel" => Scene::pair(
+            name,
+            "two cylinders with parallel axes: a line contact",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            vec![centred(cylinder(0.8, 3.0), 3.0)],
+            0.5,
+            Orientation::ParallelAxes,
+        ),
+        "cylinder_cylinder_crossed" => Scene::pair(
+            name,
+            "two cylinders with crossed axes: a point contact",
+            vec![centred(cylinder(0.5, 2.0), 2.0)],
+            vec![centred(cylinder(0.8, 3.0), 3.0)],
+            0.5,
+            Orientation::CrossedAxes,
+        ),
+        "box_box" => Scene::pair(
+            name,
+            "a turned box's corner into the middle of a face of another box",
+            single(Geometry::Cuboid(
+                Cuboid::centered(1.0, 0.7, 0.5).expect("valid literal"),
+            )),
+            single(Geometry::Cuboid(
+                Cuboid::centered(0.6, 0.6, 0.9).expect("valid literal"),
+            )),
+            0.5,
+            Orientation::RandomOntoFace,
+        ),
         "torus_sphere" => Scene::pair(
             name,
             "a sphere against a torus's outer rim",
@@ -268,6 +282,13 @@ pub fn scene(name: &str) -> Option<Scene> {
             0.3,
             Orientation::RandomInPlane,
         ),
+        _ => return None,
+    })
+}
+
+/// The 2-D scenes.
+fn planar_scene(name: &'static str) -> Option<Scene> {
+    Some(match name {
         "circle_circle" => Scene::pair(
             name,
             "two circles in one plane",
@@ -297,6 +318,14 @@ pub fn scene(name: &str) -> Option<Scene> {
             0.3,
             Orientation::Planar,
         ),
+        _ => return None,
+    })
+}
+
+/// The scenes of two meshes given as triangles.
+fn mesh_scene(name: &'static str) -> Option<Scene> {
+    let free = Orientation::Random;
+    Some(match name {
         "mesh_sphere_10k" => Scene::pair(
             name,
             "two triangle-mesh spheres of 9,800 triangles each (closed form of the true spheres)",
@@ -324,8 +353,30 @@ pub fn scene(name: &str) -> Option<Scene> {
             free,
         ),
         _ => return None,
-    };
-    Some(s)
+    })
+}
+
+/// A sphere of radius `r` (a literal in range).
+#[expect(
+    clippy::expect_used,
+    reason = "literal sizes, all inside their valid ranges"
+)]
+fn sphere(r: f64) -> Geometry {
+    Geometry::Ellipsoid(Ellipsoid::sphere(r).expect("valid literal"))
+}
+
+/// A cylinder of radius `r` and length `l` (literals in range).
+#[expect(
+    clippy::expect_used,
+    reason = "literal sizes, all inside their valid ranges"
+)]
+fn cylinder(r: f64, l: f64) -> Geometry {
+    Geometry::Cylinder(Cylinder::new(r, l).expect("valid literal"))
+}
+
+/// A cylinder or frustum with its part origin at its centre (its frame is at the base).
+fn centred(g: Geometry, length: f64) -> GeometryInstance {
+    GeometryInstance::new(g).at(Isometry3::translation(0.0, 0.0, -0.5 * length))
 }
 
 /// The radii of the mesh-sphere scenes' true spheres, I's first.
