@@ -7,23 +7,22 @@
 //! (never dropped silently): massless parts, CONVEL/RACKPIN/SCREW joints, and expressions
 //! reading element forces.
 
+mod contacts;
+
 use super::frames::{MarkerTable, PlacedMarker};
 use super::motion_level::integrated_motion;
 use super::sforce::SForceElement;
 use crate::dataset::Origin;
 use crate::expr::{Expr, TimeOnly};
-use crate::model::{
-    ContactGeometry, Freedom, JointKind, MeshFile, Model, MotionTarget, PrimitiveKind,
-};
+use crate::model::{Freedom, JointKind, MeshFile, Model, MotionTarget, PrimitiveKind};
 use crate::user_routines::{UserLaws, UserRoutineError, UserRoutines};
 use contact_core::{GeometryEngine, GeometryInstance, Isometry3, Matrix3, PrepareError};
-use contact_solver::broad_phase::Bounds;
-use contact_solver::contact_force::{Analysis, ContactForce, SharedContact};
-use contact_solver::contact_plane::PlanarGuard;
+use contact_solver::contact_force::{Analysis, ContactForce};
 use contact_solver::mbs::{
-    ConstraintId, ConstraintKind, MarkerMotionAxis, MbsError, MotionDof, MultibodyBuilder,
-    MultibodySystem, PartId, PartSpec, TimeFunction,
+    ConstraintId, ConstraintKind, MarkerId, MarkerMotionAxis, MbsError, MotionDof,
+    MultibodyBuilder, MultibodySystem, PartId, PartSpec, TimeFunction,
 };
+use contacts::ContactLowering;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
@@ -152,6 +151,49 @@ pub fn lower_with_routines(
     routines: &UserRoutines,
 ) -> Result<LoweredModel, LowerError> {
     let mut builder = MultibodyBuilder::new(model.gravity);
+    let (cm_of, parts) = add_parts(model, &mut builder)?;
+    let (table, builder_markers) = add_markers(model, &mut builder, &cm_of)?;
+    let joints = add_joints(model, &mut builder, &builder_markers)?;
+    add_primitives(model, &mut builder, &builder_markers)?;
+    add_gcons(model, &mut builder, &builder_markers)?;
+    add_motions(model, &mut builder, &builder_markers, &joints)?;
+
+    let table = Arc::new(table);
+    add_sforces(model, &mut builder, &table, parts.len() + 1)?;
+
+    let lowering = ContactLowering {
+        engine,
+        analysis,
+        meshes,
+        routines,
+        cm_of: &cm_of,
+    };
+    let contacts = lowering.add_contacts(model, &mut builder)?;
+    let system = builder
+        .build()
+        .map_err(|e| LowerError::Build(Box::new(e)))?;
+    Ok(LoweredModel {
+        system,
+        contacts,
+        parts,
+        markers: table,
+    })
+}
+
+/// Part frame → CM frame per Adams part id: the solver part and `X_P,CM` (for ground,
+/// [`PartId::GROUND`] and the part's world pose).
+type CmFrames = BTreeMap<u32, (PartId, Isometry3)>;
+
+/// The solver's marker ids, per Adams MARKER id.
+type BuilderMarkers = BTreeMap<u32, MarkerId>;
+
+/// Adds every moving part at its centre of mass; returns the CM frame of every part (ground
+/// included) and `(solver part, Adams PART id)` for the moving ones, in solver order. A part
+/// with `MASS <= 0` (or NaN) is an error.
+fn add_parts(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+) -> Result<(CmFrames, Vec<(PartId, u32)>), LowerError> {
     // Part frame → CM frame, per Adams part id.
     let mut cm_of: BTreeMap<u32, (PartId, Isometry3)> = BTreeMap::new();
     let mut parts = Vec::new();
@@ -192,21 +234,36 @@ pub fn lower_with_routines(
         cm_of.insert(part.id, (id, pose_part_cm));
         parts.push((id, part.id));
     }
-    // Where a thing fixed on Adams part `p` at X_P,G sits on the solver part: X_CM,G (for
-    // ground, the world pose).
-    let on_solver_part = |p: u32, pose_part_thing: &Isometry3| -> Option<(PartId, Isometry3)> {
-        let (id, pose) = cm_of.get(&p)?;
-        Some(if id.is_ground() {
-            (*id, pose * pose_part_thing)
-        } else {
-            (*id, pose.inverse() * pose_part_thing)
-        })
-    };
+    Ok((cm_of, parts))
+}
 
+/// Where a thing fixed on Adams part `p` at X_P,G sits on the solver part: X_CM,G (for
+/// ground, the world pose); `None` if `p` is not a part of the model.
+fn on_solver_part(
+    cm_of: &CmFrames,
+    p: u32,
+    pose_part_thing: &Isometry3,
+) -> Option<(PartId, Isometry3)> {
+    let (id, pose) = cm_of.get(&p)?;
+    Some(if id.is_ground() {
+        (*id, pose * pose_part_thing)
+    } else {
+        (*id, pose.inverse() * pose_part_thing)
+    })
+}
+
+/// Places every MARKER on its solver part: the table the measures read and the builder's
+/// marker ids. A marker on an unknown part is an error.
+fn add_markers(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    cm_of: &CmFrames,
+) -> Result<(MarkerTable, BuilderMarkers), LowerError> {
     let mut table = MarkerTable::default();
     let mut builder_markers = BTreeMap::new();
     for m in model.markers.values() {
-        let Some((part, pose_cm_marker)) = on_solver_part(m.part, &m.pose_part_marker) else {
+        let Some((part, pose_cm_marker)) = on_solver_part(cm_of, m.part, &m.pose_part_marker)
+        else {
             return Err(unsupported(
                 &m.origin,
                 format!(
@@ -229,13 +286,29 @@ pub fn lower_with_routines(
                 .map_err(element(&m.origin))?,
         );
     }
-    let marker = |id: u32, origin: &Origin| {
-        builder_markers
-            .get(&id)
-            .copied()
-            .ok_or_else(|| unsupported(origin, format!("MARKER/{id} is not defined")))
-    };
+    Ok((table, builder_markers))
+}
 
+/// The builder's marker for MARKER `id`, or an error at `origin` if it is not defined.
+fn marker(
+    builder_markers: &BuilderMarkers,
+    id: u32,
+    origin: &Origin,
+) -> Result<MarkerId, LowerError> {
+    builder_markers
+        .get(&id)
+        .copied()
+        .ok_or_else(|| unsupported(origin, format!("MARKER/{id} is not defined")))
+}
+
+/// Adds every JOINT as a constraint (RACKPIN with its PD); returns the constraint of each,
+/// per JOINT id. CONVEL and SCREW joints are errors.
+fn add_joints(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    markers: &BuilderMarkers,
+) -> Result<BTreeMap<u32, ConstraintId>, LowerError> {
+    let marker = |id: u32, origin: &Origin| marker(markers, id, origin);
     let mut joints: BTreeMap<u32, ConstraintId> = BTreeMap::new();
     for j in &model.joints {
         let kind = match j.kind {
@@ -274,6 +347,16 @@ pub fn lower_with_routines(
             .map_err(element(&j.origin))?;
         joints.insert(j.id, id);
     }
+    Ok(joints)
+}
+
+/// Adds every JPRIM as a constraint between its markers.
+fn add_primitives(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    markers: &BuilderMarkers,
+) -> Result<(), LowerError> {
+    let marker = |id: u32, origin: &Origin| marker(markers, id, origin);
     for p in &model.primitives {
         let kind = match p.kind {
             PrimitiveKind::Atpoint => ConstraintKind::AtPoint,
@@ -288,12 +371,35 @@ pub fn lower_with_routines(
             .add_constraint(format!("JPRIM/{}", p.id), kind, mi, mj)
             .map_err(element(&p.origin))?;
     }
+    Ok(())
+}
+
+/// Adds every GCON as a distance constraint between its markers.
+fn add_gcons(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    markers: &BuilderMarkers,
+) -> Result<(), LowerError> {
+    let marker = |id: u32, origin: &Origin| marker(markers, id, origin);
     for g in &model.gcons {
         let (mi, mj) = (marker(g.i, &g.origin)?, marker(g.j, &g.origin)?);
         builder
             .add_distance(format!("GCON/{}", g.id), mi, mj, g.length)
             .map_err(element(&g.origin))?;
     }
+    Ok(())
+}
+
+/// Adds every MOTION, on a joint's freedom or on an axis between two markers, its FUNCTION
+/// (of TIME only, else an error) integrated to a displacement where it is given as a velocity
+/// or an acceleration.
+fn add_motions(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    markers: &BuilderMarkers,
+    joints: &BTreeMap<u32, ConstraintId>,
+) -> Result<(), LowerError> {
+    let marker = |id: u32, origin: &Origin| marker(markers, id, origin);
     for m in &model.motions {
         if !m.function.is_time_only() {
             return Err(unsupported(
@@ -335,8 +441,17 @@ pub fn lower_with_routines(
             .add_motion(format!("MOTION/{}", m.id), target, dof, function)
             .map_err(element(&m.origin))?;
     }
+    Ok(())
+}
 
-    let table = Arc::new(table);
+/// Adds every SFORCE as a force element between its markers' parts, reading the model's
+/// VARIABLEs; `part_count` counts ground. A FUNCTION reading an element's force is an error.
+fn add_sforces(
+    model: &Model,
+    builder: &mut MultibodyBuilder,
+    table: &Arc<MarkerTable>,
+    part_count: usize,
+) -> Result<(), LowerError> {
     let variables: Arc<BTreeMap<u32, Expr>> = Arc::new(
         model
             .variables
@@ -344,7 +459,6 @@ pub fn lower_with_routines(
             .map(|v| (v.id, v.function.clone()))
             .collect(),
     );
-    let part_count = parts.len() + 1;
     for s in &model.sforces {
         let mut uses_element_forces = false;
         s.function.walk(&mut |e| {
@@ -381,105 +495,7 @@ pub fn lower_with_routines(
             .add_force(Box::new(element))
             .map_err(element_error(&s.origin))?;
     }
-
-    let mut contacts = Vec::new();
-    for c in &model.contacts {
-        let place = |list: &[(u32, ContactGeometry)],
-                     part: u32|
-         -> Result<Vec<GeometryInstance>, LowerError> {
-            list.iter()
-                .map(|(_, g)| {
-                    let mut instance = match g {
-                        ContactGeometry::Geometry(instance) => instance.clone(),
-                        ContactGeometry::MeshFile(file) => {
-                            meshes(file).map_err(|message| LowerError::Mesh {
-                                origin: c.origin.clone(),
-                                message,
-                            })?
-                        }
-                    };
-                    let (_, pose) =
-                        on_solver_part(part, &instance.pose_part_geometry).ok_or_else(|| {
-                            unsupported(
-                                &c.origin,
-                                format!("CONTACT/{}: PART/{part} is not a part of the model", c.id),
-                            )
-                        })?;
-                    instance.pose_part_geometry = pose;
-                    Ok(instance)
-                })
-                .collect()
-        };
-        let (i_list, j_list) = (
-            place(&c.i_geometries, c.i_part)?,
-            place(&c.j_geometries, c.j_part)?,
-        );
-        let pair = engine
-            .prepare(&i_list, &j_list)
-            .map_err(|source| LowerError::Prepare {
-                origin: c.origin.clone(),
-                id: c.id,
-                source: Box::new(source),
-            })?;
-        let (pi, pj) = (cm_of[&c.i_part].0, cm_of[&c.j_part].0);
-        let user = contact_user_laws(&c.params, &c.origin, routines).map_err(|source| {
-            LowerError::UserRoutine {
-                origin: c.origin.clone(),
-                id: c.id,
-                source: Box::new(source),
-            }
-        })?;
-        let force = ContactForce::with_user_laws(
-            format!("CONTACT/{}", c.id),
-            pi,
-            pj,
-            pair,
-            c.params.clone(),
-            analysis,
-            user,
-        )
-        .map_err(|e| unsupported(&c.origin, e.to_string()))?
-        .with_bounds(Bounds::enclosing(&i_list), Bounds::enclosing(&j_list));
-        let length = i_list
-            .iter()
-            .chain(&j_list)
-            .filter_map(|g| g.geometry.characteristic_length())
-            .fold(0.0, f64::max);
-        let force = if length > 0.0 {
-            force.with_length_scale(length)
-        } else {
-            force
-        };
-        let force = match (i_list.first(), j_list.first()) {
-            (Some(gi), Some(gj)) if gi.geometry.is_planar() && gj.geometry.is_planar() => {
-                let length = [&gi.geometry, &gj.geometry]
-                    .iter()
-                    .filter_map(|g| g.characteristic_length())
-                    .fold(0.0, f64::max);
-                force.with_planar_guard(PlanarGuard::new(
-                    [gi.pose_part_geometry, gj.pose_part_geometry],
-                    [format!("PART/{}", c.i_part), format!("PART/{}", c.j_part)],
-                    [pi.is_ground(), pj.is_ground()],
-                    length,
-                ))
-            }
-            _ => force,
-        };
-        let shared = Arc::new(force);
-        builder
-            .add_force(Box::new(SharedContact(shared.clone())))
-            .map_err(element_error(&c.origin))?;
-        contacts.push(shared);
-    }
-    let system = builder
-        .build()
-        .map_err(|e| LowerError::Build(Box::new(e)))?;
-    Ok(LoweredModel {
-        system,
-        contacts,
-        parts,
-        markers: table,
-    })
+    Ok(())
 }
 
 fn element_error(origin: &Origin) -> impl Fn(MbsError) -> LowerError + '_ {
