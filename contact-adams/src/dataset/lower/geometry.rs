@@ -234,6 +234,7 @@ fn flipped_z(pose: Isometry3) -> Isometry3 {
     )
 }
 
+/// One GRAPHICS statement: the part it is on and its shape, read by graphics type.
 fn graphic(
     low: &Lowering,
     model: &Model,
@@ -250,211 +251,26 @@ fn graphic(
         Some(v) => Some(FacetingTolerance::new(v).map_err(|e| invalid(&r, e))?),
         None => None,
     };
-    let instance = |geometry: Geometry, pose: Isometry3| GeometryInstance {
-        faceting_tolerance: tolerance,
-        ..GeometryInstance::new(geometry)
-            .at(pose)
-            .labeled(label.clone())
-    };
+    let place = Placing { tolerance, label };
     let origin = low.origin(st.loc);
     let (part, shape) = match kind {
         "FORCE" | "SPDP" | "OUTLINE" => (None, Shape::DisplayOnly(kind)),
-        "ELLIPSOID" => {
-            let (part, pose) = reference(model, &r, "CM")?;
-            let e = Ellipsoid::from_diameters(
-                need(&r, "XSCALE")?,
-                need(&r, "YSCALE")?,
-                need(&r, "ZSCALE")?,
-            )
-            .map_err(|e| invalid(&r, e))?;
-            (
-                Some(part),
-                Shape::Geometry(instance(Geometry::Ellipsoid(e), pose)),
-            )
-        }
-        "CYLINDER" | "FRUSTUM" => {
-            let (part, pose) = reference(model, &r, "CM")?;
-            if let Some(angle) = r.number("RANGLE")? {
-                if (angle - std::f64::consts::TAU).abs() > 1e-9 {
-                    return Err(Problem::new(
-                        r.loc_of("RANGLE"),
-                        format!(
-                            "{label}: RANGLE = {angle:?}: partial {kind}s are not supported for contact (must be 360D)"
-                        ),
-                    ));
-                }
-            }
-            let length = need(&r, "LENGTH")?;
-            let pose = if length < 0.0 { flipped_z(pose) } else { pose };
-            let g = if kind == "CYLINDER" {
-                Geometry::Cylinder(
-                    Cylinder::new(need(&r, "RADIUS")?, length.abs()).map_err(|e| invalid(&r, e))?,
-                )
-            } else {
-                Geometry::Frustum(
-                    Frustum::new(need(&r, "BOTTOM")?, need(&r, "TOP")?, length.abs())
-                        .map_err(|e| invalid(&r, e))?,
-                )
-            };
-            (Some(part), Shape::Geometry(instance(g, pose)))
-        }
-        "BOX" => {
-            let (part, pose) = reference(model, &r, "CORNER")?;
-            let b = Cuboid::from_corner(need(&r, "X")?, need(&r, "Y")?, need(&r, "Z")?)
-                .map_err(|e| invalid(&r, e))?;
-            (
-                Some(part),
-                Shape::Geometry(instance(Geometry::Cuboid(b), pose)),
-            )
-        }
-        "TORUS" => {
-            let (part, pose) = reference(model, &r, "CM")?;
-            let t = Torus::new(need(&r, "MAJOR_RADIUS")?, need(&r, "MINOR_RADIUS")?)
-                .map_err(|e| invalid(&r, e))?;
-            (
-                Some(part),
-                Shape::Geometry(instance(Geometry::Torus(t), pose)),
-            )
-        }
-        "PLANE" => {
-            let (part, pose) = reference(model, &r, "RM")?;
-            let bounds = ["XMIN", "XMAX", "YMIN", "YMAX"].map(|n| r.number(n));
-            let [xmin, xmax, ymin, ymax] = [
-                bounds[0].clone()?,
-                bounds[1].clone()?,
-                bounds[2].clone()?,
-                bounds[3].clone()?,
-            ];
-            let plane = match (xmin, xmax, ymin, ymax) {
-                (None, None, None, None) => Plane::unbounded(),
-                (Some(a), Some(b), Some(c), Some(d)) => {
-                    Plane::bounded(a, b, c, d).map_err(|e| invalid(&r, e))?
-                }
-                _ => {
-                    return Err(Problem::new(
-                        st.loc,
-                        format!("{label}: PLANE needs all of XMIN, XMAX, YMIN, YMAX or none"),
-                    ));
-                }
-            };
-            let line = match (xmin, xmax) {
-                (Some(a), Some(b)) => Line::bounded(a, b).map_err(|e| invalid(&r, e))?,
-                _ => Line::unbounded(),
-            };
-            (
-                Some(part),
-                Shape::Plane {
-                    solid: instance(Geometry::Plane(plane), pose),
-                    line: instance(Geometry::Line(line), pose),
-                },
-            )
-        }
+        "ELLIPSOID" => ellipsoid(model, &r, &place)?,
+        "CYLINDER" | "FRUSTUM" => cylinder_or_frustum(model, &r, kind, &place)?,
+        "BOX" => cuboid(model, &r, &place)?,
+        "TORUS" => torus(model, &r, &place)?,
+        "PLANE" => plane(model, &r, st, &place)?,
         "POINT" => {
             let (part, pose) = reference(model, &r, "RM")?;
-            (Some(part), Shape::Geometry(instance(Geometry::Point, pose)))
-        }
-        "CIRCLE" => {
-            let (part, pose) = reference(model, &r, "CM")?;
-            let c = Circle::new(need(&r, "RADIUS")?).map_err(|e| invalid(&r, e))?;
             (
                 Some(part),
-                Shape::Geometry(instance(Geometry::Circle(c), pose)),
+                Shape::Geometry(place.instance(Geometry::Point, pose)),
             )
         }
-        "ARC" => {
-            let (part, pose) = reference(model, &r, "CM")?;
-            let a =
-                Arc::new(need(&r, "RADIUS")?, need(&r, "RANGLE")?).map_err(|e| invalid(&r, e))?;
-            (
-                Some(part),
-                Shape::Geometry(instance(Geometry::Arc(a), pose)),
-            )
-        }
-        "CURVE" => {
-            let (part, pose) = reference(model, &r, "CRM")?;
-            let (cid, loc) = r.id("CID")?.ok_or_else(|| r.missing("CID"))?;
-            let (c, _) = curves.get(&cid).ok_or_else(|| {
-                Problem::new(
-                    loc,
-                    format!("{label}: CID = {cid}: CURVE/{cid} is not defined or has errors"),
-                )
-            })?;
-            (
-                Some(part),
-                Shape::Geometry(instance(
-                    Geometry::Curve(std::sync::Arc::new(c.clone())),
-                    pose,
-                )),
-            )
-        }
-        _ => {
-            let (part, pose) = reference(model, &r, "RM")?;
-            let (file, loc) = r.word("FILE")?.ok_or_else(|| r.missing("FILE"))?;
-            let lower = file.to_ascii_lowercase();
-            if [".xmt_bin", ".x_b"].iter().any(|ext| lower.ends_with(ext)) {
-                return Err(Problem::new(
-                    loc,
-                    format!(
-                        "{label}: FILE = {file} is a binary Parasolid file, which contact cannot read; write it as text (.x_t, .xmt_txt) or export the part as STL"
-                    ),
-                ));
-            }
-            if [".xmt_txt", ".x_t"].iter().any(|ext| lower.ends_with(ext)) {
-                let (element, _) = r.word("ELEMENT")?.ok_or_else(|| r.missing("ELEMENT"))?;
-                let path = low.dir.join(&file);
-                if !path.is_file() {
-                    return Err(Problem::new(
-                        loc,
-                        format!("{label}: FILE = {file}: no such file ({})", path.display()),
-                    ));
-                }
-                let parasolid = Some(ParasolidBody {
-                    part,
-                    part_name: model.parts.get(&part).and_then(|p| p.name.clone()),
-                    element: element.to_string(),
-                    units_per_metre: 1.0 / model.units.length_metre,
-                });
-                return Ok(Graphic {
-                    id,
-                    origin,
-                    part: Some(part),
-                    shape: Shape::MeshFile(MeshFile {
-                        path,
-                        pose_part_geometry: pose,
-                        flip_normal: false,
-                        faceting_tolerance: tolerance,
-                        label,
-                        parasolid,
-                    }),
-                });
-            }
-            if !(lower.ends_with(".stl") || lower.ends_with(".obj")) {
-                return Err(Problem::new(
-                    loc,
-                    format!(
-                        "{label}: FILE = {file}: only STL (.stl) and OBJ (.obj) files are supported for EXTERNAL geometry"
-                    ),
-                ));
-            }
-            let path = low.dir.join(&file);
-            if !path.is_file() {
-                return Err(Problem::new(
-                    loc,
-                    format!("{label}: FILE = {file}: no such file ({})", path.display()),
-                ));
-            }
-            (
-                Some(part),
-                Shape::MeshFile(MeshFile {
-                    path,
-                    pose_part_geometry: pose,
-                    flip_normal: false,
-                    faceting_tolerance: tolerance,
-                    label,
-                    parasolid: None,
-                }),
-            )
-        }
+        "CIRCLE" => circle(model, &r, &place)?,
+        "ARC" => arc(model, &r, &place)?,
+        "CURVE" => curve_graphic(model, &r, curves, &place)?,
+        _ => external(low, model, &r, place)?,
     };
     Ok(Graphic {
         id,
@@ -462,6 +278,257 @@ fn graphic(
         part,
         shape,
     })
+}
+
+/// The part a GRAPHICS is on (none for display-only ones) and its shape.
+type PartShape = (Option<u32>, Shape);
+
+/// What every geometry of one GRAPHICS carries: its FACETING_TOLERANCE and its label
+/// (`GRAPHICS/id`).
+struct Placing {
+    tolerance: Option<FacetingTolerance>,
+    label: String,
+}
+
+impl Placing {
+    /// `geometry` at `pose` on its part, with the tolerance and label.
+    fn instance(&self, geometry: Geometry, pose: Isometry3) -> GeometryInstance {
+        GeometryInstance {
+            faceting_tolerance: self.tolerance,
+            ..GeometryInstance::new(geometry)
+                .at(pose)
+                .labeled(self.label.clone())
+        }
+    }
+}
+
+/// An ELLIPSOID at its CM marker, from its XSCALE, YSCALE, ZSCALE diameters.
+fn ellipsoid(model: &Model, r: &Reader<'_>, place: &Placing) -> Result<PartShape, Problem> {
+    let (part, pose) = reference(model, r, "CM")?;
+    let e = Ellipsoid::from_diameters(need(r, "XSCALE")?, need(r, "YSCALE")?, need(r, "ZSCALE")?)
+        .map_err(|e| invalid(r, e))?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Ellipsoid(e), pose)),
+    ))
+}
+
+/// A full (RANGLE = 360D) CYLINDER or FRUSTUM at its CM marker; a negative LENGTH runs along
+/// −z.
+fn cylinder_or_frustum(
+    model: &Model,
+    r: &Reader<'_>,
+    kind: &str,
+    place: &Placing,
+) -> Result<PartShape, Problem> {
+    let label = &place.label;
+    let (part, pose) = reference(model, r, "CM")?;
+    if let Some(angle) = r.number("RANGLE")? {
+        if (angle - std::f64::consts::TAU).abs() > 1e-9 {
+            return Err(Problem::new(
+                r.loc_of("RANGLE"),
+                format!(
+                    "{label}: RANGLE = {angle:?}: partial {kind}s are not supported for contact (must be 360D)"
+                ),
+            ));
+        }
+    }
+    let length = need(r, "LENGTH")?;
+    let pose = if length < 0.0 { flipped_z(pose) } else { pose };
+    let g = if kind == "CYLINDER" {
+        Geometry::Cylinder(
+            Cylinder::new(need(r, "RADIUS")?, length.abs()).map_err(|e| invalid(r, e))?,
+        )
+    } else {
+        Geometry::Frustum(
+            Frustum::new(need(r, "BOTTOM")?, need(r, "TOP")?, length.abs())
+                .map_err(|e| invalid(r, e))?,
+        )
+    };
+    Ok((Some(part), Shape::Geometry(place.instance(g, pose))))
+}
+
+/// A BOX from its CORNER marker, X × Y × Z.
+fn cuboid(model: &Model, r: &Reader<'_>, place: &Placing) -> Result<PartShape, Problem> {
+    let (part, pose) = reference(model, r, "CORNER")?;
+    let b = Cuboid::from_corner(need(r, "X")?, need(r, "Y")?, need(r, "Z")?)
+        .map_err(|e| invalid(r, e))?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Cuboid(b), pose)),
+    ))
+}
+
+/// A TORUS at its CM marker, from MAJOR_RADIUS and MINOR_RADIUS.
+fn torus(model: &Model, r: &Reader<'_>, place: &Placing) -> Result<PartShape, Problem> {
+    let (part, pose) = reference(model, r, "CM")?;
+    let t = Torus::new(need(r, "MAJOR_RADIUS")?, need(r, "MINOR_RADIUS")?)
+        .map_err(|e| invalid(r, e))?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Torus(t), pose)),
+    ))
+}
+
+/// A PLANE at its RM marker, unbounded or bounded by all of XMIN, XMAX, YMIN, YMAX, with the
+/// line it is in the 2-D view.
+fn plane(
+    model: &Model,
+    r: &Reader<'_>,
+    st: &Statement,
+    place: &Placing,
+) -> Result<PartShape, Problem> {
+    let label = &place.label;
+    let (part, pose) = reference(model, r, "RM")?;
+    let bounds = ["XMIN", "XMAX", "YMIN", "YMAX"].map(|n| r.number(n));
+    let [xmin, xmax, ymin, ymax] = [
+        bounds[0].clone()?,
+        bounds[1].clone()?,
+        bounds[2].clone()?,
+        bounds[3].clone()?,
+    ];
+    let plane = match (xmin, xmax, ymin, ymax) {
+        (None, None, None, None) => Plane::unbounded(),
+        (Some(a), Some(b), Some(c), Some(d)) => {
+            Plane::bounded(a, b, c, d).map_err(|e| invalid(r, e))?
+        }
+        _ => {
+            return Err(Problem::new(
+                st.loc,
+                format!("{label}: PLANE needs all of XMIN, XMAX, YMIN, YMAX or none"),
+            ));
+        }
+    };
+    let line = match (xmin, xmax) {
+        (Some(a), Some(b)) => Line::bounded(a, b).map_err(|e| invalid(r, e))?,
+        _ => Line::unbounded(),
+    };
+    Ok((
+        Some(part),
+        Shape::Plane {
+            solid: place.instance(Geometry::Plane(plane), pose),
+            line: place.instance(Geometry::Line(line), pose),
+        },
+    ))
+}
+
+/// A CIRCLE at its CM marker, of RADIUS.
+fn circle(model: &Model, r: &Reader<'_>, place: &Placing) -> Result<PartShape, Problem> {
+    let (part, pose) = reference(model, r, "CM")?;
+    let c = Circle::new(need(r, "RADIUS")?).map_err(|e| invalid(r, e))?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Circle(c), pose)),
+    ))
+}
+
+/// An ARC at its CM marker, of RADIUS through RANGLE.
+fn arc(model: &Model, r: &Reader<'_>, place: &Placing) -> Result<PartShape, Problem> {
+    let (part, pose) = reference(model, r, "CM")?;
+    let a = Arc::new(need(r, "RADIUS")?, need(r, "RANGLE")?).map_err(|e| invalid(r, e))?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Arc(a), pose)),
+    ))
+}
+
+/// The CURVE (CID) a GRAPHICS draws at its CRM marker; a curve not defined, or with errors,
+/// is an error at CID.
+fn curve_graphic(
+    model: &Model,
+    r: &Reader<'_>,
+    curves: &BTreeMap<u32, (Curve, Loc)>,
+    place: &Placing,
+) -> Result<PartShape, Problem> {
+    let label = &place.label;
+    let (part, pose) = reference(model, r, "CRM")?;
+    let (cid, loc) = r.id("CID")?.ok_or_else(|| r.missing("CID"))?;
+    let (c, _) = curves.get(&cid).ok_or_else(|| {
+        Problem::new(
+            loc,
+            format!("{label}: CID = {cid}: CURVE/{cid} is not defined or has errors"),
+        )
+    })?;
+    Ok((
+        Some(part),
+        Shape::Geometry(place.instance(Geometry::Curve(std::sync::Arc::new(c.clone())), pose)),
+    ))
+}
+
+/// An EXTERNAL FILE at its RM marker: a text Parasolid body (with its ELEMENT), an STL or an
+/// OBJ file, relative to the dataset's directory; binary Parasolid, other formats and missing
+/// files are errors at FILE.
+fn external(
+    low: &Lowering,
+    model: &Model,
+    r: &Reader<'_>,
+    place: Placing,
+) -> Result<PartShape, Problem> {
+    let Placing { tolerance, label } = place;
+    let (part, pose) = reference(model, r, "RM")?;
+    let (file, loc) = r.word("FILE")?.ok_or_else(|| r.missing("FILE"))?;
+    let lower = file.to_ascii_lowercase();
+    if [".xmt_bin", ".x_b"].iter().any(|ext| lower.ends_with(ext)) {
+        return Err(Problem::new(
+            loc,
+            format!(
+                "{label}: FILE = {file} is a binary Parasolid file, which contact cannot read; write it as text (.x_t, .xmt_txt) or export the part as STL"
+            ),
+        ));
+    }
+    if [".xmt_txt", ".x_t"].iter().any(|ext| lower.ends_with(ext)) {
+        let (element, _) = r.word("ELEMENT")?.ok_or_else(|| r.missing("ELEMENT"))?;
+        let path = low.dir.join(&file);
+        if !path.is_file() {
+            return Err(Problem::new(
+                loc,
+                format!("{label}: FILE = {file}: no such file ({})", path.display()),
+            ));
+        }
+        let parasolid = Some(ParasolidBody {
+            part,
+            part_name: model.parts.get(&part).and_then(|p| p.name.clone()),
+            element: element.to_string(),
+            units_per_metre: 1.0 / model.units.length_metre,
+        });
+        return Ok((
+            Some(part),
+            Shape::MeshFile(MeshFile {
+                path,
+                pose_part_geometry: pose,
+                flip_normal: false,
+                faceting_tolerance: tolerance,
+                label,
+                parasolid,
+            }),
+        ));
+    }
+    if !(lower.ends_with(".stl") || lower.ends_with(".obj")) {
+        return Err(Problem::new(
+            loc,
+            format!(
+                "{label}: FILE = {file}: only STL (.stl) and OBJ (.obj) files are supported for EXTERNAL geometry"
+            ),
+        ));
+    }
+    let path = low.dir.join(&file);
+    if !path.is_file() {
+        return Err(Problem::new(
+            loc,
+            format!("{label}: FILE = {file}: no such file ({})", path.display()),
+        ));
+    }
+    Ok((
+        Some(part),
+        Shape::MeshFile(MeshFile {
+            path,
+            pose_part_geometry: pose,
+            flip_normal: false,
+            faceting_tolerance: tolerance,
+            label,
+            parasolid: None,
+        }),
+    ))
 }
 
 /// GRAPHICS statements (with the CURVE and MATRIX statements they use).
