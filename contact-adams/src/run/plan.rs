@@ -23,9 +23,7 @@
 //! - Without SIMULATE commands: dynamics from 0 to `--end`.
 
 use crate::dataset::Origin;
-use crate::model::{
-    Analysis as ModelAnalysis, Command, EquilibriumSettings, Model, OutputSteps, SimulationSpan,
-};
+use crate::model::{Analysis as ModelAnalysis, EquilibriumSettings, Model, OutputSteps};
 use crate::run::active::Inactive;
 use crate::run::lower::LowerError;
 use contact_core::InvalidArgument;
@@ -33,6 +31,9 @@ use contact_solver::bdf::{Corrector, IntegratorSettings};
 use contact_solver::linear::LinearSettings;
 use contact_solver::mbs::MbsError;
 use contact_solver::statics::StaticsSettings;
+use planner::Planner;
+
+mod planner;
 
 /// Why a SIMULATE/TRANSIENT ran as kinematics or as dynamics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -362,148 +363,16 @@ pub fn plan_run(
     overrides: PlanOverrides,
     degrees_of_freedom: &mut dyn FnMut(f64, &Inactive) -> Result<usize, DegreesOfFreedomError>,
 ) -> Result<RunPlan, PlanError> {
-    let mut notes = Vec::new();
-    let mut switches = Vec::new();
-    let mut integrator = convert_integrator(&model.integrator)?;
-    let mut equilibrium = model.equilibrium.clone();
-    let mut steps: Vec<(AnalysisStep, Inactive)> = Vec::new();
-    let mut span: Option<Span> = None;
-    let mut time = 0.0;
-    let mut inactive = Inactive::default();
+    let mut planner = Planner::new(model, overrides)?;
     for (origin, command) in &model.commands {
-        if matches!(command, Command::Simulate { .. } | Command::Linear { .. })
-            && let Some((motion, joint)) = inactive.orphan_motion(model)
+        if planner
+            .command(origin, command, &mut *degrees_of_freedom)?
+            .is_break()
         {
-            return Err(PlanError::OrphanMotion {
-                origin: origin.clone(),
-                motion,
-                joint,
-            });
-        }
-        match command {
-            Command::Integrator(s) => integrator = convert_integrator(s)?,
-            Command::Equilibrium(s) => equilibrium = s.clone(),
-            Command::Simulate {
-                analysis,
-                span: when,
-                output,
-            } => {
-                let mut transient = None;
-                let timed = match analysis {
-                    ModelAnalysis::Dynamics => Some(ModelAnalysis::Dynamics),
-                    ModelAnalysis::Transient => {
-                        let choice = TransientChoice {
-                            degrees_of_freedom: degrees_of_freedom(time, &inactive).map_err(
-                                |source| PlanError::Transient {
-                                    origin: origin.clone(),
-                                    source,
-                                },
-                            )?,
-                        };
-                        notes.push(format!("{origin}: {choice}"));
-                        transient = Some(choice);
-                        Some(if choice.degrees_of_freedom == 0 {
-                            ModelAnalysis::Kinematics
-                        } else {
-                            ModelAnalysis::Dynamics
-                        })
-                    }
-                    ModelAnalysis::Kinematics => Some(ModelAnalysis::Kinematics),
-                    ModelAnalysis::Statics | ModelAnalysis::InitialConditions => None,
-                };
-                let Some(timed) = timed else {
-                    if let Some(done) = span.take() {
-                        steps.push(finish(done, overrides, &mut notes, false)?);
-                    }
-                    let step = if *analysis == ModelAnalysis::Statics {
-                        AnalysisStep::Statics {
-                            t: time,
-                            settings: convert_equilibrium(&equilibrium, integrator),
-                        }
-                    } else {
-                        AnalysisStep::InitialConditions { t: time }
-                    };
-                    steps.push((step, inactive.clone()));
-                    continue;
-                };
-                let stop = match when {
-                    Some(SimulationSpan::End(t)) => *t,
-                    Some(SimulationSpan::Duration(d)) => time + d,
-                    None => {
-                        return Err(PlanError::NoSpan {
-                            origin: origin.clone(),
-                        });
-                    }
-                };
-                // Each SIMULATE is its own span with its own END and output step; the next
-                // one starts from the state this one reaches.
-                if let Some(done) = span.take() {
-                    steps.push(finish(done, overrides, &mut notes, false)?);
-                }
-                span = Some(Span {
-                    origin: Some(origin.clone()),
-                    analysis: timed,
-                    start: time,
-                    end: stop,
-                    output: *output,
-                    integrator,
-                    transient,
-                    inactive: inactive.clone(),
-                });
-                time = stop;
-            }
-            Command::Linear { damping } => {
-                if let Some(done) = span.take() {
-                    steps.push(finish(done, overrides, &mut notes, false)?);
-                }
-                let step = AnalysisStep::Linear {
-                    t: time,
-                    settings: LinearSettings { damping: *damping },
-                };
-                steps.push((step, inactive.clone()));
-            }
-            Command::Activate { active, class, ids } => {
-                let text = inactive.switch(*active, class, ids, time);
-                notes.push(format!("{origin}: {command}: {text}"));
-                switches.push((origin.clone(), format!("{command}: {text}")));
-            }
-            Command::Stop => break,
-            other => notes.push(format!(
-                "{origin}: {other} is not applied by this solver: the command is ignored"
-            )),
+            break;
         }
     }
-    match span.take() {
-        Some(done) => steps.push(finish(done, overrides, &mut notes, true)?),
-        None if steps.is_empty() => {
-            let end = overrides.end.ok_or(PlanError::NoEnd)?;
-            let done = Span {
-                origin: None,
-                analysis: ModelAnalysis::Dynamics,
-                start: 0.0,
-                end,
-                output: None,
-                integrator,
-                transient: None,
-                inactive,
-            };
-            steps.push(finish(done, overrides, &mut notes, true)?);
-        }
-        None => {
-            if overrides.end.is_some() {
-                notes.push(
-                    "--end is not used: the command file runs no DYNAMICS or KINEMATICS".into(),
-                );
-            }
-        }
-    }
-    let (steps, inactive) = steps.into_iter().unzip();
-    Ok(RunPlan {
-        steps,
-        inactive,
-        notes,
-        switches,
-    })
+    planner.finish()
 }
 
 /// The step of a finished span; `last` when `--end` may override its END. Refuses a span
