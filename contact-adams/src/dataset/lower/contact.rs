@@ -169,6 +169,8 @@ fn param_problem(r: &Reader<'_>, e: &ParamError) -> Problem {
     Problem::new(loc, format!("{}: {e}", r.label()))
 }
 
+/// One CONTACT statement: its two parts, the geometries of each side and its parameters
+/// (their warnings reported on `low`).
 fn contact(
     low: &mut Lowering,
     model: &Model,
@@ -187,7 +189,35 @@ fn contact(
         ));
     }
     let args = arguments(&r)?;
-    // The dimension: from TYPE if given, else from the first geometry that fixes it.
+    let dimension = contact_dimension(id, &args, &i_members, &j_members)?;
+    let i_geometries = resolve(&r, st, id, dimension, i_members, 'I')?;
+    let j_geometries = resolve(&r, st, id, dimension, j_members, 'J')?;
+    let (params, warnings) = args
+        .validate(&model.units)
+        .map_err(|e| param_problem(&r, &e))?;
+    for w in warnings {
+        low.warning(st.loc, format!("CONTACT/{id}: {w}"));
+    }
+    Ok(ContactElement {
+        id,
+        origin: low.origin(st.loc),
+        i_part,
+        j_part,
+        i_geometries,
+        j_geometries,
+        dimension,
+        params,
+    })
+}
+
+/// The dimension of CONTACT `id`: from TYPE if given, else from the first geometry that fixes
+/// it, else 3-D. A geometry of the other dimension is an error at it.
+fn contact_dimension(
+    id: u32,
+    args: &ContactArgs,
+    i_members: &[Member],
+    j_members: &[Member],
+) -> Result<ContactDimension, Problem> {
     let mut dimension = args.contact_type.map(|t| {
         if t.is_planar() {
             ContactDimension::TwoD
@@ -196,7 +226,7 @@ fn contact(
         }
     });
     let mut decided_by = dimension.map(|_| "TYPE".to_string());
-    for m in i_members.iter().chain(&j_members) {
+    for m in i_members.iter().chain(j_members) {
         let Some(d) = dimension_of(&m.shape) else {
             continue;
         };
@@ -227,80 +257,75 @@ fn contact(
             Some(_) => {}
         }
     }
-    let dimension = dimension.unwrap_or(ContactDimension::ThreeD);
-    let resolve = |members: Vec<Member>,
-                   side: char|
-     -> Result<Vec<(u32, ContactGeometry)>, Problem> {
-        let flip_all = r.flag(&format!("{side}FLIP_NORMAL"));
-        let flip_name = format!("{side}FLIP_GEOMETRY");
-        if flip_all && members.len() > 1 {
+    Ok(dimension.unwrap_or(ContactDimension::ThreeD))
+}
+
+/// The geometries of one side (`side` 'I' or 'J') of CONTACT `id`, in `dimension`, their
+/// normals flipped by `{side}FLIP_NORMAL` (a single geometry only) or `{side}FLIP_GEOMETRY`
+/// (ids that must be in the list).
+fn resolve(
+    r: &Reader<'_>,
+    st: &Statement,
+    id: u32,
+    dimension: ContactDimension,
+    members: Vec<Member>,
+    side: char,
+) -> Result<Vec<(u32, ContactGeometry)>, Problem> {
+    let flip_all = r.flag(&format!("{side}FLIP_NORMAL"));
+    let flip_name = format!("{side}FLIP_GEOMETRY");
+    if flip_all && members.len() > 1 {
+        return Err(Problem::new(
+            r.get(&format!("{side}FLIP_NORMAL"))
+                .map(|a| a.loc)
+                .unwrap_or(st.loc),
+            format!(
+                "CONTACT/{id}: {side}FLIP_NORMAL applies to a single {side}GEOM geometry; use {flip_name} for lists"
+            ),
+        ));
+    }
+    let flips = r.ids(&flip_name)?.unwrap_or_default();
+    for (f, loc) in &flips {
+        if !members.iter().any(|m| m.id == *f) {
             return Err(Problem::new(
-                r.get(&format!("{side}FLIP_NORMAL"))
-                    .map(|a| a.loc)
-                    .unwrap_or(st.loc),
-                format!(
-                    "CONTACT/{id}: {side}FLIP_NORMAL applies to a single {side}GEOM geometry; use {flip_name} for lists"
-                ),
+                *loc,
+                format!("CONTACT/{id}: {flip_name}: GRAPHICS/{f} is not in the {side}GEOM list"),
             ));
         }
-        let flips = r.ids(&flip_name)?.unwrap_or_default();
-        for (f, loc) in &flips {
-            if !members.iter().any(|m| m.id == *f) {
-                return Err(Problem::new(
-                    *loc,
-                    format!(
-                        "CONTACT/{id}: {flip_name}: GRAPHICS/{f} is not in the {side}GEOM list"
-                    ),
-                ));
-            }
-        }
-        Ok(members
-            .into_iter()
-            .map(|m| {
-                let flip = flip_all || flips.iter().any(|(f, _)| *f == m.id);
-                let g = match m.shape {
-                    MemberShape::Fixed(g) => g,
-                    MemberShape::Plane(forms) => {
-                        let (solid, line) = *forms;
-                        ContactGeometry::Geometry(if dimension == ContactDimension::TwoD {
-                            line
-                        } else {
-                            solid
-                        })
-                    }
-                };
-                let g = match g {
-                    ContactGeometry::Geometry(mut gi) => {
-                        gi.flip_normal = flip;
-                        ContactGeometry::Geometry(gi)
-                    }
-                    ContactGeometry::MeshFile(mut f) => {
-                        f.flip_normal = flip;
-                        ContactGeometry::MeshFile(f)
-                    }
-                };
-                (m.id, g)
-            })
-            .collect())
-    };
-    let i_geometries = resolve(i_members, 'I')?;
-    let j_geometries = resolve(j_members, 'J')?;
-    let (params, warnings) = args
-        .validate(&model.units)
-        .map_err(|e| param_problem(&r, &e))?;
-    for w in warnings {
-        low.warning(st.loc, format!("CONTACT/{id}: {w}"));
     }
-    Ok(ContactElement {
-        id,
-        origin: low.origin(st.loc),
-        i_part,
-        j_part,
-        i_geometries,
-        j_geometries,
-        dimension,
-        params,
-    })
+    Ok(members
+        .into_iter()
+        .map(|m| {
+            let flip = flip_all || flips.iter().any(|(f, _)| *f == m.id);
+            member_geometry(m, flip, dimension)
+        })
+        .collect())
+}
+
+/// A member's geometry (of a PLANE, the line in 2-D and the solid in 3-D), its normal flipped
+/// if `flip`.
+fn member_geometry(m: Member, flip: bool, dimension: ContactDimension) -> (u32, ContactGeometry) {
+    let g = match m.shape {
+        MemberShape::Fixed(g) => g,
+        MemberShape::Plane(forms) => {
+            let (solid, line) = *forms;
+            ContactGeometry::Geometry(if dimension == ContactDimension::TwoD {
+                line
+            } else {
+                solid
+            })
+        }
+    };
+    let g = match g {
+        ContactGeometry::Geometry(mut gi) => {
+            gi.flip_normal = flip;
+            ContactGeometry::Geometry(gi)
+        }
+        ContactGeometry::MeshFile(mut f) => {
+            f.flip_normal = flip;
+            ContactGeometry::MeshFile(f)
+        }
+    };
+    (m.id, g)
 }
 
 /// CONTACT statements.
