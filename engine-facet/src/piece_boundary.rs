@@ -131,27 +131,44 @@ pub(crate) fn corner_inside(
     n: &Vector3,
     corner: &Vector3,
 ) -> Option<bool> {
-    let closest = |(p, q): &(Vector3, Vector3)| {
+    let side = side_of_nearest(
+        segments.iter().map(|(p, q)| (*p, *q, n.cross(&(q - p)))),
+        corner,
+    );
+    (side != 0.0).then_some(side > 0.0)
+}
+
+/// The signed distance of `m` along the inward direction of the segment `(p, q, inward)`
+/// nearest to it; among segments equally near (within 1e-9 relative: a corner of a chain),
+/// the one whose line lies farthest from `m` (a point-in-polygon test by the nearest edge).
+/// Zero without segments.
+pub(crate) fn side_of_nearest(
+    segments: impl Iterator<Item = (Vector3, Vector3, Vector3)> + Clone,
+    m: &Vector3,
+) -> f64 {
+    let closest = |p: &Vector3, q: &Vector3| {
         let d = q - p;
-        let t = ((corner - p).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
-        let c = p + d * t;
-        (
-            (corner - c).norm(),
-            (corner - c).dot(&n.cross(&d).normalize()),
-        )
+        let len2 = d.norm_squared();
+        let t = if len2 > 0.0 {
+            ((m - p).dot(&d) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        p + d * t
     };
     let nearest = segments
-        .iter()
-        .map(|s| closest(s).0)
+        .clone()
+        .map(|(p, q, _)| (m - closest(&p, &q)).norm())
         .fold(f64::INFINITY, f64::min);
-    let tie = nearest * (1.0 + 1e-9);
-    let side = segments
-        .iter()
-        .map(closest)
-        .filter(|(gap, _)| *gap <= tie)
-        .map(|(_, side)| side)
-        .max_by(|a, b| a.abs().total_cmp(&b.abs()))?;
-    (side != 0.0).then_some(side > 0.0)
+    let tie = nearest * (1.0 + 1e-9) + f64::MIN_POSITIVE;
+    segments
+        .filter_map(|(p, q, inward)| {
+            let c = closest(&p, &q);
+            let inward = inward.try_normalize(0.0)?;
+            ((m - c).norm() <= tie).then(|| (m - c).dot(&inward))
+        })
+        .max_by(|u, v| u.abs().total_cmp(&v.abs()))
+        .unwrap_or(0.0)
 }
 
 /// The point's place on the boundary: `e + t` on edge `e` (corner `e` to `e + 1`) at fraction

@@ -32,6 +32,7 @@
 
 use crate::contact_region::{RelativePose, corners_in_a};
 use crate::facet_mesh::FacetMesh;
+use crate::piece_boundary::side_of_nearest;
 use crate::scratch::{Hit, RegionNode, Scratch};
 use contact_core::Vector3;
 
@@ -335,6 +336,11 @@ impl Segment {
         (c, (m - c).norm())
     }
 
+    /// The segment's ends and its inward direction, as [`side_of_nearest`] takes them.
+    fn with_inward(&self) -> (Vector3, Vector3, Vector3) {
+        (self.p, self.q, self.inward)
+    }
+
     fn distance_to(&self, m: &Vector3) -> f64 {
         self.closest(m).1
     }
@@ -417,7 +423,8 @@ fn one_face(
         return false;
     }
     let m = 0.5 * (qi + qj);
-    inside_side(of(ci), &m) > 0.0 && inside_side(of(cj), &m) > 0.0
+    side_of_nearest(of(ci).map(Segment::with_inward), &m) > 0.0
+        && side_of_nearest(of(cj).map(Segment::with_inward), &m) > 0.0
 }
 
 /// Whether segment `s` meets the segment `p q` in the triangle's plane (normal `n`); touching
@@ -427,23 +434,4 @@ fn crosses(p: &Vector3, q: &Vector3, s: &Segment, n: &Vector3) -> bool {
     let (o1, o2) = (orient(p, q, &s.p), orient(p, q, &s.q));
     let (o3, o4) = (orient(&s.p, &s.q, p), orient(&s.p, &s.q, q));
     o1 * o2 <= 0.0 && o3 * o4 <= 0.0
-}
-
-/// The signed distance of `m` along the inside direction of the chain's segment nearest to it;
-/// among segments equally near (a corner of the chain), the one whose line lies farthest from
-/// `m`.
-fn inside_side<'a>(chain: impl Iterator<Item = &'a Segment> + Clone, m: &Vector3) -> f64 {
-    let nearest = chain
-        .clone()
-        .map(|s| s.distance_to(m))
-        .fold(f64::INFINITY, f64::min);
-    let tie = nearest * (1.0 + 1e-9) + f64::MIN_POSITIVE;
-    chain
-        .filter_map(|s| {
-            let (c, d) = s.closest(m);
-            let inward = s.inward.try_normalize(0.0)?;
-            (d <= tie).then(|| (m - c).dot(&inward))
-        })
-        .max_by(|u, v| u.abs().total_cmp(&v.abs()))
-        .unwrap_or(0.0)
 }

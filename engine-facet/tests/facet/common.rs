@@ -90,13 +90,7 @@ pub fn u_shape() -> Geometry {
         (0.5, 0.4),
         (0.0, 0.4),
     ];
-    let n = profile.len() as u32;
-    let vertices: Vec<Point3> = [0.0, 0.1]
-        .iter()
-        .flat_map(|&y| profile.iter().map(move |&(x, z)| Point3::new(x, y, z)))
-        .collect();
-    // The profile as six triangles (counter-clockwise in (x, z)), each cap and each side quad
-    // oriented to its outward normal.
+    // The profile as six triangles.
     let caps = [
         [0, 1, 2],
         [0, 2, 7],
@@ -105,6 +99,18 @@ pub fn u_shape() -> Geometry {
         [3, 4, 5],
         [3, 5, 6],
     ];
+    prism(&profile, &caps, 0.1, false)
+}
+
+/// The closed prism of a counter-clockwise profile in (x, z), extruded over `0 ≤ y ≤ depth`:
+/// the caps triangulated as `caps` (indices into the profile), each side quad split along
+/// one diagonal or (`other_split`) the other, every triangle turned to its outward normal.
+pub fn prism(profile: &[(f64, f64)], caps: &[[u32; 3]], depth: f64, other_split: bool) -> Geometry {
+    let n = profile.len() as u32;
+    let vertices: Vec<Point3> = [0.0, depth]
+        .iter()
+        .flat_map(|&y| profile.iter().map(move |&(x, z)| Point3::new(x, y, z)))
+        .collect();
     let mut triangles = Vec::new();
     let mut push = |t: [u32; 3], outward: Vector3| {
         let [a, b, c] = t.map(|k| vertices[k as usize]);
@@ -115,7 +121,7 @@ pub fn u_shape() -> Geometry {
             [t[0], t[2], t[1]]
         });
     };
-    for t in caps {
+    for &t in caps {
         push(t, -Vector3::y());
         push(t.map(|k| k + n), Vector3::y());
     }
@@ -124,8 +130,13 @@ pub fn u_shape() -> Geometry {
         let (a, b) = (profile[k as usize], profile[m as usize]);
         // Counter-clockwise profile: the outward normal of edge a→b is (dz, −dx) in (x, z).
         let outward = Vector3::new(b.1 - a.1, 0.0, -(b.0 - a.0));
-        push([k, m, m + n], outward);
-        push([k, m + n, k + n], outward);
+        if other_split {
+            push([k, m, k + n], outward);
+            push([m, m + n, k + n], outward);
+        } else {
+            push([k, m, m + n], outward);
+            push([k, m + n, k + n], outward);
+        }
     }
     Geometry::Mesh(std::sync::Arc::new(
         TriangleMesh::new(vertices, triangles).unwrap(),

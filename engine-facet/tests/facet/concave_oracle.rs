@@ -7,7 +7,7 @@
 //! the polyhedral intersection's to round-off — no approximation where B is concave, and the
 //! same for either triangulation of the L's faces.
 
-use crate::common::{Rng, engine, prepare, query_pair};
+use crate::common::{Rng, engine, prepare, prism, query_pair};
 use contact_core::geometry::{Cuboid, TriangleMesh};
 use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector3};
 
@@ -24,45 +24,12 @@ const PROFILE: [(f64, f64); 6] = [
 
 /// The L prism, its caps and side quads split one way or the other.
 fn l_prism(other_split: bool) -> Geometry {
-    let n = PROFILE.len() as u32;
-    let vertices: Vec<Point3> = [0.0, 1.0]
-        .iter()
-        .flat_map(|&y| PROFILE.iter().map(move |&(x, z)| Point3::new(x, y, z)))
-        .collect();
     let caps = if other_split {
         [[1, 2, 3], [1, 3, 0], [0, 3, 4], [0, 4, 5]]
     } else {
         [[0, 1, 2], [0, 2, 3], [0, 3, 5], [3, 4, 5]]
     };
-    let mut triangles = Vec::new();
-    let mut push = |t: [u32; 3], outward: Vector3| {
-        let [a, b, c] = t.map(|k| vertices[k as usize]);
-        let normal = (b - a).cross(&(c - a));
-        triangles.push(if normal.dot(&outward) > 0.0 {
-            t
-        } else {
-            [t[0], t[2], t[1]]
-        });
-    };
-    for t in caps {
-        push(t, -Vector3::y());
-        push(t.map(|k| k + n), Vector3::y());
-    }
-    for k in 0..n {
-        let m = (k + 1) % n;
-        let (a, b) = (PROFILE[k as usize], PROFILE[m as usize]);
-        let outward = Vector3::new(b.1 - a.1, 0.0, -(b.0 - a.0));
-        if other_split {
-            push([k, m, k + n], outward);
-            push([m, m + n, k + n], outward);
-        } else {
-            push([k, m, m + n], outward);
-            push([k, m + n, k + n], outward);
-        }
-    }
-    Geometry::Mesh(std::sync::Arc::new(
-        TriangleMesh::new(vertices, triangles).unwrap(),
-    ))
+    prism(&PROFILE, &caps, 1.0, other_split)
 }
 
 /// A convex polygon clipped to `n·x ≤ d`.
