@@ -74,7 +74,10 @@ fn step(
         // δ̇, the slip and the spin at the contact's midpoint, from both bodies' velocities.
         let k = ContactKinematics::compute(c, &wheel, &ground);
         let normal = impact.force(c.penetration, k.penetration_rate).force;
-        friction_w += friction.force(&k.slip_velocity_w, normal).force;
+        friction_w += friction
+            .slip_and_spin(&k.slip_velocity_w, k.spin, normal, c.area)
+            .force
+            .force;
         answer.normal_force += normal;
         if c.penetration > answer.depth {
             answer.depth = c.penetration;

@@ -9,7 +9,9 @@
 //! - the normal force `Fn(δ, δ̇) ≥ 0` from IMPACT or POISSON, pushing I along `n`;
 //! - with friction, the slip `v_t = v − (n·v)·n` gives `F_t = μ(|v_t|)·Fn·v̂_t` (μ signed, so it
 //!   opposes the slip) and the relative spin `ω_n = (ω_I − ω_J)·n` gives the torque
-//!   `(2/3)·R·μ(ω_n·R)·Fn` about `n`, `R = sqrt(A/π)`;
+//!   `(2/3)·R·μ(ω_n·R)·Fn` about `n`, `R = sqrt(A/π)`; when the patch slips and spins at once
+//!   the two share one Coulomb budget, with μ at the speed `sqrt(|v_t|² + (ω_n·R)²)`
+//!   ([`contact_core::laws::SlipAndSpin`]);
 //! - I receives `Fn·n + F_t` at `p` and the torque; J the opposite.
 //!
 //! NORMAL_ROUTINE and FRICTION_ROUTINE replace the normal law and the friction law by user
@@ -327,10 +329,10 @@ impl ContactForce {
                     // Refused in `with_user_laws`.
                     None => (Vector3::zeros(), 0.0),
                 },
-                (_, Some(c)) => (
-                    c.force(&slip, normal.force).force,
-                    c.torque(spin, normal.force, contact.area).torque,
-                ),
+                (_, Some(c)) => {
+                    let both = c.slip_and_spin(&slip, spin, normal.force, contact.area);
+                    (both.force.force, both.torque.torque)
+                }
                 (_, None) => (Vector3::zeros(), 0.0),
             };
             out.push(ContactReport {

@@ -12,8 +12,10 @@
 //! δ  ≈ δ0 − n·d,      δ̇ = −n·ḋ,      v_t = (I − n nᵀ)·ḋ,      ω_n = n·(ω_I − ω_J)
 //! ∂F/∂d = −(n + ∂F_t/∂Fn)·∂Fn/∂δ·nᵀ
 //! ∂F/∂ḋ = −(n + ∂F_t/∂Fn)·∂Fn/∂δ̇·nᵀ + ∂F_t/∂v_t·(I − n nᵀ)
-//! ∂T    = ∂T/∂Fn·(∂Fn/∂δ·∂δ + ∂Fn/∂δ̇·∂δ̇) + ∂T/∂ω_n·nᵀ·∂(ω_I − ω_J)
+//! ∂T    = ∂T/∂Fn·(∂Fn/∂δ·∂δ + ∂Fn/∂δ̇·∂δ̇) + ∂T/∂ω_n·nᵀ·∂(ω_I − ω_J) + ∂T/∂v_t·(I − n nᵀ)·∂ḋ
 //! ```
+//! and `∂F_t/∂ω_n·nᵀ·∂(ω_I − ω_J)` added to `∂F`: slip and spin share one Coulomb budget
+//! ([`contact_core::laws::SlipAndSpin`]).
 //! with the force laws' analytic partials from `contact_core::laws` (IMPACT, POISSON, the
 //! augmented-Lagrangian force at the current multipliers, Coulomb friction force and torque).
 //! The chain rule to the parts' `(δr, θ, u, ω)` is [`point_pair_partials`]' with
@@ -142,15 +144,15 @@ pub fn compute_contact_partials_with(
         let fn_v: RowVector3<f64> = n.transpose() * -normal.d_rate;
         let tangent = Matrix3::identity() - n * n.transpose();
         let v = si.point_velocity_w(&p) - sj.point_velocity_w(&p);
-        let (along_fn, slip_partial, torque) = match friction {
+        let (along_fn, slip_partial, friction) = match friction {
             Some(law) => {
                 let slip = v - n * n.dot(&v);
                 let spin = (si.angular_velocity_w - sj.angular_velocity_w).dot(&n);
-                let force = law.force(&slip, normal.force);
+                let both = law.slip_and_spin(&slip, spin, normal.force, c.area);
                 (
-                    n + force.d_normal_force,
-                    force.d_slip * tangent,
-                    Some(law.torque(spin, normal.force, c.area)),
+                    n + both.force.d_normal_force,
+                    both.force.d_slip * tangent,
+                    Some(both),
                 )
             }
             None => (n, Matrix3::zeros(), None),
@@ -166,16 +168,18 @@ pub fn compute_contact_partials_with(
             &s_i, &s_j, &omega_i, &omega_j, &force, &k, &damping, &mut one,
         );
         out += &one;
-        if let Some(torque) = torque {
+        if let Some(both) = friction {
+            let torque = both.torque;
             add_torque_partials(
                 &mut out,
                 &n,
                 &(fn_d * torque.d_normal_force),
-                &(fn_v * torque.d_normal_force),
+                &(fn_v * torque.d_normal_force + both.torque_d_slip.transpose() * tangent),
                 torque.d_spin,
                 [&s_i, &s_j],
                 [&omega_i, &omega_j],
             );
+            add_spin_force_partials(&mut out, &(both.force_d_spin * n.transpose()), [&s_i, &s_j]);
         }
     }
     Some(Ok(out))
@@ -265,6 +269,28 @@ fn add_torque_partials(
         on_i += dtorque;
         let mut on_j = out.fixed_view_mut::<3, 3>(9, col);
         on_j -= dtorque;
+    }
+}
+
+/// Adds the friction force's dependence on the spin, `∂F/∂ω_n·nᵀ` (`df_spin`), to the
+/// columns of `ω_I` (+) and `ω_J` (−): the force acts at `p` (`+F` on I with torque `s_I × F`,
+/// `−F` on J with torque `−s_J × F`).
+fn add_spin_force_partials(
+    out: &mut DMatrix<f64>,
+    df_spin: &Matrix3<f64>,
+    [s_i, s_j]: [&Vector3<f64>; 2],
+) {
+    let (skew_i, skew_j) = (skew(s_i), skew(s_j));
+    for (col, sign) in [(9, 1.0), (21, -1.0)] {
+        let df = df_spin * sign;
+        let mut force_i = out.fixed_view_mut::<3, 3>(0, col);
+        force_i += df;
+        let mut torque_i = out.fixed_view_mut::<3, 3>(3, col);
+        torque_i += skew_i * df;
+        let mut force_j = out.fixed_view_mut::<3, 3>(6, col);
+        force_j -= df;
+        let mut torque_j = out.fixed_view_mut::<3, 3>(9, col);
+        torque_j -= skew_j * df;
     }
 }
 

@@ -10,6 +10,7 @@
 
 mod friction;
 mod normal;
+mod slip_and_spin;
 mod step;
 mod user;
 
@@ -17,6 +18,7 @@ pub use friction::{CoulombFriction, CoulombParams, FrictionForce, FrictionTorque
 pub use normal::{
     AugmentedLagrangian, ImpactLaw, ImpactParams, NormalForce, PoissonLaw, PoissonParams,
 };
+pub use slip_and_spin::SlipAndSpin;
 pub use step::{Smooth, Step, step, step5};
 pub use user::{
     USER_ABI_VERSION, UserContact, UserContactAbi, UserFriction, UserFrictionLaw, UserLawError,

@@ -100,8 +100,8 @@ fn the_solver_force_is_the_kinematics_helper_and_the_laws() {
         // The rates are not trivial: approaching, slipping and spinning.
         assert!(k.penetration_rate > 0.0 && k.slip_velocity_w.norm() > 0.1 && k.spin != 0.0);
         let normal = impact.force(contact.penetration, k.penetration_rate).force;
-        let friction = coulomb.force(&k.slip_velocity_w, normal).force;
-        let torque = coulomb.torque(k.spin, normal, contact.area).torque;
+        let both = coulomb.slip_and_spin(&k.slip_velocity_w, k.spin, normal, contact.area);
+        let (friction, torque) = (both.force.force, both.torque.torque);
         assert!(normal > 0.0 && torque != 0.0);
         assert_eq!(
             report.penetration_rate.to_bits(),

@@ -206,7 +206,8 @@ fn ball_states(delta: f64, u: [f64; 3], w: [f64; 3]) -> Vec<PartState> {
 /// The geometric terms a sphere on a ground plane has and the frozen geometry leaves out, in
 /// closed form (friction only): the lever arm `s = −(r − δ/2)·n` shortens by `½·n·δr`
 /// (torque `−½·(n × F_t)·nᵀ`), and the area `A = π·(r² − (r − δ)²)` grows by `2π(r − δ)` per
-/// unit δ (torque `∂T/∂A·2π(r − δ)·n·(−nᵀ)`).
+/// unit δ (torque `∂T/∂A·2π(r − δ)·n·(−nᵀ)`; force `∂F_t/∂A·2π(r − δ)·(−nᵀ)` at the lever
+/// arm `s`, where the patch spins as it slips).
 fn sphere_plane_geometric_terms(element: &ContactForce, states: &[PartState]) -> DMatrix<f64> {
     let mut out = DMatrix::zeros(12, 24);
     let report = element.reports(0.0, &StateView::new(states)).unwrap()[0];
@@ -217,11 +218,19 @@ fn sphere_plane_geometric_terms(element: &ContactForce, states: &[PartState]) ->
     };
     let s = &states[1];
     let spin = s.angular_velocity_w.dot(&n);
-    let torque = law.torque(spin, report.normal_force, report.contact.area);
+    let p = report.contact.midpoint_w().coords;
+    let v = s.point_velocity_w(&p);
+    let slip = v - n * n.dot(&v);
+    let both = law.slip_and_spin(&slip, spin, report.normal_force, report.contact.area);
     let d = RADIUS - report.contact.penetration;
+    let d_area = -2.0 * std::f64::consts::PI * d;
     let lever = -0.5 * n.cross(&report.friction_force_w) * n.transpose();
-    let area = n * (-torque.d_area * 2.0 * std::f64::consts::PI * d) * n.transpose();
-    out.fixed_view_mut::<3, 3>(3, 0).copy_from(&(lever + area));
+    let area = n * (both.torque.d_area * d_area) * n.transpose();
+    let force = both.force_d_area * d_area * n.transpose();
+    let arm = skew(&(p - s.pose_w.translation.vector));
+    out.fixed_view_mut::<3, 3>(0, 0).copy_from(&force);
+    out.fixed_view_mut::<3, 3>(3, 0)
+        .copy_from(&(lever + area + arm * force));
     out
 }
 

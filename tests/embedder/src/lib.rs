@@ -77,8 +77,8 @@ pub struct ContactLoad {
 
 /// The IMPACT force and, with `friction`, the Coulomb friction force and torque of `contact`
 /// between I moving as `body_i` and J moving as `body_j`, as the solver evaluates a CONTACT:
-/// `Fn = impact(δ, δ̇)`, `F_t = friction.force(v_t, Fn)`, `T = friction.torque(ω_n, Fn, A)`
-/// with δ̇, v_t, ω_n from [`ContactKinematics::compute`].
+/// `Fn = impact(δ, δ̇)` and `(F_t, T) = friction.slip_and_spin(v_t, ω_n, Fn, A)` with δ̇,
+/// v_t, ω_n from [`ContactKinematics::compute`].
 pub fn contact_load(
     contact: &Contact,
     body_i: &BodyMotion,
@@ -91,11 +91,15 @@ pub fn contact_load(
         .force(contact.penetration, kinematics.penetration_rate)
         .force;
     let (friction_force, torque) = match friction {
-        Some(law) => (
-            law.force(&kinematics.slip_velocity_w, normal_force).force,
-            law.torque(kinematics.spin, normal_force, contact.area)
-                .torque,
-        ),
+        Some(law) => {
+            let both = law.slip_and_spin(
+                &kinematics.slip_velocity_w,
+                kinematics.spin,
+                normal_force,
+                contact.area,
+            );
+            (both.force.force, both.torque.torque)
+        }
         None => (Vector3::zeros(), 0.0),
     };
     ContactLoad {

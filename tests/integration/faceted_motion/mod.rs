@@ -6,7 +6,10 @@
 //! The scenes: a ball dropped at a generic orientation (REULER 17°, 23°, 41°) at three
 //! dampings (rebound ratio and peak penetration); a frictionless ball's spin after ten
 //! bounces; Hertz statics (e = 1.5, a 1000 N load); a ball sliding into rolling; a ball spun
-//! down by friction torque; a block rocking back onto its base.
+//! down by friction torque; a flat disk spun down on its face (`disk`); a block rocking back
+//! onto its base.
+
+mod disk;
 
 use crate::inline;
 use contact::run::lower::{LoweredModel, lower};
