@@ -34,8 +34,8 @@ use crate::contact_plane::PlanarGuard;
 use crate::dae::EvaluationError;
 use crate::mbs::{ForceElement, Load, PartId, StateView};
 use contact_core::{
-    Contact, ContactKinematics, ContactParams, FrictionModel, InvalidArgument, NormalModel,
-    PreparedPair, Vector3, WorkCounters,
+    Contact, ContactKinematics, ContactParams, FrictionModel, InvalidArgument, Isometry3,
+    NormalModel, PreparedPair, Vector3, WorkCounters,
     laws::{
         NormalForce, UserContact, UserFrictionLaw, UserNormalLaw, checked_friction,
         checked_normal_force,
@@ -89,6 +89,29 @@ pub enum ContactForceError {
     },
 }
 
+/// The poses and the contacts of a CONTACT's last engine query.
+#[derive(Debug)]
+struct LastQuery {
+    /// Both poses' translations and quaternions, as bits.
+    key: [u64; 14],
+    contacts: Vec<Contact>,
+}
+
+impl LastQuery {
+    fn key(pose_i: &Isometry3, pose_j: &Isometry3) -> [u64; 14] {
+        let mut key = [0; 14];
+        for (slot, pose) in [pose_i, pose_j].into_iter().enumerate() {
+            let q = pose.rotation.quaternion().coords;
+            let t = pose.translation.vector;
+            let values = [t.x, t.y, t.z, q.x, q.y, q.z, q.w];
+            for (k, v) in values.into_iter().enumerate() {
+                key[7 * slot + k] = v.to_bits();
+            }
+        }
+        key
+    }
+}
+
 /// A CONTACT between two parts.
 #[derive(Debug)]
 pub struct ContactForce {
@@ -98,6 +121,7 @@ pub struct ContactForce {
     params: ContactParams,
     analysis: Analysis,
     work: Mutex<WorkCounters>,
+    last_query: Mutex<Option<LastQuery>>,
     planar: Option<PlanarGuard>,
     multipliers: Option<Multipliers>,
     user: UserLaws,
@@ -166,6 +190,7 @@ impl ContactForce {
             params,
             analysis,
             work: Mutex::new(WorkCounters::default()),
+            last_query: Mutex::new(None),
             planar: None,
             multipliers,
             user,
@@ -249,6 +274,42 @@ impl ContactForce {
         self.work.lock().map(|w| *w).unwrap_or_default()
     }
 
+    /// The engine's contacts at the two parts' poses: the last query's again when both poses
+    /// are the same to the bit (a query is a pure function of the poses), as they are for
+    /// every velocity column of a differenced Jacobian.
+    fn query(
+        &self,
+        pose_i: &Isometry3,
+        pose_j: &Isometry3,
+    ) -> Result<Vec<Contact>, EvaluationError> {
+        let key = LastQuery::key(pose_i, pose_j);
+        if let Ok(last) = self.last_query.lock()
+            && let Some(last) = last.as_ref()
+            && last.key == key
+        {
+            return Ok(last.contacts.clone());
+        }
+        let mut contacts = Vec::new();
+        let mut work = WorkCounters::default();
+        self.pair
+            .query(pose_i, pose_j, &mut contacts, &mut work)
+            .map_err(|e| EvaluationError {
+                element: self.name.clone(),
+                message: e.to_string(),
+                fatal: false,
+            })?;
+        if let Ok(mut total) = self.work.lock() {
+            *total += work;
+        }
+        if let Ok(mut last) = self.last_query.lock() {
+            *last = Some(LastQuery {
+                key,
+                contacts: contacts.clone(),
+            });
+        }
+        Ok(contacts)
+    }
+
     /// Every contact's kinematics and forces at the given state at time `t`.
     pub fn reports(
         &self,
@@ -262,18 +323,7 @@ impl ContactForce {
         if self.apart(si, sj) {
             return Ok(Vec::new());
         }
-        let mut contacts = Vec::new();
-        let mut work = WorkCounters::default();
-        self.pair
-            .query(&si.pose_w, &sj.pose_w, &mut contacts, &mut work)
-            .map_err(|e| EvaluationError {
-                element: self.name.clone(),
-                message: e.to_string(),
-                fatal: false,
-            })?;
-        if let Ok(mut total) = self.work.lock() {
-            *total += work;
-        }
+        let contacts = self.query(&si.pose_w, &sj.pose_w)?;
         let friction = match (&self.params.friction, self.analysis) {
             (FrictionModel::On(c), _) | (FrictionModel::DynamicsOnly(c), Analysis::Dynamics) => {
                 Some(c)

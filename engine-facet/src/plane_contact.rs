@@ -17,7 +17,7 @@
 //! A bounded plane (finite XMIN…YMAX) ignores triangles whose corners all lie beyond one of its
 //! edges; a triangle straddling an edge counts whole (an error within one facet of the edge).
 
-use crate::contact_region::{LocalContact, add_polygon, clip, label_regions, new_node, union};
+use crate::contact_region::{LocalContact, add_polygon, label_regions, new_node, union};
 use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
 use crate::plane_support::{
     Support, alone_contact, blended, ellipsoid_on_plane, sphere_on_plane, supports_by_region,
@@ -206,6 +206,7 @@ fn nodes_below(
             || ys.iter().all(|&u| u > y1)
     };
     s.nodes.clear();
+    s.heights.clear();
     s.slots[0].reset(a.triangles.len());
     let mut below: Vec<u32> = std::mem::take(&mut s.queue);
     below.clear();
@@ -229,10 +230,12 @@ fn nodes_below(
         if bounded && beyond(&c) {
             continue;
         }
-        let lowest = c.iter().map(&height).fold(f64::INFINITY, f64::min);
+        let h = c.map(|v| height(&v));
+        let lowest = h.iter().copied().fold(f64::INFINITY, f64::min);
         if lowest <= 0.0 {
-            let crossing = c.iter().any(|v| height(v) > 0.0);
+            let crossing = h.iter().any(|&h| h > 0.0);
             new_node(s, 0, t, crossing);
+            s.heights.push(h);
         }
         if a.implied_sphere.is_some() && lowest <= beyond_facets && a.is_curved(t) {
             curved.push(t);
@@ -257,12 +260,11 @@ fn nodes_below(
 /// answers whole are skipped.
 fn sum_waterlines(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
     let n = frame.n;
-    for node in &s.nodes {
+    for (node, &h) in s.nodes.iter().zip(&s.heights) {
         if !node.crossing || smooth_only[node.region as usize] {
             continue;
         }
         let c = a.corners(node.tri);
-        let h = c.map(|v| frame.height(&v));
         let mut pts = [Vector3::zeros(); 2];
         let mut k = 0;
         for i in 0..3 {
@@ -294,13 +296,13 @@ fn sum_waterlines(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &m
 /// Each region's apex (its waterline's centroid on the plane), clipped volume, downward area
 /// and volume centroid; regions the smooth surface answers whole are skipped.
 fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
-    let (n, origin) = (frame.n, frame.origin);
+    let n = frame.n;
     let height = |v: &Vector3| frame.height(v);
     let Scratch {
         nodes,
+        heights,
         regions,
         polygon,
-        polygon_next,
         ..
     } = s;
     // A region whose waterline has no length only touches the plane (at a vertex or an edge
@@ -309,10 +311,9 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
     // any apex, and its own centroid keeps them small however deep it lies (an apex on the
     // plane, 1e66 away, overflows them).
     let mut touching: Vec<Option<(f64, Vector3)>> = vec![None; regions.len()];
-    for node in nodes.iter().filter(|node| node.crossing) {
+    for (node, h) in nodes.iter().zip(heights.iter()).filter(|(node, _)| node.crossing) {
         let slot = &mut touching[node.region as usize];
-        for v in a.corners(node.tri) {
-            let h = height(&v);
+        for (v, &h) in a.corners(node.tri).into_iter().zip(h) {
             if slot.is_none_or(|(lowest, _)| h < lowest) {
                 *slot = Some((h, v));
             }
@@ -328,15 +329,16 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
             None => a.centroid.coords,
         };
     }
-    for node in nodes
+    for (node, h) in nodes
         .iter()
-        .filter(|node| !smooth_only[node.region as usize])
+        .zip(heights.iter())
+        .filter(|(node, _)| !smooth_only[node.region as usize])
     {
         polygon.clear();
-        polygon.extend_from_slice(&a.corners(node.tri));
         if node.crossing {
-            clip(polygon, polygon_next, &n, &origin);
-            std::mem::swap(polygon, polygon_next);
+            clip_triangle(&a.corners(node.tri), h, polygon);
+        } else {
+            polygon.extend_from_slice(&a.corners(node.tri));
         }
         let r = &mut regions[node.region as usize];
         add_polygon(r, polygon);
@@ -352,6 +354,21 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
         } else {
             r.apex
         };
+    }
+}
+
+/// The part of triangle `c` at or below the plane, given its corners' heights `h` above it,
+/// into `out`: [`crate::contact_region::clip`] with the heights computed once.
+fn clip_triangle(c: &[Vector3; 3], h: &[f64; 3], out: &mut Vec<Vector3>) {
+    for i in 0..3 {
+        let j = (i + 1) % 3;
+        let (u, du, v, dv) = (c[i], h[i], c[j], h[j]);
+        if du <= 0.0 {
+            out.push(u);
+        }
+        if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
+            out.push(u + (v - u) * (du / (du - dv)));
+        }
     }
 }
 

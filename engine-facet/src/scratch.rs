@@ -156,6 +156,8 @@ pub(crate) struct Scratch {
     pub queue: Vec<u32>,
     /// Curved triangles whose smooth surface may reach below a plane (`crate::plane_support`).
     pub curved: Vec<u32>,
+    /// Per node of a mesh–plane query, its triangle's corner heights above the plane.
+    pub heights: Vec<[f64; 3]>,
     /// The inside flood's takings: `(seed node, triangle)`, or `(seed node, patch | PATCH_BIT)`
     /// for a whole patch (see [`crate::inside_flood`]).
     pub taken: Vec<(u32, u32)>,
