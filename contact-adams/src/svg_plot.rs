@@ -140,22 +140,7 @@ impl Plot {
     /// Renders the plot as an SVG document. Points that cannot be drawn (non-finite, or
     /// non-positive on a log axis) are left out; a plot with no drawable point says so.
     pub fn to_svg(&self) -> String {
-        let drawable = |x: f64, s: Scale| x.is_finite() && (s == Scale::Linear || x > 0.0);
-        let series: Vec<(usize, Vec<(f64, f64)>)> = self
-            .series
-            .iter()
-            .enumerate()
-            .map(|(k, s)| {
-                let pts = s
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|&(x, y)| drawable(x, self.x_scale) && drawable(y, self.y_scale))
-                    .map(|(x, y)| (transform(x, self.x_scale), transform(y, self.y_scale)))
-                    .collect();
-                (k, pts)
-            })
-            .collect();
+        let series = self.drawable_series();
         let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
         let mut svg = String::new();
         let _ = writeln!(
@@ -178,17 +163,43 @@ impl Plot {
             );
             return svg;
         }
-        let (x0, x1) = padded_range(all.iter().map(|p| p.0));
-        let (y0, y1) = padded_range(all.iter().map(|p| p.1));
-        let (pw, ph) = (WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM);
-        let sx = |x: f64| LEFT + (x - x0) / (x1 - x0) * pw;
-        let sy = |y: f64| TOP + ph - (y - y0) / (y1 - y0) * ph;
+        let frame = Frame::around(&all);
+        self.write_axes(&mut svg, &frame);
+        for (k, pts) in &series {
+            self.write_series(&mut svg, &frame, *k, pts);
+        }
+        svg.push_str("</svg>\n");
+        svg
+    }
+
+    /// Each series' drawable points, transformed to the axes' scales, with its index.
+    fn drawable_series(&self) -> Vec<(usize, Vec<(f64, f64)>)> {
+        let drawable = |x: f64, s: Scale| x.is_finite() && (s == Scale::Linear || x > 0.0);
+        self.series
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let pts = s
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|&(x, y)| drawable(x, self.x_scale) && drawable(y, self.y_scale))
+                    .map(|(x, y)| (transform(x, self.x_scale), transform(y, self.y_scale)))
+                    .collect();
+                (k, pts)
+            })
+            .collect()
+    }
+
+    /// The plot area's border, the grid lines with their tick labels, and the axis labels.
+    fn write_axes(&self, svg: &mut String, f: &Frame) {
+        let (pw, ph) = (f.width, f.height);
         let _ = writeln!(
             svg,
             r##"<rect x="{LEFT}" y="{TOP}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>"##
         );
-        for (v, label) in ticks(x0, x1, self.x_scale) {
-            let x = sx(v);
+        for (v, label) in ticks(f.x0, f.x1, self.x_scale) {
+            let x = f.sx(v);
             let _ = writeln!(
                 svg,
                 r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{:.1}" stroke="#ddd"/>"##,
@@ -200,8 +211,8 @@ impl Plot {
                 TOP + ph + 18.0
             );
         }
-        for (v, label) in ticks(y0, y1, self.y_scale) {
-            let y = sy(v);
+        for (v, label) in ticks(f.y0, f.y1, self.y_scale) {
+            let y = f.sy(v);
             let _ = writeln!(
                 svg,
                 r##"<line x1="{LEFT}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#ddd"/>"##,
@@ -227,40 +238,79 @@ impl Plot {
             TOP + ph / 2.0,
             escape(&self.y_label)
         );
-        for (k, pts) in &series {
-            let colour = COLOURS[k % COLOURS.len()];
-            if self.series[*k].line && pts.len() > 1 {
-                let path: Vec<String> = pts
-                    .iter()
-                    .map(|&(x, y)| format!("{:.1},{:.1}", sx(x), sy(y)))
-                    .collect();
-                let _ = writeln!(
-                    svg,
-                    r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="2"/>"#,
-                    path.join(" ")
-                );
-            }
-            for &(x, y) in pts {
-                let _ = writeln!(svg, "{}", marker(*k / COLOURS.len(), sx(x), sy(y), colour));
-            }
-            let ly = TOP + 10.0 + 20.0 * *k as f64;
-            let lx = WIDTH - RIGHT + 16.0;
+    }
+
+    /// Series `k`: its line (when drawn as one), its markers and its legend entry.
+    fn write_series(&self, svg: &mut String, f: &Frame, k: usize, pts: &[(f64, f64)]) {
+        let colour = COLOURS[k % COLOURS.len()];
+        if self.series[k].line && pts.len() > 1 {
+            let path: Vec<String> = pts
+                .iter()
+                .map(|&(x, y)| format!("{:.1},{:.1}", f.sx(x), f.sy(y)))
+                .collect();
             let _ = writeln!(
                 svg,
-                r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="2"/>"#,
-                lx + 22.0
-            );
-            let _ = writeln!(svg, "{}", marker(*k / COLOURS.len(), lx + 11.0, ly, colour));
-            let _ = writeln!(
-                svg,
-                r#"<text x="{}" y="{}">{}</text>"#,
-                lx + 28.0,
-                ly + 4.0,
-                escape(&self.series[*k].name)
+                r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="2"/>"#,
+                path.join(" ")
             );
         }
-        svg.push_str("</svg>\n");
-        svg
+        for &(x, y) in pts {
+            let _ = writeln!(
+                svg,
+                "{}",
+                marker(k / COLOURS.len(), f.sx(x), f.sy(y), colour)
+            );
+        }
+        let ly = TOP + 10.0 + 20.0 * k as f64;
+        let lx = WIDTH - RIGHT + 16.0;
+        let _ = writeln!(
+            svg,
+            r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="2"/>"#,
+            lx + 22.0
+        );
+        let _ = writeln!(svg, "{}", marker(k / COLOURS.len(), lx + 11.0, ly, colour));
+        let _ = writeln!(
+            svg,
+            r#"<text x="{}" y="{}">{}</text>"#,
+            lx + 28.0,
+            ly + 4.0,
+            escape(&self.series[k].name)
+        );
+    }
+}
+
+/// The data ranges (padded, in the axes' scales) and the plot area they map onto.
+struct Frame {
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+    width: f64,
+    height: f64,
+}
+
+impl Frame {
+    fn around(points: &[(f64, f64)]) -> Self {
+        let (x0, x1) = padded_range(points.iter().map(|p| p.0));
+        let (y0, y1) = padded_range(points.iter().map(|p| p.1));
+        Self {
+            x0,
+            x1,
+            y0,
+            y1,
+            width: WIDTH - LEFT - RIGHT,
+            height: HEIGHT - TOP - BOTTOM,
+        }
+    }
+
+    /// The SVG x of a data x.
+    fn sx(&self, x: f64) -> f64 {
+        LEFT + (x - self.x0) / (self.x1 - self.x0) * self.width
+    }
+
+    /// The SVG y of a data y (up is smaller).
+    fn sy(&self, y: f64) -> f64 {
+        TOP + self.height - (y - self.y0) / (self.y1 - self.y0) * self.height
     }
 }
 

@@ -219,41 +219,17 @@ pub fn simulate_with_progress(
     // frequent output does not shorten the steps.
     bdf.set_stop_time(Some(end))
         .map_err(|source| SimulationError::Integrator { t: start, source })?;
-    let (mut window_start, mut window_steps) = (start, 0u64);
+    let mut stall = StallWatch {
+        window_start: start,
+        window_steps: 0,
+        span: end - start,
+    };
     while next_output <= schedule.count {
-        let t_before = bdf.t();
-        let mut t = bdf
-            .step(system)
-            .map_err(|source| integrator_failure(t_before, source))?;
-        frame = framer.at(system, t, bdf.y())?;
-        // Contact prediction: one retry per new contact.
-        let onset = earliest_onset(&frame, &active);
-        if onset.is_finite() {
-            if let Some(retry) = retry_time(onset, t_before, t) {
-                // State kept per accepted step goes back with the step, before the retry.
-                for c in contacts {
-                    c.rolled_back();
-                }
-                t = bdf
-                    .reject_last_step_and_retry_to(system, retry)
-                    .map_err(|source| integrator_failure(t_before, source))?;
-                summary.rejected_for_contact_onset += 1;
-                frame = framer.at(system, t, bdf.y())?;
-            }
-        }
+        let (t, frame_now) =
+            step_with_onset_retry(system, &mut bdf, &framer, &active, &mut summary)?;
+        frame = frame_now;
         record_entries(&frame, &mut active, &mut summary);
-        window_steps += 1;
-        if window_steps == STALL_WINDOW {
-            let advanced = t - window_start;
-            if advanced < STALL_FRACTION * (end - start) {
-                return Err(SimulationError::NoProgress {
-                    t,
-                    advanced,
-                    span: end - start,
-                });
-            }
-            (window_start, window_steps) = (t, 0);
-        }
+        stall.step_taken(t)?;
         let stats = bdf.stats();
         let stop = progress(&Progress {
             t,
@@ -286,6 +262,66 @@ pub fn simulate_with_progress(
     summary.broad_phase_evaluated = evaluated - evaluated_before;
     summary.broad_phase_skipped = skipped - skipped_before;
     Ok(summary)
+}
+
+/// One accepted step; a contact that began inside it (`active` says which touched before)
+/// sends the step back to end just after the earliest onset, once. Returns the time reached
+/// and its frame.
+fn step_with_onset_retry(
+    system: &mut MultibodySystem,
+    bdf: &mut Bdf,
+    framer: &Framer<'_>,
+    active: &[bool],
+    summary: &mut RunSummary,
+) -> Result<(f64, Frame), SimulationError> {
+    let t_before = bdf.t();
+    let mut t = bdf
+        .step(system)
+        .map_err(|source| integrator_failure(t_before, source))?;
+    let mut frame = framer.at(system, t, bdf.y())?;
+    let onset = earliest_onset(&frame, active);
+    if onset.is_finite()
+        && let Some(retry) = retry_time(onset, t_before, t)
+    {
+        // State kept per accepted step goes back with the step, before the retry.
+        for c in framer.contacts {
+            c.rolled_back();
+        }
+        t = bdf
+            .reject_last_step_and_retry_to(system, retry)
+            .map_err(|source| integrator_failure(t_before, source))?;
+        summary.rejected_for_contact_onset += 1;
+        frame = framer.at(system, t, bdf.y())?;
+    }
+    Ok((t, frame))
+}
+
+/// The progress guard: every [`STALL_WINDOW`] steps the run must have advanced by at least
+/// [`STALL_FRACTION`] of its span.
+struct StallWatch {
+    window_start: f64,
+    window_steps: u64,
+    span: f64,
+}
+
+impl StallWatch {
+    /// Counts a step that reached `t`; [`SimulationError::NoProgress`] when a window ends
+    /// having advanced too little.
+    fn step_taken(&mut self, t: f64) -> Result<(), SimulationError> {
+        self.window_steps += 1;
+        if self.window_steps == STALL_WINDOW {
+            let advanced = t - self.window_start;
+            if advanced < STALL_FRACTION * self.span {
+                return Err(SimulationError::NoProgress {
+                    t,
+                    advanced,
+                    span: self.span,
+                });
+            }
+            (self.window_start, self.window_steps) = (t, 0);
+        }
+        Ok(())
+    }
 }
 
 /// END finite and after START, DTOUT finite and positive.

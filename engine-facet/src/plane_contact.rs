@@ -311,7 +311,11 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
     // any apex, and its own centroid keeps them small however deep it lies (an apex on the
     // plane, 1e66 away, overflows them).
     let mut touching: Vec<Option<(f64, Vector3)>> = vec![None; regions.len()];
-    for (node, h) in nodes.iter().zip(heights.iter()).filter(|(node, _)| node.crossing) {
+    for (node, h) in nodes
+        .iter()
+        .zip(heights.iter())
+        .filter(|(node, _)| node.crossing)
+    {
         let slot = &mut touching[node.region as usize];
         for (v, &h) in a.corners(node.tri).into_iter().zip(h) {
             if slot.is_none_or(|(lowest, _)| h < lowest) {

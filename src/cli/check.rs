@@ -300,6 +300,61 @@ pub fn run(args: &CheckArgs, out: &mut dyn Write) -> std::io::Result<i32> {
     run_with(args, out, &|library| engine_for(library))
 }
 
+/// The engine's checks of `model` (its contact pairs, then, where nothing is wrong yet, its
+/// constraints at the start) added to `diagnostics`; a warning when no engine of `library` is
+/// linked in. Returns the report's engine line, naming where the choice came from (`source`).
+fn check_with_engine(
+    model: &Model,
+    engine: Option<Box<dyn GeometryEngine>>,
+    library: GeometryLibrary,
+    source: &str,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> String {
+    match engine {
+        Some(engine) => {
+            diagnostics.extend(check_contacts(model, engine.as_ref()));
+            if model.has_moving_part() && !diagnostics.iter().any(Diagnostic::is_error) {
+                diagnostics.extend(crate::session::check_constraints(
+                    model,
+                    engine.as_ref(),
+                    0.0,
+                ));
+            }
+            format!("{} (from {source})", engine.name())
+        }
+        None => {
+            if !model.contacts.is_empty() {
+                diagnostics.push(Diagnostic::warning(
+                    model.contacts[0].origin.clone(),
+                    format!(
+                        "contact pairs were not checked: no {} engine is linked into this build (pair checking needs an engine)",
+                        library.name()
+                    ),
+                ));
+            }
+            format!(
+                "{} (from {source}; not linked in this build)",
+                library.name()
+            )
+        }
+    }
+}
+
+/// The error of a model without a moving part, at its first PART (else the dataset's start).
+fn no_moving_part(model: &Model, args: &CheckArgs) -> Diagnostic {
+    let origin = model.parts.values().next().map_or_else(
+        || dataset::Origin {
+            file: Arc::from(args.model.as_path()),
+            loc: dataset::Loc::new(1, 1),
+        },
+        |p| p.origin.clone(),
+    );
+    Diagnostic::error(
+        origin,
+        crate::session::no_moving_part(model.lines_end_in_cr_only()),
+    )
+}
+
 /// Runs `contact check` with engines from `engines` (tests pass their own).
 pub fn run_with(
     args: &CheckArgs,
@@ -333,46 +388,10 @@ pub fn run_with(
             }
         }
     }
-    let engine_line = match engines(library) {
-        Some(engine) => {
-            diagnostics.extend(check_contacts(&model, engine.as_ref()));
-            if model.has_moving_part() && !diagnostics.iter().any(Diagnostic::is_error) {
-                diagnostics.extend(crate::session::check_constraints(
-                    &model,
-                    engine.as_ref(),
-                    0.0,
-                ));
-            }
-            format!("{} (from {source})", engine.name())
-        }
-        None => {
-            if !model.contacts.is_empty() {
-                diagnostics.push(Diagnostic::warning(
-                    model.contacts[0].origin.clone(),
-                    format!(
-                        "contact pairs were not checked: no {} engine is linked into this build (pair checking needs an engine)",
-                        library.name()
-                    ),
-                ));
-            }
-            format!(
-                "{} (from {source}; not linked in this build)",
-                library.name()
-            )
-        }
-    };
+    let engine_line =
+        check_with_engine(&model, engines(library), library, source, &mut diagnostics);
     if !model.has_moving_part() && !diagnostics.iter().any(Diagnostic::is_error) {
-        let origin = model.parts.values().next().map_or_else(
-            || dataset::Origin {
-                file: Arc::from(args.model.as_path()),
-                loc: dataset::Loc::new(1, 1),
-            },
-            |p| p.origin.clone(),
-        );
-        diagnostics.push(Diagnostic::error(
-            origin,
-            crate::session::no_moving_part(model.lines_end_in_cr_only()),
-        ));
+        diagnostics.push(no_moving_part(&model, args));
     }
     diagnostics.extend(check_run_settings(&model, &args.model));
     diagnostics.extend(check_mesh_files(&model));

@@ -376,7 +376,6 @@ fn looks_numeric(text: &str) -> bool {
 }
 
 fn parse_arguments(cur: &mut Cursor, statement: &mut Statement) -> Result<(), ParseProblem> {
-    let spec = statement.spec;
     loop {
         while cur
             .peek()
@@ -398,84 +397,9 @@ fn parse_arguments(cur: &mut Cursor, statement: &mut Statement) -> Result<(), Pa
                 ),
             ));
         }
-        let arg_spec = match spec.argument(&word) {
-            Match::Found(a) => a,
-            Match::Ambiguous(names) => {
-                return Err(problem(
-                    loc,
-                    format!(
-                        "{}: ambiguous abbreviation '{word}': could be {}",
-                        statement.label(),
-                        names.join(", ")
-                    ),
-                ));
-            }
-            Match::Unknown => {
-                return Err(problem(
-                    loc,
-                    format!("{}: unknown argument '{word}'", statement.label()),
-                ));
-            }
-        };
-        if let Some(previous) = statement.args.iter().find(|a| a.spec.name == arg_spec.name) {
-            return Err(problem(
-                loc,
-                format!(
-                    "{}: {} is given twice (first at {})",
-                    statement.label(),
-                    arg_spec.name,
-                    previous.loc
-                ),
-            ));
-        }
+        let arg_spec = argument_spec(statement, &word, loc)?;
         cur.skip_ws();
-        let has_equals = cur.peek().is_some_and(|c| c.c == '=');
-        let values = match (arg_spec.form, has_equals) {
-            (Form::Flag, false) => Vec::new(),
-            (Form::Flag, true) => {
-                return Err(problem(
-                    cur.loc(),
-                    format!(
-                        "{}: {} is a flag and takes no value",
-                        statement.label(),
-                        arg_spec.name
-                    ),
-                ));
-            }
-            (_, false) => {
-                return Err(problem(
-                    cur.loc(),
-                    format!(
-                        "{}: {} needs a value: {} = …",
-                        statement.label(),
-                        arg_spec.name,
-                        arg_spec.name
-                    ),
-                ));
-            }
-            (form, true) => {
-                cur.pos += 1;
-                let values = match form {
-                    Form::Expr => vec![read_expression(cur)],
-                    Form::Text => vec![read_text(cur)],
-                    _ => read_values(cur),
-                };
-                if values.iter().all(|v| match &v.kind {
-                    ValueKind::Atom(s) | ValueKind::Text(s) => s.is_empty(),
-                    ValueKind::Expr(e) => e.text.trim().is_empty(),
-                }) {
-                    return Err(problem(
-                        cur.loc(),
-                        format!(
-                            "{}: {} = has no value (truncated statement?)",
-                            statement.label(),
-                            arg_spec.name
-                        ),
-                    ));
-                }
-                values
-            }
-        };
+        let values = argument_values(cur, statement, arg_spec)?;
         if let Some(next) = cur.peek() {
             if !(next.c.is_whitespace() || next.c == ',' || next.c == '\\') {
                 return Err(problem(
@@ -495,6 +419,99 @@ fn parse_arguments(cur: &mut Cursor, statement: &mut Statement) -> Result<(), Pa
             loc,
             values,
         });
+    }
+}
+
+/// The argument keyword `word` (written at `loc`, perhaps abbreviated) of `statement`: an
+/// error when it is unknown, ambiguous, or given a second time.
+fn argument_spec(
+    statement: &Statement,
+    word: &str,
+    loc: Loc,
+) -> Result<&'static ArgSpec, ParseProblem> {
+    let arg_spec = match statement.spec.argument(word) {
+        Match::Found(a) => a,
+        Match::Ambiguous(names) => {
+            return Err(problem(
+                loc,
+                format!(
+                    "{}: ambiguous abbreviation '{word}': could be {}",
+                    statement.label(),
+                    names.join(", ")
+                ),
+            ));
+        }
+        Match::Unknown => {
+            return Err(problem(
+                loc,
+                format!("{}: unknown argument '{word}'", statement.label()),
+            ));
+        }
+    };
+    if let Some(previous) = statement.args.iter().find(|a| a.spec.name == arg_spec.name) {
+        return Err(problem(
+            loc,
+            format!(
+                "{}: {} is given twice (first at {})",
+                statement.label(),
+                arg_spec.name,
+                previous.loc
+            ),
+        ));
+    }
+    Ok(arg_spec)
+}
+
+/// The values of argument `arg_spec` at the cursor (just after its keyword): none for a flag,
+/// else after `=` an expression, a text or a list of values, as its form says; an error for a
+/// flag given a value, a missing `=` or an empty value.
+fn argument_values(
+    cur: &mut Cursor,
+    statement: &Statement,
+    arg_spec: &ArgSpec,
+) -> Result<Vec<Value>, ParseProblem> {
+    let has_equals = cur.peek().is_some_and(|c| c.c == '=');
+    match (arg_spec.form, has_equals) {
+        (Form::Flag, false) => Ok(Vec::new()),
+        (Form::Flag, true) => Err(problem(
+            cur.loc(),
+            format!(
+                "{}: {} is a flag and takes no value",
+                statement.label(),
+                arg_spec.name
+            ),
+        )),
+        (_, false) => Err(problem(
+            cur.loc(),
+            format!(
+                "{}: {} needs a value: {} = …",
+                statement.label(),
+                arg_spec.name,
+                arg_spec.name
+            ),
+        )),
+        (form, true) => {
+            cur.pos += 1;
+            let values = match form {
+                Form::Expr => vec![read_expression(cur)],
+                Form::Text => vec![read_text(cur)],
+                _ => read_values(cur),
+            };
+            if values.iter().all(|v| match &v.kind {
+                ValueKind::Atom(s) | ValueKind::Text(s) => s.is_empty(),
+                ValueKind::Expr(e) => e.text.trim().is_empty(),
+            }) {
+                return Err(problem(
+                    cur.loc(),
+                    format!(
+                        "{}: {} = has no value (truncated statement?)",
+                        statement.label(),
+                        arg_spec.name
+                    ),
+                ));
+            }
+            Ok(values)
+        }
     }
 }
 

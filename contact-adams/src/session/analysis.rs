@@ -6,11 +6,14 @@ use super::report::{AnalysisOutcome, AnalysisReport};
 use crate::run::active::FrameMap;
 use crate::run::lower::LoweredModel;
 use crate::run::plan::AnalysisStep;
+use contact_solver::contact_force::ContactForce;
 use contact_solver::frame::compute_frame;
 use contact_solver::kinematics::{KinematicsSettings, run_kinematics};
-use contact_solver::linear::linearize;
-use contact_solver::mbs::PartState;
-use contact_solver::simulate::{DynamicsSettings, Frame, simulate_with_progress};
+use contact_solver::linear::{LinearSettings, linearize};
+use contact_solver::mbs::{MultibodySystem, PartState};
+use contact_solver::simulate::{
+    DynamicsSettings, Frame, RunSummary, SimulationError, simulate_with_progress,
+};
 use contact_solver::statics::solve_statics;
 use std::cell::RefCell;
 use std::ops::ControlFlow;
@@ -105,24 +108,7 @@ fn compute(
                 output_step,
                 integrator,
             };
-            // Frames and progress both go to the sink, from two callbacks that never nest.
-            let sink = RefCell::new(sink);
-            let result = simulate_with_progress(
-                system,
-                contacts,
-                &settings,
-                &mut |frame| filter.deliver(frame, &mut **sink.borrow_mut()),
-                &mut |p| {
-                    let mut sink = sink.borrow_mut();
-                    sink.progress(p);
-                    if sink.stop_requested() {
-                        ControlFlow::Break(())
-                    } else {
-                        ControlFlow::Continue(())
-                    }
-                },
-            );
-            result
+            dynamics(system, contacts, &settings, filter, sink)
                 .map(AnalysisOutcome::Dynamics)
                 .map_err(|e| fail(e.into()))
         }
@@ -164,21 +150,57 @@ fn compute(
             filter.deliver(&frame, sink).map_err(|e| fail(e.into()))?;
             Ok(AnalysisOutcome::InitialConditions)
         }
-        AnalysisStep::Linear { t, settings } => {
-            // The state reached so far, assembled and with consistent velocities (the
-            // multipliers are solved for by the linearization itself).
-            let mut y = system.given_state().clone();
-            system
-                .assemble(t, &mut y)
-                .and_then(|_| system.project_velocities(t, &mut y))
-                .map_err(|e| fail(e.into()))?;
-            let linear = linearize(system, t, &y, &settings).map_err(|e| fail(e.into()))?;
-            let written = sink.eigenvalues(&linear, settings.damping);
-            let outcome = AnalysisOutcome::Linear(linear);
-            match written {
-                Ok(()) => Ok(outcome),
-                Err(e) => Err(Box::new((Some(outcome), e.into()))),
+        AnalysisStep::Linear { t, settings } => linear(system, t, &settings, sink),
+    }
+}
+
+/// A dynamics analysis: frames through `filter` to `sink`, progress to `sink`, which may ask
+/// the run to stop.
+fn dynamics(
+    system: &mut MultibodySystem,
+    contacts: &[Arc<ContactForce>],
+    settings: &DynamicsSettings,
+    filter: &mut FrameFilter,
+    sink: &mut dyn RunSink,
+) -> Result<RunSummary, SimulationError> {
+    // Frames and progress both go to the sink, from two callbacks that never nest.
+    let sink = RefCell::new(sink);
+    simulate_with_progress(
+        system,
+        contacts,
+        settings,
+        &mut |frame| filter.deliver(frame, &mut **sink.borrow_mut()),
+        &mut |p| {
+            let mut sink = sink.borrow_mut();
+            sink.progress(p);
+            if sink.stop_requested() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
             }
-        }
+        },
+    )
+}
+
+/// A linearization at the state reached so far, assembled and with consistent velocities
+/// (the multipliers are solved for by the linearization itself); its eigenvalues to `sink`.
+fn linear(
+    system: &mut MultibodySystem,
+    t: f64,
+    settings: &LinearSettings,
+    sink: &mut dyn RunSink,
+) -> Result<AnalysisOutcome, Failed> {
+    let fail = |e: AnalysisError| Box::new((None, e));
+    let mut y = system.given_state().clone();
+    system
+        .assemble(t, &mut y)
+        .and_then(|_| system.project_velocities(t, &mut y))
+        .map_err(|e| fail(e.into()))?;
+    let linear = linearize(system, t, &y, settings).map_err(|e| fail(e.into()))?;
+    let written = sink.eigenvalues(&linear, settings.damping);
+    let outcome = AnalysisOutcome::Linear(linear);
+    match written {
+        Ok(()) => Ok(outcome),
+        Err(e) => Err(Box::new((Some(outcome), e.into()))),
     }
 }
