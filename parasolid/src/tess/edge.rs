@@ -82,78 +82,20 @@ fn end_parameters(edge: &Edge, vertices: &[Point3]) -> Option<(f64, f64)> {
 
 /// Samples an edge from its start to its end with chord deviation at most `delta`. Ends are
 /// the exact vertex positions; a ring edge starts and ends at the same point (repeated).
+/// Intersection curves get points added where chords stray from both surfaces
+/// (`refine_on_surfaces`), and points closer than δ/1000 to the one before or to the end
+/// are dropped (`drop_close`).
 pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3>> {
     let (t0, t1) = end_parameters(edge, vertices)?;
     let c = &edge.curve;
     let mut ts = match c {
         Curve::Line { .. } => vec![t0, t1],
         Curve::Ellipse { a, b, .. } => {
-            let r = a.max(*b);
-            let step = if delta >= r {
-                TAU / 3.0
-            } else {
-                2.0 * (1.0 - delta / r).acos()
-            };
-            let n = ((t1 - t0).abs() / step).ceil().max(1.0) as usize;
-            let n = if edge.start.is_none() || edge.start == edge.end {
-                n.max(3)
-            } else {
-                n
-            };
-            (0..=n)
-                .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
-                .collect()
+            let ring = edge.start.is_none() || edge.start == edge.end;
+            ellipse_parameters(a.max(*b), ring, t0, t1, delta)
         }
-        Curve::Polyline(p) => {
-            let mut ts = vec![t0];
-            let (lo, hi) = (t0.min(t1), t0.max(t1));
-            let inner: Vec<f64> = (0..p.len())
-                .map(|i| i as f64)
-                .chain((1..p.len()).map(|i| (i + p.len() - 1) as f64))
-                .chain((0..p.len() - 1).map(|i| i as f64 - (p.len() - 1) as f64))
-                .filter(|&k| k > lo + 1e-9 && k < hi - 1e-9)
-                .collect();
-            let mut inner = inner;
-            inner.sort_by(f64::total_cmp);
-            inner.dedup();
-            if t1 > t0 {
-                ts.extend(inner);
-            } else {
-                ts.extend(inner.into_iter().rev());
-            }
-            ts.push(t1);
-            ts
-        }
-        _ => {
-            let mut breaks: Vec<f64> = match c {
-                Curve::Nurbs(n) => n.breaks(),
-                Curve::OnSurface { uv, .. } => uv.breaks(),
-                Curve::Trimmed { basis, .. } => match basis.as_ref() {
-                    Curve::Nurbs(n) => n.breaks(),
-                    Curve::OnSurface { uv, .. } => uv.breaks(),
-                    _ => Vec::new(),
-                },
-                _ => Vec::new(),
-            };
-            let (lo, hi) = (t0.min(t1), t0.max(t1));
-            breaks.retain(|&k| k > lo && k < hi);
-            let mut ts = vec![lo];
-            ts.extend(breaks);
-            ts.push(hi);
-            let coarse: Vec<f64> = ts
-                .windows(2)
-                .flat_map(|w| (0..4).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / 4.0))
-                .chain(std::iter::once(hi))
-                .collect();
-            let mut out = vec![coarse[0]];
-            for w in coarse.windows(2) {
-                refine(c, w[0], w[1], delta, 0, &mut out);
-            }
-            if t1 < t0 {
-                out.reverse();
-            }
-            out
-        }
+        Curve::Polyline(p) => polyline_parameters(p.len(), t0, t1),
+        _ => spline_parameters(c, t0, t1, delta),
     };
     if ts.len() < 2 {
         ts = vec![t0, t1];
@@ -172,7 +114,86 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
     {
         pts = refine_on_surfaces(&pts, surfaces, delta);
     }
-    // Points closer than δ/1000 to the one before (or to the end) add nothing but slivers.
+    Some(drop_close(&pts, delta))
+}
+
+/// Equal-angle parameters from `t0` to `t1` on a circle or ellipse of larger radius `r`:
+/// `n = ⌈|t1 − t0| / θ⌉` steps with `θ = 2 acos(1 − δ/r)` (a third of a turn when δ ≥ r), at
+/// least one, and at least three on a `ring` edge (one that closes on itself).
+fn ellipse_parameters(r: f64, ring: bool, t0: f64, t1: f64, delta: f64) -> Vec<f64> {
+    let step = if delta >= r {
+        TAU / 3.0
+    } else {
+        2.0 * (1.0 - delta / r).acos()
+    };
+    let n = ((t1 - t0).abs() / step).ceil().max(1.0) as usize;
+    let n = if ring { n.max(3) } else { n };
+    (0..=n)
+        .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
+        .collect()
+}
+
+/// The parameters from `t0` to `t1` on a polyline of `len` stored points: the ends and every
+/// stored point's parameter strictly between them (the integers, and their copies one
+/// closed range on either side, for a run across a closed polyline's start), in order.
+fn polyline_parameters(len: usize, t0: f64, t1: f64) -> Vec<f64> {
+    let mut ts = vec![t0];
+    let (lo, hi) = (t0.min(t1), t0.max(t1));
+    let inner: Vec<f64> = (0..len)
+        .map(|i| i as f64)
+        .chain((1..len).map(|i| (i + len - 1) as f64))
+        .chain((0..len - 1).map(|i| i as f64 - (len - 1) as f64))
+        .filter(|&k| k > lo + 1e-9 && k < hi - 1e-9)
+        .collect();
+    let mut inner = inner;
+    inner.sort_by(f64::total_cmp);
+    inner.dedup();
+    if t1 > t0 {
+        ts.extend(inner);
+    } else {
+        ts.extend(inner.into_iter().rev());
+    }
+    ts.push(t1);
+    ts
+}
+
+/// The parameters from `t0` to `t1` on a B-spline, surface or other curve: its knots between
+/// the ends, each span cut in four, and each piece halved ([`refine`]) until its chord
+/// deviates at most δ.
+fn spline_parameters(c: &Curve, t0: f64, t1: f64, delta: f64) -> Vec<f64> {
+    let mut breaks: Vec<f64> = match c {
+        Curve::Nurbs(n) => n.breaks(),
+        Curve::OnSurface { uv, .. } => uv.breaks(),
+        Curve::Trimmed { basis, .. } => match basis.as_ref() {
+            Curve::Nurbs(n) => n.breaks(),
+            Curve::OnSurface { uv, .. } => uv.breaks(),
+            _ => Vec::new(),
+        },
+        _ => Vec::new(),
+    };
+    let (lo, hi) = (t0.min(t1), t0.max(t1));
+    breaks.retain(|&k| k > lo && k < hi);
+    let mut ts = vec![lo];
+    ts.extend(breaks);
+    ts.push(hi);
+    let coarse: Vec<f64> = ts
+        .windows(2)
+        .flat_map(|w| (0..4).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / 4.0))
+        .chain(std::iter::once(hi))
+        .collect();
+    let mut out = vec![coarse[0]];
+    for w in coarse.windows(2) {
+        refine(c, w[0], w[1], delta, 0, &mut out);
+    }
+    if t1 < t0 {
+        out.reverse();
+    }
+    out
+}
+
+/// The points without those closer than δ/1000 to the last one kept or to the end point,
+/// which add nothing but slivers; the first and last points always stay.
+fn drop_close(pts: &[Point3], delta: f64) -> Vec<Point3> {
     let last = pts[pts.len() - 1];
     let n = pts.len();
     let mut kept = vec![pts[0]];
@@ -184,7 +205,7 @@ pub fn sample(edge: &Edge, vertices: &[Point3], delta: f64) -> Option<Vec<Point3
             kept.push(*p);
         }
     }
-    Some(kept)
+    kept
 }
 
 /// The point of both surfaces nearest `p`: alternating projections onto each (exact for

@@ -15,7 +15,7 @@ pub mod slivers;
 #[cfg(test)]
 mod solids_tests;
 
-use crate::brep::Body;
+use crate::brep::{Body, Face};
 use crate::error::{Error, ErrorKind};
 use crate::part::Part;
 use contact_core::geometry::TriangleMesh;
@@ -115,16 +115,57 @@ fn tessellate_with_edges(
     }
 }
 
+/// A failed tessellation: the index of the face whose triangulation failed, if that is what
+/// failed, and the error.
+type Failure = (Option<usize>, Error);
+
 /// One tessellation with each edge sampled at its own chord deviation; on failure, the
-/// index of the face whose triangulation failed, if that is what failed.
-fn attempt(
+/// index of the face whose triangulation failed, if that is what failed. The body's vertices
+/// come first, then each edge's inner points ([`edge_points`]), then each face's own points;
+/// the triangles are oriented outward (reversed if the enclosed volume came out negative).
+fn attempt(part: &Part, body: &Body, delta: f64, edge_delta: &[f64]) -> Result<Mesh, Failure> {
+    let mut vertices = body.vertices.clone();
+    let edge_ids = edge_points(part, body, edge_delta, &mut vertices)?;
+    let mut triangles = Vec::new();
+    for (index, f) in body.faces.iter().enumerate() {
+        let loops = face_loops(part, f, &edge_ids, &vertices).map_err(|e| (None, e))?;
+        let first_local = vertices.len() as u32;
+        let ft = face::triangulate(&f.surface, &loops, delta, first_local).map_err(|what| {
+            (
+                Some(index),
+                part.error(ErrorKind::Geometry {
+                    node: f.node.clone(),
+                    what: format!("{} face: {what}", surface_kind(&f.surface)),
+                }),
+            )
+        })?;
+        vertices.extend(ft.points);
+        triangles.extend(ft.triangles);
+    }
+    slivers::split_slivers(&vertices, &mut triangles);
+    let mut mesh = Mesh {
+        vertices,
+        triangles,
+        deviation: delta,
+    };
+    if mesh.signed_volume() < 0.0 {
+        for t in &mut mesh.triangles {
+            t.swap(1, 2);
+        }
+    }
+    Ok(mesh)
+}
+
+/// Samples every edge at its chord deviation in `edge_delta` ([`edge::sample`]) and appends
+/// its inner points to `vertices`: each edge's points as mesh vertex ids, from start to end.
+/// An edge's ends are its vertices' ids; a ring edge (no vertices) gets its first point as a
+/// new vertex, which it also ends at.
+fn edge_points(
     part: &Part,
     body: &Body,
-    delta: f64,
     edge_delta: &[f64],
-) -> Result<Mesh, (Option<usize>, Error)> {
-    let mut vertices = body.vertices.clone();
-    // Each edge's points as mesh vertex ids, from start to end.
+    vertices: &mut Vec<Point3>,
+) -> Result<Vec<Vec<u32>>, Failure> {
     let mut edge_ids: Vec<Vec<u32>> = Vec::with_capacity(body.edges.len());
     for (e, &d) in body.edges.iter().zip(edge_delta) {
         let pts = edge::sample(e, &body.vertices, d).ok_or_else(|| {
@@ -156,75 +197,57 @@ fn attempt(
         });
         edge_ids.push(ids);
     }
-    let mut triangles = Vec::new();
-    for (index, f) in body.faces.iter().enumerate() {
-        let mut loops = Vec::with_capacity(f.loops.len());
-        for l in &f.loops {
-            let mut ring: Vec<LoopPoint> = Vec::new();
-            for (k, fin) in l.iter().enumerate() {
-                let ids = &edge_ids[fin.edge];
-                let run: Vec<u32> = if fin.forward {
-                    ids.clone()
-                } else {
-                    ids.iter().rev().copied().collect()
-                };
-                if k > 0 && ring.last().map(|p| p.id) != Some(run[0]) {
-                    return Err((
-                        None,
-                        part.error(ErrorKind::Geometry {
-                            node: f.node.clone(),
-                            what: "a loop's fins do not meet end to start".into(),
-                        }),
-                    ));
-                }
-                let skip = usize::from(k > 0);
-                ring.extend(run[skip..].iter().map(|&id| LoopPoint {
-                    id,
-                    p: vertices[id as usize],
-                }));
-            }
-            if ring.len() > 1 && ring.first().map(|p| p.id) == ring.last().map(|p| p.id) {
-                ring.pop();
-            }
-            if ring.len() >= 2 {
-                loops.push(ring);
-            }
-        }
-        if loops.is_empty() {
-            return Err((
-                None,
-                part.error(ErrorKind::Geometry {
-                    node: f.node.clone(),
-                    what: "a face without a loop (a whole closed surface) is not tessellated"
-                        .into(),
-                }),
-            ));
-        }
-        let first_local = vertices.len() as u32;
-        let ft = face::triangulate(&f.surface, &loops, delta, first_local).map_err(|what| {
-            (
-                Some(index),
-                part.error(ErrorKind::Geometry {
-                    node: f.node.clone(),
-                    what: format!("{} face: {what}", surface_kind(&f.surface)),
-                }),
-            )
-        })?;
-        vertices.extend(ft.points);
-        triangles.extend(ft.triangles);
-    }
-    slivers::split_slivers(&vertices, &mut triangles);
-    let mut mesh = Mesh {
-        vertices,
-        triangles,
-        deviation: delta,
+    Ok(edge_ids)
+}
+
+/// A face's loops as closed rings of loop points (first point not repeated at the end): each
+/// loop's fins' edge points ([`edge_points`]' ids) in the fins' directions, joined end to
+/// start. Rings of fewer than two points are left out; a face without any is an error, as is
+/// a fin that does not start where the one before it ended.
+fn face_loops(
+    part: &Part,
+    f: &Face,
+    edge_ids: &[Vec<u32>],
+    vertices: &[Point3],
+) -> Result<Vec<Vec<LoopPoint>>, Error> {
+    let geometry = |what: &str| {
+        part.error(ErrorKind::Geometry {
+            node: f.node.clone(),
+            what: what.into(),
+        })
     };
-    if mesh.signed_volume() < 0.0 {
-        for t in &mut mesh.triangles {
-            t.swap(1, 2);
+    let mut loops = Vec::with_capacity(f.loops.len());
+    for l in &f.loops {
+        let mut ring: Vec<LoopPoint> = Vec::new();
+        for (k, fin) in l.iter().enumerate() {
+            let ids = &edge_ids[fin.edge];
+            let run: Vec<u32> = if fin.forward {
+                ids.clone()
+            } else {
+                ids.iter().rev().copied().collect()
+            };
+            if k > 0 && ring.last().map(|p| p.id) != Some(run[0]) {
+                return Err(geometry("a loop's fins do not meet end to start"));
+            }
+            let skip = usize::from(k > 0);
+            ring.extend(run[skip..].iter().map(|&id| LoopPoint {
+                id,
+                p: vertices[id as usize],
+            }));
+        }
+        if ring.len() > 1 && ring.first().map(|p| p.id) == ring.last().map(|p| p.id) {
+            ring.pop();
+        }
+        if ring.len() >= 2 {
+            loops.push(ring);
         }
     }
-    Ok(mesh)
+    if loops.is_empty() {
+        return Err(geometry(
+            "a face without a loop (a whole closed surface) is not tessellated",
+        ));
+    }
+    Ok(loops)
 }
 
 /// The surface's kind, for messages.
