@@ -379,6 +379,22 @@ pub(crate) fn add_polygon(sums: &mut RegionSums, poly: &[Vector3]) {
 }
 
 fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    // Each region's cones about its own apex (its loop's centroid, see `sum_loops`), in A's
+    // frame and in B's.
+    for r in s.regions.iter_mut() {
+        r.apex_b = x.inverse_apply(&r.apex);
+    }
+    sum_crossing_triangles(a, b, x, s);
+    sum_takings(a, b, s);
+    for r in s.regions.iter_mut() {
+        close_region(r, x);
+    }
+}
+
+/// Each crossing triangle's inside part, in A's frame about its region's apex: from the
+/// triangle's trace where its chains are clean, else the triangle clipped by the planes of
+/// the triangles it crosses.
+fn sum_crossing_triangles(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
     let Scratch {
         nodes,
         regions,
@@ -386,15 +402,9 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         node_hits,
         polygon,
         polygon_next,
-        taken,
         boundary,
         ..
     } = s;
-    // Each region's cones about its own apex (its loop's centroid, see `sum_loops`), in A's
-    // frame and in B's.
-    for r in regions.iter_mut() {
-        r.apex_b = x.inverse_apply(&r.apex);
-    }
     let touch = 1e-10 * a.size.max(b.size);
     for node in nodes.iter() {
         let mesh = if node.side == 0 { a } else { b };
@@ -448,7 +458,17 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
         }
         r.sums_a.add_polygon(polygon, &r.apex);
     }
-    // The flood's takings, each in its own mesh's frame about its region's apex there.
+}
+
+/// The inside flood's takings (whole triangles and whole patches), each in its own mesh's
+/// frame about its region's apex there.
+fn sum_takings(a: &FacetMesh, b: &FacetMesh, s: &mut Scratch) {
+    let Scratch {
+        nodes,
+        regions,
+        taken,
+        ..
+    } = s;
     for &(seed, item) in taken.iter() {
         let node = &nodes[seed as usize];
         let r = &mut regions[node.region as usize];
@@ -468,20 +488,22 @@ fn sum_volumes(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) 
             sums.add_triangle(&p, &q, &r, &apex);
         }
     }
-    for r in regions.iter_mut() {
-        // B's sums are about the same physical apex: only their moment turns into A's frame.
-        r.volume = r.sums_a.volume + r.sums_b.volume;
-        r.volume_moment = r.sums_a.moment + x.rot * r.sums_b.moment;
-        let scale = r.loop_length.max(1e-300);
-        // A loop that encloses no area bounds no measurable volume: its sums are round-off
-        // (at a corner grazing a face, crossing triangles clipped by one plane each leave
-        // slivers whose cones do not cancel), and their centroid can lie anywhere.
-        r.centroid = if r.volume > 1e-15 * scale * scale * scale && loop_normal(r).is_some() {
-            r.apex + r.volume_moment / r.volume
-        } else {
-            r.apex
-        };
-    }
+}
+
+/// A region's volume, moment (in A's frame) and centroid from its two meshes' sums.
+fn close_region(r: &mut RegionSums, x: &RelativePose) {
+    // B's sums are about the same physical apex: only their moment turns into A's frame.
+    r.volume = r.sums_a.volume + r.sums_b.volume;
+    r.volume_moment = r.sums_a.moment + x.rot * r.sums_b.moment;
+    let scale = r.loop_length.max(1e-300);
+    // A loop that encloses no area bounds no measurable volume: its sums are round-off
+    // (at a corner grazing a face, crossing triangles clipped by one plane each leave
+    // slivers whose cones do not cancel), and their centroid can lie anywhere.
+    r.centroid = if r.volume > 1e-15 * scale * scale * scale && loop_normal(r).is_some() {
+        r.apex + r.volume_moment / r.volume
+    } else {
+        r.apex
+    };
 }
 
 /// Sutherland–Hodgman: keeps the part of `poly` with `n·(v − p0) ≤ 0`.

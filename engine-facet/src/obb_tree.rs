@@ -424,74 +424,88 @@ pub fn descend_leaf_pairs(
         ) {
             continue;
         }
-        match (na.count > 0, nb.count > 0) {
-            (true, true) => on_leaves(a.leaf_triangles(na), b.leaf_triangles(nb)),
-            (false, true) => {
-                // As below: two internal children would each be split again against the leaf.
-                let (a1, a2) = (ia + 1, na.index);
-                let (n1, n2) = (&a.nodes[a1 as usize], &a.nodes[a2 as usize]);
-                if n1.count == 0 && n2.count == 0 {
-                    stack.extend_from_slice(&[
-                        (n2.index, ib),
-                        (a2 + 1, ib),
-                        (n1.index, ib),
-                        (a1 + 1, ib),
-                    ]);
+        if na.count > 0 && nb.count > 0 {
+            on_leaves(a.leaf_triangles(na), b.leaf_triangles(nb));
+        } else {
+            push_children(a, b, ia, ib, stack);
+        }
+    }
+    work.bounding_volume_tests += tests;
+}
+
+/// The node pairs to test after the overlapping pair `(ia, ib)`, of which at least one node is
+/// internal, pushed onto `stack` in the order [`descend_leaf_pairs`] pops them: the larger
+/// box split (a leaf is never split), and where both children would be split again at once,
+/// the four grandchild pairs directly.
+#[inline]
+fn push_children(a: &ObbTree, b: &ObbTree, ia: u32, ib: u32, stack: &mut Vec<(u32, u32)>) {
+    let (na, nb) = (&a.nodes[ia as usize], &b.nodes[ib as usize]);
+    match (na.count > 0, nb.count > 0) {
+        (true, true) => {}
+        (false, true) => {
+            // As below: two internal children would each be split again against the leaf.
+            let (a1, a2) = (ia + 1, na.index);
+            let (n1, n2) = (&a.nodes[a1 as usize], &a.nodes[a2 as usize]);
+            if n1.count == 0 && n2.count == 0 {
+                stack.extend_from_slice(&[
+                    (n2.index, ib),
+                    (a2 + 1, ib),
+                    (n1.index, ib),
+                    (a1 + 1, ib),
+                ]);
+            } else {
+                stack.push((a2, ib));
+                stack.push((a1, ib));
+            }
+        }
+        (true, false) => {
+            let (b1, b2) = (ib + 1, nb.index);
+            let (n1, n2) = (&b.nodes[b1 as usize], &b.nodes[b2 as usize]);
+            if n1.count == 0 && n2.count == 0 {
+                stack.extend_from_slice(&[
+                    (ia, n2.index),
+                    (ia, b2 + 1),
+                    (ia, n1.index),
+                    (ia, b1 + 1),
+                ]);
+            } else {
+                stack.push((ia, b2));
+                stack.push((ia, b1));
+            }
+        }
+        (false, false) => {
+            let (sa, sb) = (na.obb.size(), nb.obb.size());
+            // Left child `+ 1`, right child `index`; pushed right first so the left pops
+            // first.
+            let (a1, a2, b1, b2) = (ia + 1, na.index, ib + 1, nb.index);
+            // When the node split here has two children that the rule would each pair
+            // with the other node's children next, the four grandchild pairs are pushed at
+            // once, in the order the two steps would pop them: near the leaves most pairs
+            // pass, and skipping the middle test of such a pair saves more than the pairs
+            // it would have pruned cost.
+            let splits_b_next = |c: u32| {
+                let n = &a.nodes[c as usize];
+                n.count > 0 || n.obb.size() < sb
+            };
+            let splits_a_next = |c: u32| {
+                let n = &b.nodes[c as usize];
+                n.count > 0 || sa >= n.obb.size()
+            };
+            if sa >= sb {
+                if splits_b_next(a1) && splits_b_next(a2) {
+                    stack.extend_from_slice(&[(a2, b2), (a2, b1), (a1, b2), (a1, b1)]);
                 } else {
                     stack.push((a2, ib));
                     stack.push((a1, ib));
                 }
-            }
-            (true, false) => {
-                let (b1, b2) = (ib + 1, nb.index);
-                let (n1, n2) = (&b.nodes[b1 as usize], &b.nodes[b2 as usize]);
-                if n1.count == 0 && n2.count == 0 {
-                    stack.extend_from_slice(&[
-                        (ia, n2.index),
-                        (ia, b2 + 1),
-                        (ia, n1.index),
-                        (ia, b1 + 1),
-                    ]);
-                } else {
-                    stack.push((ia, b2));
-                    stack.push((ia, b1));
-                }
-            }
-            (false, false) => {
-                let (sa, sb) = (na.obb.size(), nb.obb.size());
-                // Left child `+ 1`, right child `index`; pushed right first so the left pops
-                // first.
-                let (a1, a2, b1, b2) = (ia + 1, na.index, ib + 1, nb.index);
-                // When the node split here has two children that the rule would each pair
-                // with the other node's children next, the four grandchild pairs are pushed at
-                // once, in the order the two steps would pop them: near the leaves most pairs
-                // pass, and skipping the middle test of such a pair saves more than the pairs
-                // it would have pruned cost.
-                let splits_b_next = |c: u32| {
-                    let n = &a.nodes[c as usize];
-                    n.count > 0 || n.obb.size() < sb
-                };
-                let splits_a_next = |c: u32| {
-                    let n = &b.nodes[c as usize];
-                    n.count > 0 || sa >= n.obb.size()
-                };
-                if sa >= sb {
-                    if splits_b_next(a1) && splits_b_next(a2) {
-                        stack.extend_from_slice(&[(a2, b2), (a2, b1), (a1, b2), (a1, b1)]);
-                    } else {
-                        stack.push((a2, ib));
-                        stack.push((a1, ib));
-                    }
-                } else if splits_a_next(b1) && splits_a_next(b2) {
-                    stack.extend_from_slice(&[(a2, b2), (a1, b2), (a2, b1), (a1, b1)]);
-                } else {
-                    stack.push((ia, b2));
-                    stack.push((ia, b1));
-                }
+            } else if splits_a_next(b1) && splits_a_next(b2) {
+                stack.extend_from_slice(&[(a2, b2), (a1, b2), (a2, b1), (a1, b1)]);
+            } else {
+                stack.push((ia, b2));
+                stack.push((ia, b1));
             }
         }
     }
-    work.bounding_volume_tests += tests;
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use crate::contact_region::{LocalContact, mesh_mesh};
 use crate::facet_mesh::FacetMesh;
 use crate::planar::{self, Planar, PlanarContact};
 use crate::plane_contact::{mesh_plane, plane_pose_in_mesh_frame};
-use crate::scratch::with_scratch;
+use crate::scratch::{Scratch, with_scratch};
 use crate::solid_on_face::implied_solid_on_face;
 use contact_core::geometry::Plane;
 use contact_core::{
@@ -70,6 +70,82 @@ fn to_world(pose: &Isometry3, c: &LocalContact, gi: usize, gj: usize) -> Contact
     }
 }
 
+/// One prepared geometry at its world pose, with its index in its list.
+struct Placed<'a> {
+    geometry: &'a PreparedGeometry,
+    index: usize,
+    pose_w: &'a Isometry3,
+}
+
+/// The contacts of I's geometry `a` against J's geometry `b` (`placed`), appended to
+/// `contacts` in world frame; `parts` are the two parts' world poses (for messages). A 2-D
+/// pair whose parts left their plane is an error.
+fn pair_contacts(
+    [a, b]: [Placed<'_>; 2],
+    parts: [&Isometry3; 2],
+    s: &mut Scratch,
+    work: &mut WorkCounters,
+    local: &mut Vec<LocalContact>,
+    contacts: &mut Vec<Contact>,
+) -> Result<(), QueryError> {
+    let (gi, gj) = (a.index, b.index);
+    let (pose_wa, pose_wb) = (a.pose_w, b.pose_w);
+    match (&a.geometry.shape, &b.geometry.shape) {
+        (Shape::Mesh(ma), Shape::Mesh(mb)) => {
+            let pose_ab = pose_wa.inv_mul(pose_wb);
+            if implied_solid_on_face(mb, ma, &pose_ab.inverse(), s, work, local) {
+                contacts.extend(local.iter().map(|c| to_world(pose_wb, c, gj, gi).swapped()));
+            } else {
+                if !implied_solid_on_face(ma, mb, &pose_ab, s, work, local) {
+                    mesh_mesh(ma, mb, &pose_ab, s, work, local);
+                }
+                contacts.extend(local.iter().map(|c| to_world(pose_wa, c, gi, gj)));
+            }
+        }
+        (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
+            let pose_ab = plane_pose_in_mesh_frame(pose_wa, pose_wb, p);
+            mesh_plane(ma, p, &pose_ab, s, work, local);
+            contacts.extend(local.iter().map(|c| to_world(pose_wa, c, gi, gj)));
+        }
+        (Shape::HalfSpace(p), Shape::Mesh(mb)) => {
+            let pose_ba = plane_pose_in_mesh_frame(pose_wb, pose_wa, p);
+            mesh_plane(mb, p, &pose_ba, s, work, local);
+            contacts.extend(local.iter().map(|c| to_world(pose_wb, c, gj, gi).swapped()));
+        }
+        (Shape::Planar(pa), Shape::Planar(pb)) => {
+            let length = match (pa.length, pb.length) {
+                (Some(x), Some(y)) => x.max(y),
+                (x, y) => x.or(y).unwrap_or(1.0),
+            };
+            planar::contacts(
+                &pa.shape,
+                pose_wa,
+                &pb.shape,
+                pose_wb,
+                length,
+                work,
+                &mut |c| contacts.push(planar_to_contact(&c, gi, gj)),
+            )
+            .map_err(|e| QueryError::OutOfPlane {
+                i: pa.kind,
+                j: pb.kind,
+                label_i: a.geometry.label.clone(),
+                label_j: b.geometry.label.clone(),
+                angle_rad: e.angle_rad,
+                offset: e.offset,
+                pose_i: format_pose(parts[0]),
+                pose_j: format_pose(parts[1]),
+            })?;
+        }
+        // `supports` rejects PLANE against PLANE and 2-D against 3-D before prepare builds
+        // anything.
+        (Shape::HalfSpace(_), Shape::HalfSpace(_))
+        | (Shape::Planar(_), Shape::Mesh(_) | Shape::HalfSpace(_))
+        | (Shape::Mesh(_) | Shape::HalfSpace(_), Shape::Planar(_)) => {}
+    }
+    Ok(())
+}
+
 fn planar_to_contact(c: &PlanarContact, gi: usize, gj: usize) -> Contact {
     Contact {
         point_i_w: c.point_i,
@@ -93,98 +169,38 @@ impl PreparedPair for PreparedFacetPair {
         QueryError::check_poses(pose_world_i, pose_world_j)?;
         contacts.clear();
         work.queries += 1;
-        let mut failure = None;
-        with_scratch(|s| {
+        let result = with_scratch(|s| {
             let mut local = std::mem::take(&mut s.local);
+            let mut result = Ok(());
             'pairs: for (gi, a) in self.i.iter().enumerate() {
                 let pose_wa = pose_world_i * a.pose_part_geometry;
                 for (gj, b) in self.j.iter().enumerate() {
                     work.geometry_pairs += 1;
                     let pose_wb = pose_world_j * b.pose_part_geometry;
                     local.clear();
-                    match (&a.shape, &b.shape) {
-                        (Shape::Mesh(ma), Shape::Mesh(mb)) => {
-                            let pose_ab = pose_wa.inv_mul(&pose_wb);
-                            if implied_solid_on_face(
-                                mb,
-                                ma,
-                                &pose_ab.inverse(),
-                                s,
-                                work,
-                                &mut local,
-                            ) {
-                                contacts.extend(
-                                    local
-                                        .iter()
-                                        .map(|c| to_world(&pose_wb, c, gj, gi).swapped()),
-                                );
-                            } else {
-                                if !implied_solid_on_face(ma, mb, &pose_ab, s, work, &mut local) {
-                                    mesh_mesh(ma, mb, &pose_ab, s, work, &mut local);
-                                }
-                                contacts
-                                    .extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
-                            }
-                        }
-                        (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
-                            let pose_ab = plane_pose_in_mesh_frame(&pose_wa, &pose_wb, p);
-                            mesh_plane(ma, p, &pose_ab, s, work, &mut local);
-                            contacts.extend(local.iter().map(|c| to_world(&pose_wa, c, gi, gj)));
-                        }
-                        (Shape::HalfSpace(p), Shape::Mesh(mb)) => {
-                            let pose_ba = plane_pose_in_mesh_frame(&pose_wb, &pose_wa, p);
-                            mesh_plane(mb, p, &pose_ba, s, work, &mut local);
-                            contacts.extend(
-                                local
-                                    .iter()
-                                    .map(|c| to_world(&pose_wb, c, gj, gi).swapped()),
-                            );
-                        }
-                        (Shape::Planar(pa), Shape::Planar(pb)) => {
-                            let length = match (pa.length, pb.length) {
-                                (Some(x), Some(y)) => x.max(y),
-                                (x, y) => x.or(y).unwrap_or(1.0),
-                            };
-                            let found = planar::contacts(
-                                &pa.shape,
-                                &pose_wa,
-                                &pb.shape,
-                                &pose_wb,
-                                length,
-                                work,
-                                &mut |c| contacts.push(planar_to_contact(&c, gi, gj)),
-                            )
-                            .map_err(|e| QueryError::OutOfPlane {
-                                i: pa.kind,
-                                j: pb.kind,
-                                label_i: a.label.clone(),
-                                label_j: b.label.clone(),
-                                angle_rad: e.angle_rad,
-                                offset: e.offset,
-                                pose_i: format_pose(pose_world_i),
-                                pose_j: format_pose(pose_world_j),
-                            });
-                            match found {
-                                Ok(()) => {}
-                                Err(e) => {
-                                    failure = Some(e);
-                                    break 'pairs;
-                                }
-                            }
-                        }
-                        // `supports` rejects PLANE against PLANE and 2-D against 3-D before
-                        // prepare builds anything.
-                        (Shape::HalfSpace(_), Shape::HalfSpace(_))
-                        | (Shape::Planar(_), Shape::Mesh(_) | Shape::HalfSpace(_))
-                        | (Shape::Mesh(_) | Shape::HalfSpace(_), Shape::Planar(_)) => {}
+                    let placed = [
+                        Placed {
+                            geometry: a,
+                            index: gi,
+                            pose_w: &pose_wa,
+                        },
+                        Placed {
+                            geometry: b,
+                            index: gj,
+                            pose_w: &pose_wb,
+                        },
+                    ];
+                    let parts = [pose_world_i, pose_world_j];
+                    result = pair_contacts(placed, parts, s, work, &mut local, contacts);
+                    if result.is_err() {
+                        break 'pairs;
                     }
                 }
             }
             s.local = local;
+            result
         });
-        if let Some(e) = failure {
-            return Err(e);
-        }
+        result?;
         work.contacts += contacts.len() as u64;
         Ok(())
     }
