@@ -69,49 +69,11 @@ impl FacetMesh {
             triangles,
             corner_normals,
         } = t;
-        let edge = |from: u32, to: u32| (u64::from(from) << 32) | u64::from(to);
-        let mut edges: HashMap<u64, u32, BuildEdgeHasher> =
-            HashMap::with_capacity_and_hasher(triangles.len() * 3, BuildEdgeHasher);
-        for (i, tri) in triangles.iter().enumerate() {
-            for k in 0..3 {
-                edges.insert(edge(tri[k], tri[(k + 1) % 3]), i as u32);
-            }
-        }
-        let neighbors = triangles
-            .iter()
-            .map(|tri| {
-                [0, 1, 2].map(|k| {
-                    edges
-                        .get(&edge(tri[(k + 1) % 3], tri[k]))
-                        .copied()
-                        .unwrap_or(NO_NEIGHBOR)
-                })
-            })
-            .collect();
-        let mut lo = Vector3::repeat(f64::INFINITY);
-        let mut hi = Vector3::repeat(f64::NEG_INFINITY);
-        for v in &vertices {
-            lo = lo.inf(&v.coords);
-            hi = hi.sup(&v.coords);
-        }
-        let origin = 0.5 * (lo + hi);
-        let (mut volume, mut moment, mut area) = (0.0, Vector3::zeros(), 0.0);
-        let mut face_normals = Vec::with_capacity(triangles.len());
-        for tri in &triangles {
-            let [a, b, c] = tri.map(|v| vertices[v as usize].coords - origin);
-            let n = (b - a).cross(&(c - a));
-            area += 0.5 * n.norm();
-            face_normals.push(n.try_normalize(0.0).unwrap_or_else(Vector3::z));
-            let v = a.dot(&b.cross(&c)) / 6.0;
-            volume += v;
-            moment += v * (a + b + c) / 4.0;
-        }
-        let centroid = if closed && volume > 0.0 {
-            Point3::from(origin + moment / volume)
-        } else {
-            let sum: Vector3 = vertices.iter().map(|v| v.coords).sum();
-            Point3::from(sum / vertices.len().max(1) as f64)
-        };
+        let neighbors = edge_neighbours(&triangles);
+        let (lo, hi) = bounds(&vertices);
+        let mass = MassProperties::of(&vertices, &triangles, 0.5 * (lo + hi), closed);
+        let (volume, centroid, area, face_normals) =
+            (mass.volume, mass.centroid, mass.area, mass.face_normals);
         let mut tree = ObbTree::build(&vertices, &triangles);
         // Triangles (and their vertices) renumbered in the tree's leaf order, after the mass
         // properties and the tree are formed in the given order (so neither changes by a bit):
@@ -128,18 +90,7 @@ impl FacetMesh {
             &mut corner_normals,
         );
         let patches = PatchIndex::build(&tree, &vertices, &triangles, &neighbors);
-        let longest_edge = triangles
-            .iter()
-            .flat_map(|t| {
-                let [a, b, c] = t.map(|v| vertices[v as usize]);
-                [
-                    (b - a).norm_squared(),
-                    (c - b).norm_squared(),
-                    (a - c).norm_squared(),
-                ]
-            })
-            .fold(0.0, f64::max)
-            .sqrt();
+        let longest_edge = longest_edge(&vertices, &triangles);
         let pn_reach = triangles
             .iter()
             .zip(&corner_normals)
@@ -342,6 +293,96 @@ impl FacetMesh {
         )
         .coords
     }
+}
+
+/// Each triangle's neighbour across each of its edges (edge `k` runs from corner `k` to
+/// `k + 1`): the triangle holding the same edge the other way, [`NO_NEIGHBOR`] where none does.
+fn edge_neighbours(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let edge = |from: u32, to: u32| (u64::from(from) << 32) | u64::from(to);
+    let mut edges: HashMap<u64, u32, BuildEdgeHasher> =
+        HashMap::with_capacity_and_hasher(triangles.len() * 3, BuildEdgeHasher);
+    for (i, tri) in triangles.iter().enumerate() {
+        for k in 0..3 {
+            edges.insert(edge(tri[k], tri[(k + 1) % 3]), i as u32);
+        }
+    }
+    triangles
+        .iter()
+        .map(|tri| {
+            [0, 1, 2].map(|k| {
+                edges
+                    .get(&edge(tri[(k + 1) % 3], tri[k]))
+                    .copied()
+                    .unwrap_or(NO_NEIGHBOR)
+            })
+        })
+        .collect()
+}
+
+/// The vertices' axis-aligned bounds, `(lo, hi)`.
+fn bounds(vertices: &[Point3]) -> (Vector3, Vector3) {
+    let mut lo = Vector3::repeat(f64::INFINITY);
+    let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+    for v in vertices {
+        lo = lo.inf(&v.coords);
+        hi = hi.sup(&v.coords);
+    }
+    (lo, hi)
+}
+
+/// A tessellation's volume, centroid, area and unit face normals (divergence theorem over
+/// cones from `origin`, the bounds' centre, which keeps the sums small).
+struct MassProperties {
+    volume: f64,
+    centroid: Point3,
+    area: f64,
+    face_normals: Vec<Vector3>,
+}
+
+impl MassProperties {
+    /// The centroid of a closed body with positive volume is its volume's; otherwise the
+    /// vertices' mean.
+    fn of(vertices: &[Point3], triangles: &[[u32; 3]], origin: Vector3, closed: bool) -> Self {
+        let (mut volume, mut moment, mut area) = (0.0, Vector3::zeros(), 0.0);
+        let mut face_normals = Vec::with_capacity(triangles.len());
+        for tri in triangles {
+            let [a, b, c] = tri.map(|v| vertices[v as usize].coords - origin);
+            let n = (b - a).cross(&(c - a));
+            area += 0.5 * n.norm();
+            face_normals.push(n.try_normalize(0.0).unwrap_or_else(Vector3::z));
+            let v = a.dot(&b.cross(&c)) / 6.0;
+            volume += v;
+            moment += v * (a + b + c) / 4.0;
+        }
+        let centroid = if closed && volume > 0.0 {
+            Point3::from(origin + moment / volume)
+        } else {
+            let sum: Vector3 = vertices.iter().map(|v| v.coords).sum();
+            Point3::from(sum / vertices.len().max(1) as f64)
+        };
+        Self {
+            volume,
+            centroid,
+            area,
+            face_normals,
+        }
+    }
+}
+
+/// The longest edge of any triangle.
+fn longest_edge(vertices: &[Point3], triangles: &[[u32; 3]]) -> f64 {
+    triangles
+        .iter()
+        .flat_map(|t| {
+            let [a, b, c] = t.map(|v| vertices[v as usize]);
+            [
+                (b - a).norm_squared(),
+                (c - b).norm_squared(),
+                (a - c).norm_squared(),
+            ]
+        })
+        .fold(0.0, f64::max)
+        .sqrt()
 }
 
 /// Hashes a directed edge `(from << 32) | to` with one multiply-xorshift round: the keys are

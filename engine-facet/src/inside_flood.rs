@@ -20,14 +20,17 @@ use crate::scratch::{NodeMarks, RegionNode, Scratch};
 use crate::triangle_pieces::NO_PIECE;
 use contact_core::Vector3;
 
-/// Floods each surface from its crossing triangles into the triangles inside the other solid,
-/// listing each triangle or whole patch taken with its seed node in `s.taken`.
-pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
-    s.taken.clear();
-    let crossing_count = s.nodes.len();
-    // Corners of crossing triangles: inside when behind every crossed plane; a corner on a
-    // plane (within 1e-12 of the mesh's size) lies on the side the triangle tests' nudge puts
-    // it (`crate::triangle_pair::intersect_nudged`: A moved along `NUDGE`).
+/// Marks which corners of the crossing triangles (the first `crossing_count` nodes) are
+/// inside the other solid: behind every plane the triangle crosses. A corner on a plane
+/// (within 1e-12 of the mesh's size) lies on the side the triangle tests' nudge puts it
+/// (`crate::triangle_pair::intersect_nudged`: A moved along `NUDGE`).
+fn mark_inside_corners(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    x: &RelativePose,
+    s: &mut Scratch,
+    crossing_count: usize,
+) {
     for id in 0..crossing_count {
         let node = s.nodes[id];
         let mesh = if node.side == 0 { a } else { b };
@@ -54,6 +57,14 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         }
         s.nodes[id].inside_corners = bits;
     }
+}
+
+/// Floods each surface from its crossing triangles into the triangles inside the other solid,
+/// listing each triangle or whole patch taken with its seed node in `s.taken`.
+pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch) {
+    s.taken.clear();
+    let crossing_count = s.nodes.len();
+    mark_inside_corners(a, b, x, s, crossing_count);
     // Subtrees holding a crossing triangle are not patches of one side of the other surface.
     for side in 0..2 {
         let mesh = if side == 0 { a } else { b };

@@ -125,6 +125,76 @@ pub struct PatchIndex {
     pub border: Vec<u32>,
 }
 
+/// How many edges join two sibling nodes' triangle ranges (`[first, end)` each), joined in
+/// `union_find`; found from the smaller range's side.
+fn join_children(
+    union_find: &mut UnionFind,
+    neighbors: &[[u32; 3]],
+    left: (u32, u32),
+    right: (u32, u32),
+) -> u32 {
+    let (small, large) = if left.1 - left.0 <= right.1 - right.0 {
+        (left, right)
+    } else {
+        (right, left)
+    };
+    let mut joined = 0;
+    for t in small.0..small.1 {
+        for &m in &neighbors[t as usize] {
+            if m >= large.0 && m < large.1 && union_find.union(t, m) {
+                joined += 1;
+            }
+        }
+    }
+    joined
+}
+
+/// The patches stored whole (at least [`MIN_PATCH`] triangles): their slots, sums, rims and
+/// borders, as [`PatchIndex`] keeps them.
+struct Stored {
+    sums_slot: Vec<u32>,
+    sums: Vec<PatchSums>,
+    rim_start: Vec<u32>,
+    rim: Vec<u32>,
+    border_start: Vec<u32>,
+    border: Vec<u32>,
+}
+
+impl Stored {
+    /// From each node's triangle range and sums, and the mesh's neighbours.
+    fn of(range: &[(u32, u32)], all_sums: &[PatchSums], neighbors: &[[u32; 3]]) -> Self {
+        let mut stored = Self {
+            sums_slot: vec![NONE; range.len()],
+            sums: Vec::new(),
+            rim_start: vec![0],
+            rim: Vec::new(),
+            border_start: vec![0],
+            border: Vec::new(),
+        };
+        for (i, &(first, end)) in range.iter().enumerate() {
+            if end - first < MIN_PATCH {
+                continue;
+            }
+            stored.sums_slot[i] = stored.sums.len() as u32;
+            stored.sums.push(all_sums[i]);
+            for t in first..end {
+                let before = stored.rim.len();
+                for &m in &neighbors[t as usize] {
+                    if m < first || m >= end {
+                        stored.rim.push(m);
+                    }
+                }
+                if stored.rim.len() > before {
+                    stored.border.push(t);
+                }
+            }
+            stored.rim_start.push(stored.rim.len() as u32);
+            stored.border_start.push(stored.border.len() as u32);
+        }
+        stored
+    }
+}
+
 impl PatchIndex {
     /// Builds the index over a tree whose leaves hold their triangles in order
     /// ([`ObbTree::renumber_in_leaf_order`] done), with the mesh's neighbours.
@@ -138,9 +208,7 @@ impl PatchIndex {
         let n = nodes.len();
         let mut parent = vec![NONE; n];
         let mut range = vec![(0, 0); n];
-        let mut connected = vec![false; n];
         let mut leaf_of = vec![0; triangles.len()];
-        let mut sums_slot = vec![NONE; n];
         let mut all_sums = vec![PatchSums::default(); n];
         // Edge-connected components per node, exact: one union-find over the triangles, joined
         // bottom-up across the edges inside each leaf and between each node's two children.
@@ -177,52 +245,20 @@ impl PatchIndex {
                 let mut sums = all_sums[left].about(&center);
                 sums.add(&all_sums[right].about(&center));
                 all_sums[i] = sums;
-                // The edges between the two children, found from the smaller one's side.
-                let (small, large) =
-                    if range[left].1 - range[left].0 <= range[right].1 - range[right].0 {
-                        (range[left], range[right])
-                    } else {
-                        (range[right], range[left])
-                    };
-                let mut joined = 0;
-                for t in small.0..small.1 {
-                    for &m in &neighbors[t as usize] {
-                        if m >= large.0 && m < large.1 && union_find.union(t, m) {
-                            joined += 1;
-                        }
-                    }
-                }
+                let joined = join_children(&mut union_find, neighbors, range[left], range[right]);
                 components[i] = components[left] + components[right] - joined;
             }
         }
-        for i in 0..n {
-            connected[i] = components[i] == 1;
-        }
-        let mut sums = Vec::new();
-        let mut rim_start = vec![0];
-        let mut rim = Vec::new();
-        let mut border_start = vec![0];
-        let mut border = Vec::new();
-        for i in 0..n {
-            let (first, end) = range[i];
-            if end - first >= MIN_PATCH {
-                sums_slot[i] = sums.len() as u32;
-                sums.push(all_sums[i]);
-                for t in first..end {
-                    let before = rim.len();
-                    for &m in &neighbors[t as usize] {
-                        if m < first || m >= end {
-                            rim.push(m);
-                        }
-                    }
-                    if rim.len() > before {
-                        border.push(t);
-                    }
-                }
-                rim_start.push(rim.len() as u32);
-                border_start.push(border.len() as u32);
-            }
-        }
+        let connected = components.iter().map(|&c| c == 1).collect();
+        let stored = Stored::of(&range, &all_sums, neighbors);
+        let Stored {
+            sums_slot,
+            sums,
+            rim_start,
+            rim,
+            border_start,
+            border,
+        } = stored;
         Self {
             parent,
             range,

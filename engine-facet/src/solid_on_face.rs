@@ -68,55 +68,18 @@ pub(crate) fn implied_solid_on_face(
     if !b.closed {
         return false;
     }
-    // E in B's frame: centre, the rotation taking B's vectors to A's, and the bounding radius.
-    let pose_ba = pose_ab.inverse();
-    let centre = pose_ba * centre_a;
-    let to_a = pose_ab.rotation;
-    let bound = semi.max();
-    let to_unit_ball = |p: &Point3| (to_a * (p - centre)).component_div(&semi);
     let band = (a.longest_edge / semi.min()).min(0.5);
-    // The plane `n·x = offset` of the first triangle reaching E; cleared (`coplanar` false)
-    // by a curved triangle or one off that plane.
-    let face: Cell<Option<(Vector3, f64)>> = Cell::new(None);
-    let coplanar = Cell::new(true);
-    // Triangles within the band outside E: (triangle, unit-ball distance).
-    let near = RefCell::new(Vec::new());
-    b.tree.visit(
-        |obb| coplanar.get() && obb_reaches(obb, &centre.coords, bound * (1.0 + band)),
-        |t| {
-            let [p, q, r] = b.triangles[t as usize].map(|v| b.vertices[v as usize]);
-            let [p1, q1, r1] = [p, q, r].map(|x| Point3::from(to_unit_ball(&x)));
-            let distance = closest_point_on_triangle(&Point3::origin(), &p1, &q1, &r1)
-                .coords
-                .norm();
-            if !coplanar.get() || distance >= 1.0 + band {
-                return;
-            }
-            if distance >= 1.0 {
-                near.borrow_mut().push((t, distance));
-                return;
-            }
-            let n = b.face_normals[t as usize];
-            let on_face = match face.get() {
-                None => {
-                    face.set(Some((n, n.dot(&p.coords))));
-                    true
-                }
-                Some(plane) => on_plane(b, t, plane),
-            };
-            coplanar.set(flat(b, t) && on_face);
-        },
-    );
-    if !coplanar.get() {
+    let reach = triangles_reaching(b, pose_ab.inverse() * centre_a, pose_ab, &semi, band);
+    if !reach.coplanar {
         return false;
     }
-    let Some(plane) = face.get() else {
+    let Some(plane) = reach.plane else {
         // Nothing reaches E: apart, or one body wholly inside the other (the facets' test).
         return false;
     };
     // The plane answer's weight: 1 unless a triangle off the face is within the band.
-    let weight = near
-        .borrow()
+    let weight = reach
+        .near
         .iter()
         .filter(|&&(t, _)| !(flat(b, t) && on_plane(b, t, plane)))
         .map(|&(_, distance)| {
@@ -154,6 +117,65 @@ pub(crate) fn implied_solid_on_face(
         }
         // Regions that do not pair up: the facets answer (see the module docs).
         _ => false,
+    }
+}
+
+/// What of B reaches the implied solid E (centre `centre` in B's frame, semi-axes `semi` in
+/// A's axes, B's vectors turned into A's by `pose_ab`'s rotation).
+struct Reach {
+    /// The plane `n·x = offset` of the first triangle reaching E.
+    plane: Option<(Vector3, f64)>,
+    /// Whether every triangle reaching E is flat and in that plane.
+    coplanar: bool,
+    /// Triangles within the band outside E: (triangle, unit-ball distance).
+    near: Vec<(u32, f64)>,
+}
+
+/// B's triangles that reach into E or lie within `band` (in unit-ball distance) outside it;
+/// the search stops once one reaching E is curved or off the first one's plane.
+fn triangles_reaching(
+    b: &FacetMesh,
+    centre: Point3,
+    pose_ab: &Isometry3,
+    semi: &Vector3,
+    band: f64,
+) -> Reach {
+    let to_a = pose_ab.rotation;
+    let bound = semi.max();
+    let to_unit_ball = |p: &Point3| (to_a * (p - centre)).component_div(semi);
+    let face: Cell<Option<(Vector3, f64)>> = Cell::new(None);
+    let coplanar = Cell::new(true);
+    let near = RefCell::new(Vec::new());
+    b.tree.visit(
+        |obb| coplanar.get() && obb_reaches(obb, &centre.coords, bound * (1.0 + band)),
+        |t| {
+            let [p, q, r] = b.triangles[t as usize].map(|v| b.vertices[v as usize]);
+            let [p1, q1, r1] = [p, q, r].map(|x| Point3::from(to_unit_ball(&x)));
+            let distance = closest_point_on_triangle(&Point3::origin(), &p1, &q1, &r1)
+                .coords
+                .norm();
+            if !coplanar.get() || distance >= 1.0 + band {
+                return;
+            }
+            if distance >= 1.0 {
+                near.borrow_mut().push((t, distance));
+                return;
+            }
+            let n = b.face_normals[t as usize];
+            let on_face = match face.get() {
+                None => {
+                    face.set(Some((n, n.dot(&p.coords))));
+                    true
+                }
+                Some(plane) => on_plane(b, t, plane),
+            };
+            coplanar.set(flat(b, t) && on_face);
+        },
+    );
+    Reach {
+        plane: face.get(),
+        coplanar: coplanar.get(),
+        near: near.into_inner(),
     }
 }
 

@@ -203,6 +203,36 @@ pub(crate) fn contacts(
             }
         }
     }));
+    add_open_end_departures(&chains, found, size, departures);
+    if departures.is_empty() {
+        if let Some(c) = contained(a, b, size, hits) {
+            emit(c);
+        }
+        return;
+    }
+    used.clear();
+    used.resize(departures.len(), false);
+    for first in 0..departures.len() {
+        if departures[first].to != 0 || used[first] {
+            continue;
+        }
+        used[first] = true;
+        if let Some(sums) = trace(&chains, departures, first, used, entries) {
+            if let Some(c) = region_contact(&sums, a, b, size, hits) {
+                emit(c);
+            }
+        }
+    }
+}
+
+/// The departures at open chains' real ends that lie in the other chain's material: from the
+/// end to its foot on the other chain (an end inside), or from the foot to the start.
+fn add_open_end_departures(
+    chains: &[&Chain; 2],
+    found: &[Crossing],
+    size: f64,
+    departures: &mut Vec<Departure>,
+) {
     for x in 0..2 {
         let (own, other) = (chains[x], chains[1 - x]);
         if own.closed {
@@ -237,25 +267,6 @@ pub(crate) fn contacts(
                     jump: Some((point, start)),
                     on_arcs: true,
                 });
-            }
-        }
-    }
-    if departures.is_empty() {
-        if let Some(c) = contained(a, b, size, hits) {
-            emit(c);
-        }
-        return;
-    }
-    used.clear();
-    used.resize(departures.len(), false);
-    for first in 0..departures.len() {
-        if departures[first].to != 0 || used[first] {
-            continue;
-        }
-        used[first] = true;
-        if let Some(sums) = trace(&chains, departures, first, used, entries) {
-            if let Some(c) = region_contact(&sums, a, b, size, hits) {
-                emit(c);
             }
         }
     }
