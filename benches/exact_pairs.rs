@@ -44,11 +44,44 @@ struct Case {
     depth: Option<f64>,
 }
 
+/// A generic tilt for the configurations that need one.
+fn tilt() -> UnitQuaternion {
+    UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5)
+}
+
+/// A cube of half-size `h`, centred.
+fn cube(h: f64) -> Geometry {
+    Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap())
+}
+
+/// The unbounded ground plane.
+fn ground() -> Geometry {
+    Geometry::Plane(Plane::unbounded())
+}
+
+/// A cylinder of radius `r` and length `l`.
+fn cylinder(r: f64, l: f64) -> Geometry {
+    Geometry::Cylinder(Cylinder::new(r, l).unwrap())
+}
+
+/// Every benchmarked configuration, family by family.
 fn cases() -> Vec<Case> {
-    let tilt = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
-    let cube = |h: f64| Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap());
-    let ground = Geometry::Plane(Plane::unbounded());
-    let cylinder = |r: f64, l: f64| Geometry::Cylinder(Cylinder::new(r, l).unwrap());
+    [
+        curved_solid_cases(),
+        frustum_and_torus_cases(),
+        box_and_plane_cases(),
+        solid_on_ground_cases(),
+        mesh_cases(),
+        bounded_plane_cases(),
+        planar_cases(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// Cylinders, spheres and ellipsoids against each other and the ground.
+fn curved_solid_cases() -> Vec<Case> {
     vec![
         // Crossed at right angles, axes 0.8 apart: δ = r_a + r_b − 0.8 by symmetry.
         Case {
@@ -87,13 +120,13 @@ fn cases() -> Vec<Case> {
             i: cylinder(0.5, 2.0),
             j: Geometry::Cuboid(Cuboid::centered(1.0, 1.0, 2.0).unwrap()),
             pose_i: Isometry3::identity(),
-            pose_j: Isometry3::from_parts(nalgebra::Translation3::new(1.3, 0.0, 1.0), tilt),
+            pose_j: Isometry3::from_parts(nalgebra::Translation3::new(1.3, 0.0, 1.0), tilt()),
             depth: None,
         },
         Case {
             name: "sphere_plane",
             i: Geometry::sphere(1.0).unwrap(),
-            j: ground.clone(),
+            j: ground(),
             pose_i: Isometry3::translation(0.3, -0.2, 0.9),
             pose_j: Isometry3::identity(),
             depth: Some(0.1),
@@ -109,8 +142,8 @@ fn cases() -> Vec<Case> {
         Case {
             name: "ellipsoid_plane",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -118,7 +151,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_ellipsoid",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Ellipsoid(Ellipsoid::new(0.8, 0.5, 0.7).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.3, 0.4), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.3, 0.4), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -126,7 +159,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_box",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Cuboid(Cuboid::centered(1.0, 0.7, 0.4).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.5, 0.3, 0.7), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.5, 0.3, 0.7), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -134,16 +167,22 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_cylinder",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Cylinder(Cylinder::new(0.8, 1.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.4, 1.6), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.4, 1.6), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
-        // Two frusta crossed at a tilt (the exact engine alone: parry has no frustum).
+    ]
+}
+
+/// Frusta and tori against the curved solids.
+fn frustum_and_torus_cases() -> Vec<Case> {
+    vec![
+        // Two frusta crossed at a tilt() (the exact engine alone: parry has no frustum).
         Case {
             name: "frustum_frustum",
             i: Geometry::Frustum(Frustum::new(1.0, 0.5, 1.5).unwrap()),
             j: Geometry::Frustum(Frustum::new(0.8, 0.6, 1.2).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.6, 0.2, 0.9), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.6, 0.2, 0.9), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -163,7 +202,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_frustum",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Frustum(Frustum::new(1.0, 0.5, 1.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.8, 0.3, 1.4), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.8, 0.3, 1.4), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -171,7 +210,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_torus",
             i: Geometry::Ellipsoid(Ellipsoid::new(0.5, 0.3, 0.25).unwrap()),
             j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.3, 0.4, 0.45), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.3, 0.4, 0.45), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -180,7 +219,7 @@ fn cases() -> Vec<Case> {
             name: "cylinder_torus",
             i: cylinder(0.3, 1.5),
             j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.2, 0.3, -0.6), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.2, 0.3, -0.6), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -188,7 +227,7 @@ fn cases() -> Vec<Case> {
             name: "frustum_torus",
             i: Geometry::Frustum(Frustum::new(0.5, 0.1, 1.0).unwrap()),
             j: Geometry::Torus(Torus::new(2.0, 0.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.6, 0.2, -0.3), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(2.6, 0.2, -0.3), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -203,11 +242,17 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+    ]
+}
+
+/// Boxes, and spheres against solids' faces, edges, sides and tubes.
+fn box_and_plane_cases() -> Vec<Case> {
+    vec![
         Case {
             name: "box_plane",
             i: cube(0.5),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.6), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.6), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -215,7 +260,7 @@ fn cases() -> Vec<Case> {
             name: "box_box",
             i: cube(0.5),
             j: Geometry::Cuboid(Cuboid::centered(1.0, 0.7, 0.4).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.2, 0.1, 0.95), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.2, 0.1, 0.95), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -267,34 +312,40 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+    ]
+}
+
+/// Solids tilted on, lying on and resting on the ground.
+fn solid_on_ground_cases() -> Vec<Case> {
+    vec![
         Case {
             name: "cylinder_plane_tilted",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
         Case {
             name: "frustum_plane_tilted",
             i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
         Case {
             name: "torus_plane_tilted",
             i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
         Case {
             name: "cylinder_plane_on_side",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
-            j: ground.clone(),
+            j: ground(),
             pose_i: Isometry3::new(
                 nalgebra::Vector3::new(-1.0, 0.0, 0.4),
                 nalgebra::Vector3::new(0.0, std::f64::consts::FRAC_PI_2, 0.0),
@@ -307,7 +358,7 @@ fn cases() -> Vec<Case> {
             // shallow cut the end-piece series takes).
             name: "cylinder_plane_resting",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
-            j: ground.clone(),
+            j: ground(),
             pose_i: Isometry3::new(
                 nalgebra::Vector3::new(-1.0, 0.0, 0.5 - 5e-4),
                 nalgebra::Vector3::new(1e-4, std::f64::consts::FRAC_PI_2, 0.0),
@@ -315,11 +366,17 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: None,
         },
+    ]
+}
+
+/// Solids against the two-feet meshes (convex and dented) and a mesh box.
+fn mesh_cases() -> Vec<Case> {
+    vec![
         Case {
             name: "mesh_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            j: ground.clone(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
+            j: ground(),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -328,7 +385,7 @@ fn cases() -> Vec<Case> {
             name: "box_mesh_two_feet",
             i: Geometry::Cuboid(Cuboid::centered(1.5, 0.3, 0.4).unwrap()),
             j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.1, 1.2), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.1, 1.2), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -360,7 +417,7 @@ fn cases() -> Vec<Case> {
             name: "frustum_mesh_two_feet",
             i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
             j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.8), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.8), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -368,7 +425,7 @@ fn cases() -> Vec<Case> {
             name: "torus_mesh_two_feet",
             i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
             j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.1), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -376,7 +433,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_mesh_two_feet",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.6, 0.5, 0.4).unwrap()),
             j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.2), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.2), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -384,7 +441,7 @@ fn cases() -> Vec<Case> {
             name: "mesh_bounded_plane_two_feet",
             i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
             j: Geometry::Plane(Plane::bounded(-1.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -396,6 +453,12 @@ fn cases() -> Vec<Case> {
             pose_j: Isometry3::identity(),
             depth: Some(0.2),
         },
+    ]
+}
+
+/// Boxes against frusta and tori, and solids on bounded planes (at an edge and well inside).
+fn bounded_plane_cases() -> Vec<Case> {
+    vec![
         // The box's top face at z = 0.4 across an upright frustum, its other faces out of
         // reach: δ = 0.4 along the axis.
         Case {
@@ -410,7 +473,7 @@ fn cases() -> Vec<Case> {
             name: "box_frustum_tilted",
             i: cube(0.5),
             j: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.2, 0.7), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.9, 0.2, 0.7), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -418,7 +481,7 @@ fn cases() -> Vec<Case> {
             name: "box_torus",
             i: cube(0.4),
             j: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(1.0, 0.2, 0.5), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(1.0, 0.2, 0.5), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -427,7 +490,7 @@ fn cases() -> Vec<Case> {
             name: "box_torus_two_regions",
             i: Geometry::Cuboid(Cuboid::centered(0.3, 2.0, 1.0).unwrap()),
             j: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-0.1, 0.0, 0.2), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-0.1, 0.0, 0.2), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -435,7 +498,7 @@ fn cases() -> Vec<Case> {
             name: "frustum_bounded_plane",
             i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
             j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -443,7 +506,7 @@ fn cases() -> Vec<Case> {
             name: "cylinder_bounded_plane",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
             j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -451,7 +514,7 @@ fn cases() -> Vec<Case> {
             name: "torus_bounded_plane",
             i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
             j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -459,7 +522,7 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_bounded_plane",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Plane(Plane::bounded(-0.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -469,7 +532,7 @@ fn cases() -> Vec<Case> {
             name: "cylinder_bounded_plane_inside",
             i: Geometry::Cylinder(Cylinder::new(0.5, 2.0).unwrap()),
             j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, -0.1), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -477,7 +540,7 @@ fn cases() -> Vec<Case> {
             name: "torus_bounded_plane_inside",
             i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
             j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.5), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
@@ -485,10 +548,16 @@ fn cases() -> Vec<Case> {
             name: "ellipsoid_bounded_plane_inside",
             i: Geometry::Ellipsoid(Ellipsoid::new(1.0, 0.6, 0.4).unwrap()),
             j: Geometry::Plane(Plane::bounded(-50.0, 50.0, -50.0, 50.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt),
+            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.3), tilt()),
             pose_j: Isometry3::identity(),
             depth: None,
         },
+    ]
+}
+
+/// 2-D: a circle against a curve and against a circle.
+fn planar_cases() -> Vec<Case> {
+    vec![
         Case {
             name: "circle_curve",
             i: Geometry::Circle(Circle::new(0.3).unwrap()),
