@@ -238,6 +238,10 @@ impl Kernel {
     /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`),
     /// handing each contact to `emit`. `length` is the pair's length scale (for the 2-D
     /// in-plane tolerance).
+    ///
+    /// Each kernel goes to its family: two solids ([`Self::solid_solid`]), a solid and a
+    /// plane ([`Self::solid_plane`]), or two 2-D geometries ([`Self::planar`]), the last
+    /// after the in-plane frame is set up (or [`PairError::OutOfPlane`]).
     pub fn evaluate<E: FnMut(PairContact)>(
         &self,
         pose_a: &Isometry3,
@@ -248,86 +252,67 @@ impl Kernel {
     ) -> Result<(), PairError> {
         work.primitive_tests += 1;
         let found = match *self {
-            // The kernels that may find several regions emit each themselves.
-            Self::MeshPlane { ref mesh, side } => {
-                pairs::mesh_plane::contacts(mesh, pose_a, pose_b, side, work, emit);
-                None
+            Self::SphereSolid { .. }
+            | Self::SphereMesh { .. }
+            | Self::SphereSphere { .. }
+            | Self::SphereInCavity { .. }
+            | Self::EllipsoidEllipsoid { .. }
+            | Self::EllipsoidBox { .. }
+            | Self::EllipsoidCylinder { .. }
+            | Self::EllipsoidFrustum { .. }
+            | Self::EllipsoidTorus { .. }
+            | Self::EllipsoidMesh { .. }
+            | Self::CylinderSliced { .. }
+            | Self::RevolvedPair { .. }
+            | Self::RevolvedTorus { .. }
+            | Self::RevolvedMesh { .. }
+            | Self::BoxMesh { .. }
+            | Self::BoxBox { .. }
+            | Self::BoxRevolved { .. } => self.solid_solid(pose_a, pose_b, work, emit),
+            Self::SpherePlane { .. }
+            | Self::SphereBoundedPlane { .. }
+            | Self::EllipsoidPlane { .. }
+            | Self::EllipsoidBoundedPlane { .. }
+            | Self::CylinderPlane { .. }
+            | Self::RevolvedPlane { .. }
+            | Self::RevolvedBoundedPlane { .. }
+            | Self::MeshPlane { .. }
+            | Self::MeshBoundedPlane { .. }
+            | Self::BoxPlane { .. } => self.solid_plane(pose_a, pose_b, work, emit),
+            Self::PointLine { .. }
+            | Self::PointCircle { .. }
+            | Self::CircleCircle { .. }
+            | Self::CircleInHole { .. }
+            | Self::PointArc { .. }
+            | Self::CircleArc { .. }
+            | Self::PointCurve { .. }
+            | Self::CircleCurve { .. }
+            | Self::CircleLine { .. }
+            | Self::CircleBoundedLine { .. }
+            | Self::Overlap { .. }
+            | Self::OverlapLine { .. } => {
+                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
+                self.planar(&frame, pose_a, work, emit)
             }
-            Self::BoxMesh {
-                ref cuboid,
-                ref mesh,
-            } => {
-                pairs::box_mesh::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
-                None
-            }
-            Self::RevolvedMesh {
-                ref solid,
-                ref mesh,
-            } => {
-                pairs::revolved_mesh::contacts(solid, pose_a, mesh, pose_b, work, emit);
-                None
-            }
-            Self::EllipsoidMesh {
-                ref semi_axes,
-                ref mesh,
-            } => {
-                pairs::ellipsoid_mesh::contacts(semi_axes, pose_a, mesh, pose_b, work, emit);
-                None
-            }
-            Self::EllipsoidTorus {
-                ref semi_axes,
-                ref torus,
-            } => {
-                pairs::ellipsoid_torus::contacts(semi_axes, pose_a, torus, pose_b, work, emit);
-                None
-            }
-            Self::RevolvedTorus {
-                ref solid,
-                ref torus,
-            } => {
-                pairs::revolved_torus::contacts(solid, pose_a, torus, pose_b, work, emit);
-                None
-            }
-            Self::MeshBoundedPlane {
-                ref mesh,
-                ref plane,
-                side,
-            } => {
-                pairs::mesh_bounded_plane::contacts(mesh, pose_a, plane, side, pose_b, work, emit);
-                None
-            }
-            Self::BoxRevolved {
-                ref cuboid,
-                ref solid,
-            } => {
-                pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
-                None
-            }
-            Self::RevolvedBoundedPlane {
-                ref solid,
-                ref plane,
-                side,
-            } => {
-                pairs::revolved_bounded_plane::contacts(
-                    solid, pose_a, plane, side, pose_b, work, emit,
-                );
-                None
-            }
-            Self::EllipsoidBoundedPlane {
-                semi_axes,
-                ref plane,
-                side,
-            } => pairs::ellipsoid_bounded_plane::contact(
-                &semi_axes, pose_a, plane, side, pose_b, work,
-            ),
-            Self::SpherePlane { radius, side } => {
-                pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
-            }
-            Self::SphereBoundedPlane {
-                radius,
-                ref plane,
-                side,
-            } => pairs::sphere_bounded_plane::contact(radius, pose_a, plane, side, pose_b, work),
+        };
+        if let Some(c) = found {
+            emit(c);
+        }
+        Ok(())
+    }
+
+    /// The kernels of two solids (spheres, ellipsoids, boxes, cylinders, frustums, tori,
+    /// meshes): the single contact, or `None` when there is none or when the kernel handed
+    /// each of its contacts (one per region) to `emit` itself. [`Self::evaluate`] sends no
+    /// other kernel here.
+    fn solid_solid<E: FnMut(PairContact)>(
+        &self,
+        pose_a: &Isometry3,
+        pose_b: &Isometry3,
+        work: &mut WorkCounters,
+        emit: &mut E,
+    ) -> Option<PairContact> {
+        match *self {
             Self::SphereSolid { radius, ref solid } => {
                 pairs::sphere_solid::contacts(radius, pose_a, solid, pose_b, work, emit);
                 None
@@ -340,9 +325,6 @@ impl Kernel {
             }
             Self::SphereInCavity { radius_a, radius_b } => {
                 pairs::sphere_sphere::contact_in_cavity(radius_a, pose_a, radius_b, pose_b)
-            }
-            Self::EllipsoidPlane { semi_axes, side } => {
-                pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
             }
             Self::EllipsoidEllipsoid { semi_a, semi_b } => {
                 pairs::ellipsoid_ellipsoid::contact(&semi_a, pose_a, &semi_b, pose_b, work)
@@ -359,8 +341,18 @@ impl Kernel {
                 semi_axes,
                 ref frustum,
             } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
-            Self::CylinderPlane { ref cylinder, side } => {
-                pairs::cylinder_plane::emit_contact(cylinder, pose_a, pose_b, side, work, emit);
+            Self::EllipsoidTorus {
+                ref semi_axes,
+                ref torus,
+            } => {
+                pairs::ellipsoid_torus::contacts(semi_axes, pose_a, torus, pose_b, work, emit);
+                None
+            }
+            Self::EllipsoidMesh {
+                ref semi_axes,
+                ref mesh,
+            } => {
+                pairs::ellipsoid_mesh::contacts(semi_axes, pose_a, mesh, pose_b, work, emit);
                 None
             }
             Self::CylinderSliced {
@@ -370,75 +362,154 @@ impl Kernel {
             Self::RevolvedPair { ref a, ref b } => {
                 pairs::revolved_pair::contact(a, pose_a, b, pose_b, work)
             }
+            Self::RevolvedTorus {
+                ref solid,
+                ref torus,
+            } => {
+                pairs::revolved_torus::contacts(solid, pose_a, torus, pose_b, work, emit);
+                None
+            }
+            Self::RevolvedMesh {
+                ref solid,
+                ref mesh,
+            } => {
+                pairs::revolved_mesh::contacts(solid, pose_a, mesh, pose_b, work, emit);
+                None
+            }
+            Self::BoxMesh {
+                ref cuboid,
+                ref mesh,
+            } => {
+                pairs::box_mesh::contacts(cuboid, pose_a, mesh, pose_b, work, emit);
+                None
+            }
+            Self::BoxBox { ref a, ref b } => pairs::box_box::contact(a, pose_a, b, pose_b, work),
+            Self::BoxRevolved {
+                ref cuboid,
+                ref solid,
+            } => {
+                pairs::box_revolved::contacts(cuboid, pose_a, solid, pose_b, work, emit);
+                None
+            }
+            _ => unreachable!("`Kernel::evaluate` sends only this family here"),
+        }
+    }
+
+    /// The kernels of a solid against a plane, unbounded or bounded: as
+    /// [`Self::solid_solid`].
+    fn solid_plane<E: FnMut(PairContact)>(
+        &self,
+        pose_a: &Isometry3,
+        pose_b: &Isometry3,
+        work: &mut WorkCounters,
+        emit: &mut E,
+    ) -> Option<PairContact> {
+        match *self {
+            Self::SpherePlane { radius, side } => {
+                pairs::sphere_plane::contact(radius, pose_a, pose_b, side)
+            }
+            Self::SphereBoundedPlane {
+                radius,
+                ref plane,
+                side,
+            } => pairs::sphere_bounded_plane::contact(radius, pose_a, plane, side, pose_b, work),
+            Self::EllipsoidPlane { semi_axes, side } => {
+                pairs::ellipsoid_plane::contact(&semi_axes, pose_a, pose_b, side)
+            }
+            Self::EllipsoidBoundedPlane {
+                semi_axes,
+                ref plane,
+                side,
+            } => pairs::ellipsoid_bounded_plane::contact(
+                &semi_axes, pose_a, plane, side, pose_b, work,
+            ),
+            Self::CylinderPlane { ref cylinder, side } => {
+                pairs::cylinder_plane::emit_contact(cylinder, pose_a, pose_b, side, work, emit);
+                None
+            }
             Self::RevolvedPlane { ref solid, side } => {
                 pairs::revolved_plane::contact(solid, pose_a, pose_b, side, work)
+            }
+            Self::RevolvedBoundedPlane {
+                ref solid,
+                ref plane,
+                side,
+            } => {
+                pairs::revolved_bounded_plane::contacts(
+                    solid, pose_a, plane, side, pose_b, work, emit,
+                );
+                None
+            }
+            Self::MeshPlane { ref mesh, side } => {
+                pairs::mesh_plane::contacts(mesh, pose_a, pose_b, side, work, emit);
+                None
+            }
+            Self::MeshBoundedPlane {
+                ref mesh,
+                ref plane,
+                side,
+            } => {
+                pairs::mesh_bounded_plane::contacts(mesh, pose_a, plane, side, pose_b, work, emit);
+                None
             }
             Self::BoxPlane {
                 ref cuboid,
                 ref plane,
                 side,
             } => pairs::box_plane::contact(cuboid, pose_a, plane, side, pose_b),
-            Self::BoxBox { ref a, ref b } => pairs::box_box::contact(a, pose_a, b, pose_b, work),
-            Self::PointLine { ref line, side } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::point_line::contact(&frame, line, side)
-            }
+            _ => unreachable!("`Kernel::evaluate` sends only this family here"),
+        }
+    }
+
+    /// The kernels of two 2-D geometries in the in-plane `frame` (points, circles, arcs,
+    /// curves, lines, boundaries): as [`Self::solid_solid`].
+    fn planar<E: FnMut(PairContact)>(
+        &self,
+        frame: &planar::InPlane,
+        pose_a: &Isometry3,
+        work: &mut WorkCounters,
+        emit: &mut E,
+    ) -> Option<PairContact> {
+        match *self {
+            Self::PointLine { ref line, side } => planar::point_line::contact(frame, line, side),
             Self::PointCircle { radius, hole } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::circles::point_circle(&frame, radius, hole)
+                planar::circles::point_circle(frame, radius, hole)
             }
             Self::CircleCircle { radius_a, radius_b } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::circles::circle_circle(&frame, radius_a, radius_b)
+                planar::circles::circle_circle(frame, radius_a, radius_b)
             }
             Self::CircleInHole { radius_a, radius_b } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::circles::circle_in_hole(&frame, radius_a, radius_b)
+                planar::circles::circle_in_hole(frame, radius_a, radius_b)
             }
             Self::PointArc {
                 radius,
                 range,
                 side,
-            } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::arc::point_arc(&frame, radius, range, side)
-            }
+            } => planar::arc::point_arc(frame, radius, range, side),
             Self::CircleArc {
                 radius_a,
                 radius,
                 range,
                 side,
-            } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::arc::circle_arc(&frame, radius_a, radius, range, side)
-            }
+            } => planar::arc::circle_arc(frame, radius_a, radius, range, side),
             Self::PointCurve { ref curve, side } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::point_curve::point_curve(&frame, curve, side, work)
+                planar::point_curve::point_curve(frame, curve, side, work)
             }
             Self::CircleCurve {
                 radius,
                 ref curve,
                 side,
-            } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::point_curve::circle_curve(&frame, radius, curve, side, work)
-            }
+            } => planar::point_curve::circle_curve(frame, radius, curve, side, work),
             Self::CircleLine { radius, side } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::point_line::circle_line(&frame, radius, side)
+                planar::point_line::circle_line(frame, radius, side)
             }
             Self::CircleBoundedLine {
                 radius,
                 x_range,
                 side,
-            } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::circle_bounded_line::contact(&frame, radius, x_range, side)
-            }
+            } => planar::circle_bounded_line::contact(frame, radius, x_range, side),
             Self::Overlap { ref a, ref b } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::overlap::chain_chain(&frame, pose_a, a, b, work, emit);
+                planar::overlap::chain_chain(frame, pose_a, a, b, work, emit);
                 None
             }
             Self::OverlapLine {
@@ -446,14 +517,10 @@ impl Kernel {
                 x_range,
                 side,
             } => {
-                let frame = planar::InPlane::new(pose_a, pose_b, length)?;
-                planar::overlap::chain_line(&frame, pose_a, a, x_range, side, work, emit);
+                planar::overlap::chain_line(frame, pose_a, a, x_range, side, work, emit);
                 None
             }
-        };
-        if let Some(c) = found {
-            emit(c);
+            _ => unreachable!("`Kernel::evaluate` sends only this family here"),
         }
-        Ok(())
     }
 }
