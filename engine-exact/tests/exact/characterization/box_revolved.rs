@@ -210,12 +210,25 @@ fn tilt(rng: &mut Rng) -> Option<UnitQuaternion> {
     ((q * Vector3::z()).z.abs() <= 0.2f64.cos()).then_some(q)
 }
 
-/// The rows, in table order.
-pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
-    let iterative = |row: Row| Row {
+/// `row` held to the iterative bound.
+fn iterative(row: Row) -> Row {
+    Row {
         bound: ITERATIVE_BOUND,
         ..row
-    };
+    }
+}
+
+/// The rows, in table order.
+pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
+    let mut rows = box_rows(rng);
+    rows.extend(frustum_plane_rows(rng));
+    rows.extend(torus_ellipsoid_plane_rows(rng));
+    rows.extend(mesh_rows(rng));
+    rows
+}
+
+/// The rows of box–frustum, box–torus.
+fn box_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         iterative(run(
             rng,
@@ -257,6 +270,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 tilted(rng, solid, q, Ground::Box)
             },
         )),
+    ]
+}
+
+/// The rows of frustum–bounded plane.
+fn frustum_plane_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         iterative(run(
             rng,
             SAMPLES,
@@ -301,6 +320,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 })
             },
         )),
+    ]
+}
+
+/// The rows of torus–bounded plane, ellipsoid–bounded plane.
+fn torus_ellipsoid_plane_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         iterative(run(
             rng,
             SAMPLES,
@@ -362,6 +387,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 })
             },
         )),
+    ]
+}
+
+/// The rows of frustum–mesh, cylinder–mesh, torus–mesh, ellipsoid–mesh.
+fn mesh_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         iterative(run(
             rng,
             SAMPLES,

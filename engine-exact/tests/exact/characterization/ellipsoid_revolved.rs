@@ -60,6 +60,13 @@ fn iterative(row: Row) -> Row {
 
 /// The rows, in table order.
 pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
+    let mut rows = frustum_rows(rng);
+    rows.extend(cross_check_rows(rng));
+    rows
+}
+
+/// The rows of ellipsoid–frustum.
+fn frustum_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         iterative(run(
             rng,
@@ -112,6 +119,13 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "sliced quadrature",
             coaxial,
         )),
+    ]
+}
+
+/// The rows of a sphere as an ellipsoid against the closed form, the ellipsoid across a
+/// frustum's rim, and the frustum of equal radii against the ellipsoid–cylinder pair.
+fn cross_check_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         iterative(run(
             rng,
             CLOSED_SAMPLES,

@@ -10,6 +10,16 @@ use std::sync::Arc as Shared;
 
 /// The rows, in table order.
 pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
+    let mut rows = circle_line_rows(rng);
+    rows.extend(point_in_circle_rows(rng));
+    rows.extend(polyline_rows(rng));
+    rows.extend(spline_rows(rng));
+    rows.extend(arc_rows(rng));
+    rows
+}
+
+/// The rows of circle–circle (2-D), circle–line (2-D), point–line (2-D).
+fn circle_line_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         run(
             rng,
@@ -82,6 +92,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 })
             },
         ),
+    ]
+}
+
+/// The rows of point–circle (2-D), circle–hole (2-D).
+fn point_in_circle_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         run(
             rng,
             SAMPLES,
@@ -135,58 +151,68 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 })
             },
         ),
-        run(
-            rng,
-            CURVE_SAMPLES,
-            "point–curve (2-D)",
-            "open polyline (ORDER 2), 6 random vertices, point inside a segment's material side",
-            "closest point (Newton); oracle: segment projection",
-            |rng| {
-                let vertices: Vec<Point2> = (0..6)
-                    .map(|k| Point2::new(k as f64 + rng.uniform(-0.3, 0.3), rng.uniform(-0.5, 0.5)))
-                    .collect();
-                let curve = Curve::new(&vertices, 2, false, CurvePoints::Control).unwrap();
-                let p = Point2::new(rng.uniform(0.5, 4.5), rng.uniform(-0.8, 0.8));
-                // Oracle: the nearest segment by projection; skip vertices (normal undefined).
-                let mut best = (
-                    f64::INFINITY,
-                    Point2::origin(),
-                    nalgebra::Vector2::zeros(),
-                    0.0,
-                );
-                for w in vertices.windows(2) {
-                    let d = w[1] - w[0];
-                    let t = ((p - w[0]).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
-                    let q = w[0] + t * d;
-                    if (p - q).norm() < best.0 {
-                        best = (
-                            (p - q).norm(),
-                            q,
-                            nalgebra::Vector2::new(d.y, -d.x).normalize(),
-                            t,
-                        );
-                    }
+    ]
+}
+
+/// The rows of point–curve (2-D).
+fn polyline_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![run(
+        rng,
+        CURVE_SAMPLES,
+        "point–curve (2-D)",
+        "open polyline (ORDER 2), 6 random vertices, point inside a segment's material side",
+        "closest point (Newton); oracle: segment projection",
+        |rng| {
+            let vertices: Vec<Point2> = (0..6)
+                .map(|k| Point2::new(k as f64 + rng.uniform(-0.3, 0.3), rng.uniform(-0.5, 0.5)))
+                .collect();
+            let curve = Curve::new(&vertices, 2, false, CurvePoints::Control).unwrap();
+            let p = Point2::new(rng.uniform(0.5, 4.5), rng.uniform(-0.8, 0.8));
+            // Oracle: the nearest segment by projection; skip vertices (normal undefined).
+            let mut best = (
+                f64::INFINITY,
+                Point2::origin(),
+                nalgebra::Vector2::zeros(),
+                0.0,
+            );
+            for w in vertices.windows(2) {
+                let d = w[1] - w[0];
+                let t = ((p - w[0]).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+                let q = w[0] + t * d;
+                if (p - q).norm() < best.0 {
+                    best = (
+                        (p - q).norm(),
+                        q,
+                        nalgebra::Vector2::new(d.y, -d.x).normalize(),
+                        t,
+                    );
                 }
-                let (_, q, n, t) = best;
-                let s = (p - q).dot(&n);
-                if s >= -1e-3 || !(1e-6..=1.0 - 1e-6).contains(&t) {
-                    return None;
-                }
-                Some(Case {
-                    i: instance(Geometry::Point),
-                    j: instance(Geometry::Curve(Shared::new(curve))),
-                    pose_i: at(p.x, p.y, 0.0),
-                    pose_j: Isometry3::identity(),
-                    expected: Expected {
-                        point_i: Point3::new(p.x, p.y, 0.0),
-                        point_j: Point3::new(q.x, q.y, 0.0),
-                        normal: Vector3::new(n.x, n.y, 0.0),
-                        depth: -s,
-                    },
-                    length: 6.0,
-                })
-            },
-        ),
+            }
+            let (_, q, n, t) = best;
+            let s = (p - q).dot(&n);
+            if s >= -1e-3 || !(1e-6..=1.0 - 1e-6).contains(&t) {
+                return None;
+            }
+            Some(Case {
+                i: instance(Geometry::Point),
+                j: instance(Geometry::Curve(Shared::new(curve))),
+                pose_i: at(p.x, p.y, 0.0),
+                pose_j: Isometry3::identity(),
+                expected: Expected {
+                    point_i: Point3::new(p.x, p.y, 0.0),
+                    point_j: Point3::new(q.x, q.y, 0.0),
+                    normal: Vector3::new(n.x, n.y, 0.0),
+                    depth: -s,
+                },
+                length: 6.0,
+            })
+        },
+    )]
+}
+
+/// The rows of point–curve (2-D), circle–curve (2-D).
+fn spline_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         Row {
             bound: ITERATIVE_BOUND,
             ..run(
@@ -275,6 +301,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 },
             )
         },
+    ]
+}
+
+/// The rows of point–arc (2-D), circle–arc (2-D).
+fn arc_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         run(
             rng,
             SAMPLES,

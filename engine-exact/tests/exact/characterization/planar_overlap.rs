@@ -50,6 +50,13 @@ pub(crate) fn cubic_blob(scale: f64) -> Curve {
 
 /// The rows, in table order.
 pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
+    let mut rows = same_kind_rows(rng);
+    rows.extend(mixed_rows(rng));
+    rows
+}
+
+/// The rows of curve–curve (2-D, order 2), arc–arc (2-D).
+fn same_kind_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         Row {
             bound: ITERATIVE_BOUND,
@@ -112,6 +119,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 },
             )
         },
+    ]
+}
+
+/// The rows of curve–line (2-D, order 2), arc–line (2-D), arc–curve (2-D).
+fn mixed_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         Row {
             bound: ITERATIVE_BOUND,
             ..run(

@@ -87,12 +87,23 @@ pub(super) fn size(solid: &Revolved) -> f64 {
     }
 }
 
-/// The rows, in table order.
-pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
-    let iterative = |row: Row| Row {
+/// `row` held to the iterative bound.
+fn iterative(row: Row) -> Row {
+    Row {
         bound: ITERATIVE_BOUND,
         ..row
-    };
+    }
+}
+
+/// The rows, in table order.
+pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
+    let mut rows = frustum_plane_rows(rng);
+    rows.extend(torus_plane_rows(rng));
+    rows
+}
+
+/// The rows of frustum–plane.
+fn frustum_plane_rows(rng: &mut Rng) -> Vec<Row> {
     vec![
         run(
             rng,
@@ -150,6 +161,12 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
                 tilted(rng, solid, q, size(&solid))
             },
         )),
+    ]
+}
+
+/// The rows of torus–plane.
+fn torus_plane_rows(rng: &mut Rng) -> Vec<Row> {
+    vec![
         run(
             rng,
             SAMPLES,
