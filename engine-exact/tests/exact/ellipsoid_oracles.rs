@@ -332,102 +332,124 @@ fn adaptive(f: &mut dyn FnMut(f64) -> Sums, a: f64, b: f64, tol: f64, depth: u32
     std::array::from_fn(|c| left[c] + right[c])
 }
 
+/// The ends of the parts of `patch`'s line at `s` (`v ∈ [v0, v1]`) where `margin > 0`,
+/// sorted: `v0`, the boundary crossings (sign changes between 64 samples, bisected, and the
+/// pairs of crossings near a tangency, by golden section), `v1`.
+fn boundary_ends(
+    patch: &dyn Patch,
+    margin: &dyn Fn(&Vector3) -> f64,
+    s: f64,
+    (v0, v1): (f64, f64),
+) -> Vec<f64> {
+    const SAMPLES: usize = 64;
+    let inside = |v: f64| margin(&patch.point(s, v).0);
+    let bisect = |mut lo: f64, mut hi: f64| {
+        let lo_inside = inside(lo) > 0.0;
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if (inside(mid) > 0.0) == lo_inside {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let step = (v1 - v0) / SAMPLES as f64;
+    let at = |j: usize| v0 + j as f64 * step;
+    let values: Vec<f64> = (0..=SAMPLES).map(|j| inside(at(j))).collect();
+    let mut ends = vec![v0];
+    for j in 1..=SAMPLES {
+        if (values[j] > 0.0) != (values[j - 1] > 0.0) {
+            ends.push(bisect(at(j - 1), at(j)));
+        }
+    }
+    // A pair of crossings between two samples (near a tangency): a sampled local extremum
+    // on the wrong side of zero, refined by golden section.
+    for j in 1..SAMPLES {
+        let (l, m, r) = (values[j - 1], values[j], values[j + 1]);
+        let peak = m >= l && m >= r && l <= 0.0 && m <= 0.0 && r <= 0.0;
+        let dip = m <= l && m <= r && l > 0.0 && m > 0.0 && r > 0.0;
+        // Only where the extremum can reach zero within the interval (its rise over the
+        // neighbours bounds the curvature's).
+        let reach = 2.0 * ((m - l).abs() + (m - r).abs());
+        if !(peak || dip) || m.abs() > reach {
+            continue;
+        }
+        let sign = if peak { 1.0 } else { -1.0 };
+        let (mut lo, mut hi) = (at(j - 1), at(j + 1));
+        let ratio = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let x1 = hi - ratio * (hi - lo);
+            let x2 = lo + ratio * (hi - lo);
+            if sign * inside(x1) > sign * inside(x2) {
+                hi = x2;
+            } else {
+                lo = x1;
+            }
+        }
+        let best = 0.5 * (lo + hi);
+        if (inside(best) > 0.0) != (m > 0.0) {
+            ends.push(bisect(at(j - 1), best));
+            ends.push(bisect(best, at(j + 1)));
+        }
+    }
+    ends.sort_by(f64::total_cmp);
+    ends.push(v1);
+    ends
+}
+
+/// The inner integral of [`patch_sums`] at `s` and the number of boundary crossings found
+/// there.
+fn inner_sums(
+    patch: &dyn Patch,
+    margin: &dyn Fn(&Vector3) -> f64,
+    own: bool,
+    s: f64,
+) -> (Sums, usize) {
+    let (v0, v1, _periodic) = patch.v_range(s);
+    let mut total = [0.0; 7];
+    if v1 <= v0 {
+        return (total, 0);
+    }
+    let inside = |v: f64| margin(&patch.point(s, v).0);
+    let ends = boundary_ends(patch, margin, s, (v0, v1));
+    let crossings = ends.len();
+    for w in ends.windows(2) {
+        if w[1] <= w[0] || inside(0.5 * (w[0] + w[1])) <= 0.0 {
+            continue;
+        }
+        // K15 on pieces of at most π/2 (the integrands are trigonometric polynomials of
+        // degree ≤ 3 on the ellipsoid, polynomials on flat pieces: exact to round-off).
+        let pieces = ((w[1] - w[0]) / (0.5 * PI)).ceil().max(1.0) as usize;
+        let h = (w[1] - w[0]) / pieces as f64;
+        for p in 0..pieces {
+            let mut g = |v: f64| -> Sums {
+                let (x, n) = patch.point(s, v);
+                let own_n = if own { n } else { Vector3::zeros() };
+                [
+                    x.dot(&n) / 3.0,
+                    0.5 * x.x * x.x * n.x,
+                    0.5 * x.y * x.y * n.y,
+                    0.5 * x.z * x.z * n.z,
+                    own_n.x,
+                    own_n.y,
+                    own_n.z,
+                ]
+            };
+            let a = w[0] + p as f64 * h;
+            let (k, _) = kronrod(&mut g, a, a + h);
+            for c in 0..7 {
+                total[c] += k[c];
+            }
+        }
+    }
+    (total, crossings)
+}
+
 /// The integrals (V, ½x_i² n_i, n if `own`) over the part of `patch` where `margin > 0`.
 fn patch_sums(patch: &dyn Patch, margin: &dyn Fn(&Vector3) -> f64, own: bool, tol: f64) -> Sums {
-    const SAMPLES: usize = 64;
-    // The inner integral at `s` and the number of boundary crossings found there.
-    let inner = |s: f64| -> (Sums, usize) {
-        let (v0, v1, _periodic) = patch.v_range(s);
-        let mut total = [0.0; 7];
-        if v1 <= v0 {
-            return (total, 0);
-        }
-        let inside = |v: f64| margin(&patch.point(s, v).0);
-        let bisect = |mut lo: f64, mut hi: f64| {
-            let lo_inside = inside(lo) > 0.0;
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if (inside(mid) > 0.0) == lo_inside {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            0.5 * (lo + hi)
-        };
-        let step = (v1 - v0) / SAMPLES as f64;
-        let at = |j: usize| v0 + j as f64 * step;
-        let values: Vec<f64> = (0..=SAMPLES).map(|j| inside(at(j))).collect();
-        let mut ends = vec![v0];
-        for j in 1..=SAMPLES {
-            if (values[j] > 0.0) != (values[j - 1] > 0.0) {
-                ends.push(bisect(at(j - 1), at(j)));
-            }
-        }
-        // A pair of crossings between two samples (near a tangency): a sampled local extremum
-        // on the wrong side of zero, refined by golden section.
-        for j in 1..SAMPLES {
-            let (l, m, r) = (values[j - 1], values[j], values[j + 1]);
-            let peak = m >= l && m >= r && l <= 0.0 && m <= 0.0 && r <= 0.0;
-            let dip = m <= l && m <= r && l > 0.0 && m > 0.0 && r > 0.0;
-            // Only where the extremum can reach zero within the interval (its rise over the
-            // neighbours bounds the curvature's).
-            let reach = 2.0 * ((m - l).abs() + (m - r).abs());
-            if !(peak || dip) || m.abs() > reach {
-                continue;
-            }
-            let sign = if peak { 1.0 } else { -1.0 };
-            let (mut lo, mut hi) = (at(j - 1), at(j + 1));
-            let ratio = 0.5 * (5f64.sqrt() - 1.0);
-            for _ in 0..80 {
-                let x1 = hi - ratio * (hi - lo);
-                let x2 = lo + ratio * (hi - lo);
-                if sign * inside(x1) > sign * inside(x2) {
-                    hi = x2;
-                } else {
-                    lo = x1;
-                }
-            }
-            let best = 0.5 * (lo + hi);
-            if (inside(best) > 0.0) != (m > 0.0) {
-                ends.push(bisect(at(j - 1), best));
-                ends.push(bisect(best, at(j + 1)));
-            }
-        }
-        ends.sort_by(f64::total_cmp);
-        ends.push(v1);
-        let crossings = ends.len();
-        for w in ends.windows(2) {
-            if w[1] <= w[0] || inside(0.5 * (w[0] + w[1])) <= 0.0 {
-                continue;
-            }
-            // K15 on pieces of at most π/2 (the integrands are trigonometric polynomials of
-            // degree ≤ 3 on the ellipsoid, polynomials on flat pieces: exact to round-off).
-            let pieces = ((w[1] - w[0]) / (0.5 * PI)).ceil().max(1.0) as usize;
-            let h = (w[1] - w[0]) / pieces as f64;
-            for p in 0..pieces {
-                let mut g = |v: f64| -> Sums {
-                    let (x, n) = patch.point(s, v);
-                    let own_n = if own { n } else { Vector3::zeros() };
-                    [
-                        x.dot(&n) / 3.0,
-                        0.5 * x.x * x.x * n.x,
-                        0.5 * x.y * x.y * n.y,
-                        0.5 * x.z * x.z * n.z,
-                        own_n.x,
-                        own_n.y,
-                        own_n.z,
-                    ]
-                };
-                let a = w[0] + p as f64 * h;
-                let (k, _) = kronrod(&mut g, a, a + h);
-                for c in 0..7 {
-                    total[c] += k[c];
-                }
-            }
-        }
-        (total, crossings)
-    };
+    let inner = |s: f64| inner_sums(patch, margin, own, s);
     // Split the outer range where the number of crossings changes (the outer integrand's
     // kinks), found on 64 samples and bisected.
     let (s0, s1) = patch.s_range();

@@ -200,6 +200,63 @@ pub fn coaxial_torus(a: f64, c: f64, zc: f64, big: f64, small: f64) -> Option<(M
     ))
 }
 
+/// The arcs of `ψ ∈ [0, 2π)` (a meridian circle, periodic) where `f(ψ) > 0`, as `(a, b)`
+/// with `b` past `2π` for the arc across `ψ = 0`: cut at `f`'s sign changes and hidden pairs
+/// of crossings among 720 samples.
+fn arcs_inside(f: &dyn Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    let mut cuts = sign_changes(f, 0.0, TAU, 720);
+    cuts.extend(hidden_pairs(f, 0.0, TAU, 720));
+    cuts.sort_by(f64::total_cmp);
+    if cuts.is_empty() {
+        return if f(0.0) > 0.0 {
+            vec![(0.0, TAU)]
+        } else {
+            vec![]
+        };
+    }
+    let mut out = Vec::new();
+    for k in 0..cuts.len() {
+        let (a, b) = (
+            cuts[k],
+            if k + 1 < cuts.len() {
+                cuts[k + 1]
+            } else {
+                cuts[0] + TAU
+            },
+        );
+        if f(0.5 * (a + b)) > 0.0 {
+            out.push((a, b));
+        }
+    }
+    out
+}
+
+/// The azimuths in `[start, start + span]` where `count` changes, found between `samples`
+/// equal steps and bisected.
+fn count_changes(count: &dyn Fn(f64) -> usize, start: f64, span: f64, samples: usize) -> Vec<f64> {
+    let mut cuts = Vec::new();
+    for k in 0..samples {
+        let (p0, p1) = (
+            start + span * k as f64 / samples as f64,
+            start + span * (k + 1) as f64 / samples as f64,
+        );
+        let c0 = count(p0);
+        if c0 != count(p1) {
+            let (mut lo, mut hi) = (p0, p1);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if count(mid) == c0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            cuts.push(0.5 * (lo + hi));
+        }
+    }
+    cuts
+}
+
 /// `(∫x·n dA, ∫x (x·n) dA, ∫n dA)` over the torus' surface inside the ellipsoid
 /// `|L⁻¹(x − c)| < 1` (at azimuths within a quarter turn of `half` when given), on `n` Gauss
 /// nodes per `φ` piece.
@@ -217,34 +274,7 @@ pub fn torus_patch(
         Vector3::new(rc * phi.cos(), rc * phi.sin(), small * psi.sin())
     };
     let inside = |psi: f64, phi: f64| 1.0 - (inverse * (point(psi, phi) - c)).norm_squared();
-    let arcs = |phi: f64| -> Vec<(f64, f64)> {
-        let f = |psi: f64| inside(psi, phi);
-        let mut cuts = sign_changes(&f, 0.0, TAU, 720);
-        cuts.extend(hidden_pairs(&f, 0.0, TAU, 720));
-        cuts.sort_by(f64::total_cmp);
-        if cuts.is_empty() {
-            return if f(0.0) > 0.0 {
-                vec![(0.0, TAU)]
-            } else {
-                vec![]
-            };
-        }
-        let mut out = Vec::new();
-        for k in 0..cuts.len() {
-            let (a, b) = (
-                cuts[k],
-                if k + 1 < cuts.len() {
-                    cuts[k + 1]
-                } else {
-                    cuts[0] + TAU
-                },
-            );
-            if f(0.5 * (a + b)) > 0.0 {
-                out.push((a, b));
-            }
-        }
-        out
-    };
+    let arcs = |phi: f64| arcs_inside(&|psi: f64| inside(psi, phi));
     let rule = gauss(40);
     // The φ-integrand: the meridian circle's arcs inside, by Gauss–Legendre in ψ.
     let meridian = |phi: f64| {
@@ -269,26 +299,7 @@ pub fn torus_patch(
         Some(mid) => (mid - FRAC_PI_2, PI, 180),
         None => (0.0, TAU, 360),
     };
-    let mut cuts = Vec::new();
-    for k in 0..samples {
-        let (p0, p1) = (
-            start + span * k as f64 / samples as f64,
-            start + span * (k + 1) as f64 / samples as f64,
-        );
-        let c0 = count(p0);
-        if c0 != count(p1) {
-            let (mut lo, mut hi) = (p0, p1);
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if count(mid) == c0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            cuts.push(0.5 * (lo + hi));
-        }
-    }
+    let cuts = count_changes(&count, start, span, samples);
     let (mut xn, mut xxn, mut s) = (0.0, Vector3::zeros(), Vector3::zeros());
     if cuts.is_empty() && half.is_none() {
         let m = 8 * n;

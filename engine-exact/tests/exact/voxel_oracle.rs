@@ -137,25 +137,7 @@ impl Voxels {
             .iter()
             .map(|&c| overlap(&self.cell_box(c)))
             .collect();
-        // Regions: overlapping face neighbours.
-        let mut region: Vec<usize> = (0..n).collect();
-        fn root(region: &mut [usize], mut a: usize) -> usize {
-            while region[a] != a {
-                a = region[a];
-            }
-            a
-        }
-        for a in 0..n {
-            for b2 in 0..n {
-                let d: i32 = (0..3)
-                    .map(|k| (self.cells[a][k] - self.cells[b2][k]).abs())
-                    .sum();
-                if d == 1 && parts[a].is_some() && parts[b2].is_some() {
-                    let (ra, rb) = (root(&mut region, a), root(&mut region, b2));
-                    region[ra.max(rb)] = ra.min(rb);
-                }
-            }
-        }
+        let mut region = self.regions(&parts);
         let faces = self.faces();
         let mut out = Vec::new();
         for r in 0..n {
@@ -203,48 +185,7 @@ impl Voxels {
                 }
             }
             let point_i = centroid - to_box * normal;
-            // The first cell face the line meets along +n.
-            let mut to_mesh = f64::INFINITY;
-            for f in &faces {
-                if normal[f.axis] == 0.0 {
-                    continue;
-                }
-                let (x, rect) = self.face_rect(f);
-                let t = (x - centroid[f.axis]) / normal[f.axis];
-                if t < 0.0 || t >= to_mesh {
-                    continue;
-                }
-                let hit = centroid + t * normal;
-                let (u, v) = ((f.axis + 1) % 3, (f.axis + 2) % 3);
-                if (rect.lo[u]..=rect.hi[u]).contains(&hit[u])
-                    && (rect.lo[v]..=rect.hi[v]).contains(&hit[v])
-                {
-                    to_mesh = t;
-                }
-            }
-            // A centroid outside the cells (an L-shaped region) whose line misses them: the
-            // closest point of their surface.
-            let point_j = if to_mesh.is_finite() {
-                centroid + to_mesh * normal
-            } else {
-                let mut best = (f64::INFINITY, centroid);
-                for f in &faces {
-                    let (x, rect) = self.face_rect(f);
-                    let mut q = centroid;
-                    for k in 0..3 {
-                        q[k] = if k == f.axis {
-                            x
-                        } else {
-                            q[k].clamp(rect.lo[k], rect.hi[k])
-                        };
-                    }
-                    let d = (q - centroid).norm();
-                    if d < best.0 {
-                        best = (d, q);
-                    }
-                }
-                best.1
-            };
+            let point_j = self.surface_point_along(&faces, &centroid, &normal);
             out.push(Some(Expected {
                 point_i,
                 point_j,
@@ -254,4 +195,79 @@ impl Voxels {
         }
         out
     }
+
+    /// The first cell face the line from `centroid` along `normal` meets (`+n`), or, for a
+    /// centroid outside the cells (an L-shaped region) whose line misses them, the closest
+    /// point of their surface.
+    fn surface_point_along(&self, faces: &[Face], centroid: &Point3, normal: &Vector3) -> Point3 {
+        // The first cell face the line meets along +n.
+        let mut to_mesh = f64::INFINITY;
+        for f in faces {
+            if normal[f.axis] == 0.0 {
+                continue;
+            }
+            let (x, rect) = self.face_rect(f);
+            let t = (x - centroid[f.axis]) / normal[f.axis];
+            if t < 0.0 || t >= to_mesh {
+                continue;
+            }
+            let hit = centroid + t * *normal;
+            let (u, v) = ((f.axis + 1) % 3, (f.axis + 2) % 3);
+            if (rect.lo[u]..=rect.hi[u]).contains(&hit[u])
+                && (rect.lo[v]..=rect.hi[v]).contains(&hit[v])
+            {
+                to_mesh = t;
+            }
+        }
+        // A centroid outside the cells (an L-shaped region) whose line misses them: the
+        // closest point of their surface.
+        if to_mesh.is_finite() {
+            centroid + to_mesh * *normal
+        } else {
+            let mut best = (f64::INFINITY, *centroid);
+            for f in faces {
+                let (x, rect) = self.face_rect(f);
+                let mut q = *centroid;
+                for k in 0..3 {
+                    q[k] = if k == f.axis {
+                        x
+                    } else {
+                        q[k].clamp(rect.lo[k], rect.hi[k])
+                    };
+                }
+                let d = (q - centroid).norm();
+                if d < best.0 {
+                    best = (d, q);
+                }
+            }
+            best.1
+        }
+    }
+
+    /// The region label of each cell, as [`root`] reads it: overlapping (`parts` not `None`)
+    /// face neighbours are joined.
+    fn regions(&self, parts: &[Option<Aabb>]) -> Vec<usize> {
+        let n = self.cells.len();
+        let mut region: Vec<usize> = (0..n).collect();
+        for a in 0..n {
+            for b2 in 0..n {
+                let d: i32 = (0..3)
+                    .map(|k| (self.cells[a][k] - self.cells[b2][k]).abs())
+                    .sum();
+                if d == 1 && parts[a].is_some() && parts[b2].is_some() {
+                    let (ra, rb) = (root(&mut region, a), root(&mut region, b2));
+                    region[ra.max(rb)] = ra.min(rb);
+                }
+            }
+        }
+        region
+    }
+}
+
+/// The root of cell `a`'s region in the labels `region`.
+fn root(region: &mut [usize], mut a: usize) -> usize {
+    while region[a] != a {
+        a = region[a];
+    }
+    a
 }
