@@ -16,6 +16,7 @@
 //! assert_eq!(loaded.model.parts[&2].mass, 2.0);
 //! ```
 
+mod arguments;
 mod error;
 pub mod keywords;
 pub mod lexer;
