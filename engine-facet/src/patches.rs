@@ -251,25 +251,17 @@ impl PatchIndex {
         }
         let connected = components.iter().map(|&c| c == 1).collect();
         let stored = Stored::of(&range, &all_sums, neighbors);
-        let Stored {
-            sums_slot,
-            sums,
-            rim_start,
-            rim,
-            border_start,
-            border,
-        } = stored;
         Self {
             parent,
             range,
             connected,
             leaf_of,
-            sums_slot,
-            sums,
-            rim_start,
-            rim,
-            border_start,
-            border,
+            sums_slot: stored.sums_slot,
+            sums: stored.sums,
+            rim_start: stored.rim_start,
+            rim: stored.rim,
+            border_start: stored.border_start,
+            border: stored.border,
         }
     }
 

@@ -346,6 +346,30 @@ pub(crate) fn add_shape_events_between(
     cuts[..*n].sort_by(f64::total_cmp);
 }
 
+/// The pieces of the extent `[lo, hi]` for the outer rule: its two ends and the sorted `cuts`
+/// strictly inside it, a cut closer than `merge_fraction` of the extent to an end or to the
+/// last one kept merged away (a piece that thin holds that fraction of the range, and its
+/// slices, within round-off of a tangency, cost the inner rule its whole depth for nothing).
+/// Returns the boundaries and how many there are.
+pub(crate) fn pieces_within(
+    cuts: &[f64],
+    (lo, hi): (f64, f64),
+    merge_fraction: f64,
+) -> ([f64; quadrature::MAX_PIECES + 1], usize) {
+    let mut inner = [0.0; quadrature::MAX_PIECES + 1];
+    inner[0] = lo;
+    let mut m = 1;
+    let merge = merge_fraction * (hi - lo);
+    for &c in cuts {
+        if c > lo + merge && c < hi - merge && c > inner[m - 1] + merge {
+            inner[m] = c;
+            m += 1;
+        }
+    }
+    inner[m] = hi;
+    (inner, m + 1)
+}
+
 /// Adds to `cuts[..*n]` (up to its capacity) the slices inside `(lo, hi)` where the overlap's
 /// shape class `shape(t)` changes (sections becoming tangent, a corner entering): sampled at
 /// 64 slices and at slices approaching both ends geometrically, each change bisected to

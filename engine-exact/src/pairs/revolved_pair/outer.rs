@@ -6,7 +6,7 @@
 use super::quadric::{self, circle_crossings};
 use super::slice::{self, Pair, rim_axes};
 use super::{Sums, add_caps};
-use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
+use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between, pieces_within};
 use crate::methods::sliced::golden_search;
 use crate::quadrature::Adaptive;
 use crate::quadrature::MAX_PIECES;
@@ -209,21 +209,7 @@ pub(super) fn sliced_sums(
         return None;
     }
     // The cuts inside the extent, with its ends.
-    let mut inner = [0.0; MAX_PIECES + 1];
-    inner[0] = t_min;
-    let mut m = 1;
-    // Cuts closer than 1e-9 of the extent are one: a piece that thin holds 1e-9 of the
-    // slices' range, and its slices (within round-off of a tangency, b's section a strip
-    // 1e-8 wide seen along its length) cost the inner rule its whole depth for nothing.
-    let merge = MERGE * (t_max - t_min);
-    for &c in &cuts[..n] {
-        if c > t_min + merge && c < t_max - merge && c > inner[m - 1] + merge {
-            inner[m] = c;
-            m += 1;
-        }
-    }
-    inner[m] = t_max;
-    m += 1;
+    let (mut inner, m) = pieces_within(&cuts[..n], (t_min, t_max), MERGE);
     // The slices' own counts, apart from the outer rule's (both borrow a counter).
     let mut slices = WorkCounters::default();
     let mut r = OUTER.integrate_pieces(

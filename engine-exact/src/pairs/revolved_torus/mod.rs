@@ -74,7 +74,7 @@ mod tests;
 use super::revolved_pair::{dimensions, quadric_of, surface_of};
 use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
-use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between};
+use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between, pieces_within};
 use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::{Adaptive, MAX_PIECES};
@@ -257,18 +257,7 @@ impl TorusPair {
         if p_min >= p_max {
             return None;
         }
-        let mut inner = [0.0; MAX_PIECES + 1];
-        inner[0] = p_min;
-        let mut m = 1;
-        let merge = MERGE * (p_max - p_min);
-        for &c in &cuts[..n] {
-            if c > p_min + merge && c < p_max - merge && c > inner[m - 1] + merge {
-                inner[m] = c;
-                m += 1;
-            }
-        }
-        inner[m] = p_max;
-        m += 1;
+        let (mut inner, m) = pieces_within(&cuts[..n], (p_min, p_max), MERGE);
         let mut slices = WorkCounters::default();
         let r = OUTER.integrate_pieces(
             &mut inner[..m],
