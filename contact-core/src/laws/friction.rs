@@ -173,12 +173,24 @@ impl CoulombFriction {
 
     /// `μ(v)/v` for v ≥ 0, finite at v = 0 (its limit dμ/dv(0) = −1.5·μs/vs).
     fn mu_over_speed(&self, speed: f64) -> f64 {
+        self.mu_over_speed_with_slope(speed).0
+    }
+
+    /// `m(s) = μ(s)/s` and `dm/ds` for a slip speed s ≥ 0, finite at 0 (`m(0) = μ′(0)`,
+    /// `dm/ds(0) = 0`).
+    pub(super) fn mu_over_speed_with_slope(&self, speed: f64) -> (f64, f64) {
         let vs = self.stiction_velocity;
         if speed <= vs {
+            // μ = −(μs/2)·x·(3 − x²): m = −(μs/2)·(3 − x²)/vs, dm/ds = μs·x/vs².
             let x = speed / vs;
-            -0.5 * self.mu_static * (3.0 - x * x) / vs
+            (
+                -0.5 * self.mu_static * (3.0 - x * x) / vs,
+                self.mu_static * x / (vs * vs),
+            )
         } else {
-            self.mu(speed).value / speed
+            let mu = self.mu(speed);
+            let m = mu.value / speed;
+            (m, (mu.slope - m) / speed)
         }
     }
 

@@ -44,22 +44,6 @@ pub struct SlipAndSpin {
 }
 
 impl CoulombFriction {
-    /// `m(s) = μ(s)/s` and `dm/ds` for a slip speed s ≥ 0, finite at 0 (`m(0) = μ′(0)`,
-    /// `dm/ds(0) = 0`).
-    fn mu_over_speed_with_slope(&self, speed: f64) -> (f64, f64) {
-        let vs = self.stiction_velocity();
-        if speed <= vs {
-            // μ = −(μs/2)·x·(3 − x²): m = −(μs/2)·(3 − x²)/vs, dm/ds = μs·x/vs².
-            let x = speed / vs;
-            let mu_s = self.mu_static();
-            (-0.5 * mu_s * (3.0 - x * x) / vs, mu_s * x / (vs * vs))
-        } else {
-            let mu = self.mu(speed);
-            let m = mu.value / speed;
-            (m, (mu.slope - m) / speed)
-        }
-    }
-
     /// The friction force and torque of a patch of area `area` ≥ 0 that slips at `slip`
     /// (tangential, I relative to J) and spins at `spin` (I relative to J about the normal)
     /// under the normal force `normal_force` ≥ 0, with every partial: the module's law.

@@ -47,6 +47,18 @@ impl Quadric {
         self.r0 + self.slope * self.height(x)
     }
 
+    /// The extent along the working frame's `z` of the solid's two rims: their extreme
+    /// heights `z₀ + w_z·h ∓ r·sqrt(w_x² + w_y²)` at `h = 0` and `h = len`.
+    pub fn z_range(&self) -> (f64, f64) {
+        let spread = self.axis.x.hypot(self.axis.y);
+        let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+        for (h, r) in [(0.0, self.r0), (self.len, self.r0 + self.slope * self.len)] {
+            let z = self.origin.z + self.axis.z * h;
+            range = (range.0.min(z - r * spread), range.1.max(z + r * spread));
+        }
+        range
+    }
+
     /// `Q(x)`, factored as `(|P(x − o)| − r)(|P(x − o)| + r)` so that points near the surface
     /// keep their digits.
     pub fn value(&self, x: &Vector3) -> f64 {

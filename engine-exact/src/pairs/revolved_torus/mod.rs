@@ -113,14 +113,7 @@ fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
 impl TorusPair {
     /// `b`'s extent along `z`: its rims' extreme heights.
     fn b_range(&self) -> (f64, f64) {
-        let q = &self.b;
-        let spread = q.axis.x.hypot(q.axis.y);
-        let mut range = (f64::INFINITY, f64::NEG_INFINITY);
-        for (h, r) in [(0.0, q.r0), (q.len, q.r0 + q.slope * q.len)] {
-            let z = q.origin.z + q.axis.z * h;
-            range = (range.0.min(z - r * spread), range.1.max(z + r * spread));
-        }
-        range
+        self.b.z_range()
     }
 
     /// The tube angle of height `t`.
