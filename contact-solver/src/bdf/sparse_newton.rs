@@ -7,9 +7,14 @@
 //! the dense path (`super::newton_matrix`: column `j` of an algebraic variable of index `i`
 //! times `h^(1−i)`, every row divided by its largest entry, the same checks for a zero or
 //! non-finite row) and rsparse's LU, a port of CSparse (Davis 2006): an approximate minimum
-//! degree ordering of `A + Aᵀ`, then a left-looking LU with partial pivoting. The ordering is
-//! kept while the pattern stays the same (it changes only when a contact's broad phase lets
-//! it in or out).
+//! degree ordering of `A + Aᵀ`, then a left-looking LU with partial pivoting.
+//!
+//! The ordering is a column permutation, valid for any pattern; only its fill depends on the
+//! pattern it was computed for. It is kept when the pattern changes (a contact the broad phase
+//! lets in or out adds or drops a few blocks) and computed afresh when the fill it gives,
+//! per entry of the matrix, has grown past [`FILL_GROWTH`] times the fill per entry it gave
+//! when it was computed. The first factorisation's storage is CSparse's guess (`4·nnz + n`);
+//! later ones start from the last fill plus `n`, so nothing is cleared that is never used.
 
 use super::error::FailureCause;
 use super::newton_matrix::column_scale;
@@ -20,6 +25,10 @@ use rsparse::data::{Nmrc, Sprs, Symb};
 /// Partial pivoting: the largest entry of the column is the pivot unless the diagonal is as
 /// large (CSparse's `tol = 1`).
 const PIVOT_TOLERANCE: f64 = 1.0;
+
+/// How far the fill per matrix entry (`nnz(L) + nnz(U)` over `nnz(A)`) may grow past the fill
+/// per entry at the ordering's own pattern before the ordering is computed again.
+pub(super) const FILL_GROWTH: f64 = 1.5;
 
 /// A factorised, scaled sparse Newton matrix.
 #[derive(Default)]
@@ -33,8 +42,12 @@ pub(super) struct SparseNewton {
     places: Vec<(usize, usize)>,
     /// The scaled matrix in compressed columns.
     matrix: Option<Sprs<f64>>,
-    /// The fill-reducing ordering of the current pattern.
+    /// The fill-reducing ordering (with the storage guesses for the next factorisation).
     symbolic: Option<Symb>,
+    /// The fill per entry, `(nnz(L) + nnz(U)) / nnz(A)`, at the ordering's own pattern.
+    ordering_fill: f64,
+    /// Whether the next factorisation orders afresh (the fill grew past [`FILL_GROWTH`]).
+    reorder: bool,
     lu: Option<Nmrc<f64>>,
     row_scale: Vec<f64>,
     col_scale: Vec<f64>,
@@ -107,15 +120,44 @@ impl SparseNewton {
             }
         }
         self.row_scale = scale_rows(&mut matrix)?;
-        if pattern_changed || self.symbolic.is_none() {
+        self.factorise(matrix, pattern_changed)
+    }
+
+    /// Factorises the scaled `matrix`, ordering it afresh if there is no ordering yet or the
+    /// last factorisation found the ordering's fill grown too far (see the module docs).
+    fn factorise(
+        &mut self,
+        matrix: Sprs<f64>,
+        pattern_changed: bool,
+    ) -> Result<(), FailureCause> {
+        let n = matrix.n;
+        let fresh_ordering = self.reorder
+            || self
+                .symbolic
+                .as_ref()
+                .is_none_or(|s| s.q.as_ref().is_none_or(|q| q.len() < n));
+        if fresh_ordering {
             // Order 1: minimum degree on A + Aᵀ, for LU.
             self.symbolic = Some(rsparse::sqr(&matrix, 1, false));
+            self.reorder = false;
         }
-        let Some(mut symbolic) = self.symbolic.clone() else {
+        let Some(symbolic) = self.symbolic.as_mut() else {
             return Err(FailureCause::SingularMatrix);
         };
-        let lu = rsparse::lu(&matrix, &mut symbolic, PIVOT_TOLERANCE)
-            .map_err(|_| FailureCause::SingularMatrix)?;
+        let (lnz, unz) = (symbolic.lnz, symbolic.unz);
+        let lu = rsparse::lu(&matrix, symbolic, PIVOT_TOLERANCE);
+        // `lu` leaves the fill it found in `lnz`/`unz`; the next one starts from it.
+        (symbolic.lnz, symbolic.unz) = match &lu {
+            Ok(lu) => (lu.l.x.len() + n, lu.u.x.len() + n),
+            Err(_) => (lnz, unz),
+        };
+        let lu = lu.map_err(|_| FailureCause::SingularMatrix)?;
+        let fill = (lu.l.x.len() + lu.u.x.len()) as f64 / matrix.x.len().max(1) as f64;
+        if fresh_ordering {
+            self.ordering_fill = fill;
+        } else if pattern_changed && fill > FILL_GROWTH * self.ordering_fill {
+            self.reorder = true;
+        }
         self.matrix = Some(matrix);
         self.lu = Some(lu);
         Ok(())
@@ -160,11 +202,23 @@ fn column(matrix: &Sprs<f64>, j: usize) -> std::ops::Range<usize> {
 /// Sorts the triplets into compressed columns (`n × n`), summing duplicates in the order they
 /// were written (the sort is stable); `slots` receives where each triplet went.
 fn compress(entries: &[(usize, usize, f64)], n: usize, slots: &mut Vec<usize>) -> Sprs<f64> {
-    let mut order: Vec<u32> = (0..entries.len() as u32).collect();
-    order.sort_by_key(|&k| {
-        let (row, col, _) = entries[k as usize];
-        (col, row)
-    });
+    // A counting sort by column (stable), then each column's few entries by row (stable).
+    let mut starts = vec![0usize; n + 1];
+    for &(_, col, _) in entries {
+        starts[col + 1] += 1;
+    }
+    for j in 0..n {
+        starts[j + 1] += starts[j];
+    }
+    let mut order = vec![0u32; entries.len()];
+    let mut next = starts.clone();
+    for (k, &(_, col, _)) in entries.iter().enumerate() {
+        order[next[col]] = k as u32;
+        next[col] += 1;
+    }
+    for j in 0..n {
+        order[starts[j]..starts[j + 1]].sort_by_key(|&k| entries[k as usize].0);
+    }
     slots.clear();
     slots.resize(entries.len(), 0);
     let mut matrix = Sprs::<f64>::new();
@@ -277,6 +331,79 @@ mod tests {
         let expected = dense.clone().lu().solve(&b).unwrap();
         assert!((&x - &expected).norm() <= 1e-12 * expected.norm());
         assert!((&dense * &x - &b).norm() <= 1e-12 * b.norm());
+    }
+
+    /// The triplets of `dense`'s nonzeros, column by column.
+    fn triplets(dense: &DMatrix<f64>) -> Vec<(usize, usize, f64)> {
+        let n = dense.ncols();
+        let mut entries = Vec::new();
+        for j in 0..n {
+            for i in 0..n {
+                if dense[(i, j)] != 0.0 {
+                    entries.push((i, j, dense[(i, j)]));
+                }
+            }
+        }
+        entries
+    }
+
+    /// Factorises `dense` into `newton` (`changed`: a pattern other than the last one) and
+    /// checks the solve against nalgebra's dense LU.
+    fn factorise_and_check(newton: &mut SparseNewton, dense: &DMatrix<f64>, changed: bool) {
+        let n = dense.ncols();
+        let mut matrix = compress(&triplets(dense), n, &mut Vec::new());
+        newton.row_scale = scale_rows(&mut matrix).unwrap();
+        newton.col_scale = vec![1.0; n];
+        newton.factorise(matrix, changed).unwrap();
+        let b = DVector::from_fn(n, |i, _| (i as f64 * 0.3).cos());
+        let mut x = b.clone();
+        assert!(newton.solve(&mut x));
+        let expected = dense.clone().lu().solve(&b).unwrap();
+        assert!((&x - &expected).norm() <= 1e-12 * expected.norm());
+    }
+
+    /// The ordering held by `newton`.
+    fn ordering(newton: &SparseNewton) -> Vec<isize> {
+        newton.symbolic.as_ref().unwrap().q.clone().unwrap()
+    }
+
+    #[test]
+    fn a_changed_pattern_keeps_the_ordering_while_its_fill_stays_low() {
+        let full = sample(40);
+        // The same matrix less two far entries: a contact's block not yet in.
+        let near = DMatrix::from_fn(40, 40, |i, j| match (i, j) {
+            (10, 15) | (15, 10) => 0.0,
+            _ => full[(i, j)],
+        });
+        let mut newton = SparseNewton::default();
+        factorise_and_check(&mut newton, &near, true);
+        let first = ordering(&newton);
+        factorise_and_check(&mut newton, &full, true);
+        assert_eq!(ordering(&newton), first);
+        assert!(!newton.reorder);
+    }
+
+    #[test]
+    fn an_ordering_whose_fill_grows_too_far_is_computed_again() {
+        let n = 40;
+        let diagonal = DMatrix::from_fn(n, n, |i, j| if i == j { 4.0 + i as f64 } else { 0.0 });
+        // An arrow: the first row and column full. In the diagonal's ordering (which keeps
+        // the first column first) its elimination fills the whole matrix; minimum degree
+        // puts that column last and fills nothing.
+        let arrow = DMatrix::from_fn(n, n, |i, j| match (i, j) {
+            _ if i == j => 4.0 + i as f64,
+            (0, _) | (_, 0) => 0.5,
+            _ => 0.0,
+        });
+        let mut newton = SparseNewton::default();
+        factorise_and_check(&mut newton, &diagonal, true);
+        assert_eq!(newton.ordering_fill, 2.0, "L's unit diagonal and U's diagonal");
+        factorise_and_check(&mut newton, &arrow, true);
+        assert!(newton.reorder, "the arrow in the diagonal's ordering fills in");
+        factorise_and_check(&mut newton, &arrow, false);
+        assert!(!newton.reorder);
+        let entries = (3 * n - 2) as f64;
+        assert!(newton.ordering_fill * entries <= (4 * n) as f64, "{}", newton.ordering_fill);
     }
 
     #[test]
