@@ -100,6 +100,12 @@ pub trait DaeSystem {
         NewtonStorage::Dense
     }
 
+    /// The threads the sparse Newton matrix may factorise independent blocks on (each block
+    /// alone, so the factors are the same bits at every count). The default is serial.
+    fn parallelism(&self) -> crate::parallel::Parallelism {
+        crate::parallel::Parallelism::serial()
+    }
+
     /// Pushes the entries of the Newton matrix `∂F/∂y + c·∂F/∂y′` at `(t, y, y′)` onto `out`
     /// as `(row, column, value)`; entries at the same place are summed, in the order pushed.
     /// Every entry that can be nonzero at this point is pushed (zeros included), so the

@@ -94,6 +94,7 @@
 mod consistent;
 mod error;
 mod history;
+mod islands;
 mod newton_matrix;
 mod norms;
 pub mod reference;

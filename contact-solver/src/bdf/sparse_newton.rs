@@ -7,7 +7,9 @@
 //! the dense path (`super::newton_matrix`: column `j` of an algebraic variable of index `i`
 //! times `h^(1−i)`, every row divided by its largest entry, the same checks for a zero or
 //! non-finite row) and rsparse's LU, a port of CSparse (Davis 2006): an approximate minimum
-//! degree ordering of `A + Aᵀ`, then a left-looking LU with partial pivoting.
+//! degree ordering of `A + Aᵀ`, then a left-looking LU with partial pivoting. A matrix whose
+//! graph falls apart into small islands (parts sharing no joint and no contact) is
+//! factorised island by island instead (`super::islands`).
 //!
 //! The ordering is a column permutation, valid for any pattern; only its fill depends on the
 //! pattern it was computed for. It is kept when the pattern changes (a contact the broad phase
@@ -17,9 +19,11 @@
 //! later ones start from the last fill plus `n`, so nothing is cleared that is never used.
 
 use super::error::FailureCause;
+use super::islands::Islands;
 use super::newton_matrix::column_scale;
+use crate::parallel::Parallelism;
 use crate::{DaeSystem, VariableKind};
-use nalgebra::DVector;
+use nalgebra::{DVector, Dyn, LU};
 use rsparse::data::{Nmrc, Sprs, Symb};
 
 /// Partial pivoting: the largest entry of the column is the pivot unless the diagonal is as
@@ -49,6 +53,14 @@ pub(super) struct SparseNewton {
     /// Whether the next factorisation orders afresh (the fill grew past [`FILL_GROWTH`]).
     reorder: bool,
     lu: Option<Nmrc<f64>>,
+    /// The islands of the current pattern (`None`: one is too large, or not yet known) and
+    /// whether they were found for the current pattern.
+    islands: Option<Islands>,
+    islands_known: bool,
+    /// Never split into islands (the general sparse LU alone; its own tests).
+    general_only: bool,
+    /// Each island's LU, when the islands path factorised the matrix.
+    island_lus: Option<Vec<LU<f64, Dyn, Dyn>>>,
     row_scale: Vec<f64>,
     col_scale: Vec<f64>,
 }
@@ -56,12 +68,13 @@ pub(super) struct SparseNewton {
 impl SparseNewton {
     /// Whether a factorisation exists.
     pub fn is_factorised(&self) -> bool {
-        self.lu.is_some()
+        self.lu.is_some() || self.island_lus.is_some()
     }
 
     /// Drops the factorisation (the ordering stays).
     pub fn invalidate(&mut self) {
         self.lu = None;
+        self.island_lus = None;
     }
 
     /// Evaluates, scales and factorises the matrix at `(t, y, y′)` with coefficient `cj` and
@@ -80,7 +93,7 @@ impl SparseNewton {
         h: f64,
         kinds: &[VariableKind],
     ) -> Result<(), FailureCause> {
-        self.lu = None;
+        self.invalidate();
         let n = y.len();
         self.entries.clear();
         system
@@ -120,7 +133,7 @@ impl SparseNewton {
             }
         }
         self.row_scale = scale_rows(&mut matrix)?;
-        self.factorise(matrix, pattern_changed)
+        self.factorise(matrix, pattern_changed, &system.parallelism())
     }
 
     /// Factorises the scaled `matrix`, ordering it afresh if there is no ordering yet or the
@@ -129,7 +142,20 @@ impl SparseNewton {
         &mut self,
         matrix: Sprs<f64>,
         pattern_changed: bool,
+        parallelism: &Parallelism,
     ) -> Result<(), FailureCause> {
+        if pattern_changed || !self.islands_known {
+            self.islands = Islands::of(&matrix).filter(|_| !self.general_only);
+            self.islands_known = true;
+        }
+        if let Some(islands) = &self.islands {
+            let lus = islands
+                .factorise(&matrix, parallelism)
+                .ok_or(FailureCause::SingularMatrix)?;
+            self.island_lus = Some(lus);
+            self.matrix = Some(matrix);
+            return Ok(());
+        }
         let n = matrix.n;
         let fresh_ordering = self.reorder
             || self
@@ -166,6 +192,19 @@ impl SparseNewton {
     /// Solves `J·Δ = r` in place with the stored factorisation; false if there is none or the
     /// answer is not finite.
     pub fn solve(&self, r: &mut DVector<f64>) -> bool {
+        if let (Some(islands), Some(lus)) = (&self.islands, &self.island_lus) {
+            // x = R·r; each island's block solved; Δ = C·x.
+            for (v, s) in r.iter_mut().zip(&self.row_scale) {
+                *v *= s;
+            }
+            if !islands.solve(lus, r.as_mut_slice()) {
+                return false;
+            }
+            for (v, s) in r.iter_mut().zip(&self.col_scale) {
+                *v *= s;
+            }
+            return r.iter().all(|v| v.is_finite());
+        }
         let (Some(lu), Some(symbolic)) = (&self.lu, &self.symbolic) else {
             return false;
         };
@@ -354,7 +393,9 @@ mod tests {
         let mut matrix = compress(&triplets(dense), n, &mut Vec::new());
         newton.row_scale = scale_rows(&mut matrix).unwrap();
         newton.col_scale = vec![1.0; n];
-        newton.factorise(matrix, changed).unwrap();
+        newton
+            .factorise(matrix, changed, &Parallelism::serial())
+            .unwrap();
         let b = DVector::from_fn(n, |i, _| (i as f64 * 0.3).cos());
         let mut x = b.clone();
         assert!(newton.solve(&mut x));
@@ -375,7 +416,10 @@ mod tests {
             (10, 15) | (15, 10) => 0.0,
             _ => full[(i, j)],
         });
-        let mut newton = SparseNewton::default();
+        let mut newton = SparseNewton {
+            general_only: true,
+            ..SparseNewton::default()
+        };
         factorise_and_check(&mut newton, &near, true);
         let first = ordering(&newton);
         factorise_and_check(&mut newton, &full, true);
@@ -395,15 +439,28 @@ mod tests {
             (0, _) | (_, 0) => 0.5,
             _ => 0.0,
         });
-        let mut newton = SparseNewton::default();
+        let mut newton = SparseNewton {
+            general_only: true,
+            ..SparseNewton::default()
+        };
         factorise_and_check(&mut newton, &diagonal, true);
-        assert_eq!(newton.ordering_fill, 2.0, "L's unit diagonal and U's diagonal");
+        assert_eq!(
+            newton.ordering_fill, 2.0,
+            "L's unit diagonal and U's diagonal"
+        );
         factorise_and_check(&mut newton, &arrow, true);
-        assert!(newton.reorder, "the arrow in the diagonal's ordering fills in");
+        assert!(
+            newton.reorder,
+            "the arrow in the diagonal's ordering fills in"
+        );
         factorise_and_check(&mut newton, &arrow, false);
         assert!(!newton.reorder);
         let entries = (3 * n - 2) as f64;
-        assert!(newton.ordering_fill * entries <= (4 * n) as f64, "{}", newton.ordering_fill);
+        assert!(
+            newton.ordering_fill * entries <= (4 * n) as f64,
+            "{}",
+            newton.ordering_fill
+        );
     }
 
     #[test]

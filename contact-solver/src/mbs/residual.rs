@@ -199,6 +199,10 @@ impl DaeSystem for MultibodySystem {
         MultibodySystem::newton_storage(self)
     }
 
+    fn parallelism(&self) -> crate::parallel::Parallelism {
+        self.parallelism.clone()
+    }
+
     fn newton_entries(
         &mut self,
         t: f64,
