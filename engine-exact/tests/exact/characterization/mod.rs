@@ -22,6 +22,7 @@ mod revolved_pair;
 mod revolved_torus;
 mod sliced;
 mod solids;
+mod sphere_rows;
 mod sphere_solid;
 
 pub(super) const SAMPLES: usize = 200;
