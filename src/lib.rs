@@ -13,6 +13,7 @@
 //! [`dataset`], [`run`], …). This crate adds:
 //!
 //! - [`geneva`] — the Geneva example's meshes, generated;
+//! - [`chain`] — the chain-drive example's datasets, generated;
 //! - [`pile`] — the sphere-pile example's datasets, generated;
 //! - [`scenes`] — the reference scenes that tests, benches and the CLI share;
 //! - [`peer`] — parry beside our engines, for comparison only (every parry call of the workspace);
@@ -33,6 +34,7 @@
     warn(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod chain;
 pub mod cli;
 pub mod geneva;
 pub mod peer;
