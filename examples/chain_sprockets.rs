@@ -1,6 +1,6 @@
 //! Writes the chain-drive dataset of `N` links (`chain_N.adm`, `chain_N.acf`, see
 //! `src/chain.rs`) into `examples/chain_sprockets/`, or into the directory given second:
-//! `cargo run --example chain_sprockets -- N [DIR]` (N = 12 + 2·m with m ≥ 2, default 24).
+//! `cargo run --example chain_sprockets -- N [DIR]` (N = 12 + 2·m with m ≥ 5, default 24).
 
 use contact::chain::ChainDrive;
 use std::path::PathBuf;

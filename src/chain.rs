@@ -12,9 +12,10 @@
 //! them). The pitch is `p = 2·R·sin(π/T)`: a roller seated in every gap of a half turn is
 //! one pitch from the next.
 //!
-//! The chain starts at rest, seated on the hubs (no penetration), wrapped half a turn round
+//! The chain starts at rest, [`START_GAP`] off the hubs, wrapped half a turn round
 //! each sprocket with two straight spans of `m = (N − T)/2` pitches: the centre distance is
-//! `C = m·p`. A constant torque τ (SFORCE, ROTATIONAL) turns sprocket A counter-clockwise;
+//! `C = m·p`. The teeth start turned by the seat play (see [`tooth_angle`]) so that every
+//! wrapped roller touches the tooth that drives it (on A) or that it drives (on B). A constant torque τ (SFORCE, ROTATIONAL) turns sprocket A counter-clockwise;
 //! B is driven only through the chain. No gravity (the drive lies in a horizontal plane
 //! whose support is not modelled), no friction: the IMPACT contacts between rollers and
 //! sprockets are the only forces besides the torque.
@@ -45,7 +46,7 @@ pub const SPROCKET_MASS: f64 = 0.5;
 pub const TORQUE: f64 = 0.05;
 /// IMPACT stiffness k (N/m, exponent 1).
 pub const STIFFNESS: f64 = 1e5;
-/// IMPACT damping (N·s/m, full at DMAX) of the committed dataset.
+/// IMPACT damping (N·s/m, full at DMAX).
 pub const DAMPING: f64 = 10.0;
 /// IMPACT DMAX (m).
 pub const DMAX: f64 = 1e-5;
@@ -59,10 +60,10 @@ pub fn pitch_radius() -> f64 {
     PITCH / (2.0 * (PI / TEETH as f64).sin())
 }
 
-/// The hub (root circle) radius `R − r` (m): a roller seated on it has its centre on the
-/// pitch circle.
+/// The hub (root circle) radius `R − r − START_GAP` (m): a roller with its centre on the
+/// pitch circle is [`START_GAP`] off it.
 pub fn hub_radius() -> f64 {
-    pitch_radius() - ROLLER_RADIUS
+    pitch_radius() - ROLLER_RADIUS - START_GAP
 }
 
 /// The angular play of a roller seated in a tooth gap (rad), each way: the gap's half angle
@@ -73,21 +74,44 @@ pub fn seat_play() -> f64 {
     PI / TEETH as f64 - touching
 }
 
+/// The clearance (m) the chain starts with, between each wrapped roller and the hub and the
+/// tooth it will bear on: surfaces that touch exactly at the start are grazing pairs, which
+/// the exact engine answers by slicing at great cost while the initial conditions are found.
+pub const START_GAP: f64 = 1e-6;
+
+/// The moment arm of a roller–tooth contact about the sprocket's axis (m): the normal runs
+/// along the line between the roller's and the pin's centres, both on the pitch circle
+/// `r + r_t` apart, at `sqrt(R² − ((r + r_t)/2)²)` from the axis.
+pub fn tooth_arm() -> f64 {
+    let half = 0.5 * (ROLLER_RADIUS + TOOTH_RADIUS);
+    (pitch_radius() * pitch_radius() - half * half).sqrt()
+}
+
+/// The angle (degrees) of tooth `j` of sprocket `k` (0 = A, 1 = B) about its centre at the
+/// start: `90° + (j + ½)·360°/T`, turned by the seat play less [`START_GAP`] over the
+/// tooth's arm, forwards on A (each wrapped roller is `START_GAP` from the tooth behind it)
+/// and backwards on B (from the tooth ahead), so the chain engages both sprockets at once
+/// and the torque is passed on without a first impact.
+pub fn tooth_angle(k: usize, j: usize) -> f64 {
+    let turn = seat_play() - START_GAP / tooth_arm();
+    let play = if k == 0 { turn } else { -turn };
+    90.0 + (j as f64 + 0.5) * 360.0 / TEETH as f64 + play.to_degrees()
+}
+
 /// A chain drive of `links` links.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ChainDrive {
-    /// The number of links N: `T + 2·m`, `m ≥ 2` pitches per straight span.
+    /// The number of links N: `T + 2·m`, `m ≥ 5` pitches per straight span (the centre
+    /// distance `m·p` clears `2·(R + r_t)`).
     pub links: usize,
-    /// The IMPACT damping (N·s/m); [`DAMPING`] unless changed (0 gives conservative contacts).
-    pub damping: f64,
 }
 
 /// Why a chain drive cannot be made.
 #[derive(Debug, thiserror::Error)]
 pub enum ChainError {
-    /// The link count is not `T + 2·m` with `m ≥ 2`.
+    /// The link count is not `T + 2·m` with the sprockets clear of each other (`m ≥ 5`).
     #[error(
-        "a chain over two {TEETH}-tooth sprockets has {TEETH} + 2·m links (m ≥ 2 pitches per straight span), not {0}"
+        "a chain over two {TEETH}-tooth sprockets has {TEETH} + 2·m links with m ≥ 5 pitches per straight span (closer sprockets would overlap), not {0}"
     )]
     Links(usize),
     /// Writing a file failed.
@@ -107,15 +131,17 @@ fn on_circle(centre: [f64; 2], radius: f64, degrees: f64) -> [f64; 2] {
 }
 
 impl ChainDrive {
-    /// A chain of `links` links with the committed damping.
+    /// A chain of `links` links.
     pub fn new(links: usize) -> Result<Self, ChainError> {
-        if links < TEETH + 4 || !(links - TEETH).is_multiple_of(2) {
+        if links < TEETH || !(links - TEETH).is_multiple_of(2) {
             return Err(ChainError::Links(links));
         }
-        Ok(Self {
-            links,
-            damping: DAMPING,
-        })
+        // The sprockets' tooth tips must clear each other: C > 2·(R + r_t).
+        let span = ((links - TEETH) / 2) as f64 * PITCH;
+        if span <= 2.0 * (pitch_radius() + TOOTH_RADIUS) {
+            return Err(ChainError::Links(links));
+        }
+        Ok(Self { links })
     }
 
     /// Pitches per straight span, `m = (N − T)/2`.
@@ -263,9 +289,8 @@ impl ChainDrive {
             hub_radius(),
             2.0 * WIDTH,
         );
-        let step = 360.0 / TEETH as f64;
         for j in 0..TEETH {
-            let p = on_circle(c, pitch_radius(), 90.0 + (j as f64 + 0.5) * step);
+            let p = on_circle(c, pitch_radius(), tooth_angle(k, j));
             let _ = writeln!(
                 s,
                 "MARKER/{}, PART = {part}, QP = {:.10}, {:.10}, {:.10}\n\
@@ -318,8 +343,7 @@ impl ChainDrive {
     /// Each roller against each sprocket's hub and teeth: CONTACT `2i + 1` (A), `2i + 2` (B).
     fn write_contacts(&self, s: &mut String) {
         let law = format!(
-            "IMPACT\n, STIFFNESS = {STIFFNESS:E}, EXPONENT = 1, DAMPING = {}, DMAX = {DMAX:E}",
-            self.damping
+            "IMPACT\n, STIFFNESS = {STIFFNESS:E}, EXPONENT = 1, DAMPING = {DAMPING}, DMAX = {DMAX:E}"
         );
         for i in 0..self.links {
             for k in 0..2 {
@@ -373,7 +397,7 @@ mod tests {
 
     #[test]
     fn neighbouring_rollers_are_one_pitch_apart_round_the_loop() {
-        for links in [16, 24, 40, 80] {
+        for links in [22, 24, 40, 80] {
             let chain = ChainDrive::new(links).unwrap();
             let rollers = chain.rollers();
             assert_eq!(rollers.len(), links);
@@ -385,25 +409,34 @@ mod tests {
     }
 
     #[test]
-    fn wrapped_rollers_sit_on_the_hub_between_two_teeth_with_play() {
+    fn wrapped_rollers_start_the_gap_off_the_hub_and_the_bearing_tooth() {
         let chain = ChainDrive::new(24).unwrap();
-        let (r, step) = (pitch_radius(), 2.0 * PI / TEETH as f64);
+        let r = pitch_radius();
         let mut seated = 0;
         for roller in chain.rollers() {
-            for centre in chain.centres() {
+            for (k, centre) in chain.centres().into_iter().enumerate() {
                 let from = distance(roller, centre);
                 if (from - r).abs() > 1e-12 {
                     continue;
                 }
                 seated += 1;
-                // On the hub: touching it, not into it.
-                assert!((from - ROLLER_RADIUS - hub_radius()).abs() <= 1e-14);
-                // The nearest pin is half a tooth step away on the pitch circle, so the
-                // clearance is 2R·sin(π/2T) − r − r_t, and the roller's play is seat_play.
-                let gap = 2.0 * r * (0.5 * step / 2.0).sin() - ROLLER_RADIUS - TOOTH_RADIUS;
-                assert!(gap > 1e-3, "{gap}");
-                let play_gap = 2.0 * r * ((0.5 * step - seat_play()) / 2.0).sin();
-                assert!((play_gap - ROLLER_RADIUS - TOOTH_RADIUS).abs() <= 1e-15);
+                assert!((from - ROLLER_RADIUS - hub_radius() - START_GAP).abs() <= 1e-14);
+                // Measured from the pins' centres as the dataset places them: the nearest
+                // pin is START_GAP off, on A behind the roller (clockwise), on B ahead.
+                let mut clearances: Vec<(f64, f64)> = (0..TEETH)
+                    .map(|j| {
+                        let pin = on_circle(centre, r, tooth_angle(k, j));
+                        let side = (roller[0] - centre[0]) * (pin[1] - centre[1])
+                            - (roller[1] - centre[1]) * (pin[0] - centre[0]);
+                        (distance(roller, pin) - ROLLER_RADIUS - TOOTH_RADIUS, side)
+                    })
+                    .collect();
+                clearances.sort_by(|a, b| a.0.total_cmp(&b.0));
+                let (nearest, side) = clearances[0];
+                assert!((nearest - START_GAP).abs() <= 1e-12, "{nearest}");
+                assert!(if k == 0 { side < 0.0 } else { side > 0.0 });
+                // The pin on the other side is the whole play (less the gap) away.
+                assert!(clearances[1].0 > 1e-3, "{:?}", clearances[1]);
             }
         }
         // Half a turn round each sprocket: T/2 + 1 rollers each.
@@ -433,9 +466,10 @@ mod tests {
 
     #[test]
     fn a_link_count_that_does_not_close_the_loop_is_refused() {
-        for bad in [0, 12, 14, 25] {
+        // 20 links: C = 0.08 m, less than the 0.0853 m two tooth tips need.
+        for bad in [0, 12, 14, 20, 25] {
             assert!(matches!(ChainDrive::new(bad), Err(ChainError::Links(n)) if n == bad));
         }
-        assert_eq!(ChainDrive::new(16).unwrap().span(), 2);
+        assert_eq!(ChainDrive::new(22).unwrap().span(), 5);
     }
 }
