@@ -10,9 +10,12 @@
 //! *piece* (a node of its own) per group of hits bounding the same inside face.
 //!
 //! ## Method
-//! 1. **Chains.** Hits of `T` whose other triangles share an edge continue into each other
-//!    across it: they are one chain of the trace. A triangle with one chain is one piece (nearly
-//!    every triangle: this step reads only the other triangles' neighbours).
+//! 1. **Chains.** A hit whose segment ends on an edge of its other triangle continues, across
+//!    that edge, into the hit of the neighbouring triangle there: they are one chain of the
+//!    trace. (Two triangles of the other surface that merely share an edge may both cross `T`
+//!    in segments that never meet: the shared edge passes `T`'s plane outside `T`.) A
+//!    triangle with one chain is one piece (nearly every triangle: this step reads only the
+//!    segments' ends and the other triangles' neighbours).
 //! 2. **Chains bounding one inside face.** For two chains `C_i`, `C_j`: their closest pair of
 //!    points `q_i`, `q_j` and its midpoint `m`. No point of `C_i` or `C_j` is nearer to `m` than
 //!    `|q_i − q_j|/2`, so the open segment `q_i q_j` crosses neither; if it crosses no other
@@ -25,7 +28,10 @@
 //!    between its two chains' closest points leaves it is taken as two pieces.
 //! 3. **Edges.** A flood across an edge of a split triangle belongs to the piece holding the
 //!    edge's midpoint: the piece of the segment nearest to it (no other segment can cut the
-//!    straight path to the nearest one).
+//!    straight path to the nearest one). An edge the trace crosses (a segment ends on it)
+//!    belongs to no piece: it runs in and out of the other solid, its corners may lie in two
+//!    regions, and the curve's continuation into the neighbouring triangle
+//!    ([`crate::contact_region`]) already joins the pieces that meet across it.
 //!
 //! The rest of the method runs on pieces as it does on triangles: each piece is clipped by the
 //! planes of its own hits only, and a hit unites the pieces it bounds on either side.
@@ -34,6 +40,7 @@ use crate::contact_region::{RelativePose, corners_in_a};
 use crate::facet_mesh::FacetMesh;
 use crate::piece_boundary::side_of_nearest;
 use crate::scratch::{Hit, RegionNode, Scratch};
+use crate::triangle_pair::Feature;
 use contact_core::Vector3;
 
 /// No further piece of the triangle.
@@ -52,6 +59,8 @@ pub(crate) struct PieceScratch {
     /// Each local hit's chain.
     chain_of: Vec<u32>,
     group: Vec<u32>,
+    /// Each chain's group root, while the groups are formed.
+    roots: Vec<u32>,
     /// Each chain's piece.
     piece_of_chain: Vec<u32>,
     /// Each piece's edges (bit `e`: edge `e`).
@@ -130,7 +139,9 @@ fn split(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratch, id: u3
     if pieces == 1 {
         return;
     }
-    w.assign_edges(&corners_in_a(own_mesh, node.side, node.tri, x), pieces);
+    let corners = corners_in_a(own_mesh, node.side, node.tri, x);
+    let crossed = crossed_edges(node.side, local, hits, &corners, 1e-12 * own_mesh.size);
+    w.assign_edges(&corners, pieces, crossed);
     // The hits in piece order; the first piece keeps the node, the others get nodes of their
     // own, linked in order.
     w.reordered.clear();
@@ -167,11 +178,10 @@ impl PieceScratch {
         self.others.sort_unstable();
         self.parent.clear();
         self.parent.extend(0..k as u32);
-        for n in 0..k {
-            let (u, i) = self.others[n];
-            for nb in other_mesh.neighbors[u as usize] {
+        for (i, &h) in local.iter().enumerate() {
+            for nb in continuations(side, &hits[h as usize], other_mesh) {
                 if let Ok(m) = self.others.binary_search_by_key(&nb, |e| e.0) {
-                    unite(&mut self.parent, i, self.others[m].1);
+                    unite(&mut self.parent, i as u32, self.others[m].1);
                 }
             }
         }
@@ -201,7 +211,25 @@ impl PieceScratch {
                 if find(&mut self.group, ci) == find(&mut self.group, cj) {
                     continue;
                 }
-                if one_face(&self.segments, &self.chain_of, ci, cj, &normal, touch) {
+                // Chains already found to be one curve with `ci` or `cj` block nothing
+                // between them.
+                self.roots.clear();
+                for c in 0..chains {
+                    let root = find(&mut self.group, c);
+                    self.roots.push(root);
+                }
+                let (ri, rj) = (self.roots[ci as usize], self.roots[cj as usize]);
+                let roots = &self.roots;
+                let apart = |k: u32| roots[k as usize] != ri && roots[k as usize] != rj;
+                if one_face(
+                    &self.segments,
+                    &self.chain_of,
+                    ci,
+                    cj,
+                    apart,
+                    &normal,
+                    touch,
+                ) {
                     unite(&mut self.group, ci, cj);
                 }
             }
@@ -220,12 +248,15 @@ impl PieceScratch {
         pieces
     }
 
-    /// Step 3: each edge of the triangle (`corners`) to the piece of the segment nearest its
-    /// midpoint, in `edges`.
-    fn assign_edges(&mut self, corners: &[Vector3; 3], pieces: u32) {
+    /// Step 3: each edge of the triangle (`corners`) the trace does not cross to the piece of
+    /// the segment nearest its midpoint, in `edges`; the edges in `crossed` to none.
+    fn assign_edges(&mut self, corners: &[Vector3; 3], pieces: u32, crossed: u8) {
         self.edges.clear();
         self.edges.resize(pieces as usize, 0);
         for e in 0..3 {
+            if crossed & (1 << e) != 0 {
+                continue;
+            }
             let mid = 0.5 * (corners[e] + corners[(e + 1) % 3]);
             let nearest = self
                 .segments
@@ -270,11 +301,68 @@ impl PieceScratch {
     }
 }
 
+/// The edges of the triangle on `side` (corners `corners`) that its hits `local` end on (bit
+/// `k`: edge `k`): the trace crosses them. An end counts by its feature (a corner for both its
+/// edges) and by its place, within `touch` of the edge: where an edge of this triangle crosses
+/// an edge of the other surface, the two cuts' ends coincide and the feature names either.
+fn crossed_edges(side: u8, local: &[u32], hits: &[Hit], corners: &[Vector3; 3], touch: f64) -> u8 {
+    let mut crossed = 0u8;
+    for &h in local {
+        let hit = &hits[h as usize];
+        for end in hit.ends {
+            if end.first == (side == 0) {
+                crossed |= match end.feature {
+                    Feature::Edge(k) => 1 << k,
+                    Feature::Corner(k) => (1 << k) | (1 << ((k + 2) % 3)),
+                };
+            }
+        }
+        for p in [hit.s0, hit.s1] {
+            for k in 0..3 {
+                let (a, b) = (corners[k], corners[(k + 1) % 3]);
+                let d = b - a;
+                let t = ((p - a).dot(&d) / d.norm_squared()).clamp(0.0, 1.0);
+                if (a + d * t - p).norm() <= touch {
+                    crossed |= 1 << k;
+                }
+            }
+        }
+    }
+    crossed
+}
+
 /// Triangles with this many hits or fewer are first checked for one chain directly.
 const SMALL: usize = 8;
 
-/// Whether the hits (at most [`SMALL`]) form one chain: grown from the first hit through
-/// edge neighbours among the other triangles.
+/// The triangles of the other surface the trace of `hit` goes on into from its own other
+/// triangle: the neighbours across the edges of that triangle its segment ends on (a corner
+/// counts for both its edges). Two triangles of the other surface that only share an edge
+/// meet the triangle being split in segments that continue into each other only where the
+/// segment ends on that edge; elsewhere the shared edge crosses the plane outside it.
+fn continuations(side: u8, hit: &Hit, other_mesh: &FacetMesh) -> impl Iterator<Item = u32> {
+    let u = other_triangle(side, hit) as usize;
+    let neighbors = other_mesh.neighbors[u];
+    hit.ends.into_iter().flat_map(move |end| {
+        let edges = if end.first == (side == 0) {
+            // An end on the triangle's own boundary: the trace goes on in the triangle's
+            // neighbour, not along this triangle.
+            [None, None]
+        } else {
+            match end.feature {
+                Feature::Edge(k) => [Some(k), None],
+                Feature::Corner(k) => [Some(k), Some((k + 2) % 3)],
+            }
+        };
+        edges
+            .into_iter()
+            .flatten()
+            .map(move |k| neighbors[k as usize])
+            .filter(|&nb| nb != crate::facet_mesh::NO_NEIGHBOR)
+    })
+}
+
+/// Whether the hits (at most [`SMALL`]) form one chain: grown from the first hit through the
+/// [`continuations`] of its segment's ends.
 fn one_chain(side: u8, local: &[u32], hits: &[Hit], other_mesh: &FacetMesh) -> bool {
     let mut others = [0u32; SMALL];
     for (o, &h) in others.iter_mut().zip(local) {
@@ -287,11 +375,12 @@ fn one_chain(side: u8, local: &[u32], hits: &[Hit], other_mesh: &FacetMesh) -> b
     while frontier != 0 {
         let i = frontier.trailing_zeros() as usize;
         frontier &= frontier - 1;
-        let neighbors = other_mesh.neighbors[others[i] as usize];
-        for (j, u) in others.iter().enumerate() {
-            if reached & (1 << j) == 0 && neighbors.contains(u) {
-                reached |= 1 << j;
-                frontier |= 1 << j;
+        for nb in continuations(side, &hits[local[i] as usize], other_mesh) {
+            for (j, u) in others.iter().enumerate() {
+                if reached & (1 << j) == 0 && *u == nb {
+                    reached |= 1 << j;
+                    frontier |= 1 << j;
+                }
             }
         }
     }
@@ -384,12 +473,14 @@ fn closest_pair(s: &Segment, t: &Segment) -> (Vector3, Vector3) {
     (s.p + d1 * u, t.p + d2 * v)
 }
 
-/// Whether chains `ci` and `cj` bound one inside face (module docs, step 2).
+/// Whether chains `ci` and `cj` bound one inside face (module docs, step 2); only the chains
+/// `apart` from both (not one curve with either) can block the way between them.
 fn one_face(
     segments: &[Segment],
     chain_of: &[u32],
     ci: u32,
     cj: u32,
+    apart: impl Fn(u32) -> bool,
     normal: &Vector3,
     touch: f64,
 ) -> bool {
@@ -414,10 +505,12 @@ fn one_face(
     if gap <= touch {
         return true;
     }
+    // A segment no longer than `touch` (an infinitesimal trace where the other surface's
+    // vertex touches this triangle's plane) separates nothing.
     let blocked = segments
         .iter()
         .zip(chain_of)
-        .filter(|(_, k)| **k != ci && **k != cj)
+        .filter(|(s, k)| apart(**k) && (s.q - s.p).norm() > touch)
         .any(|(s, _)| crosses(&qi, &qj, s, normal));
     if blocked {
         return false;
@@ -428,10 +521,22 @@ fn one_face(
 }
 
 /// Whether segment `s` meets the segment `p q` in the triangle's plane (normal `n`); touching
-/// counts as meeting.
+/// counts as meeting. A point of one on the other's line counts only within the other's
+/// extent (a segment of zero length, a trace's tip at a vertex of the other surface, lies on
+/// every line through it).
 fn crosses(p: &Vector3, q: &Vector3, s: &Segment, n: &Vector3) -> bool {
     let orient = |a: &Vector3, b: &Vector3, c: &Vector3| n.dot(&(b - a).cross(&(c - a)));
     let (o1, o2) = (orient(p, q, &s.p), orient(p, q, &s.q));
     let (o3, o4) = (orient(&s.p, &s.q, p), orient(&s.p, &s.q, q));
-    o1 * o2 <= 0.0 && o3 * o4 <= 0.0
+    if o1 * o2 < 0.0 && o3 * o4 < 0.0 {
+        return true;
+    }
+    // Touching: an end of one on the other (collinear with it, within its extent).
+    let within = |a: &Vector3, b: &Vector3, c: &Vector3| {
+        (0..3).all(|k| a[k].min(b[k]) <= c[k] && c[k] <= a[k].max(b[k]))
+    };
+    (o1 == 0.0 && within(p, q, &s.p))
+        || (o2 == 0.0 && within(p, q, &s.q))
+        || (o3 == 0.0 && within(&s.p, &s.q, p))
+        || (o4 == 0.0 && within(&s.p, &s.q, q))
 }

@@ -2,7 +2,9 @@
 //! the L-shaped prism `B = B₁ ∪ B₂` (two boxes meeting along a face) is the union of convex
 //! pieces, so `A ∩ B` for a convex `A` is the sum of the convex clips `A ∩ B₁` and `A ∩ B₂`
 //! (their volumes, moments, and the vector area of A's faces inside each). A box `A` pressed
-//! into the L's concave edge crosses both arms; the faceted engine's contact (its normal, the
+//! into the L's concave edge crosses both arms: one region where its interior meets the square
+//! where the arms meet, else two (it passes the concave edge on its outer side and meets each
+//! arm apart, each region its arm's clip). The faceted engine's contact (its normal, the
 //! line through its centroid, and the depth along that line between the two surfaces) must be
 //! the polyhedral intersection's to round-off — no approximation where B is concave, and the
 //! same for either triangulation of the L's faces.
@@ -141,7 +143,7 @@ fn checked_poses(other_split: bool) {
     let cuboid = Geometry::Cuboid(Cuboid::centered(half.x, half.y, half.z).unwrap());
     let pair = prepare(&engine(300.0028), cuboid, l_prism(other_split));
     let mut rng = Rng(0x1A7E);
-    let mut checked = 0;
+    let (mut checked, mut separate) = (0, 0);
     for k in 0..20 {
         let rotation = UnitQuaternion::from_scaled_axis(rng.unit_vector() * rng.range(0.05, 0.5));
         let centre = Vector3::new(
@@ -174,6 +176,11 @@ fn checked_poses(other_split: bool) {
         }
         let (v1, m1, s1) = clipped(&faces, &arm1);
         let (v2, m2, s2) = clipped(&faces, &arm2);
+        if !arms_joined(&a_planes) {
+            check_separate_arms(pair.as_ref(), &pose, [(v1, m1, s1), (v2, m2, s2)], k);
+            separate += 1;
+            continue;
+        }
         let g = (m1 + m2) / (v1 + v2);
         let normal = -(s1 + s2).normalize();
         // The centroid inside both bodies (else the engine holds the depth to its bound).
@@ -208,7 +215,60 @@ fn checked_poses(other_split: bool) {
         );
         checked += 1;
     }
-    assert!(checked >= 10, "{checked} poses checked");
+    assert!(
+        checked >= 5 && checked + separate >= 10,
+        "{checked} poses joined, {separate} apart"
+    );
+}
+
+/// Whether the box (its half-spaces) joins the two arms: the arms' clips are convex, so
+/// their union has a connected interior exactly when the box's interior meets the square
+/// `z = 1, 0 ≤ x, y ≤ 1` where the arms meet (else the box passes the concave edge on its
+/// outer side and meets each arm apart).
+fn arms_joined(a_planes: &[(Vector3, f64)]) -> bool {
+    let mut square = vec![
+        Vector3::new(0.0, 0.0, 1.0),
+        Vector3::new(1.0, 0.0, 1.0),
+        Vector3::new(1.0, 1.0, 1.0),
+        Vector3::new(0.0, 1.0, 1.0),
+    ];
+    for (n, d) in a_planes {
+        square = clip(&square, n, *d);
+    }
+    polygon_area(&square).norm() > 1e-12
+}
+
+/// Two regions, one per arm: each contact's normal, its area `|S|` and the line through its
+/// arm's centroid, against that arm's clip `(volume, moment, S)`.
+fn check_separate_arms(
+    pair: &dyn contact_core::PreparedPair,
+    pose: &Isometry3,
+    arms: [(f64, Vector3, Vector3); 2],
+    k: usize,
+) {
+    let (contacts, _) = query_pair(pair, *pose, Isometry3::identity());
+    let present: Vec<_> = arms.iter().filter(|a| a.0 > 1e-12).collect();
+    assert_eq!(contacts.len(), present.len(), "pose {k}: {contacts:?}");
+    for (v, m, s) in present {
+        let normal = -s.normalize();
+        let c = contacts
+            .iter()
+            .min_by(|a, b| {
+                let d = |c: &&contact_core::Contact| (c.normal_w - normal).norm();
+                d(a).total_cmp(&d(b))
+            })
+            .unwrap();
+        let g = m / *v;
+        let errors = [
+            (c.normal_w - normal).norm(),
+            (g - c.point_i_w.coords).cross(&c.normal_w).norm(),
+            (c.area - s.norm()).abs(),
+        ];
+        assert!(
+            errors.iter().all(|e| *e <= 1e-9),
+            "pose {k}, separate arms: errors (normal, off the line, area) {errors:?}\n{c:?}"
+        );
+    }
 }
 
 /// The octahedron `|x| + |y| + |z| ≤ 1` as a closed mesh.
