@@ -37,7 +37,7 @@
 //!    volume `V` and cross-section `|S|` is thicker), with J's point moved along the normal to
 //!    match.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
-//!    ray-parity point-in-mesh test of one vertex). A body wholly inside the other is one
+//!    ray-parity point-in-mesh test of three triangles' centroids, by majority). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
 //!    on the outer surface (see `containment`), the area is a quarter of the inner body's surface
 //!    (Cauchy: its mean projected area).
@@ -492,9 +492,11 @@ fn finish_region(r: &RegionSums) -> LocalContact {
 
 /// No crossings: one body may lie wholly inside the other (both closed, root boxes overlapping).
 ///
-/// I inside J: `g` is I's centroid, `p_j` the closest point to it on J, the normal `(p_j − g)`
-/// normalised (the way out), `p_i` I's vertex deepest along `−n`, penetration `(p_j − p_i)·n`:
-/// how far I must move along `n` to leave J. J inside I mirrors this. The normal comes from the
+/// I inside J: `g` is I's centroid (the intersection's), `p_j` the closest point to it on J
+/// (where the line through `g` along `n` first meets J), the normal `(p_j − g)` normalised
+/// (the way out), `p_i` where the line through `g` leaves I along `−n` (SPEC §4's ray rule;
+/// I's vertex deepest along `−n` when the line misses I, a centroid outside a non-convex
+/// body), penetration `(p_j − p_i)·n`. J inside I mirrors this. The normal comes from the
 /// closest point on the outer mesh's facets, so it is accurate to about one facet angle of the
 /// outer mesh (the crossing path's loop normal is far better); the penetration to `O(δ)`.
 pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Option<LocalContact> {
@@ -512,7 +514,10 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         let gb = x.inverse_apply(&g);
         let pj = x.apply(&b.closest_point(&gb, &mut Vec::new()).1);
         let n = (pj - g).try_normalize(0.0).unwrap_or_else(Vector3::z);
-        let pi = support(a.vertices.iter().map(|v| v.coords), &(-n));
+        let pi = a.first_ray_hit(&g, &(-n)).map_or_else(
+            || support(a.vertices.iter().map(|v| v.coords), &(-n)),
+            |h| h.1,
+        );
         return Some(LocalContact {
             point_i: pi,
             point_j: pj,
@@ -525,7 +530,12 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         let g = x.apply(&b.centroid.coords);
         let pi = a.closest_point(&g, &mut Vec::new()).1;
         let n = (g - pi).try_normalize(0.0).unwrap_or_else(Vector3::z);
-        let pj = support(b.vertices.iter().map(|v| x.apply(&v.coords)), &n);
+        let pj = b
+            .first_ray_hit(&x.inverse_apply(&g), &x.rot.tr_mul(&n))
+            .map_or_else(
+                || support(b.vertices.iter().map(|v| x.apply(&v.coords)), &n),
+                |h| x.apply(&h.1),
+            );
         return Some(LocalContact {
             point_i: pi,
             point_j: pj,
@@ -537,19 +547,24 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
     None
 }
 
-/// Whether `mesh` lies inside the other solid, with no crossing between them: judged by
-/// three of its vertices (first, middle, last), two of which must be inside. A vertex within
-/// the on-plane band of the other surface counts there as outside or inside as the triangle
-/// tests' nudge puts it, which the ray test cannot know; the vote keeps one such vertex (a
-/// corner grazing a face) from deciding alone.
+/// Whether `mesh` lies inside the other solid, with no crossing between them: judged by the
+/// centroids of three of its triangles (first, middle, last), two of which must be inside. A
+/// point on the other surface counts there as outside or inside as the triangle tests'
+/// perturbation puts it, which the ray test cannot know; a triangle's centroid lies on the
+/// other surface only where the two faces are flush or touch, while a vertex does wherever a
+/// corner or an edge rests on the other body (two boxes touching along an edge share two
+/// vertices' worth of surface and no volume). The vote keeps one flush face from deciding.
 fn inside_by_majority(mesh: &FacetMesh, inside: impl Fn(&Vector3) -> bool) -> bool {
-    let n = mesh.vertices.len();
+    let n = mesh.triangles.len();
     if n == 0 {
         return false;
     }
     let votes = [0, n / 2, n - 1]
         .iter()
-        .filter(|&&k| inside(&mesh.vertices[k].coords))
+        .filter(|&&t| {
+            let [p, q, r] = mesh.corners(t as u32);
+            inside(&((p + q + r) / 3.0))
+        })
         .count();
     votes >= 2
 }

@@ -1,14 +1,14 @@
 //! Step 1 of [`crate::contact_region`]: the crossing segments of two meshes. The trees are
 //! descended together ([`crate::obb_tree::descend_leaf_pairs`]); each pair of overlapping leaves
 //! screens A's triangles' planes against B's leaf triangles at once, and the pairs left take the
-//! exact triangle test ([`crate::triangle_pair::intersect_nudged`]) with one on-plane band
-//! for the whole query.
+//! exact triangle test ([`crate::triangle_pair::intersect_perturbed`]) with one on-plane band
+//! for the whole query and A eroded by an infinitesimal amount ([`eroded_side`]).
 
 use crate::contact_region::RelativePose;
 use crate::facet_mesh::FacetMesh;
 use crate::obb_tree::{LEAF_TRIANGLES, descend_leaf_pairs};
 use crate::scratch::{Hit, Scratch};
-use crate::triangle_pair::{PLANE_EPS, TrianglePair, intersect_nudged};
+use crate::triangle_pair::{PLANE_EPS, Sides, TrianglePair, intersect_perturbed};
 use contact_core::{Vector3, WorkCounters};
 
 /// Every crossing of a triangle of `a` with one of `b` (at `x` in A's frame), into `s.hits`.
@@ -76,8 +76,13 @@ pub(crate) fn find_crossings(
                     keep &= keep - 1;
                     let (q, nq) = &moved[k];
                     let tb = leaf_b[k];
+                    let sides = Sides {
+                        p: |corner: usize| eroded_side(a, ta, corner, nq),
+                        // B's vertex on A's plane lies outside A eroded.
+                        q: 1.0,
+                    };
                     if let (TrianglePair::Segment(s0, s1), ends) =
-                        intersect_nudged(&p, q, &n, nq, distances[k], band, &NUDGE)
+                        intersect_perturbed(&p, q, &n, nq, distances[k], band, sides)
                     {
                         hits.push(Hit {
                             ta,
@@ -96,9 +101,23 @@ pub(crate) fn find_crossings(
     work.primitive_tests += tests;
 }
 
+/// The side of B's plane (normal `nq`, any length) on which A's corner `corner` of triangle
+/// `ta`, lying on that plane, is taken: A is eroded by an infinitesimal amount, each vertex
+/// moved inwards along its pseudo-normal `m`, so the corner lies on the side of `−m·n_q`
+/// (inside B where A's surface runs along B's the same way, a flush face; outside where the
+/// two face each other, touching). Where `m ⟂ n_q` it is moved along [`NUDGE`] instead. A
+/// side depends only on the vertex and the plane, so every pair classifies it alike; touching
+/// faces come apart and bound no volume, and a flush face belongs to A's surface inside B.
+#[inline]
+pub(crate) fn eroded_side(a: &FacetMesh, ta: u32, corner: usize, nq: &Vector3) -> f64 {
+    let v = a.triangles[ta as usize][corner];
+    let side = -a.vertex_normals[v as usize].dot(nq);
+    if side != 0.0 { side } else { nq.dot(&NUDGE) }
+}
+
 /// The direction, in A's frame, A is nudged by an infinitesimal amount for the triangle tests
-/// ([`crate::triangle_pair::intersect_nudged`]): generic, so that no face normal of a mesh
-/// built on axes or simple angles is perpendicular to it.
+/// where erosion leaves a vertex on a plane ([`eroded_side`]): generic, so that no face
+/// normal of a mesh built on axes or simple angles is perpendicular to it.
 pub(crate) const NUDGE: Vector3 = Vector3::new(
     0.318_290_114_925_167_3,
     0.577_215_664_901_532_9,

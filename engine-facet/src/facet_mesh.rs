@@ -1,7 +1,7 @@
 //! A prepared mesh: triangles, their neighbours across each edge, exact corner normals, mass
 //! properties and the OBB tree — everything a query reads, built once by `prepare`.
 
-use crate::mesh_build::{MassProperties, bounds, edge_neighbours, longest_edge};
+use crate::mesh_build::{MassProperties, bounds, edge_neighbours, longest_edge, vertex_normals};
 use crate::obb_tree::ObbTree;
 use crate::patches::PatchIndex;
 use crate::smooth_patch::{pn_control_points, pn_point, pn_reach};
@@ -30,6 +30,11 @@ pub struct FacetMesh {
     pub face_normals: Vec<Vector3>,
     /// The true surface normal at each triangle corner (facet normals for meshes read from files).
     pub corner_normals: Vec<[Vector3; 3]>,
+    /// Each vertex's angle-weighted pseudo-normal (unit; zero where it cancels): the direction
+    /// the triangle tests move a vertex lying on the other surface's plane, inwards, when they
+    /// take the mesh as eroded by an infinitesimal amount
+    /// ([`crate::triangle_pair::intersect_perturbed`]).
+    pub vertex_normals: Vec<Vector3>,
     /// The OBB tree.
     pub tree: ObbTree,
     /// The tree's subtrees as surface patches, for the inside flood.
@@ -90,6 +95,7 @@ impl FacetMesh {
             &mut corner_normals,
         );
         let patches = PatchIndex::build(&tree, &vertices, &triangles, &neighbors);
+        let vertex_normals = vertex_normals(&vertices, &triangles, &face_normals);
         let longest_edge = longest_edge(&vertices, &triangles);
         let pn_reach = triangles
             .iter()
@@ -110,6 +116,7 @@ impl FacetMesh {
             neighbors,
             face_normals,
             corner_normals,
+            vertex_normals,
             tree,
             patches,
             volume: if closed { volume } else { 0.0 },
@@ -143,6 +150,7 @@ impl FacetMesh {
             + self.neighbors.capacity() * 12
             + self.face_normals.capacity() * std::mem::size_of::<Vector3>()
             + self.corner_normals.capacity() * 3 * std::mem::size_of::<Vector3>()
+            + self.vertex_normals.capacity() * std::mem::size_of::<Vector3>()
             + self.tree.heap_bytes()
             + self.patches.heap_bytes()
     }

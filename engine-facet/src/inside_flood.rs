@@ -13,7 +13,7 @@
 //! a few hundred patches).
 
 use crate::contact_region::{RelativePose, corners_in_a, other_plane, union};
-use crate::crossings::NUDGE;
+use crate::crossings::eroded_side;
 use crate::facet_mesh::FacetMesh;
 use crate::patches::PatchIndex;
 use crate::scratch::{NodeMarks, RegionNode, Scratch};
@@ -22,8 +22,8 @@ use contact_core::Vector3;
 
 /// Marks which corners of the crossing triangles (the first `crossing_count` nodes) are
 /// inside the other solid: behind every plane the triangle crosses. A corner on a plane
-/// (within 1e-12 of the mesh's size) lies on the side the triangle tests' nudge puts it
-/// (`crate::triangle_pair::intersect_nudged`: A moved along `NUDGE`).
+/// (within 1e-12 of the mesh's size) lies on the side the triangle tests put it
+/// (`crate::crossings::eroded_side`: A eroded, so B's corner on A's plane is outside A).
 fn mark_inside_corners(
     a: &FacetMesh,
     b: &FacetMesh,
@@ -45,13 +45,7 @@ fn mark_inside_corners(
                 if d.abs() > eps {
                     return d < 0.0;
                 }
-                // A's corner on B's plane moves along NUDGE; B's on A's plane, against it.
-                let along = n.dot(&NUDGE);
-                if node.side == 0 {
-                    along < 0.0
-                } else {
-                    along > 0.0
-                }
+                node.side == 0 && eroded_side(a, node.tri, k, &n) < 0.0
             });
             bits |= u8::from(inside) << k;
         }

@@ -131,3 +131,29 @@ impl std::hash::Hasher for EdgeHasher {
         self.0 ^= n;
     }
 }
+
+/// Each vertex's unit normal: its triangles' unit normals weighted by their angles at the
+/// vertex (the angle-weighted pseudo-normal, Bærentzen & Aanæs 2005: a direction in the
+/// vertex's normal cone, the same whichever way the faces around it are triangulated). A
+/// vertex of no triangle, or whose weighted normals cancel, gets the zero vector.
+pub(crate) fn vertex_normals(
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    face_normals: &[Vector3],
+) -> Vec<Vector3> {
+    let mut sums = vec![Vector3::zeros(); vertices.len()];
+    for (t, n) in triangles.iter().zip(face_normals) {
+        for k in 0..3 {
+            let v = vertices[t[k] as usize];
+            let (e1, e2) = (
+                vertices[t[(k + 1) % 3] as usize] - v,
+                vertices[t[(k + 2) % 3] as usize] - v,
+            );
+            let angle = e1.cross(&e2).norm().atan2(e1.dot(&e2));
+            sums[t[k] as usize] += angle * n;
+        }
+    }
+    sums.into_iter()
+        .map(|s| s.try_normalize(0.0).unwrap_or_else(Vector3::zeros))
+        .collect()
+}

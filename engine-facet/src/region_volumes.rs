@@ -54,12 +54,26 @@ fn sum_crossing_triangles(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mu
         }
         let normal = (corners[1] - corners[0]).cross(&(corners[2] - corners[0]));
         // No chain reaches the boundary: all of it is inside or none. With no trace left at
-        // all (the triangle only touches the other surface, at points the nudge of the
-        // triangle tests puts on one side), its corners clear of the other surface say which.
+        // all (the triangle only touches the other surface, at points the perturbation of the
+        // triangle tests puts on one side, so that all of it but infinitesimal corners lies on
+        // one side), its centroid says which: behind every plane it crosses, or in front of
+        // all; else (the centroid on a plane, or on both sides of a concave fold) its corners
+        // clear of the other surface do.
         let inside_corners = node.inside_corners.count_ones();
+        let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
+        let centroid_sides = (0..node.hit_count).fold([true; 2], |[behind, ahead], i| {
+            let hit = &hits[node_hits[(node.hit_start + i) as usize] as usize];
+            let (n, p0) = other_plane(node.side, hit);
+            let d = n.dot(&(centroid - p0));
+            [behind && d < 0.0, ahead && d > 0.0]
+        });
         let whole_boundary = |segments: &[(Vector3, Vector3)]| {
             if segments.is_empty() {
-                return Some(inside_corners >= 2);
+                return Some(match centroid_sides {
+                    [true, false] => true,
+                    [false, true] => false,
+                    _ => inside_corners >= 2,
+                });
             }
             (!node.split)
                 .then(|| corner_inside(segments, &normal, &corners[0]))

@@ -134,10 +134,8 @@ pub fn intersect_on_planes(
 /// (simulation of simplicity): a vertex within the band of the other triangle's plane is put
 /// on the side the nudge moves it to — `p`'s vertex on `q`'s plane on the side of
 /// `sign(n_q·nudge)`, `q`'s on `p`'s plane on the side of `−sign(n_p·nudge)` — while its point
-/// stays where it is. Every pair of a query classifies a vertex against a plane alike, so the
-/// segments of flush faces, shared edges and vertices on faces close into the loops of the
-/// nudged solids, whose limit the contact is; coplanar triangles come apart. Where the nudge
-/// is perpendicular to a normal (or zero) the vertex stays on the plane.
+/// stays where it is. Where the nudge is perpendicular to a normal (or zero) the vertex stays
+/// on the plane. [`intersect_perturbed`] with those sides.
 #[inline]
 pub fn intersect_nudged(
     p: &[Vector3; 3],
@@ -148,23 +146,56 @@ pub fn intersect_nudged(
     band: f64,
     nudge: &Vector3,
 ) -> (TrianglePair, [SegmentEnd; 2]) {
+    let sides = Sides {
+        p: |_| nq.dot(nudge),
+        q: -np.dot(nudge),
+    };
+    intersect_perturbed(p, q, np, nq, dq, band, sides)
+}
+
+/// Where [`intersect_perturbed`] puts the vertices that lie on the other triangle's plane
+/// (within the band): `p`'s corner `k` on `q`'s plane on the side of the sign of `p(k)`, every
+/// corner of `q` on `p`'s plane on the side of the sign of `q` (zero: on the plane).
+#[derive(Debug, Clone, Copy)]
+pub struct Sides<F: Fn(usize) -> f64> {
+    /// The side of `p`'s corner `k` (asked only for a corner on `q`'s plane).
+    pub p: F,
+    /// The side of any corner of `q` on `p`'s plane.
+    pub q: f64,
+}
+
+/// The test with the vertices on the other triangle's plane put on the `sides` given, their
+/// points unmoved: the sides of an infinitesimal perturbation of the two solids (simulation
+/// of simplicity). A contact search that takes every pair with sides that depend only on the
+/// vertex and the plane classifies a vertex alike in every pair it takes part in, so the
+/// segments of flush faces, shared edges and vertices on faces close into the loops of the
+/// perturbed solids, whose limit the contact is; coplanar triangles come apart.
+#[inline]
+pub fn intersect_perturbed<F: Fn(usize) -> f64>(
+    p: &[Vector3; 3],
+    q: &[Vector3; 3],
+    np: &Vector3,
+    nq: &Vector3,
+    dq: [f64; 3],
+    band: f64,
+    sides: Sides<F>,
+) -> (TrianglePair, [SegmentEnd; 2]) {
     let none = [SegmentEnd {
         first: true,
         feature: Feature::Corner(0),
     }; 2];
     let outcome = |pair| (pair, none);
     let band_squared = band * band;
-    let dq = nudged(
-        snapped(dq, band_squared * np.norm_squared()),
-        -np.dot(nudge),
-    );
+    let dq = nudged(snapped(dq, band_squared * np.norm_squared()), sides.q);
     if same_side(&dq) {
         return outcome(TrianglePair::Disjoint);
     }
-    let dp = nudged(
-        snapped(distances(p, nq, &q[0]), band_squared * nq.norm_squared()),
-        nq.dot(nudge),
-    );
+    let mut dp = snapped(distances(p, nq, &q[0]), band_squared * nq.norm_squared());
+    for (k, d) in dp.iter_mut().enumerate() {
+        if *d == 0.0 {
+            *d = nudged([0.0; 3], (sides.p)(k))[0];
+        }
+    }
     if same_side(&dp) {
         return outcome(TrianglePair::Disjoint);
     }
