@@ -134,6 +134,8 @@ pub(crate) enum Kernel {
         mesh: Arc<pairs::mesh_plane::PreparedMesh>,
         side: f64,
     },
+    /// Closed mesh `a` against closed mesh `b`, as given: one contact per region.
+    MeshMesh { pair: pairs::mesh_mesh::MeshPair },
     /// Box `a` against a closed mesh `b`: one contact per region.
     BoxMesh {
         cuboid: Cuboid,
@@ -266,6 +268,7 @@ impl Kernel {
             | Self::RevolvedPair { .. }
             | Self::RevolvedTorus { .. }
             | Self::RevolvedMesh { .. }
+            | Self::MeshMesh { .. }
             | Self::BoxMesh { .. }
             | Self::BoxBox { .. }
             | Self::BoxRevolved { .. } => self.solid_solid(pose_a, pose_b, work, emit),
@@ -374,6 +377,10 @@ impl Kernel {
                 ref mesh,
             } => {
                 pairs::revolved_mesh::contacts(solid, pose_a, mesh, pose_b, work, emit);
+                None
+            }
+            Self::MeshMesh { ref pair } => {
+                pair.contacts(pose_a, pose_b, work, emit);
                 None
             }
             Self::BoxMesh {

@@ -217,6 +217,19 @@ fn the_meshed_geneva_wheel_indexes_as_the_ideal_drive() {
         FacetingTolerance::default(),
     );
     let (samples, _) = run("geneva", engine.as_ref(), 1.04).unwrap();
+    // The exact engine answers the two meshes as given too, by the same polyhedral
+    // intersection: the same drive, sample by sample.
+    let (by_exact, _) = run("geneva", &engine_exact::ExactEngine, 1.04).unwrap();
+    assert_eq!(by_exact.len(), samples.len());
+    for (e, f) in by_exact.iter().zip(&samples) {
+        assert!(
+            (e.wheel - f.wheel).abs() <= 1e-12,
+            "t = {}: exact {} rad, faceted {} rad",
+            e.t,
+            e.wheel,
+            f.wheel
+        );
+    }
     // The STL pin is a polygon of PIN_SIDES sides with its corners on the circle; STL stores
     // single precision, 2⁻²⁴ of the coordinates' size (0.1) on each of the two meshes.
     let sag = PIN_RADIUS * (1.0 - (PI / PIN_SIDES).cos()) + 2.0 * 0.1 * 2f64.powi(-24);

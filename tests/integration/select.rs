@@ -289,19 +289,17 @@ fn select_recommends_from_the_measured_rows_for_a_ball_on_a_large_mesh() {
 
 #[test]
 fn select_refuses_naming_the_contact_when_nothing_can_meet_the_target() {
-    // Two STL spheres 0.1 into each other: the exact engine does not answer mesh against mesh,
-    // so the reference run is the faceted one, no row has a reference and no setting can be
-    // shown to meet any target.
+    // Two tori lying side by side, one 0.1 into the other: the exact engine does not answer
+    // torus against torus, so the reference run is the faceted one, no row has a reference and
+    // no setting can be shown to meet any target.
     let dir = scratch("none");
-    write_sphere_stl(&dir.join("a.stl"), 1.0, 24);
-    write_sphere_stl(&dir.join("b.stl"), 2.0, 24);
-    let adm = "two meshes\n\
+    let adm = "two tori\n\
          PART/1, GROUND\n\
          MARKER/10, PART = 1\n\
          PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
-         MARKER/20, PART = 2, QP = 0, 0, 2.9\n\
-         GRAPHICS/1, EXTERNAL, RM = 20, FILE = a.stl\n\
-         GRAPHICS/2, EXTERNAL, RM = 10, FILE = b.stl\n\
+         MARKER/20, PART = 2, QP = 2.5, 0, 0\n\
+         GRAPHICS/1, TORUS, CM = 20, MAJOR_RADIUS = 1, MINOR_RADIUS = 0.3\n\
+         GRAPHICS/2, TORUS, CM = 10, MAJOR_RADIUS = 1, MINOR_RADIUS = 0.3\n\
          CONTACT/7, IGEOM = 1, JGEOM = 2, IMPACT, STIFFNESS = 1E5, EXPONENT = 2, DAMPING = 10\
          , DMAX = 0.01\n\
          END\n";

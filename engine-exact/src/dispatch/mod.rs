@@ -36,6 +36,7 @@
 //! | box–box                                   | convex clipping; a cavity as box–mesh            | box_box                     | one box               |
 //! | box–frustum, box–torus                    | slicing across the axis, per region              | box_revolved                | none                  |
 //! | box–mesh                                  | polyhedral intersection, per region              | box_mesh                    | mesh (a cavity)       |
+//! | mesh–mesh                                 | the faceted method on the meshes, per region     | mesh_mesh                   | none                  |
 //! | mesh–plane                                | clipping, per region                             | mesh_plane                  | plane                 |
 //! | mesh–plane (bounded)                      | clipping, or box–mesh on the prism               | mesh_bounded_plane          | plane                 |
 //! | point–line, circle–line                   | closed form                                      | planar::point_line          | line                  |
@@ -52,7 +53,7 @@
 //! surface), identical coincident ellipsoids (`b`'s `+z`), grazing (the pencil's extent
 //! shrinks to the touching point; touching alone is no contact).
 //!
-//! Everything else answers [`Unsupported`] with the reason: torus–torus; mesh–mesh (the intersection of two meshes is not built); point–point,
+//! Everything else answers [`Unsupported`] with the reason: torus–torus; point–point,
 //! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 mod planar;
@@ -284,7 +285,8 @@ impl Pair<'_> {
             }
             (G::Cylinder(_) | G::Frustum(_), G::Frustum(_)) => self.revolved_pair(),
             (G::Cylinder(_) | G::Frustum(_), G::Torus(torus)) => self.revolved_torus(torus),
-            (G::Torus(_), G::Torus(_)) | (G::Mesh(_), G::Mesh(_)) => Err(self.no(NOT_BUILT)),
+            (G::Torus(_), G::Torus(_)) => Err(self.no(NOT_BUILT)),
+            (G::Mesh(mesh_a), G::Mesh(mesh_b)) => self.mesh_mesh(mesh_a, mesh_b),
             (G::Mesh(mesh), G::Plane(p)) => self.mesh_plane(mesh, p),
             (G::Plane(_), G::Plane(_)) => Err(self.no(NOT_A_CONTACT)),
 

@@ -299,6 +299,17 @@ impl Pair<'_> {
         )
     }
 
+    /// Two closed meshes, as given (`crate::pairs::mesh_mesh`); no flip.
+    pub(super) fn mesh_mesh(
+        &self,
+        mesh_a: &std::sync::Arc<contact_core::geometry::TriangleMesh>,
+        mesh_b: &std::sync::Arc<contact_core::geometry::TriangleMesh>,
+    ) -> Result<Selected, Unsupported> {
+        let pair = crate::pairs::mesh_mesh::MeshPair::new(mesh_a, mesh_b)
+            .ok_or_else(|| self.no(MESH_OPEN))?;
+        self.no_flip(self.flip_a || self.flip_b, Kernel::MeshMesh { pair })
+    }
+
     /// A box against a closed mesh (the mesh may be a cavity).
     pub(super) fn box_mesh(
         &self,

@@ -28,6 +28,7 @@ pub(crate) mod ellipsoid_mesh;
 pub(crate) mod ellipsoid_plane;
 pub(crate) mod ellipsoid_torus;
 pub(crate) mod mesh_bounded_plane;
+pub(crate) mod mesh_mesh;
 pub(crate) mod mesh_plane;
 pub(crate) mod revolved_bounded_plane;
 pub(crate) mod revolved_mesh;

@@ -53,6 +53,7 @@ mod ellipsoid_revolved;
 mod ellipsoid_torus;
 mod frustum_oracles;
 mod mesh_box;
+mod mesh_mesh;
 mod mesh_revolved;
 mod model_check;
 mod oracles;

@@ -57,7 +57,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 57] = [
+const BUILT: [(&str, &str); 58] = [
+    ("mesh", "mesh"),
     ("cylinder", "frustum"),
     ("cylinder", "torus"),
     ("frustum", "torus"),
@@ -171,8 +172,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 57 distinct pairs, 49 of them between different representatives (both orders count).
-    assert_eq!(accepted, 8 + 2 * 49);
+    // 58 distinct pairs, 49 of them between different representatives (both orders count).
+    assert_eq!(accepted, 9 + 2 * 49);
 }
 
 #[test]

@@ -244,6 +244,34 @@ impl Voxels {
         }
     }
 
+    /// The axes along which a face of the box `b` lies on a cell face over a positive area, as
+    /// bits: `(flush, touching)`, flush where both face the same way (the common patch bounds
+    /// the intersection and belongs to both surfaces), touching where they face each other
+    /// (no volume between them).
+    pub fn coplanar_axes(&self, b: &Aabb) -> (u8, u8) {
+        let (mut flush, mut touching) = (0, 0);
+        for f in self.faces() {
+            let (x, rect) = self.face_rect(&f);
+            let (u, v) = ((f.axis + 1) % 3, (f.axis + 2) % 3);
+            let overlap = |k: usize| rect.hi[k].min(b.hi[k]) > rect.lo[k].max(b.lo[k]);
+            if !(overlap(u) && overlap(v)) {
+                continue;
+            }
+            let (same, facing) = if f.sign > 0.0 {
+                (b.hi[f.axis], b.lo[f.axis])
+            } else {
+                (b.lo[f.axis], b.hi[f.axis])
+            };
+            if same == x {
+                flush |= 1 << f.axis;
+            }
+            if facing == x {
+                touching |= 1 << f.axis;
+            }
+        }
+        (flush, touching)
+    }
+
     /// The region label of each cell, as [`root`] reads it: overlapping (`parts` not `None`)
     /// face neighbours are joined.
     fn regions(&self, parts: &[Option<Aabb>]) -> Vec<usize> {
