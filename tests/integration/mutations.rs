@@ -128,12 +128,21 @@ fn number_spans(text: &str) -> Vec<(usize, usize)> {
     spans
 }
 
+/// Example directories left out of the mutated corpus: the chain drive's rollers sit 1 µm off
+/// their teeth, so most of its mutations start them touching exactly, where the exact engine
+/// slices the grazing cylinder pairs at great cost (README, *Many parts*); its statements
+/// (REVOLUTE loops, SFORCE, cylinder CONTACTs) are mutated in the other examples.
+const NOT_MUTATED: [&str; 1] = ["chain_sprockets"];
+
 fn example_datasets() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
     let mut found: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap()
         .filter_map(|e| {
             let sub = e.ok()?.path();
+            if NOT_MUTATED.iter().any(|n| sub.ends_with(n)) {
+                return None;
+            }
             let adm = std::fs::read_dir(&sub).ok()?.find_map(|f| {
                 let p = f.ok()?.path();
                 (p.extension()? == "adm").then_some(p)
