@@ -362,8 +362,7 @@ impl ChainDrive {
 
     /// The command file (`.acf`) text: 1 s of dynamics, output every 5 ms.
     pub fn command_file(&self) -> String {
-        let name = self.file_stem();
-        format!("{name}.adm\n{name}\nSIMULATE/DYNAMIC, END = {END}, DTOUT = 0.005\nSTOP\n")
+        crate::generated::command_file(&self.file_stem(), END, 0.005)
     }
 
     /// `chain_N`.
@@ -374,16 +373,9 @@ impl ChainDrive {
     /// Writes `chain_N.adm` and `chain_N.acf` into `dir` (created if needed); returns the
     /// dataset's path.
     pub fn write(&self, dir: &Path) -> Result<PathBuf, ChainError> {
-        let io = |path: &Path| {
-            let path = path.to_path_buf();
-            move |source| ChainError::Io { path, source }
-        };
-        std::fs::create_dir_all(dir).map_err(io(dir))?;
-        let adm = dir.join(format!("{}.adm", self.file_stem()));
-        std::fs::write(&adm, self.dataset()).map_err(io(&adm))?;
-        let acf = dir.join(format!("{}.acf", self.file_stem()));
-        std::fs::write(&acf, self.command_file()).map_err(io(&acf))?;
-        Ok(adm)
+        let (dataset, commands) = (self.dataset(), self.command_file());
+        crate::generated::write_pair(dir, &self.file_stem(), &dataset, &commands)
+            .map_err(|(path, source)| ChainError::Io { path, source })
     }
 }
 

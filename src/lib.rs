@@ -36,6 +36,7 @@
 
 pub mod chain;
 pub mod cli;
+mod generated;
 pub mod geneva;
 pub mod peer;
 pub mod pile;

@@ -219,8 +219,7 @@ impl SpherePile {
 
     /// The command file (`.acf`) text: 2 s of dynamics, output every 10 ms.
     pub fn command_file(&self) -> String {
-        let name = self.file_stem();
-        format!("{name}.adm\n{name}\nSIMULATE/DYNAMIC, END = {END}, DTOUT = 0.01\nSTOP\n")
+        crate::generated::command_file(&self.file_stem(), END, 0.01)
     }
 
     /// `pile_N`.
@@ -231,16 +230,9 @@ impl SpherePile {
     /// Writes `pile_N.adm` and `pile_N.acf` into `dir` (created if needed); returns the
     /// dataset's path.
     pub fn write(&self, dir: &Path) -> Result<PathBuf, PileError> {
-        let io = |path: &Path| {
-            let path = path.to_path_buf();
-            move |source| PileError::Io { path, source }
-        };
-        std::fs::create_dir_all(dir).map_err(io(dir))?;
-        let adm = dir.join(format!("{}.adm", self.file_stem()));
-        std::fs::write(&adm, self.dataset()).map_err(io(&adm))?;
-        let acf = dir.join(format!("{}.acf", self.file_stem()));
-        std::fs::write(&acf, self.command_file()).map_err(io(&acf))?;
-        Ok(adm)
+        let (dataset, commands) = (self.dataset(), self.command_file());
+        crate::generated::write_pair(dir, &self.file_stem(), &dataset, &commands)
+            .map_err(|(path, source)| PileError::Io { path, source })
     }
 }
 
