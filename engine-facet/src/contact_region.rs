@@ -372,7 +372,8 @@ pub(crate) fn add_polygon(sums: &mut RegionSums, poly: &[Vector3]) {
         let (p, q, r) = (poly[0] - o, poly[k] - o, poly[k + 1] - o);
         let v = p.dot(&q.cross(&r)) / 6.0;
         sums.volume += v;
-        sums.volume_moment += v * (p + q + r) / 4.0;
+        // × 0.25 is ÷ 4 to the bit, without three divisions.
+        sums.volume_moment += v * (p + q + r) * 0.25;
     }
 }
 

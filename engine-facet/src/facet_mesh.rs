@@ -1,7 +1,9 @@
 //! A prepared mesh: triangles, their neighbours across each edge, exact corner normals, mass
 //! properties and the OBB tree — everything a query reads, built once by `prepare`.
 
-use crate::mesh_build::{MassProperties, bounds, edge_neighbours, longest_edge, vertex_normals};
+use crate::mesh_build::{
+    MassProperties, bounds, edge_neighbours, is_convex, longest_edge, vertex_normals,
+};
 use crate::obb_tree::ObbTree;
 use crate::patches::PatchIndex;
 use crate::smooth_patch::{pn_control_points, pn_point, pn_reach};
@@ -12,6 +14,12 @@ use contact_core::{Point3, Vector3};
 /// Barycentric widening of the ray–facet test: a ray through a shared edge or vertex meets at
 /// least one facet there despite round-off (both give the same point within 1e-9).
 const RAY_WIDEN: f64 = 1e-9;
+
+/// A facet whose unit normal `n` has `|n·dir| < PARALLEL_TO_RAY` runs parallel to the ray for
+/// the ray test (`line_triangle`), which refuses `|det| ≤ 1e-14·|e₁||e₂|` where
+/// `|det| = |e₁ × e₂|·|n·dir| ≤ |e₁||e₂|·|n·dir|`: the cheap test skips only facets it refuses,
+/// with a tenfold margin for the round-off of the stored normal.
+const PARALLEL_TO_RAY: f64 = 1e-15;
 
 /// No neighbour across an edge (open meshes only).
 pub const NO_NEIGHBOR: u32 = u32::MAX;
@@ -51,6 +59,9 @@ pub struct FacetMesh {
     pub longest_edge: f64,
     /// True when closed and outward oriented (inside tests are meaningful).
     pub closed: bool,
+    /// True when closed and convex at every edge (within 1e-12 of the size): its surface below
+    /// a plane is then one region ([`crate::mesh_build::is_convex`]).
+    pub convex: bool,
     /// How far any curved PN triangle reaches beyond its flat facet (0 for flat facets):
     /// every point of the smooth surface lies within it of the facets.
     pub pn_reach: f64,
@@ -103,6 +114,8 @@ impl FacetMesh {
             .filter(|(_, n)| n[0] != n[1] || n[1] != n[2])
             .map(|(t, n)| pn_reach(&t.map(|v| vertices[v as usize].coords), n))
             .fold(0.0, f64::max);
+        let size = (hi - lo).norm();
+        let convex = closed && is_convex(&vertices, &triangles, &neighbors, &face_normals, size);
         let implied_sphere =
             implied_sphere(closed, &centroid, &vertices, &triangles, &corner_normals);
         let implied_ellipsoid = if implied_sphere.is_none() {
@@ -122,9 +135,10 @@ impl FacetMesh {
             volume: if closed { volume } else { 0.0 },
             centroid,
             area,
-            size: (hi - lo).norm(),
+            size,
             longest_edge,
             closed,
+            convex,
             pn_reach,
             implied_sphere,
             implied_ellipsoid,
@@ -259,6 +273,9 @@ impl FacetMesh {
         self.tree.visit(
             |obb| ray_hits_box(obb, &origin, dir),
             |t| {
+                if self.face_normals[t as usize].dot(dir).abs() < PARALLEL_TO_RAY {
+                    return;
+                }
                 let [a, b, c] = self.corners(t);
                 if let Some(s) = line_triangle(p, dir, &a, &b, &c, RAY_WIDEN) {
                     if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {
@@ -279,6 +296,9 @@ impl FacetMesh {
     ) -> Option<(u32, Vector3)> {
         let mut best: Option<(f64, u32)> = None;
         for t in triangles {
+            if self.face_normals[t as usize].dot(dir).abs() < PARALLEL_TO_RAY {
+                continue;
+            }
             let [a, b, c] = self.corners(t);
             if let Some(s) = line_triangle(p, dir, &a, &b, &c, RAY_WIDEN) {
                 if s >= 0.0 && best.is_none_or(|(bs, _)| s < bs) {

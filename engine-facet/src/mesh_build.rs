@@ -1,5 +1,6 @@
 //! What [`crate::facet_mesh::FacetMesh::build`] derives from a tessellation before its tree:
-//! the triangles' edge neighbours, the bounds, the mass properties and the longest edge.
+//! the triangles' edge neighbours, the bounds, the mass properties, the longest edge and
+//! whether the mesh is convex.
 
 use crate::facet_mesh::NO_NEIGHBOR;
 use contact_core::{Point3, Vector3};
@@ -156,4 +157,56 @@ pub(crate) fn vertex_normals(
     sums.into_iter()
         .map(|s| s.try_normalize(0.0).unwrap_or_else(Vector3::zeros))
         .collect()
+}
+
+/// Whether a closed mesh bounds a convex solid: it is one edge-connected surface, every edge
+/// has a neighbour that returns the link, and at every edge the neighbour's far corner lies on
+/// or behind the triangle's plane, within `1e-12·size` (coplanar facets, such as a cap's fan,
+/// count as convex). A closed embedded surface that is convex at every edge bounds a convex
+/// solid, whose surface below any plane is one connected piece.
+pub(crate) fn is_convex(
+    vertices: &[Point3],
+    triangles: &[[u32; 3]],
+    neighbors: &[[u32; 3]],
+    face_normals: &[Vector3],
+    size: f64,
+) -> bool {
+    let tolerance = 1e-12 * size;
+    let convex_edges = triangles.iter().enumerate().all(|(t, tri)| {
+        (0..3).all(|k| {
+            let nb = neighbors[t][k];
+            if nb == NO_NEIGHBOR || !neighbors[nb as usize].contains(&(t as u32)) {
+                return false;
+            }
+            let far = triangles[nb as usize]
+                .into_iter()
+                .find(|&v| v != tri[k] && v != tri[(k + 1) % 3]);
+            far.is_some_and(|v| {
+                let offset = vertices[v as usize] - vertices[tri[0] as usize];
+                face_normals[t].dot(&offset) <= tolerance
+            })
+        })
+    });
+    convex_edges && edge_connected(triangles.len(), neighbors)
+}
+
+/// Whether every triangle is reached from the first across shared edges.
+fn edge_connected(count: usize, neighbors: &[[u32; 3]]) -> bool {
+    if count == 0 {
+        return false;
+    }
+    let mut seen = vec![false; count];
+    let mut stack = vec![0u32];
+    seen[0] = true;
+    let mut reached = 1;
+    while let Some(t) = stack.pop() {
+        for nb in neighbors[t as usize] {
+            if nb != NO_NEIGHBOR && !seen[nb as usize] {
+                seen[nb as usize] = true;
+                reached += 1;
+                stack.push(nb);
+            }
+        }
+    }
+    reached == count
 }

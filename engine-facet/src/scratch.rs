@@ -109,6 +109,17 @@ pub(crate) struct RegionNode {
     pub split: bool,
 }
 
+/// A triangle at or below the plane in a mesh–plane query: its corners (mesh frame) and their
+/// heights above the plane, read once for the passes that follow.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PlaneNode {
+    pub tri: u32,
+    /// Some corner lies above the plane.
+    pub crossing: bool,
+    pub corners: [Vector3; 3],
+    pub heights: [f64; 3],
+}
+
 /// Running sums of one region.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct RegionSums {
@@ -156,8 +167,9 @@ pub(crate) struct Scratch {
     pub queue: Vec<u32>,
     /// Curved triangles whose smooth surface may reach below a plane (`crate::plane_support`).
     pub curved: Vec<u32>,
-    /// Per node of a mesh–plane query, its triangle's corner heights above the plane.
-    pub heights: Vec<[f64; 3]>,
+    /// Per node of a mesh–plane query, its triangle's corners and their heights above the
+    /// plane.
+    pub plane_nodes: Vec<PlaneNode>,
     /// The inside flood's takings: `(seed node, triangle)`, or `(seed node, patch | PATCH_BIT)`
     /// for a whole patch (see [`crate::inside_flood`]).
     pub taken: Vec<(u32, u32)>,

@@ -22,9 +22,18 @@ use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
 use crate::plane_support::{
     Support, alone_contact, blended, ellipsoid_on_plane, sphere_on_plane, supports_by_region,
 };
-use crate::scratch::{RegionNode, RegionSums, Scratch};
+use crate::scratch::{PlaneNode, RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
+use convex::convex_region;
+
+mod convex;
+#[cfg(test)]
+mod tests;
+
+/// A mesh of at most this many triangles is scanned whole against a plane rather than through
+/// its OBB tree: the tree's box tests cost more than the few triangles they would skip.
+const SCAN_WITHOUT_TREE: usize = 128;
 
 /// The pose `X_AP` of plane P in mesh A's frame from the world poses `X_WA` and `X_WP`.
 ///
@@ -128,6 +137,14 @@ fn facets_plane(
     work: &mut WorkCounters,
     out: &mut Vec<LocalContact>,
 ) {
+    if a.convex
+        && plane.is_unbounded()
+        && a.implied_sphere.is_none()
+        && let Some(found) = convex_region(a, frame, s, work)
+    {
+        out.extend(found);
+        return;
+    }
     let n = frame.n;
     let height = |v: &Vector3| frame.height(v);
     // How far the sphere a tessellated sphere's facets stand for reaches beyond them: the PN
@@ -139,7 +156,7 @@ fn facets_plane(
         0.0
     };
     let curved = nodes_below(a, plane, frame, beyond_facets, s, work);
-    let count = label_regions(s);
+    let count = regions_by_flood(a, s);
     s.regions.clear();
     s.regions.resize(count, RegionSums::default());
     // The smooth surface's support points (`plane_support`): a region they answer whole
@@ -171,7 +188,12 @@ fn facets_plane(
             out.push(alone_contact(&support, &n));
             continue;
         }
-        let facets = region_contact(a, frame, &s.nodes, index, r);
+        let in_region = s
+            .nodes
+            .iter()
+            .filter(|node| node.region as usize == index)
+            .map(|node| node.tri);
+        let facets = region_contact(a, frame, in_region, r);
         out.push(match support {
             Some(support) => blended(&facets, &support, &n),
             None => facets,
@@ -180,8 +202,37 @@ fn facets_plane(
     out.extend(alone.iter().map(|s| alone_contact(s, &n)));
 }
 
-/// A node per triangle at or below the plane (within a bounded plane's XMIN…YMAX), joined by
-/// edge adjacency; returns the curved triangles within `beyond_facets` of it (whose smooth
+/// The triangles that may reach `beyond_facets` below the plane, into `below`: all of a small
+/// mesh, else those of the OBB tree's leaves that reach it.
+fn candidates(
+    a: &FacetMesh,
+    frame: &PlaneFrame,
+    beyond_facets: f64,
+    below: &mut Vec<u32>,
+    work: &mut WorkCounters,
+) {
+    below.clear();
+    if a.triangles.len() <= SCAN_WITHOUT_TREE {
+        below.extend(0..a.triangles.len() as u32);
+        return;
+    }
+    let n = frame.n;
+    let mut box_tests = 0;
+    a.tree.visit(
+        |obb| {
+            box_tests += 1;
+            let reach: f64 = (0..3)
+                .map(|i| obb.half_extents[i] * n.dot(&obb.axes.column(i)).abs())
+                .sum();
+            frame.height(&obb.center) - reach <= beyond_facets
+        },
+        |t| below.push(t),
+    );
+    work.bounding_volume_tests += box_tests;
+}
+
+/// A node per triangle at or below the plane (within a bounded plane's XMIN…YMAX), with its
+/// corners' heights; returns the curved triangles within `beyond_facets` of it (whose smooth
 /// surface may reach below it).
 fn nodes_below(
     a: &FacetMesh,
@@ -191,7 +242,7 @@ fn nodes_below(
     s: &mut Scratch,
     work: &mut WorkCounters,
 ) -> Vec<u32> {
-    let PlaneFrame { rot, origin, n } = *frame;
+    let PlaneFrame { rot, origin, .. } = *frame;
     let height = |v: &Vector3| frame.height(v);
     let [x0, x1] = plane.x_range();
     let [y0, y1] = plane.y_range();
@@ -206,22 +257,10 @@ fn nodes_below(
             || ys.iter().all(|&u| u > y1)
     };
     s.nodes.clear();
-    s.heights.clear();
+    s.plane_nodes.clear();
     s.slots[0].reset(a.triangles.len());
     let mut below: Vec<u32> = std::mem::take(&mut s.queue);
-    below.clear();
-    let mut box_tests = 0;
-    a.tree.visit(
-        |obb| {
-            box_tests += 1;
-            let reach: f64 = (0..3)
-                .map(|i| obb.half_extents[i] * n.dot(&obb.axes.column(i)).abs())
-                .sum();
-            height(&obb.center) - reach <= beyond_facets
-        },
-        |t| below.push(t),
-    );
-    work.bounding_volume_tests += box_tests;
+    candidates(a, frame, beyond_facets, &mut below, work);
     let mut curved = std::mem::take(&mut s.curved);
     curved.clear();
     for &t in &below {
@@ -230,79 +269,134 @@ fn nodes_below(
         if bounded && beyond(&c) {
             continue;
         }
-        let h = c.map(|v| height(&v));
-        let lowest = h.iter().copied().fold(f64::INFINITY, f64::min);
+        let h = [height(&c[0]), height(&c[1]), height(&c[2])];
+        let lowest = h[0].min(h[1]).min(h[2]);
         if lowest <= 0.0 {
-            let crossing = h.iter().any(|&h| h > 0.0);
+            let crossing = h[0] > 0.0 || h[1] > 0.0 || h[2] > 0.0;
             new_node(s, 0, t, crossing);
-            s.heights.push(h);
+            s.plane_nodes.push(PlaneNode {
+                tri: t,
+                crossing,
+                corners: c,
+                heights: h,
+            });
         }
         if a.implied_sphere.is_some() && lowest <= beyond_facets && a.is_curved(t) {
             curved.push(t);
         }
     }
     s.queue = below;
-    for id in 0..s.nodes.len() {
-        let tri = s.nodes[id].tri;
-        for &nb in &a.neighbors[tri as usize] {
-            if nb != NO_NEIGHBOR {
-                if let Some(other) = s.slots[0].get(nb) {
-                    union(&mut s.nodes, id as u32, other);
+    curved
+}
+
+/// Labels the nodes' regions by edge adjacency and returns their count: a flood from each
+/// unlabelled node in turn, so regions are numbered by their first node, as
+/// [`label_regions`] numbers them (a set's root is its smallest index). A flood that reaches a
+/// node of an earlier region has met a link its neighbour does not return (an edge shared by
+/// more than two triangles): the nodes are then joined by union–find, which takes every link
+/// both ways.
+fn regions_by_flood(a: &FacetMesh, s: &mut Scratch) -> usize {
+    const UNLABELLED: u32 = u32::MAX;
+    for node in &mut s.nodes {
+        node.region = UNLABELLED;
+    }
+    let mut stack = std::mem::take(&mut s.queue);
+    let mut count = 0u32;
+    let mut one_sided = false;
+    'starts: for start in 0..s.nodes.len() {
+        if s.nodes[start].region != UNLABELLED {
+            continue;
+        }
+        s.nodes[start].region = count;
+        stack.clear();
+        stack.push(start as u32);
+        while let Some(id) = stack.pop() {
+            let tri = s.nodes[id as usize].tri;
+            for &nb in &a.neighbors[tri as usize] {
+                let Some(other) = (nb != NO_NEIGHBOR).then(|| s.slots[0].get(nb)).flatten() else {
+                    continue;
+                };
+                let node = &mut s.nodes[other as usize];
+                if node.region == UNLABELLED {
+                    node.region = count;
+                    stack.push(other);
+                } else if node.region != count {
+                    one_sided = true;
+                    break 'starts;
                 }
             }
         }
+        count += 1;
     }
-    curved
+    s.queue = stack;
+    if !one_sided {
+        return count as usize;
+    }
+    for id in 0..s.nodes.len() {
+        s.nodes[id].parent = id as u32;
+    }
+    for id in 0..s.nodes.len() {
+        let tri = s.nodes[id].tri;
+        for &nb in &a.neighbors[tri as usize] {
+            if let Some(other) = (nb != NO_NEIGHBOR).then(|| s.slots[0].get(nb)).flatten() {
+                union(&mut s.nodes, id as u32, other);
+            }
+        }
+    }
+    label_regions(s)
 }
 
 /// Each region's waterline loop (its vector area, length and length moment), the segments
 /// oriented along `n_tri × n_plane` as mesh–mesh segments are; regions the smooth surface
 /// answers whole are skipped.
 fn sum_waterlines(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
-    let n = frame.n;
-    for (node, &h) in s.nodes.iter().zip(&s.heights) {
-        if !node.crossing || smooth_only[node.region as usize] {
-            continue;
+    for (node, pn) in s.nodes.iter().zip(&s.plane_nodes) {
+        if pn.crossing && !smooth_only[node.region as usize] {
+            add_waterline(a, &frame.n, pn, &mut s.regions[node.region as usize]);
         }
-        let c = a.corners(node.tri);
-        let mut pts = [Vector3::zeros(); 2];
-        let mut k = 0;
-        for i in 0..3 {
-            let j = (i + 1) % 3;
-            if (h[i] <= 0.0) != (h[j] <= 0.0) && k < 2 {
-                pts[k] = c[i] + (c[j] - c[i]) * (h[i] / (h[i] - h[j]));
-                k += 1;
-            }
-        }
-        if k < 2 {
-            continue;
-        }
-        let dir = a.face_normals[node.tri as usize].cross(&n);
-        if (pts[1] - pts[0]).dot(&dir) < 0.0 {
-            pts.swap(0, 1);
-        }
-        let r = &mut s.regions[node.region as usize];
-        if !r.seen {
-            r.seen = true;
-            r.reference = pts[0];
-        }
-        r.vector_area += 0.5 * (pts[0] - r.reference).cross(&(pts[1] - r.reference));
-        let len = (pts[1] - pts[0]).norm();
-        r.loop_length += len;
-        r.loop_moment += len * 0.5 * (pts[0] + pts[1]);
     }
 }
 
-/// Each region's apex (its waterline's centroid on the plane), clipped volume, downward area
-/// and volume centroid; regions the smooth surface answers whole are skipped.
+/// Crossing triangle `pn`'s segment of the waterline into `r`: its vector area (from the
+/// region's first point), length and length moment, oriented along `n_tri × n`.
+fn add_waterline(a: &FacetMesh, n: &Vector3, pn: &PlaneNode, r: &mut RegionSums) {
+    let (c, h) = (&pn.corners, &pn.heights);
+    let mut pts = [Vector3::zeros(); 2];
+    let mut k = 0;
+    for i in 0..3 {
+        let j = if i == 2 { 0 } else { i + 1 };
+        if (h[i] <= 0.0) != (h[j] <= 0.0) && k < 2 {
+            pts[k] = c[i] + (c[j] - c[i]) * (h[i] / (h[i] - h[j]));
+            k += 1;
+        }
+    }
+    if k < 2 {
+        return;
+    }
+    let dir = a.face_normals[pn.tri as usize].cross(n);
+    if (pts[1] - pts[0]).dot(&dir) < 0.0 {
+        pts.swap(0, 1);
+    }
+    if !r.seen {
+        r.seen = true;
+        r.reference = pts[0];
+    }
+    r.vector_area += 0.5 * (pts[0] - r.reference).cross(&(pts[1] - r.reference));
+    let len = (pts[1] - pts[0]).norm();
+    r.loop_length += len;
+    r.loop_moment += len * 0.5 * (pts[0] + pts[1]);
+}
+
+/// Each region's apex (its waterline's centroid on the plane), clipped volume, volume centroid
+/// and, for a region without a waterline, downward area; regions the smooth surface answers
+/// whole are skipped.
 fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut Scratch) {
     let n = frame.n;
     let height = |v: &Vector3| frame.height(v);
     let Scratch {
         nodes,
-        heights,
+        plane_nodes,
         regions,
-        polygon,
         ..
     } = s;
     // A region whose waterline has no length only touches the plane (at a vertex or an edge
@@ -311,13 +405,13 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
     // any apex, and its own centroid keeps them small however deep it lies (an apex on the
     // plane, 1e66 away, overflows them).
     let mut touching: Vec<Option<(f64, Vector3)>> = vec![None; regions.len()];
-    for (node, h) in nodes
+    for (node, pn) in nodes
         .iter()
-        .zip(heights.iter())
-        .filter(|(node, _)| node.crossing)
+        .zip(plane_nodes.iter())
+        .filter(|(node, _)| node.crossing && regions[node.region as usize].loop_length <= 0.0)
     {
         let slot = &mut touching[node.region as usize];
-        for (v, &h) in a.corners(node.tri).into_iter().zip(h) {
+        for (&v, &h) in pn.corners.iter().zip(&pn.heights) {
             if slot.is_none_or(|(lowest, _)| h < lowest) {
                 *slot = Some((h, v));
             }
@@ -333,70 +427,85 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
             None => a.centroid.coords,
         };
     }
-    for (node, h) in nodes
+    for (node, pn) in nodes
         .iter()
-        .zip(heights.iter())
+        .zip(plane_nodes.iter())
         .filter(|(node, _)| !smooth_only[node.region as usize])
     {
-        polygon.clear();
-        if node.crossing {
-            clip_triangle(&a.corners(node.tri), h, polygon);
-        } else {
-            polygon.extend_from_slice(&a.corners(node.tri));
-        }
-        let r = &mut regions[node.region as usize];
-        add_polygon(r, polygon);
-        let mut vector_area = Vector3::zeros();
-        for k in 1..polygon.len().saturating_sub(1) {
-            vector_area += 0.5 * (polygon[k] - polygon[0]).cross(&(polygon[k + 1] - polygon[0]));
-        }
-        r.down_area += (-vector_area.dot(&n)).max(0.0);
+        add_clipped(&n, pn, &mut regions[node.region as usize]);
     }
     for r in regions.iter_mut() {
-        r.centroid = if r.volume > 0.0 {
-            r.apex + r.volume_moment / r.volume
-        } else {
-            r.apex
-        };
+        r.centroid = volume_centroid(r);
+    }
+}
+
+/// The part of `pn` at or below the plane into `r`: its cone from the region's apex and, for a
+/// region without a waterline, its downward area.
+fn add_clipped(n: &Vector3, pn: &PlaneNode, r: &mut RegionSums) {
+    let mut clipped = [Vector3::zeros(); 4];
+    let polygon = if pn.crossing {
+        let count = clip_triangle(&pn.corners, &pn.heights, &mut clipped);
+        &clipped[..count]
+    } else {
+        &pn.corners[..]
+    };
+    add_polygon(r, polygon);
+    if r.loop_length > 0.0 {
+        // The waterline's area is the region's (`region_contact`).
+        return;
+    }
+    let mut vector_area = Vector3::zeros();
+    for k in 1..polygon.len().saturating_sub(1) {
+        vector_area += 0.5 * (polygon[k] - polygon[0]).cross(&(polygon[k + 1] - polygon[0]));
+    }
+    r.down_area += (-vector_area.dot(n)).max(0.0);
+}
+
+/// The clipped volume's centroid from the cones' sums (the apex for a region without volume).
+fn volume_centroid(r: &RegionSums) -> Vector3 {
+    if r.volume > 0.0 {
+        r.apex + r.volume_moment / r.volume
+    } else {
+        r.apex
     }
 }
 
 /// The part of triangle `c` at or below the plane, given its corners' heights `h` above it,
-/// into `out`: [`crate::contact_region::clip`] with the heights computed once.
-fn clip_triangle(c: &[Vector3; 3], h: &[f64; 3], out: &mut Vec<Vector3>) {
+/// into `out` (at most four corners: two kept, two where edges cross); returns how many.
+/// [`crate::contact_region::clip`] with the heights computed once.
+fn clip_triangle(c: &[Vector3; 3], h: &[f64; 3], out: &mut [Vector3; 4]) -> usize {
+    let mut count = 0;
     for i in 0..3 {
-        let j = (i + 1) % 3;
+        let j = if i == 2 { 0 } else { i + 1 };
         let (u, du, v, dv) = (c[i], h[i], c[j], h[j]);
         if du <= 0.0 {
-            out.push(u);
+            out[count] = u;
+            count += 1;
         }
         if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
-            out.push(u + (v - u) * (du / (du - dv)));
+            out[count] = u + (v - u) * (du / (du - dv));
+            count += 1;
         }
     }
+    count
 }
 
-/// Region `index`'s contact from its sums: `point_j` the centroid on the plane, `point_i` I's
-/// surface straight below the centroid along −n (continuous in the pose, where the closest
-/// point to it jumps between the facets around a vertex), the area the waterline's (else the
-/// downward area of a body wholly under the plane).
+/// The contact of the region of triangles `in_region` from its sums: `point_j` the centroid on
+/// the plane, `point_i` I's surface straight below the centroid along −n (continuous in the
+/// pose, where the closest point to it jumps between the facets around a vertex), the area the
+/// waterline's (else the downward area of a body wholly under the plane).
 fn region_contact(
     a: &FacetMesh,
     frame: &PlaneFrame,
-    nodes: &[RegionNode],
-    index: usize,
+    in_region: impl Iterator<Item = u32> + Clone,
     r: &RegionSums,
 ) -> LocalContact {
     let n = frame.n;
     let g = r.centroid;
     let point_j = g - n * frame.height(&g);
-    let in_region = nodes
-        .iter()
-        .filter(|node| node.region as usize == index)
-        .map(|node| node.tri);
     let (tri, on_facet) = a
-        .first_ray_hit_among(in_region, &g, &(-n))
-        .unwrap_or_else(|| closest_in_region(a, nodes, index, &g));
+        .first_ray_hit_among(in_region.clone(), &g, &(-n))
+        .unwrap_or_else(|| closest_in_region(a, in_region, &g));
     let point_i = if tri == u32::MAX {
         on_facet
     } else {
@@ -434,20 +543,19 @@ fn region_contact(
     }
 }
 
-/// The point of region `index`'s triangles closest to `g`, with its triangle (`u32::MAX` and
-/// `g` itself for a region without triangles): where the ray from `g` meets none of them.
+/// The point of triangles `in_region` closest to `g`, with its triangle (`u32::MAX` and `g`
+/// itself for a region without triangles): where the ray from `g` meets none of them.
 fn closest_in_region(
     a: &FacetMesh,
-    nodes: &[RegionNode],
-    index: usize,
+    in_region: impl Iterator<Item = u32>,
     g: &Vector3,
 ) -> (u32, Vector3) {
     let mut best = (f64::INFINITY, u32::MAX, *g);
-    for node in nodes.iter().filter(|node| node.region as usize == index) {
-        let p = a.closest_on_triangle(node.tri, g);
+    for tri in in_region {
+        let p = a.closest_on_triangle(tri, g);
         let d = (p - g).norm_squared();
         if d < best.0 {
-            best = (d, node.tri, p);
+            best = (d, tri, p);
         }
     }
     (best.1, best.2)

@@ -1,0 +1,184 @@
+//! The convex path against the general one, and the convexity it relies on.
+
+use super::mesh_plane;
+use crate::contact_region::LocalContact;
+use crate::facet_mesh::FacetMesh;
+use crate::scratch::Scratch;
+use crate::tessellate::{Tessellation, flat_corner_normals, tessellate};
+use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Plane, Torus};
+use contact_core::{
+    FacetingTolerance, Geometry, Isometry3, Point3, UnitQuaternion, Vector3, WorkCounters,
+};
+
+fn mesh(geometry: Geometry, ft: f64) -> FacetMesh {
+    let t = tessellate(&geometry, FacetingTolerance::new(ft).unwrap()).unwrap();
+    FacetMesh::build(t, true)
+}
+
+fn convex_solids() -> Vec<(&'static str, FacetMesh)> {
+    let mut solids = Vec::new();
+    for ft in [300.0028, 3000.0] {
+        solids.push((
+            "box",
+            mesh(
+                Geometry::Cuboid(Cuboid::from_corner(0.4, 0.3, 0.2).unwrap()),
+                ft,
+            ),
+        ));
+        solids.push((
+            "cylinder",
+            mesh(Geometry::Cylinder(Cylinder::new(0.1, 0.02).unwrap()), ft),
+        ));
+        solids.push((
+            "frustum",
+            mesh(Geometry::Frustum(Frustum::new(0.2, 0.05, 0.3).unwrap()), ft),
+        ));
+        solids.push((
+            "ellipsoid",
+            mesh(
+                Geometry::Ellipsoid(Ellipsoid::new(0.3, 0.2, 0.1).unwrap()),
+                ft,
+            ),
+        ));
+    }
+    solids
+}
+
+fn contacts(m: &FacetMesh, pose_a_plane: &Isometry3) -> Vec<LocalContact> {
+    let mut out = Vec::new();
+    let (mut s, mut work) = (Scratch::default(), WorkCounters::default());
+    mesh_plane(
+        m,
+        &Plane::unbounded(),
+        pose_a_plane,
+        &mut s,
+        &mut work,
+        &mut out,
+    );
+    out
+}
+
+/// The plane's pose in the mesh frame: its normal `n` at generic tilt number `k`, its origin
+/// `depth` above the mesh's lowest vertex along `n` (the plane's half-space is below it).
+fn plane_pose(m: &FacetMesh, k: usize, depth: f64) -> Isometry3 {
+    let t = k as f64;
+    let axis = Vector3::new((0.37 * t).sin(), (0.71 * t).cos(), 0.5).normalize();
+    let rotation = UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(axis), 2.1 * t);
+    let n = rotation * Vector3::z();
+    let lowest = m
+        .vertices
+        .iter()
+        .map(|v| n.dot(&v.coords))
+        .fold(f64::INFINITY, f64::min);
+    Isometry3::from_parts((n * (lowest + depth)).into(), rotation)
+}
+
+fn bits(c: &LocalContact) -> Vec<u64> {
+    let v = |x: &Vector3| [x.x, x.y, x.z];
+    [v(&c.point_i), v(&c.point_j), v(&c.normal)]
+        .concat()
+        .into_iter()
+        .chain([c.penetration, c.area])
+        .map(f64::to_bits)
+        .collect()
+}
+
+#[test]
+fn the_convex_path_gives_the_general_paths_bits() {
+    let mut compared = 0;
+    for (name, convex) in convex_solids() {
+        assert!(convex.convex, "{name} is convex");
+        let mut general = convex.clone();
+        general.convex = false;
+        let size = convex.size;
+        for k in 0..300 {
+            // From grazing (1e-9 of the size) through a vertex-deep touch to the whole body
+            // under the plane (which the general path answers in both).
+            let depth = match k % 6 {
+                0 => 1e-9 * size,
+                1 => 0.0,
+                5 => 2.0 * size,
+                _ => size * (k as f64 * 0.618).fract() * 0.5,
+            };
+            let pose = plane_pose(&convex, k, depth);
+            let (fast, slow) = (contacts(&convex, &pose), contacts(&general, &pose));
+            assert_eq!(fast.len(), slow.len(), "{name}, pose {k}");
+            for (f, s) in fast.iter().zip(&slow) {
+                assert_eq!(bits(f), bits(s), "{name}, pose {k}: {f:?} against {s:?}");
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared > 1500, "{compared} contacts compared");
+}
+
+/// A unit box whose top face is four triangles meeting at its centre, raised to `apex_z`:
+/// pushed in (below 1) it is closed and not convex, pulled out it is convex.
+fn box_with_apex(apex_z: f64) -> FacetMesh {
+    let mut vertices: Vec<Point3> = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 1.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 1.0, 1.0],
+    ]
+    .into_iter()
+    .map(|[x, y, z]| Point3::new(x, y, z))
+    .collect();
+    vertices.push(Point3::new(0.5, 0.5, apex_z));
+    let triangles = vec![
+        [0, 2, 1],
+        [0, 3, 2],
+        [0, 1, 5],
+        [0, 5, 4],
+        [1, 2, 6],
+        [1, 6, 5],
+        [2, 3, 7],
+        [2, 7, 6],
+        [3, 0, 4],
+        [3, 4, 7],
+        [4, 5, 8],
+        [5, 6, 8],
+        [6, 7, 8],
+        [7, 4, 8],
+    ];
+    let corner_normals = flat_corner_normals(&vertices, &triangles);
+    FacetMesh::build(
+        Tessellation {
+            vertices,
+            triangles,
+            corner_normals,
+        },
+        true,
+    )
+}
+
+#[test]
+fn convexity_is_known_from_the_edges() {
+    for (name, m) in convex_solids() {
+        assert!(m.convex, "{name}");
+    }
+    let torus = mesh(Geometry::Torus(Torus::new(1.0, 0.3).unwrap()), 300.0028);
+    assert!(!torus.convex, "a torus");
+    let dented = box_with_apex(0.8);
+    assert!(dented.closed && dented.volume > 0.0);
+    assert!(!dented.convex, "a dented box");
+    assert!(box_with_apex(1.2).convex, "a bulged box");
+    assert!(box_with_apex(1.0).convex, "a box with a flat fan on top");
+    let open = FacetMesh::build(
+        Tessellation {
+            vertices: vec![
+                Point3::origin(),
+                Point3::new(1.0, 0.0, 0.0),
+                Point3::new(0.0, 1.0, 0.0),
+            ],
+            triangles: vec![[0, 1, 2]],
+            corner_normals: vec![[Vector3::z(); 3]],
+        },
+        false,
+    );
+    assert!(!open.convex, "an open triangle");
+}
