@@ -237,6 +237,23 @@ pub(crate) enum Kernel {
 }
 
 impl Kernel {
+    /// The triangles and heap bytes of the meshes this pair holds (for the prepared pair's
+    /// statistics).
+    pub(crate) fn held_meshes(&self) -> Option<(usize, usize)> {
+        match self {
+            Self::SphereMesh { mesh, .. }
+            | Self::MeshPlane { mesh, .. }
+            | Self::BoxMesh { mesh, .. }
+            | Self::RevolvedMesh { mesh, .. }
+            | Self::EllipsoidMesh { mesh, .. }
+            | Self::MeshBoundedPlane { mesh, .. } => {
+                Some((mesh.triangles.len(), mesh.heap_bytes()))
+            }
+            Self::MeshMesh { pair } => Some(pair.held()),
+            _ => None,
+        }
+    }
+
     /// Evaluates the pair with `a` at `pose_a` (`X_WGa`) and `b` at `pose_b` (`X_WGb`),
     /// handing each contact to `emit`. `length` is the pair's length scale (for the 2-D
     /// in-plane tolerance).

@@ -151,10 +151,16 @@ impl PreparedPair for PreparedExact {
     }
 
     fn stats(&self) -> PreparedStats {
-        PreparedStats {
+        let mut stats = PreparedStats {
             geometries: self.geometries,
             triangles: 0,
             bytes: self.entries.capacity() * std::mem::size_of::<Entry>(),
+        };
+        // Each entry prepares its own meshes, so each is counted.
+        for (triangles, bytes) in self.entries.iter().filter_map(|e| e.kernel.held_meshes()) {
+            stats.triangles += triangles;
+            stats.bytes += bytes;
         }
+        stats
     }
 }

@@ -51,6 +51,12 @@ impl MeshPair {
         Some(Self(Arc::from(pair)))
     }
 
+    /// The triangles and heap bytes the two prepared meshes hold.
+    pub fn held(&self) -> (usize, usize) {
+        let stats = self.0.stats();
+        (stats.triangles, stats.bytes)
+    }
+
     /// Every region's contact with `a` at `pose_a` and `b` at `pose_b` (world poses of the
     /// meshes' frames).
     pub fn contacts(

@@ -117,6 +117,21 @@ impl PreparedMesh {
         })
     }
 
+    /// The heap bytes it holds (for the prepared pair's statistics).
+    pub fn heap_bytes(&self) -> usize {
+        let parts: usize = self
+            .parts
+            .iter()
+            .map(|p| p.triangles.capacity() * 4 + p.neighbours.capacity() * 3)
+            .sum();
+        self.vertices.capacity() * std::mem::size_of::<Point3>()
+            + (self.triangles.capacity() + self.neighbours.capacity()) * 12
+            + self.balls.capacity() * std::mem::size_of::<(Point3, f64)>()
+            + self.normals.capacity() * std::mem::size_of::<Vector3>()
+            + self.parts.capacity() * std::mem::size_of::<crate::methods::mesh_parts::MeshPart>()
+            + parts
+    }
+
     /// The same mesh turned inside out (every triangle reversed): its solid is the space
     /// outside the mesh, as a flipped (cavity) geometry reads it.
     pub fn inverted(&self) -> Self {

@@ -197,3 +197,34 @@ fn by_point(mut contacts: Vec<Contact>) -> Vec<Contact> {
     });
     contacts
 }
+
+#[test]
+fn a_mesh_pair_counts_the_triangles_it_holds() {
+    use contact_core::GeometryEngine;
+    let cells = u_cells();
+    let u_mesh = mesh_of(&cells);
+    let cube = box_mesh(&aabb([0.2, 0.2, 0.2], [0.8, 0.8, 0.8]));
+    let count = |g: &GeometryInstance| match g.geometry.as_ref() {
+        Geometry::Mesh(m) => m.triangles().len(),
+        _ => unreachable!("a mesh"),
+    };
+    let (u_triangles, cube_triangles) = (count(&u_mesh), count(&cube));
+    let pair = engine_exact::ExactEngine
+        .prepare(std::slice::from_ref(&u_mesh), std::slice::from_ref(&cube))
+        .unwrap();
+    let stats = pair.stats();
+    assert_eq!(stats.triangles, u_triangles + cube_triangles);
+    assert!(
+        stats.bytes > 48 * (u_triangles + cube_triangles),
+        "{} bytes",
+        stats.bytes
+    );
+    // A mesh against two planes: each pair prepares the mesh for itself.
+    let ground = instance(Geometry::Plane(contact_core::geometry::Plane::unbounded()));
+    let pair = engine_exact::ExactEngine
+        .prepare(&[u_mesh], &[ground.clone(), ground])
+        .unwrap();
+    let twice = pair.stats();
+    assert_eq!(twice.triangles, 2 * u_triangles);
+    assert!(twice.bytes > 2 * 48 * u_triangles, "{} bytes", twice.bytes);
+}
