@@ -28,6 +28,8 @@ use std::time::Duration;
 
 #[path = "exact_pairs/cases.rs"]
 mod cases;
+#[path = "exact_pairs/mesh_cases.rs"]
+mod mesh_cases;
 
 use cases::cases;
 

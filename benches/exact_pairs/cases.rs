@@ -2,9 +2,9 @@
 //! depth where one exists.
 
 use contact_core::geometry::{
-    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus, TriangleMesh,
+    Circle, Cuboid, Curve, CurvePoints, Cylinder, Ellipsoid, Frustum, Plane, Torus,
 };
-use contact_core::{Geometry, Isometry3, Point2, Point3, UnitQuaternion};
+use contact_core::{Geometry, Isometry3, Point2, UnitQuaternion};
 use std::f64::consts::FRAC_PI_2;
 
 /// One benchmarked configuration with its closed-form depth (`None` where no short closed
@@ -19,22 +19,22 @@ pub struct Case {
 }
 
 /// A generic tilt for the configurations that need one.
-fn tilt() -> UnitQuaternion {
+pub(crate) fn tilt() -> UnitQuaternion {
     UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5)
 }
 
 /// A cube of half-size `h`, centred.
-fn cube(h: f64) -> Geometry {
+pub(crate) fn cube(h: f64) -> Geometry {
     Geometry::Cuboid(Cuboid::centered(h, h, h).unwrap())
 }
 
 /// The unbounded ground plane.
-fn ground() -> Geometry {
+pub(crate) fn ground() -> Geometry {
     Geometry::Plane(Plane::unbounded())
 }
 
 /// A cylinder of radius `r` and length `l`.
-fn cylinder(r: f64, l: f64) -> Geometry {
+pub(crate) fn cylinder(r: f64, l: f64) -> Geometry {
     Geometry::Cylinder(Cylinder::new(r, l).unwrap())
 }
 
@@ -45,7 +45,7 @@ pub fn cases() -> Vec<Case> {
         frustum_and_torus_cases(),
         box_and_plane_cases(),
         solid_on_ground_cases(),
-        mesh_cases(),
+        crate::mesh_cases::mesh_cases(),
         bounded_plane_cases(),
         planar_cases(),
     ]
@@ -343,93 +343,6 @@ fn solid_on_ground_cases() -> Vec<Case> {
     ]
 }
 
-/// Solids against the two-feet meshes (convex and dented) and a mesh box.
-fn mesh_cases() -> Vec<Case> {
-    vec![
-        Case {
-            name: "mesh_plane_two_feet",
-            i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            j: ground(),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        // A tilted box pressed across both feet's tops: two regions.
-        Case {
-            name: "box_mesh_two_feet",
-            i: Geometry::Cuboid(Cuboid::centered(1.5, 0.3, 0.4).unwrap()),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.1, 1.2), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        // A tilted cylinder across both feet's tops: two regions.
-        Case {
-            name: "cylinder_mesh_two_feet",
-            i: cylinder(0.3, 3.0),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(
-                nalgebra::Translation3::new(-1.5, 0.0, 1.1),
-                UnitQuaternion::from_euler_angles(0.1, FRAC_PI_2 - 0.2, 0.0),
-            ),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        // The same across feet each dented at a top corner (not convex: sliced).
-        Case {
-            name: "cylinder_mesh_dented_feet",
-            i: cylinder(0.3, 3.0),
-            j: Geometry::Mesh(std::sync::Arc::new(dented_feet())),
-            pose_i: Isometry3::from_parts(
-                nalgebra::Translation3::new(-1.5, 0.0, 1.1),
-                UnitQuaternion::from_euler_angles(0.1, FRAC_PI_2 - 0.2, 0.0),
-            ),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        Case {
-            name: "frustum_mesh_two_feet",
-            i: Geometry::Frustum(Frustum::new(0.6, 0.3, 1.5).unwrap()),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(-1.0, 0.0, 0.8), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        Case {
-            name: "torus_mesh_two_feet",
-            i: Geometry::Torus(Torus::new(1.0, 0.3).unwrap()),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.1), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        Case {
-            name: "ellipsoid_mesh_two_feet",
-            i: Geometry::Ellipsoid(Ellipsoid::new(1.6, 0.5, 0.4).unwrap()),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 1.2), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        Case {
-            name: "mesh_bounded_plane_two_feet",
-            i: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            j: Geometry::Plane(Plane::bounded(-1.2, 2.0, -2.0, 2.0).unwrap()),
-            pose_i: Isometry3::from_parts(nalgebra::Translation3::new(0.0, 0.0, 0.9), tilt()),
-            pose_j: Isometry3::identity(),
-            depth: None,
-        },
-        Case {
-            name: "sphere_mesh_box",
-            i: Geometry::sphere(0.5).unwrap(),
-            j: Geometry::Mesh(std::sync::Arc::new(two_feet())),
-            pose_i: Isometry3::translation(-1.0, 0.0, 1.3),
-            pose_j: Isometry3::identity(),
-            depth: Some(0.2),
-        },
-    ]
-}
-
 /// Boxes against frusta and tori, and solids on bounded planes (at an edge and well inside).
 fn bounded_plane_cases() -> Vec<Case> {
     vec![
@@ -562,40 +475,4 @@ fn planar_cases() -> Vec<Case> {
             depth: Some(1.5 - (1.44f64 + 0.09).sqrt()),
         },
     ]
-}
-
-/// A closed mesh of two boxes (two 'feet'): 24 triangles, two contact regions on a plane.
-fn two_feet() -> TriangleMesh {
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for (cx, h) in [(-1.0, [0.5, 0.4, 1.0]), (1.0, [0.3, 0.6, 1.0])] {
-        let base = vertices.len() as u32;
-        for k in 0..8u32 {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            vertices.push(Point3::new(cx + s(0) * h[0], s(1) * h[1], s(2) * h[2]));
-        }
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    TriangleMesh::new(vertices, triangles).unwrap()
-}
-
-/// [`two_feet`] with each foot's top corner at `+x, +y` pushed in and down: no longer convex.
-fn dented_feet() -> TriangleMesh {
-    let feet = two_feet();
-    let mut vertices = feet.vertices().to_vec();
-    for foot in 0..2 {
-        let v = &mut vertices[8 * foot + 7];
-        *v = Point3::new(v.x - 0.1, v.y - 0.1, 0.7);
-    }
-    TriangleMesh::new(vertices, feet.triangles().to_vec()).unwrap()
 }
