@@ -39,12 +39,62 @@ pub struct PreparedGeometry {
 pub struct PreparedFacetPair {
     i: Vec<PreparedGeometry>,
     j: Vec<PreparedGeometry>,
+    memo: PlaneMemo,
+}
+
+/// A mesh–plane entry's last contacts in the mesh's frame, with the entry and the plane's
+/// pose in that frame they were found at. An unbounded plane's pose is taken slid to the foot
+/// of the mesh ([`plane_pose_in_mesh_frame`]), so a mesh moved along the plane meets it at the
+/// same pose to the bit — as a differenced Jacobian's tangent columns move it — and its
+/// contacts are the last ones, moved with the mesh. A clone starts empty.
+#[derive(Debug, Default)]
+struct PlaneMemo(std::sync::Mutex<Option<(PlaneKey, Vec<LocalContact>)>>);
+
+/// The entry (`I` index, `J` index) and the plane's pose in the mesh's frame, as bits.
+type PlaneKey = ([usize; 2], [u64; 7]);
+
+impl Clone for PlaneMemo {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl PlaneMemo {
+    fn key(entry: [usize; 2], pose: &Isometry3) -> PlaneKey {
+        let (t, q) = (pose.translation.vector, pose.rotation.quaternion().coords);
+        (entry, [t.x, t.y, t.z, q.x, q.y, q.z, q.w].map(f64::to_bits))
+    }
+
+    /// The contacts at `key` into `local`: the remembered ones when the key is the last
+    /// one, else `compute`'s, remembered.
+    fn answer(
+        &self,
+        key: PlaneKey,
+        local: &mut Vec<LocalContact>,
+        compute: impl FnOnce(&mut Vec<LocalContact>),
+    ) {
+        if let Ok(last) = self.0.lock()
+            && let Some((k, found)) = last.as_ref()
+            && *k == key
+        {
+            local.extend_from_slice(found);
+            return;
+        }
+        compute(local);
+        if let Ok(mut last) = self.0.lock() {
+            *last = Some((key, local.clone()));
+        }
+    }
 }
 
 impl PreparedFacetPair {
     /// Wraps prepared lists (see [`crate::FacetEngine`]).
     pub fn new(i: Vec<PreparedGeometry>, j: Vec<PreparedGeometry>) -> Self {
-        Self { i, j }
+        Self {
+            i,
+            j,
+            memo: PlaneMemo::default(),
+        }
     }
 
     /// The prepared I list.
@@ -83,6 +133,7 @@ struct Placed<'a> {
 fn pair_contacts(
     [a, b]: [Placed<'_>; 2],
     parts: [&Isometry3; 2],
+    memo: &PlaneMemo,
     s: &mut Scratch,
     work: &mut WorkCounters,
     local: &mut Vec<LocalContact>,
@@ -104,12 +155,18 @@ fn pair_contacts(
         }
         (Shape::Mesh(ma), Shape::HalfSpace(p)) => {
             let pose_ab = plane_pose_in_mesh_frame(pose_wa, pose_wb, p);
-            mesh_plane(ma, p, &pose_ab, s, work, local);
+            let key = PlaneMemo::key([gi, gj], &pose_ab);
+            memo.answer(key, local, |local| {
+                mesh_plane(ma, p, &pose_ab, s, work, local);
+            });
             contacts.extend(local.iter().map(|c| to_world(pose_wa, c, gi, gj)));
         }
         (Shape::HalfSpace(p), Shape::Mesh(mb)) => {
             let pose_ba = plane_pose_in_mesh_frame(pose_wb, pose_wa, p);
-            mesh_plane(mb, p, &pose_ba, s, work, local);
+            let key = PlaneMemo::key([gi, gj], &pose_ba);
+            memo.answer(key, local, |local| {
+                mesh_plane(mb, p, &pose_ba, s, work, local);
+            });
             contacts.extend(local.iter().map(|c| to_world(pose_wb, c, gj, gi).swapped()));
         }
         (Shape::Planar(pa), Shape::Planar(pb)) => {
@@ -191,7 +248,8 @@ impl PreparedPair for PreparedFacetPair {
                         },
                     ];
                     let parts = [pose_world_i, pose_world_j];
-                    result = pair_contacts(placed, parts, s, work, &mut local, contacts);
+                    result =
+                        pair_contacts(placed, parts, &self.memo, s, work, &mut local, contacts);
                     if result.is_err() {
                         break 'pairs;
                     }

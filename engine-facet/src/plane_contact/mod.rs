@@ -500,12 +500,24 @@ fn region_contact(
     in_region: impl Iterator<Item = u32> + Clone,
     r: &RegionSums,
 ) -> LocalContact {
+    let g = r.centroid;
+    let below = a
+        .first_ray_hit_among(in_region.clone(), &g, &(-frame.n))
+        .unwrap_or_else(|| closest_in_region(a, in_region, &g));
+    contact_below(a, frame, r, below)
+}
+
+/// [`region_contact`] with I's facet point straight below the centroid found: `below` is its
+/// triangle and the point on the flat facet (`u32::MAX` and any point for none).
+fn contact_below(
+    a: &FacetMesh,
+    frame: &PlaneFrame,
+    r: &RegionSums,
+    (tri, on_facet): (u32, Vector3),
+) -> LocalContact {
     let n = frame.n;
     let g = r.centroid;
     let point_j = g - n * frame.height(&g);
-    let (tri, on_facet) = a
-        .first_ray_hit_among(in_region.clone(), &g, &(-n))
-        .unwrap_or_else(|| closest_in_region(a, in_region, &g));
     let point_i = if tri == u32::MAX {
         on_facet
     } else {
