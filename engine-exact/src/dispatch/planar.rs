@@ -3,7 +3,7 @@
 //! lines). Each takes the pair in canonical order and says which flips it takes.
 
 use super::{NOT_BUILT, Pair, Selected, canonical, side};
-use crate::kernel::Kernel;
+use crate::kernel::{Kernel, PlanarKernel};
 use crate::planar::boundary::Chain;
 use crate::planar::curve_eval::PlanarCurve;
 use contact_core::geometry::{Arc, Circle, Curve, Line};
@@ -15,10 +15,10 @@ impl Pair<'_> {
     pub(super) fn point_circle(&self, c: &Circle) -> Result<Selected, Unsupported> {
         self.no_flip(
             self.flip_a,
-            Kernel::PointCircle {
+            Kernel::Planar(PlanarKernel::PointCircle {
                 radius: c.radius(),
                 hole: self.flip_b,
-            },
+            }),
         )
     }
 
@@ -26,10 +26,10 @@ impl Pair<'_> {
     pub(super) fn point_line(&self, line: &Line) -> Result<Selected, Unsupported> {
         self.no_flip(
             self.flip_a,
-            Kernel::PointLine {
+            Kernel::Planar(PlanarKernel::PointLine {
                 line: *line,
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 
@@ -37,13 +37,19 @@ impl Pair<'_> {
     pub(super) fn circle_circle(&self, ca: &Circle, cb: &Circle) -> Result<Selected, Unsupported> {
         let (radius_a, radius_b) = (ca.radius(), cb.radius());
         match (self.flip_a, self.flip_b) {
-            (false, false) => Ok(canonical(Kernel::CircleCircle { radius_a, radius_b })),
-            (false, true) => Ok(canonical(Kernel::CircleInHole { radius_a, radius_b })),
+            (false, false) => Ok(canonical(Kernel::Planar(PlanarKernel::CircleCircle {
+                radius_a,
+                radius_b,
+            }))),
+            (false, true) => Ok(canonical(Kernel::Planar(PlanarKernel::CircleInHole {
+                radius_a,
+                radius_b,
+            }))),
             (true, false) => Ok(Selected {
-                kernel: Kernel::CircleInHole {
+                kernel: Kernel::Planar(PlanarKernel::CircleInHole {
                     radius_a: radius_b,
                     radius_b: radius_a,
-                },
+                }),
                 swap: true,
             }),
             (true, true) => Err(self.no(super::NOT_A_CONTACT)),
@@ -54,16 +60,16 @@ impl Pair<'_> {
     pub(super) fn circle_line(&self, c: &Circle, line: &Line) -> Result<Selected, Unsupported> {
         let x_range = line.x_range();
         let kernel = if x_range.iter().any(|x| x.is_finite()) {
-            Kernel::CircleBoundedLine {
+            Kernel::Planar(PlanarKernel::CircleBoundedLine {
                 radius: c.radius(),
                 x_range,
                 side: side(self.flip_b),
-            }
+            })
         } else {
-            Kernel::CircleLine {
+            Kernel::Planar(PlanarKernel::CircleLine {
                 radius: c.radius(),
                 side: side(self.flip_b),
-            }
+            })
         };
         // A flipped circle (a hole) against a line's material is an unbounded region.
         self.no_flip(self.flip_a, kernel)
@@ -74,10 +80,10 @@ impl Pair<'_> {
         let curve = planar_curve(curve);
         self.no_flip(
             self.flip_a,
-            Kernel::PointCurve {
+            Kernel::Planar(PlanarKernel::PointCurve {
                 curve,
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 
@@ -90,11 +96,11 @@ impl Pair<'_> {
         let curve = planar_curve(curve);
         self.no_flip(
             self.flip_a,
-            Kernel::CircleCurve {
+            Kernel::Planar(PlanarKernel::CircleCurve {
                 radius: circle.radius(),
                 curve,
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 
@@ -102,11 +108,11 @@ impl Pair<'_> {
     pub(super) fn point_arc(&self, arc: &Arc) -> Result<Selected, Unsupported> {
         self.no_flip(
             self.flip_a,
-            Kernel::PointArc {
+            Kernel::Planar(PlanarKernel::PointArc {
                 radius: arc.radius(),
                 range: arc.range_angle(),
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 
@@ -114,12 +120,12 @@ impl Pair<'_> {
     pub(super) fn circle_arc(&self, circle: &Circle, arc: &Arc) -> Result<Selected, Unsupported> {
         self.no_flip(
             self.flip_a,
-            Kernel::CircleArc {
+            Kernel::Planar(PlanarKernel::CircleArc {
                 radius_a: circle.radius(),
                 radius: arc.radius(),
                 range: arc.range_angle(),
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 }
@@ -136,11 +142,11 @@ impl Pair<'_> {
         use Geometry as G;
         let a_chain = std::sync::Arc::new(self.chain(self.a, self.flip_a)?);
         Ok(canonical(match self.b {
-            G::Line(line) => Kernel::OverlapLine {
+            G::Line(line) => Kernel::Planar(PlanarKernel::OverlapLine {
                 a: a_chain,
                 x_range: line.x_range(),
                 side: side(self.flip_b),
-            },
+            }),
             G::Ellipsoid(_)
             | G::Cylinder(_)
             | G::Cuboid(_)
@@ -151,10 +157,10 @@ impl Pair<'_> {
             | G::Point
             | G::Circle(_)
             | G::Arc(_)
-            | G::Curve(_) => Kernel::Overlap {
+            | G::Curve(_) => Kernel::Planar(PlanarKernel::Overlap {
                 a: a_chain,
                 b: std::sync::Arc::new(self.chain(self.b, self.flip_b)?),
-            },
+            }),
         }))
     }
 

@@ -3,7 +3,7 @@
 //! Each takes the pair in canonical order and says which flips it takes.
 
 use super::{FLIP_NOT_BUILT, MESH_OPEN, NOT_A_CONTACT, NOT_BUILT, Pair, Selected, canonical, side};
-use crate::kernel::Kernel;
+use crate::kernel::{Kernel, PlaneKernel, SolidKernel};
 use crate::pairs::box_mesh::box_mesh;
 use crate::pairs::cylinder_sliced::SlicedSolid;
 use crate::pairs::sphere_solid::Solid;
@@ -26,23 +26,29 @@ impl Pair<'_> {
             self.flip_b,
         ) {
             (Some(radius_a), Some(radius_b), false, false) => {
-                Ok(canonical(Kernel::SphereSphere { radius_a, radius_b }))
+                Ok(canonical(Kernel::Solid(SolidKernel::SphereSphere {
+                    radius_a,
+                    radius_b,
+                })))
             }
             (Some(radius_a), Some(radius_b), false, true) => {
-                Ok(canonical(Kernel::SphereInCavity { radius_a, radius_b }))
+                Ok(canonical(Kernel::Solid(SolidKernel::SphereInCavity {
+                    radius_a,
+                    radius_b,
+                })))
             }
             (Some(radius_a), Some(radius_b), true, false) => Ok(Selected {
-                kernel: Kernel::SphereInCavity {
+                kernel: Kernel::Solid(SolidKernel::SphereInCavity {
                     radius_a: radius_b,
                     radius_b: radius_a,
-                },
+                }),
                 swap: true,
             }),
             (Some(_), Some(_), true, true) => Err(self.no(NOT_A_CONTACT)),
-            (_, _, false, false) => Ok(canonical(Kernel::EllipsoidEllipsoid {
+            (_, _, false, false) => Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidEllipsoid {
                 semi_a: ea.semi_axes(),
                 semi_b: eb.semi_axes(),
-            })),
+            }))),
             _ => Err(self.no(FLIP_NOT_BUILT)),
         }
     }
@@ -60,24 +66,24 @@ impl Pair<'_> {
         let side = side(self.flip_b);
         if !p.is_unbounded() {
             return Ok(canonical(match e.sphere_radius() {
-                Some(radius) => Kernel::SphereBoundedPlane {
+                Some(radius) => Kernel::Plane(PlaneKernel::SphereBoundedPlane {
                     radius,
                     plane: *p,
                     side,
-                },
-                None => Kernel::EllipsoidBoundedPlane {
+                }),
+                None => Kernel::Plane(PlaneKernel::EllipsoidBoundedPlane {
                     semi_axes: e.semi_axes(),
                     plane: *p,
                     side,
-                },
+                }),
             }));
         }
         Ok(canonical(match e.sphere_radius() {
-            Some(radius) => Kernel::SpherePlane { radius, side },
-            None => Kernel::EllipsoidPlane {
+            Some(radius) => Kernel::Plane(PlaneKernel::SpherePlane { radius, side }),
+            None => Kernel::Plane(PlaneKernel::EllipsoidPlane {
                 semi_axes: e.semi_axes(),
                 side,
-            },
+            }),
         }))
     }
 
@@ -89,10 +95,10 @@ impl Pair<'_> {
         cavity: &Cuboid,
     ) -> Result<Selected, Unsupported> {
         let mesh = self.cavity(cavity)?;
-        Ok(canonical(Kernel::EllipsoidMesh {
+        Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidMesh {
             semi_axes: e.semi_axes(),
             mesh,
-        }))
+        })))
     }
 
     /// An ellipsoid against the convex solid `b` (box, cylinder, frustum, torus): a sphere
@@ -100,9 +106,10 @@ impl Pair<'_> {
     pub(super) fn ellipsoid_solid(&self, e: &Ellipsoid) -> Result<Selected, Unsupported> {
         let solid = self.solid(self.b)?;
         match e.sphere_radius() {
-            Some(radius) if !self.flip_b => {
-                self.no_flip(self.flip_a, Kernel::SphereSolid { radius, solid })
-            }
+            Some(radius) if !self.flip_b => self.no_flip(
+                self.flip_a,
+                Kernel::Solid(SolidKernel::SphereSolid { radius, solid }),
+            ),
             Some(_) => Err(self.no(FLIP_NOT_BUILT)),
             None => general_ellipsoid_solid(e, &solid, self.flip_a || self.flip_b)
                 .map_err(|reason| self.no(reason)),
@@ -119,7 +126,10 @@ impl Pair<'_> {
         match e.sphere_radius() {
             Some(radius) if !self.flip_b => {
                 let mesh = self.mesh(mesh, false)?;
-                self.no_flip(self.flip_a, Kernel::SphereMesh { radius, mesh })
+                self.no_flip(
+                    self.flip_a,
+                    Kernel::Solid(SolidKernel::SphereMesh { radius, mesh }),
+                )
             }
             // A sphere in a meshed cavity: the general ellipsoid slicing, which finds every
             // wall it meets as its own region.
@@ -127,10 +137,10 @@ impl Pair<'_> {
                 let prepared = self.mesh(mesh, self.flip_b)?;
                 self.no_flip(
                     self.flip_a,
-                    Kernel::EllipsoidMesh {
+                    Kernel::Solid(SolidKernel::EllipsoidMesh {
                         semi_axes: e.semi_axes(),
                         mesh: prepared,
-                    },
+                    }),
                 )
             }
         }
@@ -146,13 +156,15 @@ fn general_ellipsoid_solid(
 ) -> Result<Selected, &'static str> {
     let semi_axes = e.semi_axes();
     let kernel = match *solid {
-        Solid::Box(cuboid) => Kernel::EllipsoidBox { semi_axes, cuboid },
-        Solid::Cylinder(cylinder) => Kernel::EllipsoidCylinder {
+        Solid::Box(cuboid) => Kernel::Solid(SolidKernel::EllipsoidBox { semi_axes, cuboid }),
+        Solid::Cylinder(cylinder) => Kernel::Solid(SolidKernel::EllipsoidCylinder {
             semi_axes,
             cylinder,
-        },
-        Solid::Frustum(frustum) => Kernel::EllipsoidFrustum { semi_axes, frustum },
-        Solid::Torus(torus) => Kernel::EllipsoidTorus { semi_axes, torus },
+        }),
+        Solid::Frustum(frustum) => {
+            Kernel::Solid(SolidKernel::EllipsoidFrustum { semi_axes, frustum })
+        }
+        Solid::Torus(torus) => Kernel::Solid(SolidKernel::EllipsoidTorus { semi_axes, torus }),
     };
     if flipped {
         Err(FLIP_NOT_BUILT)
@@ -173,21 +185,21 @@ impl Pair<'_> {
         if p.is_unbounded() {
             self.no_flip(
                 self.flip_a,
-                Kernel::CylinderPlane {
+                Kernel::Plane(PlaneKernel::CylinderPlane {
                     cylinder: *cylinder,
                     side: side(self.flip_b),
-                },
+                }),
             )
         } else {
             self.no_flip(
                 self.flip_a,
-                Kernel::CylinderSliced {
+                Kernel::Solid(SolidKernel::CylinderSliced {
                     cylinder: *cylinder,
                     other: SlicedSolid::Plane {
                         plane: *p,
                         side: side(self.flip_b),
                     },
-                },
+                }),
             )
         }
     }
@@ -198,19 +210,19 @@ impl Pair<'_> {
         if p.is_unbounded() {
             self.no_flip(
                 self.flip_a,
-                Kernel::RevolvedPlane {
+                Kernel::Plane(PlaneKernel::RevolvedPlane {
                     solid,
                     side: side(self.flip_b),
-                },
+                }),
             )
         } else {
             self.no_flip(
                 self.flip_a,
-                Kernel::RevolvedBoundedPlane {
+                Kernel::Plane(PlaneKernel::RevolvedBoundedPlane {
                     solid,
                     plane: *p,
                     side: side(self.flip_b),
-                },
+                }),
             )
         }
     }
@@ -223,11 +235,11 @@ impl Pair<'_> {
     ) -> Result<Selected, Unsupported> {
         self.no_flip(
             self.flip_a,
-            Kernel::BoxPlane {
+            Kernel::Plane(PlaneKernel::BoxPlane {
                 cuboid: *cuboid,
                 plane: *plane,
                 side: side(self.flip_b),
-            },
+            }),
         )
     }
 
@@ -242,13 +254,13 @@ impl Pair<'_> {
         self.no_flip(
             self.flip_a,
             if p.is_unbounded() {
-                Kernel::MeshPlane { mesh, side }
+                Kernel::Plane(PlaneKernel::MeshPlane { mesh, side })
             } else {
-                Kernel::MeshBoundedPlane {
+                Kernel::Plane(PlaneKernel::MeshBoundedPlane {
                     mesh,
                     plane: *p,
                     side,
-                }
+                })
             },
         )
     }
@@ -260,10 +272,10 @@ impl Pair<'_> {
     /// cavity's walls (a mesh turned inside out).
     pub(super) fn box_box(&self, a_box: &Cuboid, b_box: &Cuboid) -> Result<Selected, Unsupported> {
         match (self.flip_a, self.flip_b) {
-            (false, false) => Ok(canonical(Kernel::BoxBox {
+            (false, false) => Ok(canonical(Kernel::Solid(SolidKernel::BoxBox {
                 a: *a_box,
                 b: *b_box,
-            })),
+            }))),
             // A box in a box-shaped cavity: the box against the cavity's walls, a mesh
             // turned inside out.
             (false, true) | (true, false) => {
@@ -276,10 +288,10 @@ impl Pair<'_> {
                     .ok_or_else(|| self.no(MESH_OPEN))?
                     .inverted();
                 Ok(Selected {
-                    kernel: Kernel::BoxMesh {
+                    kernel: Kernel::Solid(SolidKernel::BoxMesh {
                         cuboid: *inner,
                         mesh: std::sync::Arc::new(walls),
-                    },
+                    }),
                     swap: self.flip_a,
                 })
             }
@@ -292,10 +304,10 @@ impl Pair<'_> {
         let solid = self.solid(self.b)?;
         self.no_flip(
             self.flip_a || self.flip_b,
-            Kernel::BoxRevolved {
+            Kernel::Solid(SolidKernel::BoxRevolved {
                 cuboid: *cuboid,
                 solid,
-            },
+            }),
         )
     }
 
@@ -307,7 +319,10 @@ impl Pair<'_> {
     ) -> Result<Selected, Unsupported> {
         let pair = crate::pairs::mesh_mesh::MeshPair::new(mesh_a, mesh_b)
             .ok_or_else(|| self.no(MESH_OPEN))?;
-        self.no_flip(self.flip_a || self.flip_b, Kernel::MeshMesh { pair })
+        self.no_flip(
+            self.flip_a || self.flip_b,
+            Kernel::Solid(SolidKernel::MeshMesh { pair }),
+        )
     }
 
     /// A box against a closed mesh (the mesh may be a cavity).
@@ -319,10 +334,10 @@ impl Pair<'_> {
         let prepared = self.mesh(mesh, self.flip_b)?;
         self.no_flip(
             self.flip_a,
-            Kernel::BoxMesh {
+            Kernel::Solid(SolidKernel::BoxMesh {
                 cuboid: *cuboid,
                 mesh: prepared,
-            },
+            }),
         )
     }
 }
@@ -333,7 +348,10 @@ impl Pair<'_> {
     pub(super) fn cylinder_in_box_cavity(&self, cavity: &Cuboid) -> Result<Selected, Unsupported> {
         let solid = self.solid(self.a)?;
         let mesh = self.cavity(cavity)?;
-        Ok(canonical(Kernel::RevolvedMesh { solid, mesh }))
+        Ok(canonical(Kernel::Solid(SolidKernel::RevolvedMesh {
+            solid,
+            mesh,
+        })))
     }
 
     /// A frustum or torus `b` in a box-shaped cavity `a`: the kernel's first geometry is J.
@@ -341,7 +359,7 @@ impl Pair<'_> {
         let solid = self.solid(self.b)?;
         let mesh = self.cavity(cavity)?;
         Ok(Selected {
-            kernel: Kernel::RevolvedMesh { solid, mesh },
+            kernel: Kernel::Solid(SolidKernel::RevolvedMesh { solid, mesh }),
             swap: true,
         })
     }
@@ -366,10 +384,10 @@ impl Pair<'_> {
         };
         self.no_flip(
             self.flip_a || self.flip_b,
-            Kernel::CylinderSliced {
+            Kernel::Solid(SolidKernel::CylinderSliced {
                 cylinder: *cylinder,
                 other,
-            },
+            }),
         )
     }
 
@@ -379,10 +397,10 @@ impl Pair<'_> {
         let prepared = self.mesh(mesh, self.flip_b)?;
         self.no_flip(
             self.flip_a,
-            Kernel::RevolvedMesh {
+            Kernel::Solid(SolidKernel::RevolvedMesh {
                 solid,
                 mesh: prepared,
-            },
+            }),
         )
     }
 
@@ -392,10 +410,10 @@ impl Pair<'_> {
         let solid_b = self.solid(self.b)?;
         self.no_flip(
             self.flip_a || self.flip_b,
-            Kernel::RevolvedPair {
+            Kernel::Solid(SolidKernel::RevolvedPair {
                 a: solid_a,
                 b: solid_b,
-            },
+            }),
         )
     }
 
@@ -404,10 +422,10 @@ impl Pair<'_> {
         let solid = self.solid(self.a)?;
         self.no_flip(
             self.flip_a || self.flip_b,
-            Kernel::RevolvedTorus {
+            Kernel::Solid(SolidKernel::RevolvedTorus {
                 solid,
                 torus: *torus,
-            },
+            }),
         )
     }
 }

@@ -1,5 +1,6 @@
-//! The 3-D pair kernels, one module per [`crate::kernel::Kernel`] variant and named as it is
-//! (`Kernel::BoxMesh` → `box_mesh`; `SphereInCavity` lives beside `SphereSphere`, the
+//! The 3-D pair kernels, one module per [`crate::kernel::SolidKernel`] or
+//! [`crate::kernel::PlaneKernel`] variant and named as it is (`SolidKernel::BoxMesh` →
+//! `box_mesh`; `SphereInCavity` lives beside `SphereSphere`, the
 //! cylinder's slicing partners in `cylinder_sliced`); the methods they share are in
 //! `crate::methods`. Every function takes the world poses `X_WG` of its two
 //! geometries (first `a`, second `b`, in canonical order) and returns the contact with the
