@@ -282,30 +282,15 @@ pub(crate) fn blended(facets: &LocalContact, s: &Support, n: &Vector3) -> LocalC
 mod tests {
     use crate::contact_region::LocalContact;
     use crate::facet_mesh::FacetMesh;
-    use crate::plane_contact::mesh_plane;
-    use crate::scratch::Scratch;
+    use crate::plane_contact::tests::contacts;
     use crate::tessellate::tessellate;
-    use contact_core::geometry::{Ellipsoid, Plane};
-    use contact_core::{FacetingTolerance, Geometry, Isometry3, Vector3, WorkCounters};
+    use contact_core::geometry::Ellipsoid;
+    use contact_core::{FacetingTolerance, Geometry, Isometry3, Vector3};
 
     fn mesh(a: f64, b: f64, c: f64, ft: f64) -> FacetMesh {
         let geometry = Geometry::Ellipsoid(Ellipsoid::new(a, b, c).unwrap());
         let t = tessellate(&geometry, FacetingTolerance::new(ft).unwrap()).unwrap();
         FacetMesh::build(t, true)
-    }
-
-    fn contacts(m: &FacetMesh, pose_a_plane: &Isometry3) -> Vec<LocalContact> {
-        let mut out = Vec::new();
-        let (mut s, mut work) = (Scratch::default(), WorkCounters::default());
-        mesh_plane(
-            m,
-            &Plane::unbounded(),
-            pose_a_plane,
-            &mut s,
-            &mut work,
-            &mut out,
-        );
-        out
     }
 
     #[test]

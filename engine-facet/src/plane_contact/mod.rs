@@ -29,7 +29,7 @@ use convex::convex_region;
 
 mod convex;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 /// A mesh of at most this many triangles is scanned whole against a plane rather than through
 /// its OBB tree: the tree's box tests cost more than the few triangles they would skip.

@@ -44,7 +44,8 @@ fn convex_solids() -> Vec<(&'static str, FacetMesh)> {
     solids
 }
 
-fn contacts(m: &FacetMesh, pose_a_plane: &Isometry3) -> Vec<LocalContact> {
+/// Mesh `m`'s contacts with the unbounded plane at `pose_a_plane` in its frame.
+pub(crate) fn contacts(m: &FacetMesh, pose_a_plane: &Isometry3) -> Vec<LocalContact> {
     let mut out = Vec::new();
     let (mut s, mut work) = (Scratch::default(), WorkCounters::default());
     mesh_plane(
