@@ -194,3 +194,84 @@ fn unsupported_pairs_and_bad_input_are_errors() {
         .is_err()
     );
 }
+
+/// The contacts of `pair` with I at `pose_i` and J at the origin, as bits, and the triangles
+/// the query tested.
+fn contact_bits(pair: &dyn contact_core::PreparedPair, pose_i: &Isometry3) -> (Vec<u64>, u64) {
+    let mut out = Vec::new();
+    let mut work = contact_core::WorkCounters::default();
+    pair.query(pose_i, &Isometry3::identity(), &mut out, &mut work)
+        .unwrap();
+    let bits = out
+        .iter()
+        .flat_map(|c| {
+            let (pi, pj, n) = (c.point_i_w, c.point_j_w, c.normal_w);
+            [
+                pi.x,
+                pi.y,
+                pi.z,
+                pj.x,
+                pj.y,
+                pj.z,
+                n.x,
+                n.y,
+                n.z,
+                c.penetration,
+                c.area,
+            ]
+        })
+        .map(f64::to_bits)
+        .collect();
+    (bits, work.primitive_tests)
+}
+
+#[test]
+fn a_mesh_moved_along_a_plane_answers_as_a_fresh_pair_does() {
+    // A tilted cylinder resting on the ground, then moved along the ground (the pair then
+    // reuses its last contacts, moved with it), lowered, turned, and moved back: each answer
+    // is a fresh pair's to the bit, and the moved one is the first moved along.
+    let e = engine(300.0028);
+    let cylinder = GeometryInstance::new(Geometry::Cylinder(
+        contact_core::geometry::Cylinder::new(0.1, 0.3).unwrap(),
+    ));
+    let ground = GeometryInstance::new(Geometry::Plane(Plane::unbounded()));
+    let prepare = || {
+        e.prepare(
+            std::slice::from_ref(&cylinder),
+            std::slice::from_ref(&ground),
+        )
+        .unwrap()
+    };
+    let tilt = contact_core::UnitQuaternion::from_euler_angles(0.2, -0.1, 0.3);
+    let at = |x: f64, y: f64, z: f64, r| Isometry3::from_parts(Vector3::new(x, y, z).into(), r);
+    let poses = [
+        at(0.0, 0.0, -0.01, tilt),
+        at(0.37, -1.25, -0.01, tilt),
+        at(0.37, -1.25, -0.02, tilt),
+        at(
+            0.37,
+            -1.25,
+            -0.02,
+            contact_core::UnitQuaternion::identity() * tilt * tilt,
+        ),
+        at(0.0, 0.0, -0.01, tilt),
+    ];
+    let kept = prepare();
+    let answers: Vec<(Vec<u64>, u64)> = poses
+        .iter()
+        .map(|p| contact_bits(kept.as_ref(), p))
+        .collect();
+    for (k, pose) in poses.iter().enumerate() {
+        let (fresh, tested) = contact_bits(prepare().as_ref(), pose);
+        assert!(!fresh.is_empty() && tested > 0, "pose {k} touches");
+        assert_eq!(answers[k].0, fresh, "pose {k}");
+        // Only the pose moved along the plane is answered without testing a triangle.
+        assert_eq!(
+            answers[k].1 == 0,
+            k == 1,
+            "pose {k}: {} tested",
+            answers[k].1
+        );
+    }
+    assert_ne!(answers[0].0, answers[1].0, "the moved contacts are moved");
+}
