@@ -59,8 +59,9 @@ pub struct FacetMesh {
     pub longest_edge: f64,
     /// True when closed and outward oriented (inside tests are meaningful).
     pub closed: bool,
-    /// True when closed and convex at every edge (within 1e-12 of the size): its surface below
-    /// a plane is then one region ([`crate::mesh_build::is_convex`]).
+    /// True when closed and convex: one edge-connected surface, every neighbour link returned,
+    /// and at every edge the neighbour's far corner on or behind the triangle's plane within
+    /// `1e-12·size`. Its surface below any plane is then one region.
     pub convex: bool,
     /// How far any curved PN triangle reaches beyond its flat facet (0 for flat facets):
     /// every point of the smooth surface lies within it of the facets.
