@@ -72,6 +72,9 @@ pub enum MathFn {
     Bistop,
     /// `SHF(x, x0, a, ω, φ, b) = a·sin(ω·(x − x0) − φ) + b`.
     Shf,
+    /// `IF(c: n, z, p)`, Fortran's arithmetic IF: `n` where `c < 0`, `z` where `c = 0`, `p`
+    /// where `c > 0`; only the chosen branch is evaluated.
+    If,
 }
 
 /// A kinematic measure between markers (Adams function names).
@@ -259,6 +262,7 @@ pub const FUNCTIONS: &[(&str, Callee, usize, usize)] = &[
     ("IMPACT", Callee::Math(MathFn::Impact), 7, 7),
     ("BISTOP", Callee::Math(MathFn::Bistop), 8, 8),
     ("SHF", Callee::Math(MathFn::Shf), 6, 6),
+    ("IF", Callee::Math(MathFn::If), 4, 4),
     ("DX", Callee::Measure(Measure::Dx), 1, 3),
     ("DY", Callee::Measure(Measure::Dy), 1, 3),
     ("DZ", Callee::Measure(Measure::Dz), 1, 3),

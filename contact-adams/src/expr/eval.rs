@@ -135,6 +135,18 @@ fn bistop(a: &[f64]) -> Result<f64, EvalError> {
     }
 }
 
+/// The argument an arithmetic IF takes for condition `c`: 1 below zero, 2 at zero, 3 above
+/// (a NaN condition, which no finite model gives, takes the last).
+pub(crate) fn if_branch(c: f64) -> usize {
+    if c < 0.0 {
+        1
+    } else if c == 0.0 {
+        2
+    } else {
+        3
+    }
+}
+
 fn math(f: MathFn, a: &[f64]) -> Result<f64, EvalError> {
     Ok(match f {
         MathFn::Sin => a[0].sin(),
@@ -180,6 +192,7 @@ fn math(f: MathFn, a: &[f64]) -> Result<f64, EvalError> {
         MathFn::Impact => impact(a)?,
         MathFn::Bistop => bistop(a)?,
         MathFn::Shf => a[2] * (a[3] * (a[0] - a[1]) - a[4]).sin() + a[5],
+        MathFn::If => a[if_branch(a[0])],
     })
 }
 
@@ -209,6 +222,8 @@ impl Expr {
                     BinOp::Pow => x.powf(y),
                 }
             }
+            // Only the chosen branch: another may be undefined there (a SQRT of a negative).
+            Self::Math(MathFn::If, args) => args[if_branch(args[0].eval_inner(ctx)?)].eval_inner(ctx)?,
             Self::Math(f, args) => {
                 let values = args
                     .iter()

@@ -135,6 +135,11 @@ impl Expr {
                     BinOp::Pow => a.pow(b),
                 }
             }
+            // The chosen branch's jet, as the evaluator takes only that branch.
+            Self::Math(MathFn::If, args) => {
+                let condition = args[0].eval(&TimeOnly(t)).ok()?;
+                args[super::eval::if_branch(condition)].jet(t)?
+            }
             Self::Math(f, args) => {
                 let args = args.iter().map(|a| a.jet(t)).collect::<Option<Vec<_>>>()?;
                 let value = self.eval(&TimeOnly(t)).ok()?;
@@ -251,6 +256,8 @@ fn math_jet(f: MathFn, a: &[Jet]) -> Option<Jet> {
             let u = phase.value;
             a[2].mul(phase.chain(u.sin(), u.cos(), -u.sin())).add(a[5])
         }
+        // Reached only through `Expr::jet`'s own arm, which takes the chosen branch alone.
+        MathFn::If => a[super::eval::if_branch(x)],
         MathFn::Impact | MathFn::Bistop => return None,
     })
 }
@@ -321,6 +328,7 @@ mod tests {
             "SHF(TIME, 0.1, 2, 3, 0.4, 1)",
             "TIME ** 3 + 2 ** TIME + (1 + TIME) ** (TIME / 2)",
             "-360D * TIME",
+            "IF(TIME - 1: TIME**2, 0, SIN(TIME)) + IF(TIME - 9: 1, 2, SQRT(TIME - 9))",
         ] {
             for t in [0.3, 0.77, 1.3] {
                 agrees(text, t);

@@ -82,6 +82,46 @@ mod tests {
     }
 
     #[test]
+    fn arithmetic_if_takes_the_branch_of_its_conditions_sign() {
+        // Fortran's arithmetic IF, as Adams writes it: IF(c: negative, zero, positive).
+        for (t, expected) in [(0.5, 10.0), (1.0, 20.0), (2.0, 30.0)] {
+            assert_eq!(at("IF(TIME - 1: 10, 20, 30)", t), expected);
+        }
+        // Nested, with degrees and line breaks as a dataset continues them.
+        let text = "IF( MOD(TIME,PI/2) -89D:\n STEP( MOD(TIME,PI/2), 0, 21, 89D, 28.57), 28.57,\n STEP( MOD(TIME,PI/2), 89D, 28.57, 90D, 21) )";
+        let text = text.replace("\\n", "\n");
+        let cubic = |d: f64, h0: f64, h1: f64| h0 + (h1 - h0) * d * d * (3.0 - 2.0 * d);
+        let below = at(&text, 45f64.to_radians());
+        assert!((below - cubic(45.0 / 89.0, 21.0, 28.57)).abs() < 1e-12, "{below}");
+        let above = at(&text, 89.5f64.to_radians());
+        assert!((above - cubic(0.5, 28.57, 21.0)).abs() < 1e-12, "{above}");
+        assert_eq!(at("IF(1: 1, 2, IF(TIME: 3, 4, 5))", 0.0), 4.0);
+        // Only the chosen branch is evaluated: the other may be undefined there.
+        assert_eq!(at("IF(TIME: 0, 1, SQRT(TIME))", -4.0), 0.0);
+        assert_eq!(
+            parse_expr("IF(TIME: SQRT(TIME), 0, 1)")
+                .unwrap()
+                .eval(&TimeOnly(-4.0)),
+            Err(EvalError::Domain {
+                function: "SQRT",
+                value: -4.0,
+                allowed: ">= 0"
+            })
+        );
+    }
+
+    #[test]
+    fn arithmetic_if_needs_its_colon_and_four_parts() {
+        let e = parse_expr("IF(TIME, 1, 2, 3)").unwrap_err();
+        assert_eq!(e.to_string(), "expected ':', found ','");
+        assert_eq!(e.offset, 7);
+        let e = parse_expr("IF(TIME: 1, 2)").unwrap_err();
+        assert_eq!(e.to_string(), "IF takes 4..=4 arguments, 3 given");
+        let e = parse_expr("MAX(TIME: 1)").unwrap_err();
+        assert_eq!(e.to_string(), "expected ',' or ')', found ':'");
+    }
+
+    #[test]
     fn state_functions_ask_the_context() {
         let e = parse_expr("DX(2, 3) + VARVAL(1)").unwrap();
         assert_eq!(e.marker_ids(), [2, 3]);

@@ -6,7 +6,7 @@
 //! parentheses; calls of the functions in [`FUNCTIONS`](super::ast::FUNCTIONS). A name that is
 //! not a known function is an error naming it.
 
-use super::ast::{BinOp, Callee, Expr, FUNCTIONS};
+use super::ast::{BinOp, Callee, Expr, FUNCTIONS, MathFn};
 use thiserror::Error;
 
 /// The deepest expression tree accepted (parentheses, calls and operator chains each add a
@@ -88,6 +88,8 @@ enum Tok {
     LParen,
     RParen,
     Comma,
+    /// `:`, after an arithmetic IF's condition.
+    Colon,
 }
 
 fn describe(t: &Tok) -> String {
@@ -99,6 +101,7 @@ fn describe(t: &Tok) -> String {
         Tok::LParen => "(".into(),
         Tok::RParen => ")".into(),
         Tok::Comma => ",".into(),
+        Tok::Colon => ":".into(),
     }
 }
 
@@ -169,6 +172,7 @@ fn tokenize(chars: &[char]) -> Result<Vec<(Tok, usize)>, ExprError> {
             '(' => Tok::LParen,
             ')' => Tok::RParen,
             ',' => Tok::Comma,
+            ':' => Tok::Colon,
             _ => return Err(err(start, ExprErrorKind::UnexpectedChar(c))),
         };
         i += 1;
@@ -286,18 +290,23 @@ impl Parser {
         if self.peek() == Some(&Tok::RParen) {
             self.pos += 1;
         } else {
+            // An arithmetic IF separates its condition from the branches by ':'.
+            let arithmetic_if = callee == Callee::Math(MathFn::If);
             loop {
                 offsets.push(self.offset());
                 args.push(self.expr(0, depth + 1)?);
-                let (t, at2) = self.next("',' or ')'")?;
+                let colon_next = arithmetic_if && args.len() == 1;
+                let expected = if colon_next { "':'" } else { "',' or ')'" };
+                let (t, at2) = self.next(expected)?;
                 match t {
-                    Tok::Comma => {}
-                    Tok::RParen => break,
+                    Tok::Colon if colon_next => {}
+                    Tok::Comma if !colon_next => {}
+                    Tok::RParen if !colon_next => break,
                     other => {
                         return Err(err(
                             at2,
                             ExprErrorKind::Expected {
-                                expected: "',' or ')'",
+                                expected,
                                 found: describe(&other),
                             },
                         ));
