@@ -156,17 +156,26 @@ fn read_values(cur: &mut Cursor) -> Vec<Value> {
     let mut values = Vec::new();
     loop {
         cur.skip_ws();
-        let (atom, loc) = cur.word();
+        let (atom, loc) = if cur.peek().is_some_and(|c| c.c == '"') {
+            cur.quoted()
+        } else {
+            cur.word()
+        };
         values.push(Value {
             kind: ValueKind::Atom(atom),
             loc,
         });
-        // Another value follows only if, after the comma, a number comes.
+        // Another value follows only if, after the comma, a number or a quoted string comes
+        // (a list of names, `CNAMES = "a", "b"`, may go on over continuation lines).
         let after_ws = cur.skip_ws_from(cur.pos);
         if cur.peek_at(after_ws).is_none_or(|c| c.c != ',') {
             return values;
         }
         let next = cur.skip_ws_from(after_ws + 1);
+        if cur.peek_at(next).is_some_and(|c| c.c == '"') {
+            cur.pos = after_ws + 1;
+            continue;
+        }
         let mut end = next;
         let mut text = String::new();
         while let Some(ch) = cur.peek_at(end) {

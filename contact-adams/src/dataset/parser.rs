@@ -248,6 +248,29 @@ impl Cursor {
         (s, loc)
     }
 
+    /// A quoted string from the `"` at the cursor to its closing `"` on the same line, both
+    /// quotes kept (to the line's end when it is not closed).
+    pub(super) fn quoted(&mut self) -> (String, Loc) {
+        let loc = self.loc();
+        let Some(open) = self.peek() else {
+            return (String::new(), loc);
+        };
+        let seg = open.seg;
+        let mut s = String::from('"');
+        self.pos += 1;
+        while let Some(ch) = self.peek() {
+            if ch.seg != seg {
+                break;
+            }
+            s.push(ch.c);
+            self.pos += 1;
+            if ch.c == '"' {
+                break;
+            }
+        }
+        (s, loc)
+    }
+
     /// True when, from `pos`, the text reads `WORD =` (not `==`): the start of an argument.
     pub(super) fn keyword_assignment_at(&self, pos: usize) -> bool {
         let mut p = self.skip_ws_from(pos);

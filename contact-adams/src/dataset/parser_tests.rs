@@ -29,6 +29,26 @@ fn ids_lists_and_flags() {
 }
 
 #[test]
+fn quoted_names_make_a_list_over_continuation_lines() {
+    // As Adams View writes a REQUEST's column names and labels (the FRS5 model).
+    let s = one(
+        "REQUEST/9\n, CNAMES = \"S1_beam18\", \"S1_beam19\"\n, \"S1_beam20\"\n, CLABELS = \"(PSI)\", \"(PSI)\"\n, \"(PSI)\"\n, I = 497",
+    );
+    let names: Vec<_> = s.args.iter().map(|a| a.spec.name).collect();
+    assert_eq!(names, ["CNAMES", "CLABELS", "I"]);
+    assert_eq!(
+        atoms(&s.args[0]),
+        ["\"S1_beam18\"", "\"S1_beam19\"", "\"S1_beam20\""]
+    );
+    assert_eq!(atoms(&s.args[1]), ["\"(PSI)\"", "\"(PSI)\"", "\"(PSI)\""]);
+    assert_eq!(s.args[0].values[2].loc, Loc::new(4, 3));
+    // A flag of RESULTS that Adams View writes.
+    let s = one("RESULTS/\n, FORMATTED\n, NOREQUESTS\n, NOCONTACTS");
+    let names: Vec<_> = s.args.iter().map(|a| a.spec.name).collect();
+    assert_eq!(names, ["FORMATTED", "NOREQUESTS", "NOCONTACTS"]);
+}
+
+#[test]
 fn expressions_end_at_backslash_comma_or_keyword_line() {
     let s =
         one("REQUEST/04, F2=ORIENT(27,1,0201,0101)\\F3=ORIENT(27,2,0201,0101),C=EULER PARAMETERS");

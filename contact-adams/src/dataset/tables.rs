@@ -342,6 +342,7 @@ const RESULTS: &[ArgSpec] = &[
     flag("NOFLOATINGMARKERS"),
     flag("NOLINEAR"),
     flag("NOREACTIONFORCES"),
+    flag("NOREQUESTS"),
     flag("NOSYSTEMELEMENTS"),
     flag("NOTIRES"),
     flag("NOVELOCITIES"),

@@ -223,7 +223,9 @@ impl Expr {
                 }
             }
             // Only the chosen branch: another may be undefined there (a SQRT of a negative).
-            Self::Math(MathFn::If, args) => args[if_branch(args[0].eval_inner(ctx)?)].eval_inner(ctx)?,
+            Self::Math(MathFn::If, args) => {
+                args[if_branch(args[0].eval_inner(ctx)?)].eval_inner(ctx)?
+            }
             Self::Math(f, args) => {
                 let values = args
                     .iter()

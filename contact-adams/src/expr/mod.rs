@@ -92,7 +92,10 @@ mod tests {
         let text = text.replace("\\n", "\n");
         let cubic = |d: f64, h0: f64, h1: f64| h0 + (h1 - h0) * d * d * (3.0 - 2.0 * d);
         let below = at(&text, 45f64.to_radians());
-        assert!((below - cubic(45.0 / 89.0, 21.0, 28.57)).abs() < 1e-12, "{below}");
+        assert!(
+            (below - cubic(45.0 / 89.0, 21.0, 28.57)).abs() < 1e-12,
+            "{below}"
+        );
         let above = at(&text, 89.5f64.to_radians());
         assert!((above - cubic(0.5, 28.57, 21.0)).abs() < 1e-12, "{above}");
         assert_eq!(at("IF(1: 1, 2, IF(TIME: 3, 4, 5))", 0.0), 4.0);
