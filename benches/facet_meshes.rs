@@ -1,6 +1,7 @@
 //! Faceted-engine benches: OBB-tree build and all-contacts queries for two spheres of about
 //! 1k, 10k and 100k triangles at seeded random poses (half overlapping, half separated), and
-//! two tori; parry's trimesh–trimesh contact manifolds on the same meshes and poses beside them.
+//! two tori; parry's trimesh–trimesh contact manifolds on the same meshes and poses beside them;
+//! and the exact engine beside the faceted one on the 10k and 100k spheres given as meshes.
 //! Short profile (10 samples, 1 s) so `cargo bench --bench facet_meshes` takes a few minutes.
 
 #![expect(
@@ -162,9 +163,42 @@ fn queries(c: &mut Criterion) {
     }
 }
 
+/// The two engines on the same two meshes given as meshes (the spheres' tessellations), at the
+/// overlapping poses: the exact engine answers two meshes by their polyhedral intersection,
+/// with the faceted engine's method on the meshes as given.
+fn mesh_pairs(c: &mut Criterion) {
+    let large = |s: &Scene| s.name == "spheres-10k" || s.name == "spheres-100k";
+    for scene in scenes().into_iter().filter(large) {
+        let t = tessellate(&scene.i, scene.tolerance).unwrap();
+        let mesh = contact_core::geometry::TriangleMesh::new(t.vertices, t.triangles).unwrap();
+        let given = GeometryInstance::new(Geometry::Mesh(std::sync::Arc::new(mesh)));
+        let both = [given.clone()];
+        let faceted = FacetEngine::new(scene.tolerance)
+            .prepare(&both, &both)
+            .unwrap();
+        let exact = engine_exact::ExactEngine.prepare(&both, &both).unwrap();
+        let mut group = c.benchmark_group(format!("facet/mesh-pair/{}", scene.name));
+        for (name, pair) in [("faceted", &faceted), ("exact", &exact)] {
+            let mut contacts = Vec::new();
+            let mut work = WorkCounters::default();
+            let mut k = 0;
+            let poses = &scene.overlapping;
+            group.bench_function(BenchmarkId::new(name, "overlapping"), |bench| {
+                bench.iter(|| {
+                    k = (k + 1) % poses.len();
+                    pair.query(&poses[k], &Isometry3::identity(), &mut contacts, &mut work)
+                        .unwrap();
+                    black_box(contacts.len())
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
 criterion_group! {
     name = benches;
     config = configure();
-    targets = build, queries
+    targets = build, queries, mesh_pairs
 }
 criterion_main!(benches);
