@@ -29,21 +29,10 @@ pub(super) fn convex_region(
     s.plane_nodes.clear();
     for &t in &below {
         counted.primitive_tests += 1;
-        let c = a.corners(t);
-        let h = [
-            frame.height(&c[0]),
-            frame.height(&c[1]),
-            frame.height(&c[2]),
-        ];
-        if h[0].min(h[1]).min(h[2]) > 0.0 {
+        let (node, lowest) = frame.node(t, a.corners(t));
+        if lowest > 0.0 {
             continue;
         }
-        let node = PlaneNode {
-            tri: t,
-            crossing: h[0] > 0.0 || h[1] > 0.0 || h[2] > 0.0,
-            corners: c,
-            heights: h,
-        };
         if node.crossing {
             add_waterline(a, &n, &node, &mut r);
         }

@@ -81,6 +81,19 @@ impl PlaneFrame {
     fn height(&self, v: &Vector3) -> f64 {
         self.n.dot(&(v - self.origin))
     }
+
+    /// Triangle `t` with corners `c` as a node of the plane passes, and its lowest corner's
+    /// height (the triangle reaches the plane where it is ≤ 0).
+    fn node(&self, t: u32, c: [Vector3; 3]) -> (PlaneNode, f64) {
+        let h = [self.height(&c[0]), self.height(&c[1]), self.height(&c[2])];
+        let node = PlaneNode {
+            tri: t,
+            crossing: h[0] > 0.0 || h[1] > 0.0 || h[2] > 0.0,
+            corners: c,
+            heights: h,
+        };
+        (node, h[0].min(h[1]).min(h[2]))
+    }
 }
 
 /// All contacts of mesh A (taken as I) with the half-space whose frame is at `pose_a_plane`
@@ -243,7 +256,6 @@ fn nodes_below(
     work: &mut WorkCounters,
 ) -> Vec<u32> {
     let PlaneFrame { rot, origin, .. } = *frame;
-    let height = |v: &Vector3| frame.height(v);
     let [x0, x1] = plane.x_range();
     let [y0, y1] = plane.y_range();
     let bounded = !plane.is_unbounded();
@@ -269,17 +281,10 @@ fn nodes_below(
         if bounded && beyond(&c) {
             continue;
         }
-        let h = [height(&c[0]), height(&c[1]), height(&c[2])];
-        let lowest = h[0].min(h[1]).min(h[2]);
+        let (node, lowest) = frame.node(t, c);
         if lowest <= 0.0 {
-            let crossing = h[0] > 0.0 || h[1] > 0.0 || h[2] > 0.0;
-            new_node(s, 0, t, crossing);
-            s.plane_nodes.push(PlaneNode {
-                tri: t,
-                crossing,
-                corners: c,
-                heights: h,
-            });
+            new_node(s, 0, t, node.crossing);
+            s.plane_nodes.push(node);
         }
         if a.implied_sphere.is_some() && lowest <= beyond_facets && a.is_curved(t) {
             curved.push(t);
