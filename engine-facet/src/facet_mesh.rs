@@ -1,6 +1,7 @@
 //! A prepared mesh: triangles, their neighbours across each edge, exact corner normals, mass
 //! properties and the OBB tree — everything a query reads, built once by `prepare`.
 
+use crate::flat_faces::{FlatFaces, flat_faces};
 use crate::mesh_build::{
     MassProperties, bounds, edge_neighbours, is_convex, longest_edge, vertex_normals,
 };
@@ -76,6 +77,9 @@ pub struct FacetMesh {
     /// along that surface's gradient to 1e-9 rad: a tessellated ellipsoid, whose contact with an
     /// unbounded plane is the ellipsoid's (`plane_support::ellipsoid_on_plane`).
     pub implied_ellipsoid: Option<(Point3, Vector3)>,
+    /// A convex mesh's flat faces (at most [`crate::flat_faces::MOST_FACES`]), for its contact
+    /// with a plane.
+    pub(crate) flat_faces: Option<FlatFaces>,
 }
 
 impl FacetMesh {
@@ -124,7 +128,7 @@ impl FacetMesh {
         } else {
             None
         };
-        Self {
+        let mut mesh = Self {
             vertices,
             triangles,
             neighbors,
@@ -143,7 +147,12 @@ impl FacetMesh {
             pn_reach,
             implied_sphere,
             implied_ellipsoid,
+            flat_faces: None,
+        };
+        if convex {
+            mesh.flat_faces = flat_faces(&mesh);
         }
+        mesh
     }
 
     /// The corners of triangle `t`.
@@ -168,6 +177,7 @@ impl FacetMesh {
             + self.vertex_normals.capacity() * std::mem::size_of::<Vector3>()
             + self.tree.heap_bytes()
             + self.patches.heap_bytes()
+            + self.flat_faces.as_ref().map_or(0, FlatFaces::heap_bytes)
     }
 
     /// Whether `p` (mesh frame) is inside the closed mesh: parity of ray crossings, cast along

@@ -18,7 +18,7 @@
 //! - [`triangle_pair`]: the triangle–triangle test with its crossing segment.
 //! - [`contact_region`]: crossings → regions → contacts (the method and its error bound);
 //!   the flood into the triangles inside the other solid in `inside_flood`; half-spaces in
-//!   `plane_contact`.
+//!   `plane_contact` (a convex mesh's coplanar triangles taken as one face, `flat_faces`).
 //! - [`FacetEngine`]: the [`GeometryEngine`](contact_core::GeometryEngine) tying it together.
 //! - [`planar`]: the 2-D pairs (a point or a circle against a line, circle, arc or curve; an
 //!   arc or curve against an arc, curve or line, one contact per overlap region) on polylines,
@@ -74,6 +74,7 @@ pub mod contact_region;
 mod crossings;
 mod engine;
 pub mod facet_mesh;
+mod flat_faces;
 mod inside_flood;
 mod mesh_build;
 pub mod obb;

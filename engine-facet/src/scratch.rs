@@ -170,6 +170,11 @@ pub(crate) struct Scratch {
     /// Per node of a mesh–plane query, its triangle's corners and their heights above the
     /// plane.
     pub plane_nodes: Vec<PlaneNode>,
+    /// Per vertex of a convex mesh, its height above a plane (`crate::flat_faces`).
+    pub vertex_heights: Vec<f64>,
+    /// The flat faces reaching below a plane, each with the range of `polygon` holding its
+    /// part below the plane (empty for a face wholly below).
+    pub touched: Vec<(u32, u32, u32)>,
     /// The inside flood's takings: `(seed node, triangle)`, or `(seed node, patch | PATCH_BIT)`
     /// for a whole patch (see [`crate::inside_flood`]).
     pub taken: Vec<(u32, u32)>,

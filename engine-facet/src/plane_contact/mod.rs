@@ -14,6 +14,10 @@
 //! enclosed by the waterline loop (for a body wholly under the plane: its downward-facing area
 //! projected on the plane).
 //!
+//! A convex mesh has one region below an unbounded plane, summed in one pass: over its flat
+//! faces where it has few (`faces`: a box's six sides, a cylinder's caps and side strips),
+//! else over its triangles (`convex`, the general path's sums to the bit).
+//!
 //! A bounded plane (finite XMIN…YMAX) ignores triangles whose corners all lie beyond one of its
 //! edges; a triangle straddling an edge counts whole (an error within one facet of the edge).
 
@@ -26,8 +30,10 @@ use crate::scratch::{PlaneNode, RegionSums, Scratch};
 use contact_core::geometry::Plane;
 use contact_core::{Isometry3, Matrix3, Vector3, WorkCounters};
 use convex::convex_region;
+use faces::faces_region;
 
 mod convex;
+mod faces;
 #[cfg(test)]
 pub(crate) mod tests;
 
@@ -150,13 +156,15 @@ fn facets_plane(
     work: &mut WorkCounters,
     out: &mut Vec<LocalContact>,
 ) {
-    if a.convex
-        && plane.is_unbounded()
-        && a.implied_sphere.is_none()
-        && let Some(found) = convex_region(a, frame, s, work)
-    {
-        out.extend(found);
-        return;
+    if a.convex && plane.is_unbounded() && a.implied_sphere.is_none() {
+        let found = match &a.flat_faces {
+            Some(faces) => faces_region(a, faces, frame, s, work),
+            None => convex_region(a, frame, s, work),
+        };
+        if let Some(found) = found {
+            out.extend(found);
+            return;
+        }
     }
     let n = frame.n;
     let height = |v: &Vector3| frame.height(v);

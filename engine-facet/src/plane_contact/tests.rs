@@ -86,24 +86,29 @@ fn summed_bits(c: &LocalContact) -> Vec<u64> {
         .collect()
 }
 
+/// From grazing (1e-9 of the size) through a vertex-deep touch to the whole body under the
+/// plane (which the general path answers in all), at pose number `k` of 300.
+fn depth_of_pose(k: usize, size: f64) -> f64 {
+    match k % 6 {
+        0 => 1e-9 * size,
+        1 => 0.0,
+        5 => 2.0 * size,
+        _ => size * (k as f64 * 0.618).fract() * 0.5,
+    }
+}
+
 #[test]
 fn the_convex_path_sums_as_the_general_one_and_finds_the_same_exit() {
     let mut compared = 0;
-    for (name, convex) in convex_solids() {
-        assert!(convex.convex, "{name} is convex");
+    for (name, faces) in convex_solids() {
+        assert!(faces.convex, "{name} is convex");
+        let mut convex = faces.clone();
+        convex.flat_faces = None;
         let mut general = convex.clone();
         general.convex = false;
         let size = convex.size;
         for k in 0..300 {
-            // From grazing (1e-9 of the size) through a vertex-deep touch to the whole body
-            // under the plane (which the general path answers in both).
-            let depth = match k % 6 {
-                0 => 1e-9 * size,
-                1 => 0.0,
-                5 => 2.0 * size,
-                _ => size * (k as f64 * 0.618).fract() * 0.5,
-            };
-            let pose = plane_pose(&convex, k, depth);
+            let pose = plane_pose(&convex, k, depth_of_pose(k, size));
             let (fast, slow) = (contacts(&convex, &pose), contacts(&general, &pose));
             assert_eq!(fast.len(), slow.len(), "{name}, pose {k}");
             for (f, s) in fast.iter().zip(&slow) {
@@ -123,6 +128,48 @@ fn the_convex_path_sums_as_the_general_one_and_finds_the_same_exit() {
             }
         }
     }
+    assert!(compared > 1500, "{compared} contacts compared");
+}
+
+/// The flat faces' path against the triangles' general one: the same sums in another order,
+/// so the same contact to round-off: points and depth relative to the mesh's size, the area
+/// relative to the size times the area's square root (a sliver's cross products).
+#[test]
+fn the_flat_faces_sum_as_their_triangles() {
+    let (mut compared, mut worst) = (0, [0.0f64; 3]);
+    for (name, faces) in convex_solids() {
+        let mut general = faces.clone();
+        general.convex = false;
+        let size = faces.size;
+        for k in 0..300 {
+            let pose = plane_pose(&faces, k, depth_of_pose(k, size));
+            let (fast, slow) = (contacts(&faces, &pose), contacts(&general, &pose));
+            assert_eq!(fast.len(), slow.len(), "{name}, pose {k}");
+            for (f, s) in fast.iter().zip(&slow) {
+                assert_eq!(f.normal, s.normal, "{name}, pose {k}");
+                let off = [
+                    (f.point_j - s.point_j).norm() / size,
+                    (f.point_i - s.point_i)
+                        .norm()
+                        .max((f.penetration - s.penetration).abs())
+                        / size,
+                    // The area sums cross products of points known to round-off of the size:
+                    // its error scales with the size and the loop's extent, not the area.
+                    (f.area - s.area).abs()
+                        / (size * f.area.max(s.area).sqrt()).max(f64::MIN_POSITIVE),
+                ];
+                for (w, o) in worst.iter_mut().zip(off) {
+                    *w = w.max(o);
+                }
+                assert!(
+                    off[0] <= 1e-13 && off[1] <= 1e-12 && off[2] <= 1e-13,
+                    "{name}, pose {k}: {off:?}: {f:?} against {s:?}"
+                );
+                compared += 1;
+            }
+        }
+    }
+    eprintln!("worst: J's point, I's point and depth, area: {worst:?}");
     assert!(compared > 1500, "{compared} contacts compared");
 }
 
