@@ -6,6 +6,7 @@
 
 mod curve;
 mod mesh;
+pub mod outline;
 mod planar;
 mod solids;
 mod triangle;

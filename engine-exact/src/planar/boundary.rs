@@ -369,17 +369,6 @@ impl Chain {
         )
     }
 
-    /// The forward distance in `τ` from `from` to `to` (wrapping on a closed chain); `None`
-    /// when `to` lies behind `from` on an open chain.
-    pub fn ahead(&self, from: f64, to: f64) -> Option<f64> {
-        let d = to - from;
-        if self.closed {
-            Some(d.rem_euclid(self.count()))
-        } else {
-            (d >= 0.0).then_some(d)
-        }
-    }
-
     /// Calls `f(k, piece k, s0, s1)` for the stretch from `τ = from` forward by `length`.
     pub fn walk(&self, from: f64, length: f64, mut f: impl FnMut(usize, &Piece, f64, f64)) {
         let mut tau = from;

@@ -1,23 +1,11 @@
 //! Two boundaries — arcs, curves, lines — against each other: one contact per region where
 //! their materials overlap (SPEC §4 in 2-D).
 //!
-//! Both boundaries are [`Chain`]s in `b`'s plane with their material on the left, so the
-//! overlap regions are traced as in polygon clipping: along `a` while it is inside `b`'s
-//! material, switching to `b` where `a` leaves it, along `b` while it is inside `a`'s, back
-//! to `a` where `b` leaves — each region on the left of its own outline. At a crossing
-//! (found by [`crossings::find`]) `a` enters `b` iff `t_a × t_b < 0`.
-//!
-//! **Open ends.** Whether an open chain's end lies in the other's material follows from its
-//! crossings (inside after an entry, outside after an exit), or, when it crosses nowhere,
-//! from the other chain's closest point. An open chain that *ends* inside the other's
-//! material closes its region with the straight segment from that end `E` to its foot `F`
-//! (the closest point of the other chain), and the outline goes on along the other chain
-//! from `F`; an open chain that
-//! *starts* inside the other's material is reached the same way, from the foot of its start.
-//! As the end leaves the material `F → E` and the segment shrinks to nothing, so the region
-//! turns continuously into the one bounded by the two crossings. An end meeting the other
-//! chain head-on (a probe along the normal) encloses no area and gives no contact. The cut
-//! ends of an unbounded line are not ends.
+//! Both boundaries are [`Chain`]s in `b`'s plane with their material on the left; the
+//! regions are traced by the walk both engines share
+//! ([`contact_core::geometry::outline`]: crossings, open ends closed by the segment to their
+//! foot, the outline integrals), on the exact pieces. At a crossing (found by
+//! [`crossings::find`]) `a` enters `b` iff `t_a × t_b < 0`.
 //!
 //! **Per region** (outline on the left, integrals relative to a point `o` of the region for
 //! round-off): area `A = ½∮(x dy − y dx)`, centroid `g = o + (∮ ½x² dy, −∮ ½y² dx)/A`, each
@@ -65,39 +53,55 @@ use super::boundary::{Chain, Piece};
 use super::{InPlane, closest, crossings};
 use crate::kernel::PairContact;
 use crate::quadrature;
+use contact_core::geometry::outline::{
+    self, OutlineBuffers, OutlineChain, OutlineCrossing, OutlineSums,
+};
 use contact_core::{Isometry3, Point2, Vector2, Vector3, WorkCounters};
 
-/// Where the outline leaves chain `on` at `tau` for chain `to` at `to_tau`, with a straight
-/// closing segment in between for an open end.
-#[derive(Debug, Clone, Copy)]
-struct Departure {
-    on: usize,
-    tau: f64,
-    to: usize,
-    to_tau: f64,
-    jump: Option<(Vector2, Vector2)>,
-}
+/// The exact chain as the shared tracer walks it: its pieces integrated by the
+/// Gauss–Legendre nodes of [`quadrature::for_each_node`], ends by [`closest`].
+impl OutlineChain for Chain {
+    fn closed(&self) -> bool {
+        self.closed
+    }
 
-/// Sums of one region's outline integrals.
-#[derive(Debug, Clone, Copy)]
-struct Sums {
-    origin: Vector2,
-    twice_area: f64,
-    moment: Vector2,
-    chord_normal: Vector2,
-}
+    fn real_ends(&self) -> [bool; 2] {
+        self.real_ends
+    }
 
-impl Sums {
-    fn add(&mut self, piece: &Piece, s0: f64, s1: f64) {
-        let o = self.origin;
-        quadrature::for_each_node(s0, s1, |s, w| {
-            let p = piece.point(s) - o;
-            let d = piece.derivative(s);
-            self.twice_area += w * (p.x * d.y - p.y * d.x);
-            self.moment.x += w * 0.5 * p.x * p.x * d.y;
-            self.moment.y -= w * 0.5 * p.y * p.y * d.x;
+    fn count(&self) -> f64 {
+        Chain::count(self)
+    }
+
+    fn point(&self, tau: f64) -> Vector2 {
+        Chain::point(self, tau)
+    }
+
+    fn inside(&self, q: &Vector2, size: f64, work: &mut WorkCounters) -> bool {
+        closest::inside(self, q, size, work)
+    }
+
+    fn foot(&self, q: &Vector2, size: f64, work: &mut WorkCounters) -> Option<(f64, Vector2)> {
+        let f = closest::foot(self, q, size, work);
+        Some((f.tau, f.point))
+    }
+
+    fn add_stretch(&self, from: f64, length: f64, sums: &mut OutlineSums) {
+        self.walk(from, length, |_, piece, s0, s1| {
+            add_piece(sums, piece, s0, s1)
         });
     }
+
+    fn add_segment(&self, p: Vector2, q: Vector2, sums: &mut OutlineSums) {
+        add_piece(sums, &Piece::segment(p, q), 0.0, 1.0);
+    }
+}
+
+/// Adds `piece` over `[s0, s1]` to `sums`.
+fn add_piece(sums: &mut OutlineSums, piece: &Piece, s0: f64, s1: f64) {
+    quadrature::for_each_node(s0, s1, |s, w| {
+        sums.add_node(piece.point(s), piece.derivative(s), w);
+    });
 }
 
 /// `a`'s chain (in its own frame) placed in `b`'s plane: the in-plane rotation (a reflection
@@ -124,173 +128,34 @@ pub(crate) fn contacts(
     if !(size > 0.0 && size.is_finite()) {
         return;
     }
-    let chains = [a, b];
-    let found = crossings::find(a, b, size, work);
-    let mut departures: Vec<Departure> = found
+    let found: Vec<OutlineCrossing> = crossings::find(a, b, size, work)
         .iter()
-        .map(|c| {
-            if c.sine < 0.0 {
-                Departure {
-                    on: 1,
-                    tau: c.tau_b,
-                    to: 0,
-                    to_tau: c.tau_a,
-                    jump: None,
-                }
-            } else {
-                Departure {
-                    on: 0,
-                    tau: c.tau_a,
-                    to: 1,
-                    to_tau: c.tau_b,
-                    jump: None,
-                }
-            }
+        .map(|c| OutlineCrossing {
+            tau_a: c.tau_a,
+            tau_b: c.tau_b,
+            a_enters: c.sine < 0.0,
+            usable: true,
         })
         .collect();
-    for x in 0..2 {
-        let (own, other) = (chains[x], chains[1 - x]);
-        if own.closed {
-            continue;
-        }
-        // Whether each end lies in the other's material: by the parity of the crossings
-        // along this chain when it has any (so the ends agree with the crossings), else by
-        // the closest point.
-        let (first, last) = ends_by_parity(&found, x);
-        let start = own.point(0.0);
-        let end = own.point(own.count());
-        let start_inside = first.unwrap_or_else(|| closest::inside(other, &start, size, work));
-        let end_inside = last.unwrap_or_else(|| closest::inside(other, &end, size, work));
-        if own.real_ends[1] && end_inside {
-            let f = closest::foot(other, &end, size, work);
-            departures.push(Departure {
-                on: x,
-                tau: own.count(),
-                to: 1 - x,
-                to_tau: f.tau,
-                jump: Some((end, f.point)),
-            });
-        }
-        if own.real_ends[0] && start_inside {
-            let f = closest::foot(other, &start, size, work);
-            departures.push(Departure {
-                on: 1 - x,
-                tau: f.tau,
-                to: x,
-                to_tau: 0.0,
-                jump: Some((f.point, start)),
-            });
-        }
-    }
-    if departures.is_empty() {
+    let mut buffers = OutlineBuffers::default();
+    let mut traced = Vec::new();
+    let any = outline::regions([a, b], &found, size, work, &mut buffers, |sums| {
+        traced.push(*sums);
+    });
+    if !any {
         contained(a, b, size, frame, work, emit);
         return;
     }
-    let mut used = vec![false; departures.len()];
-    for first in 0..departures.len() {
-        if departures[first].to != 0 || used[first] {
-            continue;
-        }
-        used[first] = true;
-        if let Some(sums) = trace(&chains, &departures, first, &mut used) {
-            if let Some(c) = region_contact(&sums, a, b, size, frame, work) {
-                emit(c);
-            }
+    for sums in &traced {
+        if let Some(c) = region_contact(sums, a, b, size, frame, work) {
+            emit(c);
         }
     }
-}
-
-/// For chain `x` (0 = `a`, 1 = `b`): whether its start and its end lie in the other's
-/// material, from its first and last crossings (`None` without crossings).
-fn ends_by_parity(found: &[crossings::Crossing], x: usize) -> (Option<bool>, Option<bool>) {
-    // (τ on chain x, whether chain x enters the other's material there)
-    let along = |c: &crossings::Crossing| {
-        if x == 0 {
-            (c.tau_a, c.sine < 0.0)
-        } else {
-            (c.tau_b, c.sine > 0.0)
-        }
-    };
-    let first = found.iter().map(along).min_by(|p, q| p.0.total_cmp(&q.0));
-    let last = found.iter().map(along).max_by(|p, q| p.0.total_cmp(&q.0));
-    (
-        first.map(|(_, enters)| !enters),
-        last.map(|(_, enters)| enters),
-    )
-}
-
-/// Traces the outline that enters `a` by departure `first`; `None` if it does not close.
-fn trace(
-    chains: &[&Chain; 2],
-    departures: &[Departure],
-    first: usize,
-    used: &mut [bool],
-) -> Option<Sums> {
-    let start = departures[first];
-    let mut sums = Sums {
-        origin: chains[0].point(start.to_tau),
-        twice_area: 0.0,
-        moment: Vector2::zeros(),
-        chord_normal: Vector2::zeros(),
-    };
-    let (mut on, mut tau) = (start.to, start.to_tau);
-    let mut entries: Vec<usize> = Vec::new();
-    for _ in 0..=departures.len() {
-        let chain = chains[on];
-        let (next, distance) = departures
-            .iter()
-            .enumerate()
-            .filter(|(_, d)| d.on == on)
-            .filter_map(|(k, d)| chain.ahead(tau, d.tau).map(|t| (k, t)))
-            .min_by(|x, y| x.1.total_cmp(&y.1))?;
-        // Walking past a place where the outline enters this chain means the departures do
-        // not pair up (an open end's foot on a part of the other chain that does not bound
-        // this region): the outline is not traced.
-        let passes_arrival = departures.iter().any(|d| {
-            d.to == on
-                && chain
-                    .ahead(tau, d.to_tau)
-                    .is_some_and(|t| t > 1e-12 && t < distance - 1e-12)
-        });
-        if passes_arrival {
-            return None;
-        }
-        chain.walk(tau, distance, |_, piece, s0, s1| sums.add(piece, s0, s1));
-        // S = ½(S_a − S_b): the same as S_a where one stretch of each boundary joins the
-        // same two crossings, and symmetric in a and b where open ends or several crossings
-        // make the stretches' chords differ.
-        if distance > 0.0 {
-            let d = chain.point(tau + distance) - chain.point(tau);
-            let weight = if on == 0 { 0.5 } else { -0.5 };
-            sums.chord_normal += weight * Vector2::new(d.y, -d.x);
-        }
-        let d = departures[next];
-        if let Some((p, q)) = d.jump {
-            sums.add(&Piece::segment(p, q), 0.0, 1.0);
-        }
-        if next == first {
-            // Only a closed outline claims its entries: one that fails here may still be
-            // traced from an entry of its own.
-            for &k in &entries {
-                used[k] = true;
-            }
-            return Some(sums);
-        }
-        if d.to == 0 {
-            if used[next] || entries.contains(&next) {
-                return None;
-            }
-            entries.push(next);
-        }
-        on = d.to;
-        tau = d.to_tau;
-    }
-    None
 }
 
 /// The contact of a traced region.
 fn region_contact(
-    sums: &Sums,
+    sums: &OutlineSums,
     a: &Chain,
     b: &Chain,
     size: f64,
@@ -331,23 +196,8 @@ fn ray_hit(
     for piece in &chain.pieces {
         crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits.push(p));
     }
-    pick(&hits, g, direction).unwrap_or_else(|| closest::foot(chain, g, size, work).point)
-}
-
-/// The hit nearest `g` along `direction` (ahead of `g`), else the farthest behind.
-fn pick(hits: &[Vector2], g: &Vector2, direction: &Vector2) -> Option<Vector2> {
-    let ahead = hits
-        .iter()
-        .map(|h| ((h - g).dot(direction), *h))
-        .filter(|(t, _)| *t >= 0.0)
-        .min_by(|x, y| x.0.total_cmp(&y.0));
-    ahead
-        .or_else(|| {
-            hits.iter()
-                .map(|h| ((h - g).dot(direction), *h))
-                .max_by(|x, y| x.0.total_cmp(&y.0))
-        })
-        .map(|(_, h)| h)
+    outline::pick_hit(&hits, g, direction)
+        .unwrap_or_else(|| closest::foot(chain, g, size, work).point)
 }
 
 /// No crossing and no open end inside: one closed chain may hold the other.
@@ -381,14 +231,9 @@ fn inner_contact(
     frame: &InPlane<'_>,
     work: &mut WorkCounters,
 ) -> Option<PairContact> {
-    let mut sums = Sums {
-        origin: inner.point(0.0),
-        twice_area: 0.0,
-        moment: Vector2::zeros(),
-        chord_normal: Vector2::zeros(),
-    };
+    let mut sums = OutlineSums::new(inner.point(0.0));
     for piece in &inner.pieces {
-        sums.add(piece, 0.0, 1.0);
+        add_piece(&mut sums, piece, 0.0, 1.0);
     }
     let area = 0.5 * sums.twice_area;
     if area.is_nan() || area <= 1e-12 * size * size {
@@ -408,7 +253,7 @@ fn inner_contact(
     for piece in &inner.pieces {
         crossings::between_pieces(&ray, piece, size, work, &mut |_, _, p, _| hits.push(p));
     }
-    let point_inner = pick(&hits, &g, &-n)?;
+    let point_inner = outline::pick_hit(&hits, &g, &-n)?;
     // Extent across the normal: the pieces' closest points to two points far out on either
     // side (`1e3` sizes away, so they are the support points to ~1e-3 of the curvature's
     // effect — the length is an estimate, SPEC §4).

@@ -33,19 +33,9 @@ pub const CLOSE: f64 = 1e-12;
 /// Newton steps per crossing.
 pub const MAX_NEWTON_STEPS: usize = 30;
 
-/// A crossing of chain `a` and chain `b`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Crossing {
-    /// Forward parameter on `a`.
-    pub tau_a: f64,
-    /// Forward parameter on `b`.
-    pub tau_b: f64,
-    /// True where `a` enters `b`'s material.
-    pub a_enters: bool,
-    /// True once moved onto the lifted arcs (false: the polylines cross here, the lifted
-    /// arcs nowhere near, or not in this order).
-    pub on_arcs: bool,
-}
+/// A crossing of chain `a` and chain `b`; `usable` is true once moved onto the lifted arcs
+/// (false: the polylines cross here, the lifted arcs nowhere near, or not in this order).
+pub(crate) type Crossing = contact_core::geometry::outline::OutlineCrossing;
 
 /// Reusable buffers of [`find`].
 #[derive(Debug, Default)]
@@ -94,7 +84,7 @@ pub(crate) fn find(
                             tau_a: ka as f64 + c.0,
                             tau_b: kb as f64 + c.1,
                             a_enters: c.2,
-                            on_arcs: false,
+                            usable: false,
                         });
                     }
                 }
@@ -282,6 +272,6 @@ fn refine(
         tau_a: wrap(a, ta),
         tau_b: wrap(b, tb),
         a_enters: c.a_enters,
-        on_arcs: true,
+        usable: true,
     })
 }

@@ -15,10 +15,10 @@
 //! chords the depth of a shallow overlap would be biased by about one chord deviation, and the
 //! crossings, hence the normal, would move by `d/sin α` for a crossing angle `α`.
 //!
-//! Regions are traced as in polygon clipping (along `a` while it is inside `b`'s material,
-//! switching to `b` where `a` leaves it, and back), each on the left of its outline. Open ends
-//! inside the other's material are closed by the straight segment to their foot (the closest
-//! point of the other chain) and the outline goes on from the foot. Per region, with
+//! Regions are traced by the walk both engines share ([`contact_core::geometry::outline`]:
+//! along `a` while it is inside `b`'s material, switching to `b` where `a` leaves it, and
+//! back; open ends inside the other's material closed by the straight segment to their foot),
+//! on the lifted arcs. Per region, with
 //! integrals about a point `o` of the region: area `A = ½∮(x dy − y dx)` and centroid
 //! `g = o + (∮ ½x² dy, −∮ ½y² dx)/A` (Gauss–Legendre, exact on the cubic arcs and segments);
 //! `S = ½(S_a − S_b)` from the chords of each boundary's stretches on the outline (turned by
@@ -54,6 +54,7 @@
 
 use super::chain::{Chain, bezier_derivative, bezier_point};
 use super::crossings::{self, Crossing, CrossingBuffers};
+use contact_core::geometry::outline::{self, OutlineBuffers, OutlineChain, OutlineSums};
 use contact_core::{Vector2, WorkCounters};
 use std::cell::RefCell;
 
@@ -68,19 +69,6 @@ pub(crate) struct RegionContact {
     pub length: f64,
 }
 
-/// Where the outline leaves chain `on` at `tau` for chain `to` at `to_tau`, with a straight
-/// closing segment in between for an open end.
-#[derive(Debug, Clone, Copy)]
-struct Departure {
-    on: usize,
-    tau: f64,
-    to: usize,
-    to_tau: f64,
-    jump: Option<(Vector2, Vector2)>,
-    /// False for a crossing the lifted arcs do not share (see [`crossings`]).
-    on_arcs: bool,
-}
-
 /// Per-thread buffers of a query.
 #[derive(Debug, Default)]
 pub(crate) struct OverlapBuffers {
@@ -90,9 +78,7 @@ pub(crate) struct OverlapBuffers {
     pub b: Chain,
     crossings: Vec<Crossing>,
     crossing_buffers: CrossingBuffers,
-    departures: Vec<Departure>,
-    used: Vec<bool>,
-    entries: Vec<usize>,
+    outline: OutlineBuffers,
     hits: Vec<Vector2>,
 }
 
@@ -115,44 +101,57 @@ const GAUSS_5: [(f64, f64); 5] = [
     (0.906_179_845_938_664, 0.236_926_885_056_189_1),
 ];
 
-/// Sums of one region's outline integrals.
-#[derive(Debug, Clone, Copy)]
-struct Sums {
-    origin: Vector2,
-    twice_area: f64,
-    moment: Vector2,
-    chord_normal: Vector2,
+/// Adds the arc `ctrl` over `[s0, s1]` to `sums` (Gauss–Legendre, [`GAUSS_5`]).
+fn add_arc(sums: &mut OutlineSums, ctrl: &[Vector2; 4], s0: f64, s1: f64) {
+    let (half, mid) = (0.5 * (s1 - s0), 0.5 * (s0 + s1));
+    for (x, w) in GAUSS_5 {
+        let s = mid + half * x;
+        sums.add_node(bezier_point(ctrl, s), bezier_derivative(ctrl, s), w * half);
+    }
 }
 
-impl Sums {
-    fn new(origin: Vector2) -> Self {
-        Self {
-            origin,
-            twice_area: 0.0,
-            moment: Vector2::zeros(),
-            chord_normal: Vector2::zeros(),
-        }
+/// The lifted chain as the shared tracer walks it: its Hermite arcs, ends by the polyline's
+/// own points, feet and material tests.
+impl OutlineChain for Chain {
+    fn closed(&self) -> bool {
+        self.closed
     }
 
-    /// Adds the arc `ctrl` over `[s0, s1]`.
-    fn add(&mut self, ctrl: &[Vector2; 4], s0: f64, s1: f64) {
-        let o = self.origin;
-        let (half, mid) = (0.5 * (s1 - s0), 0.5 * (s0 + s1));
-        for (x, w) in GAUSS_5 {
-            let s = mid + half * x;
-            let w = w * half;
-            let p = bezier_point(ctrl, s) - o;
-            let d = bezier_derivative(ctrl, s);
-            self.twice_area += w * (p.x * d.y - p.y * d.x);
-            self.moment.x += w * 0.5 * p.x * p.x * d.y;
-            self.moment.y -= w * 0.5 * p.y * p.y * d.x;
-        }
+    fn real_ends(&self) -> [bool; 2] {
+        self.real_ends
     }
 
-    /// Adds the straight segment `p → q`.
-    fn add_segment(&mut self, p: Vector2, q: Vector2) {
+    fn count(&self) -> f64 {
+        Chain::count(self)
+    }
+
+    fn point(&self, tau: f64) -> Vector2 {
+        Chain::point(self, tau)
+    }
+
+    fn start(&self) -> Vector2 {
+        self.points[0]
+    }
+
+    fn end(&self) -> Vector2 {
+        self.points[self.points.len() - 1]
+    }
+
+    fn inside(&self, q: &Vector2, size: f64, _: &mut WorkCounters) -> bool {
+        Chain::inside(self, q, size)
+    }
+
+    fn foot(&self, q: &Vector2, size: f64, _: &mut WorkCounters) -> Option<(f64, Vector2)> {
+        Chain::foot(self, q, size)
+    }
+
+    fn add_stretch(&self, from: f64, length: f64, sums: &mut OutlineSums) {
+        self.walk(from, length, |arc, s0, s1| add_arc(sums, arc, s0, s1));
+    }
+
+    fn add_segment(&self, p: Vector2, q: Vector2, sums: &mut OutlineSums) {
         let third = (q - p) / 3.0;
-        self.add(&[p, p + third, q - third, q], 0.0, 1.0);
+        add_arc(sums, &[p, p + third, q - third, q], 0.0, 1.0);
     }
 }
 
@@ -167,9 +166,7 @@ pub(crate) fn contacts(
         b,
         crossings: found,
         crossing_buffers,
-        departures,
-        used,
-        entries,
+        outline,
         hits,
     } = buffers;
     let (a, b) = (&*a, &*b);
@@ -179,183 +176,20 @@ pub(crate) fn contacts(
     if !(size > 0.0 && size.is_finite()) || a.chords() == 0 || b.chords() == 0 {
         return;
     }
-    let chains = [a, b];
     crossings::find(a, b, size, crossing_buffers, work, found);
-    departures.clear();
-    departures.extend(found.iter().map(|c| {
-        if c.a_enters {
-            Departure {
-                on: 1,
-                tau: c.tau_b,
-                to: 0,
-                to_tau: c.tau_a,
-                jump: None,
-                on_arcs: c.on_arcs,
-            }
-        } else {
-            Departure {
-                on: 0,
-                tau: c.tau_a,
-                to: 1,
-                to_tau: c.tau_b,
-                jump: None,
-                on_arcs: c.on_arcs,
-            }
-        }
-    }));
-    add_open_end_departures(&chains, found, size, departures);
-    if departures.is_empty() {
-        if let Some(c) = contained(a, b, size, hits) {
+    let any = outline::regions([a, b], found, size, work, outline, |sums| {
+        if let Some(c) = region_contact(sums, a, b, size, hits) {
             emit(c);
         }
-        return;
+    });
+    if !any && let Some(c) = contained(a, b, size, hits) {
+        emit(c);
     }
-    used.clear();
-    used.resize(departures.len(), false);
-    for first in 0..departures.len() {
-        if departures[first].to != 0 || used[first] {
-            continue;
-        }
-        used[first] = true;
-        if let Some(sums) = trace(&chains, departures, first, used, entries) {
-            if let Some(c) = region_contact(&sums, a, b, size, hits) {
-                emit(c);
-            }
-        }
-    }
-}
-
-/// The departures at open chains' real ends that lie in the other chain's material: from the
-/// end to its foot on the other chain (an end inside), or from the foot to the start.
-fn add_open_end_departures(
-    chains: &[&Chain; 2],
-    found: &[Crossing],
-    size: f64,
-    departures: &mut Vec<Departure>,
-) {
-    for x in 0..2 {
-        let (own, other) = (chains[x], chains[1 - x]);
-        if own.closed {
-            continue;
-        }
-        // Whether each end lies in the other's material: by the parity of the crossings along
-        // this chain when it has any, else by the closest point.
-        let (first, last) = ends_by_parity(found, x);
-        let start = own.points[0];
-        let end = own.points[own.points.len() - 1];
-        let start_inside = first.unwrap_or_else(|| other.inside(&start, size));
-        let end_inside = last.unwrap_or_else(|| other.inside(&end, size));
-        if own.real_ends[1] && end_inside {
-            if let Some((tau, point)) = other.foot(&end, size) {
-                departures.push(Departure {
-                    on: x,
-                    tau: own.count(),
-                    to: 1 - x,
-                    to_tau: tau,
-                    jump: Some((end, point)),
-                    on_arcs: true,
-                });
-            }
-        }
-        if own.real_ends[0] && start_inside {
-            if let Some((tau, point)) = other.foot(&start, size) {
-                departures.push(Departure {
-                    on: 1 - x,
-                    tau,
-                    to: x,
-                    to_tau: 0.0,
-                    jump: Some((point, start)),
-                    on_arcs: true,
-                });
-            }
-        }
-    }
-}
-
-/// For chain `x` (0 = `a`, 1 = `b`): whether its start and its end lie in the other's
-/// material, from its first and last crossings (`None` without crossings).
-fn ends_by_parity(found: &[Crossing], x: usize) -> (Option<bool>, Option<bool>) {
-    // (τ on chain x, whether chain x enters the other's material there)
-    let along = |c: &Crossing| {
-        if x == 0 {
-            (c.tau_a, c.a_enters)
-        } else {
-            (c.tau_b, !c.a_enters)
-        }
-    };
-    let first = found.iter().map(along).min_by(|p, q| p.0.total_cmp(&q.0));
-    let last = found.iter().map(along).max_by(|p, q| p.0.total_cmp(&q.0));
-    (
-        first.map(|(_, enters)| !enters),
-        last.map(|(_, enters)| enters),
-    )
-}
-
-/// Traces the outline that enters `a` by departure `first`; `None` if it does not close.
-fn trace(
-    chains: &[&Chain; 2],
-    departures: &[Departure],
-    first: usize,
-    used: &mut [bool],
-    entries: &mut Vec<usize>,
-) -> Option<Sums> {
-    let start = departures[first];
-    let mut sums = Sums::new(chains[0].point(start.to_tau));
-    let (mut on, mut tau) = (start.to, start.to_tau);
-    entries.clear();
-    for _ in 0..=departures.len() {
-        let chain = chains[on];
-        let (next, distance) = departures
-            .iter()
-            .enumerate()
-            .filter(|(_, d)| d.on == on)
-            .filter_map(|(k, d)| chain.ahead(tau, d.tau).map(|t| (k, t)))
-            .min_by(|x, y| x.1.total_cmp(&y.1))?;
-        // Walking past a place where the outline enters this chain means the departures do
-        // not pair up: the outline is not traced.
-        let passes_arrival = departures.iter().any(|d| {
-            d.to == on
-                && chain
-                    .ahead(tau, d.to_tau)
-                    .is_some_and(|t| t > 1e-12 && t < distance - 1e-12)
-        });
-        if passes_arrival {
-            return None;
-        }
-        chain.walk(tau, distance, |arc, s0, s1| sums.add(arc, s0, s1));
-        if distance > 0.0 {
-            let d = chain.point(tau + distance) - chain.point(tau);
-            let weight = if on == 0 { 0.5 } else { -0.5 };
-            sums.chord_normal += weight * Vector2::new(d.y, -d.x);
-        }
-        let d = departures[next];
-        if !d.on_arcs {
-            return None;
-        }
-        if let Some((p, q)) = d.jump {
-            sums.add_segment(p, q);
-        }
-        if next == first {
-            for &k in entries.iter() {
-                used[k] = true;
-            }
-            return Some(sums);
-        }
-        if d.to == 0 {
-            if used[next] || entries.contains(&next) {
-                return None;
-            }
-            entries.push(next);
-        }
-        on = d.to;
-        tau = d.to_tau;
-    }
-    None
 }
 
 /// The contact of a traced region.
 fn region_contact(
-    sums: &Sums,
+    sums: &OutlineSums,
     a: &Chain,
     b: &Chain,
     size: f64,
@@ -389,7 +223,7 @@ fn ray_hit(
     hits: &mut Vec<Vector2>,
 ) -> Option<Vector2> {
     line_hits(chain, g, direction, size, hits);
-    pick(hits, g, direction).or_else(|| chain.foot(g, size).map(|(_, p)| p))
+    outline::pick_hit(hits, g, direction).or_else(|| chain.foot(g, size).map(|(_, p)| p))
 }
 
 /// Every meeting of the line through `g` along `direction` with the lifted chain: each chord
@@ -436,22 +270,6 @@ fn line_hits(chain: &Chain, g: &Vector2, direction: &Vector2, size: f64, hits: &
     }
 }
 
-/// The hit nearest `g` along `direction` (ahead of `g`), else the farthest behind.
-fn pick(hits: &[Vector2], g: &Vector2, direction: &Vector2) -> Option<Vector2> {
-    let ahead = hits
-        .iter()
-        .map(|h| ((h - g).dot(direction), *h))
-        .filter(|(t, _)| *t >= 0.0)
-        .min_by(|x, y| x.0.total_cmp(&y.0));
-    ahead
-        .or_else(|| {
-            hits.iter()
-                .map(|h| ((h - g).dot(direction), *h))
-                .max_by(|x, y| x.0.total_cmp(&y.0))
-        })
-        .map(|(_, h)| h)
-}
-
 /// No crossing and no open end inside: one closed chain may hold the other.
 fn contained(a: &Chain, b: &Chain, size: f64, hits: &mut Vec<Vector2>) -> Option<RegionContact> {
     if !(a.closed && b.closed) {
@@ -478,16 +296,16 @@ fn inner_contact(
     size: f64,
     hits: &mut Vec<Vector2>,
 ) -> Option<RegionContact> {
-    let mut sums = Sums::new(inner.points[0]);
+    let mut sums = OutlineSums::new(inner.points[0]);
     for k in 0..inner.chords() {
-        sums.add(&inner.arc(k), 0.0, 1.0);
+        add_arc(&mut sums, &inner.arc(k), 0.0, 1.0);
     }
     let area = 0.5 * sums.twice_area;
     if area.is_nan() || area <= 1e-12 * size * size {
         return None;
     }
     let g = sums.origin + sums.moment / area;
-    let (_, q) = outer.foot(&g, size)?;
+    let (_, q) = Chain::foot(outer, &g, size)?;
     let towards = q - g;
     let distance = towards.norm();
     if distance.is_nan() || distance <= 1e-12 * size {
@@ -495,7 +313,7 @@ fn inner_contact(
     }
     let n = towards / distance;
     line_hits(inner, &g, &n, size, hits);
-    let point_inner = pick(hits, &g, &-n)?;
+    let point_inner = outline::pick_hit(hits, &g, &-n)?;
     let across = Vector2::new(-n.y, n.x);
     let (lo, hi) = inner
         .points
