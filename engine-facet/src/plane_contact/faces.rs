@@ -8,7 +8,7 @@
 //! one polygon and adds one waterline segment (two coplanar triangles would add two collinear
 //! ones). The sums are those of the triangles in another order: they agree to round-off.
 
-use super::{PlaneFrame, contact_below, region_contact, volume_centroid};
+use super::{PlaneFrame, add_loop_segment, contact_below, region_contact, volume_centroid};
 use crate::contact_region::{LocalContact, add_polygon};
 use crate::facet_mesh::FacetMesh;
 use crate::flat_faces::{FlatFace, FlatFaces};
@@ -52,7 +52,7 @@ pub(super) fn faces_region(
         let start = s.polygon.len() as u32;
         if highest > 0.0 {
             let crossings = clip_face(a, corners, heights, &mut s.polygon)?;
-            add_segment(&mut r, crossings, &face.normal.cross(&n));
+            add_loop_segment(&mut r, crossings, &face.normal.cross(&n));
         }
         s.touched
             .push((index as u32, start, s.polygon.len() as u32));
@@ -124,22 +124,6 @@ fn clip_face(
         }
     }
     (k == 2).then_some(crossings)
-}
-
-/// A waterline segment into `r`: its vector area (from the region's first point), length and
-/// length moment, oriented along `dir` (`n_face × n`, as the triangles' segments are).
-fn add_segment(r: &mut RegionSums, mut pts: [Vector3; 2], dir: &Vector3) {
-    if (pts[1] - pts[0]).dot(dir) < 0.0 {
-        pts.swap(0, 1);
-    }
-    if !r.seen {
-        r.seen = true;
-        r.reference = pts[0];
-    }
-    r.vector_area += 0.5 * (pts[0] - r.reference).cross(&(pts[1] - r.reference));
-    let len = (pts[1] - pts[0]).norm();
-    r.loop_length += len;
-    r.loop_moment += len * 0.5 * (pts[0] + pts[1]);
 }
 
 /// Where the line from `g` along −n leaves the convex mesh, among the faces reaching below the

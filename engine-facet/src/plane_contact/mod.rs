@@ -386,8 +386,13 @@ fn add_waterline(a: &FacetMesh, n: &Vector3, pn: &PlaneNode, r: &mut RegionSums)
     if k < 2 {
         return;
     }
-    let dir = a.face_normals[pn.tri as usize].cross(n);
-    if (pts[1] - pts[0]).dot(&dir) < 0.0 {
+    add_loop_segment(r, pts, &a.face_normals[pn.tri as usize].cross(n));
+}
+
+/// A waterline segment into `r`: its vector area (from the region's first point), length and
+/// length moment, oriented along `dir` (`n_facet × n`, as mesh–mesh segments are).
+fn add_loop_segment(r: &mut RegionSums, mut pts: [Vector3; 2], dir: &Vector3) {
+    if (pts[1] - pts[0]).dot(dir) < 0.0 {
         pts.swap(0, 1);
     }
     if !r.seen {
