@@ -7,10 +7,12 @@
 //! dampings (rebound ratio and peak penetration); a frictionless ball's spin after ten
 //! bounces; Hertz statics (e = 1.5, a 1000 N load); a ball sliding into rolling; a ball spun
 //! down by friction torque; a flat disk spun down on its face (`disk`); a block rocking back
-//! onto its base, a torus and an ellipsoid dropped (`bodies`).
+//! onto its base, a torus and an ellipsoid dropped (`bodies`); a block and a plate sliding
+//! down an incline (`incline`).
 
 mod bodies;
 mod disk;
+mod incline;
 
 use crate::inline;
 use contact::run::lower::{LoweredModel, lower};
