@@ -123,7 +123,13 @@ pub struct Plot {
     pub y_scale: Scale,
     /// The data.
     pub series: Vec<Series>,
+    /// A line of text under the legend (what was left out), if any.
+    pub note: Option<String>,
 }
+
+/// The most series a plot draws: one per colour and marker shape, as many as the legend's
+/// column holds.
+pub const MAX_SERIES: usize = 3 * COLOURS.len();
 
 const WIDTH: f64 = 960.0;
 const HEIGHT: f64 = 600.0;
@@ -137,6 +143,37 @@ const COLOURS: [&str; 8] = [
 ];
 
 impl Plot {
+    /// Keeps the `max` series whose largest `|y|` is largest (ties to the earlier), in their
+    /// order, and returns how many it left out and how many of those were zero throughout (a
+    /// contact that never touched). A plot of a model with thousands of contacts would
+    /// otherwise draw them all, one legend entry each, in tens of megabytes.
+    pub fn keep_largest(&mut self, max: usize) -> (usize, usize) {
+        if self.series.len() <= max {
+            return (0, 0);
+        }
+        let peak = |s: &Series| {
+            s.points
+                .iter()
+                .map(|p| p.1.abs())
+                .filter(|y| y.is_finite())
+                .fold(0.0, f64::max)
+        };
+        let peaks: Vec<f64> = self.series.iter().map(peak).collect();
+        let mut order: Vec<usize> = (0..self.series.len()).collect();
+        order.sort_by(|&a, &b| peaks[b].total_cmp(&peaks[a]).then(a.cmp(&b)));
+        let mut keep = vec![false; self.series.len()];
+        for &k in &order[..max] {
+            keep[k] = true;
+        }
+        let silent = order[max..].iter().filter(|&&k| peaks[k] == 0.0).count();
+        let mut index = 0;
+        self.series.retain(|_| {
+            index += 1;
+            keep[index - 1]
+        });
+        (order.len() - max, silent)
+    }
+
     /// Renders the plot as an SVG document. Points that cannot be drawn (non-finite, or
     /// non-positive on a log axis) are left out; a plot with no drawable point says so.
     pub fn to_svg(&self) -> String {
@@ -167,6 +204,15 @@ impl Plot {
         self.write_axes(&mut svg, &frame);
         for (k, pts) in &series {
             self.write_series(&mut svg, &frame, *k, pts);
+        }
+        if let Some(note) = &self.note {
+            let _ = writeln!(
+                svg,
+                r#"<text x="{}" y="{}">{}</text>"#,
+                WIDTH - RIGHT + 16.0,
+                TOP + 14.0 + 20.0 * self.series.len() as f64,
+                escape(note)
+            );
         }
         svg.push_str("</svg>\n");
         svg
@@ -403,6 +449,7 @@ mod tests {
             y_label: "error".into(),
             x_scale: Scale::Log,
             y_scale: Scale::Log,
+            note: None,
             series: vec![
                 Series {
                     name: "a".into(),
@@ -464,6 +511,7 @@ mod tests {
             y_label: "y".into(),
             x_scale: Scale::Linear,
             y_scale: Scale::Log,
+            note: None,
             series: vec![Series {
                 name: "s".into(),
                 points: vec![(1.0, -1.0)],
@@ -471,5 +519,57 @@ mod tests {
             }],
         };
         assert!(plot.to_svg().contains("no data to draw"));
+    }
+
+    /// A plot of `count` series; series `k` peaks at `|y| = peak(k)` at one of its points.
+    fn plot_of(count: usize, peak: impl Fn(usize) -> f64) -> Plot {
+        Plot {
+            title: "many".into(),
+            x_label: "t".into(),
+            y_label: "y".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            series: (0..count)
+                .map(|k| Series {
+                    name: format!("s{k}"),
+                    points: vec![(0.0, 0.0), (1.0, -peak(k)), (2.0, 0.0)],
+                    line: true,
+                })
+                .collect(),
+            note: None,
+        }
+    }
+
+    #[test]
+    fn a_plot_of_many_series_keeps_the_largest_in_their_order() {
+        // 40 series: every fourth zero throughout, the others peaking at 1 + (k·7 mod 40).
+        let peak = |k: usize| {
+            if k.is_multiple_of(4) {
+                0.0
+            } else {
+                1.0 + ((k * 7) % 40) as f64
+            }
+        };
+        let mut plot = plot_of(40, peak);
+        assert_eq!(plot.keep_largest(MAX_SERIES), (40 - MAX_SERIES, 10));
+        let mut expected: Vec<usize> = (0..40).filter(|&k| peak(k) > 0.0).collect();
+        expected.sort_by(|&a, &b| peak(b).total_cmp(&peak(a)));
+        expected.truncate(MAX_SERIES);
+        expected.sort_unstable();
+        let kept: Vec<String> = plot.series.iter().map(|s| s.name.clone()).collect();
+        let names: Vec<String> = expected.iter().map(|k| format!("s{k}")).collect();
+        assert_eq!(kept, names);
+        plot.note = Some("+ 16 more".into());
+        let svg = plot.to_svg();
+        assert!(svg.contains(">+ 16 more</text>"));
+        assert_eq!(svg.matches("<polyline").count(), MAX_SERIES);
+    }
+
+    #[test]
+    fn a_plot_within_the_limit_is_left_as_it_is() {
+        let mut plot = plot_of(MAX_SERIES, |k| k as f64);
+        let before = plot.clone();
+        assert_eq!(plot.keep_largest(MAX_SERIES), (0, 0));
+        assert_eq!(plot, before);
     }
 }

@@ -144,5 +144,6 @@ pub fn plot(records: &[TradeRecord]) -> Plot {
         x_scale: Scale::Log,
         y_scale: Scale::Log,
         series,
+        note: None,
     }
 }

@@ -172,5 +172,6 @@ pub fn run_plot(trade: &RunTrade) -> Plot {
         x_scale: Scale::Log,
         y_scale: Scale::Log,
         series: vec![faceted, exact],
+        note: None,
     }
 }

@@ -19,7 +19,7 @@
 //! without building JSON values.
 
 use super::request_file::{RequestOutput, RequestWriter};
-use crate::svg_plot::{DecimatedSeries, Plot, Scale, Series};
+use crate::svg_plot::{DecimatedSeries, MAX_SERIES, Plot, Scale, Series};
 use contact_solver::mbs::PartId;
 use contact_solver::simulate::Frame;
 use serde::Serialize;
@@ -266,6 +266,7 @@ impl ResultWriter {
             x_scale: Scale::Linear,
             y_scale: Scale::Linear,
             series: series(&self.force_series),
+            note: None,
         };
         let depth = Plot {
             title: "Penetration".into(),
@@ -274,12 +275,17 @@ impl ResultWriter {
             x_scale: Scale::Linear,
             y_scale: Scale::Linear,
             series: series(&self.depth_series),
+            note: None,
         };
         let mut written = Vec::new();
-        for (name, text) in [
-            ("contact_force.svg", force.to_svg()),
-            ("penetration.svg", depth.to_svg()),
-        ] {
+        for (name, mut plot) in [("contact_force.svg", force), ("penetration.svg", depth)] {
+            let (left_out, silent) = plot.keep_largest(MAX_SERIES);
+            if left_out > 0 {
+                plot.note = Some(format!(
+                    "+ {left_out} more ({silent} zero throughout): see contacts.csv"
+                ));
+            }
+            let text = plot.to_svg();
             let path = self.dir.join(name);
             std::fs::write(&path, text).map_err(|e| naming(&path, e))?;
             written.push(path);
