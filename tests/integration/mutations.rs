@@ -130,7 +130,7 @@ fn number_spans(text: &str) -> Vec<(usize, usize)> {
 
 /// Example directories left out of the mutated corpus: the chain drive's rollers sit 1 µm off
 /// their teeth, so most of its mutations start them touching exactly, where the exact engine
-/// slices the grazing cylinder pairs at great cost (README, *Many parts*); its statements
+/// slices the grazing cylinder pairs at great cost (docs/examples.md, *Many parts*); its statements
 /// (REVOLUTE loops, SFORCE, cylinder CONTACTs) are mutated in the other examples.
 const NOT_MUTATED: [&str; 1] = ["chain_sprockets"];
 
