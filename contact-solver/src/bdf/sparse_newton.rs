@@ -8,8 +8,9 @@
 //! times `h^(1−i)`, every row divided by its largest entry, the same checks for a zero or
 //! non-finite row) and rsparse's LU, a port of CSparse (Davis 2006): an approximate minimum
 //! degree ordering of `A + Aᵀ`, then a left-looking LU with partial pivoting. A matrix whose
-//! graph falls apart into small islands (parts sharing no joint and no contact) is
-//! factorised island by island instead (`super::islands`).
+//! graph falls apart into islands (parts sharing no joint and no contact) is factorised
+//! island by island instead (`super::islands`): small ones dense, large ones by this LU on
+//! their own block.
 //!
 //! The ordering is a column permutation, valid for any pattern; only its fill depends on the
 //! pattern it was computed for. It is kept when the pattern changes (a contact the broad phase
@@ -19,16 +20,16 @@
 //! later ones start from the last fill plus `n`, so nothing is cleared that is never used.
 
 use super::error::FailureCause;
-use super::islands::Islands;
+use super::islands::{ISLAND_MAX, IslandFactors, Islands, KeptOrdering};
 use super::newton_matrix::column_scale;
 use crate::parallel::Parallelism;
 use crate::{DaeSystem, VariableKind};
-use nalgebra::{DVector, Dyn, LU};
+use nalgebra::DVector;
 use rsparse::data::{Nmrc, Sprs, Symb};
 
 /// Partial pivoting: the largest entry of the column is the pivot unless the diagonal is as
 /// large (CSparse's `tol = 1`).
-const PIVOT_TOLERANCE: f64 = 1.0;
+pub(super) const PIVOT_TOLERANCE: f64 = 1.0;
 
 /// How far the fill per matrix entry (`nnz(L) + nnz(U)` over `nnz(A)`) may grow past the fill
 /// per entry at the ordering's own pattern before the ordering is computed again.
@@ -59,8 +60,10 @@ pub(super) struct SparseNewton {
     islands_known: bool,
     /// Never split into islands (the general sparse LU alone; its own tests).
     general_only: bool,
-    /// Each island's LU, when the islands path factorised the matrix.
-    island_lus: Option<Vec<LU<f64, Dyn, Dyn>>>,
+    /// Each island's factors, when the islands path factorised the matrix.
+    island_lus: Option<Vec<IslandFactors>>,
+    /// The large islands' orderings, kept while their unknowns stay the same.
+    island_orderings: Vec<KeptOrdering>,
     row_scale: Vec<f64>,
     col_scale: Vec<f64>,
 }
@@ -145,12 +148,15 @@ impl SparseNewton {
         parallelism: &Parallelism,
     ) -> Result<(), FailureCause> {
         if pattern_changed || !self.islands_known {
-            self.islands = Islands::of(&matrix).filter(|_| !self.general_only);
+            // A matrix that is one large island takes the general sparse LU below.
+            self.islands = Some(Islands::of(&matrix)).filter(|islands| {
+                !self.general_only && (islands.count() > 1 || islands.largest() <= ISLAND_MAX)
+            });
             self.islands_known = true;
         }
         if let Some(islands) = &self.islands {
             let lus = islands
-                .factorise(&matrix, parallelism)
+                .factorise(&matrix, parallelism, &mut self.island_orderings)
                 .ok_or(FailureCause::SingularMatrix)?;
             self.island_lus = Some(lus);
             self.matrix = Some(matrix);
