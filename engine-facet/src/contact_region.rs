@@ -377,28 +377,49 @@ pub(crate) fn add_polygon(sums: &mut RegionSums, poly: &[Vector3]) {
     }
 }
 
-/// Sutherland–Hodgman: keeps the part of `poly` with `n·(v − p0) ≤ 0`.
-///
-/// Each corner's distance is formed once and carried to the next edge, and the wrap to the
-/// first corner is the last step rather than an index taken modulo the length (a division per
-/// edge).
+/// Sutherland–Hodgman: keeps the part of `poly` with `n·(v − p0) ≤ 0`, into `out`
+/// ([`clip_by_heights`] with the heights formed once per corner).
 pub(crate) fn clip(poly: &[Vector3], out: &mut Vec<Vector3>, n: &Vector3, p0: &Vector3) {
     out.clear();
-    let Some(&first) = poly.first() else {
+    clip_by_heights(
+        poly.len(),
+        |k| (poly[k], n.dot(&(poly[k] - p0))),
+        |p| out.push(p),
+        |_| {},
+    );
+}
+
+/// Sutherland–Hodgman on the polygon of `count` corners `corner(k) = (point, height)`: pushes
+/// the corners at or below the plane (height ≤ 0) and the points where an edge passes
+/// strictly through it, `u + (v − u)·h_u/(h_u − h_v)`, in order; calls `crossing` with the
+/// point of every edge whose ends lie on either side of `h ≤ 0` (the polygon's waterline ends,
+/// a corner on the plane included). `corner` is called once per corner, in order; the wrap
+/// to the first corner is the last step rather than an index taken modulo the count.
+pub(crate) fn clip_by_heights(
+    count: usize,
+    corner: impl Fn(usize) -> (Vector3, f64),
+    mut push: impl FnMut(Vector3),
+    mut crossing: impl FnMut(Vector3),
+) {
+    if count == 0 {
         return;
-    };
-    let d_first = n.dot(&(first - p0));
-    let (mut u, mut du) = (first, d_first);
-    for k in 1..=poly.len() {
-        let (v, dv) = match poly.get(k) {
-            Some(&v) => (v, n.dot(&(v - p0))),
-            None => (first, d_first),
-        };
+    }
+    let first = corner(0);
+    let (mut u, mut du) = first;
+    for k in 1..=count {
+        let (v, dv) = if k < count { corner(k) } else { first };
         if du <= 0.0 {
-            out.push(u);
+            push(u);
         }
-        if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
-            out.push(u + (v - u) * (du / (du - dv)));
+        let strict = (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0);
+        if strict || (du <= 0.0) != (dv <= 0.0) {
+            let at = u + (v - u) * (du / (du - dv));
+            if strict {
+                push(at);
+            }
+            if (du <= 0.0) != (dv <= 0.0) {
+                crossing(at);
+            }
         }
         (u, du) = (v, dv);
     }

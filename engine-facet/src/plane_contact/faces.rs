@@ -9,7 +9,7 @@
 //! ones). The sums are those of the triangles in another order: they agree to round-off.
 
 use super::{PlaneFrame, add_loop_segment, contact_below, region_contact, volume_centroid};
-use crate::contact_region::{LocalContact, add_polygon};
+use crate::contact_region::{LocalContact, add_polygon, clip_by_heights};
 use crate::facet_mesh::FacetMesh;
 use crate::flat_faces::{FlatFace, FlatFaces};
 use crate::scratch::{RegionSums, Scratch};
@@ -103,26 +103,20 @@ fn clip_face(
 ) -> Option<[Vector3; 2]> {
     let mut crossings = [Vector3::zeros(); 2];
     let mut k = 0;
-    for (i, &u) in corners.iter().enumerate() {
-        let v = corners[if i + 1 == corners.len() { 0 } else { i + 1 }];
-        let (hu, hv) = (heights[u as usize], heights[v as usize]);
-        let pu = a.vertices[u as usize].coords;
-        if hu <= 0.0 {
-            out.push(pu);
-        }
-        if (hu <= 0.0) != (hv <= 0.0) {
-            if k == 2 {
-                return None;
+    clip_by_heights(
+        corners.len(),
+        |i| {
+            let v = corners[i] as usize;
+            (a.vertices[v].coords, heights[v])
+        },
+        |p| out.push(p),
+        |at| {
+            if k < 2 {
+                crossings[k] = at;
             }
-            let pv = a.vertices[v as usize].coords;
-            let at = pu + (pv - pu) * (hu / (hu - hv));
-            if hu != 0.0 && hv != 0.0 {
-                out.push(at);
-            }
-            crossings[k] = at;
             k += 1;
-        }
-    }
+        },
+    );
     (k == 2).then_some(crossings)
 }
 

@@ -21,7 +21,9 @@
 //! A bounded plane (finite XMIN…YMAX) ignores triangles whose corners all lie beyond one of its
 //! edges; a triangle straddling an edge counts whole (an error within one facet of the edge).
 
-use crate::contact_region::{LocalContact, add_polygon, label_regions, new_node, union};
+use crate::contact_region::{
+    LocalContact, add_polygon, clip_by_heights, label_regions, new_node, union,
+};
 use crate::facet_mesh::{FacetMesh, NO_NEIGHBOR};
 use crate::plane_support::{
     Support, alone_contact, blended, ellipsoid_on_plane, sphere_on_plane, supports_by_region,
@@ -462,7 +464,16 @@ fn sum_volumes(a: &FacetMesh, frame: &PlaneFrame, smooth_only: &[bool], s: &mut 
 fn add_clipped(n: &Vector3, pn: &PlaneNode, r: &mut RegionSums) {
     let mut clipped = [Vector3::zeros(); 4];
     let polygon = if pn.crossing {
-        let count = clip_triangle(&pn.corners, &pn.heights, &mut clipped);
+        let mut count = 0;
+        clip_by_heights(
+            3,
+            |k| (pn.corners[k], pn.heights[k]),
+            |p| {
+                clipped[count] = p;
+                count += 1;
+            },
+            |_| {},
+        );
         &clipped[..count]
     } else {
         &pn.corners[..]
@@ -486,26 +497,6 @@ fn volume_centroid(r: &RegionSums) -> Vector3 {
     } else {
         r.apex
     }
-}
-
-/// The part of triangle `c` at or below the plane, given its corners' heights `h` above it,
-/// into `out` (at most four corners: two kept, two where edges cross); returns how many.
-/// [`crate::contact_region::clip`] with the heights computed once.
-fn clip_triangle(c: &[Vector3; 3], h: &[f64; 3], out: &mut [Vector3; 4]) -> usize {
-    let mut count = 0;
-    for i in 0..3 {
-        let j = if i == 2 { 0 } else { i + 1 };
-        let (u, du, v, dv) = (c[i], h[i], c[j], h[j]);
-        if du <= 0.0 {
-            out[count] = u;
-            count += 1;
-        }
-        if (du < 0.0 && dv > 0.0) || (du > 0.0 && dv < 0.0) {
-            out[count] = u + (v - u) * (du / (du - dv));
-            count += 1;
-        }
-    }
-    count
 }
 
 /// The contact of the region of triangles `in_region` from its sums: `point_j` the centroid on
