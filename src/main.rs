@@ -69,6 +69,10 @@ enum Command {
         /// Print every pose's closed-form answer.
         #[arg(long)]
         answers: bool,
+        /// Without names, the kernel scenes (one configuration per path of the exact engine)
+        /// instead of the suite.
+        #[arg(long)]
+        kernels: bool,
     },
 }
 
@@ -171,8 +175,17 @@ fn main() -> ExitCode {
                 &mut progress,
             ))
         }
-        Command::Scenes { names, answers } => {
-            match cli::scenes::run(&names, answers, &mut stdout) {
+        Command::Scenes {
+            names,
+            answers,
+            kernels,
+        } => {
+            let default = if kernels {
+                cli::scenes::Default::Kernels
+            } else {
+                cli::scenes::Default::Suite
+            };
+            match cli::scenes::run(&names, answers, default, &mut stdout) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");

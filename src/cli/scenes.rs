@@ -4,16 +4,32 @@
 use crate::scenes;
 use std::io::Write;
 
-/// Prints the suite (or the scenes named) to `out`; with `answers`, every pose's closed-form
-/// contacts as CSV rows `scene,pose,nominal_depth,penetration,nx,ny,nz,area`.
-pub fn run(names: &[String], answers: bool, out: &mut dyn Write) -> Result<(), ScenesError> {
-    let chosen: Vec<scenes::Scene> = if names.is_empty() {
-        scenes::suite()
-    } else {
+/// The scenes listed when none is named.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Default {
+    /// The suite ([`scenes::suite`]).
+    Suite,
+    /// The kernel scenes ([`scenes::kernel_scenes`]).
+    Kernels,
+}
+
+/// Prints the scenes named (none: `default`) to `out`; with `answers`, every pose's
+/// closed-form contacts as CSV rows `scene,pose,nominal_depth,penetration,nx,ny,nz,area`.
+pub fn run(
+    names: &[String],
+    answers: bool,
+    default: Default,
+    out: &mut dyn Write,
+) -> Result<(), ScenesError> {
+    let chosen: Vec<scenes::Scene> = if !names.is_empty() {
         names
             .iter()
             .map(|n| scenes::scene(n).ok_or_else(|| ScenesError::UnknownScene(n.clone())))
             .collect::<Result<_, _>>()?
+    } else if default == Default::Kernels {
+        scenes::kernel_scenes()
+    } else {
+        scenes::suite()
     };
     if !answers {
         for s in &chosen {
@@ -56,7 +72,9 @@ pub fn run(names: &[String], answers: bool, out: &mut dyn Write) -> Result<(), S
 #[derive(Debug, thiserror::Error)]
 pub enum ScenesError {
     /// A name that is not in the suite.
-    #[error("no scene named '{0}' (run `contact scenes` for the list)")]
+    #[error(
+        "no scene named '{0}' (`contact scenes` lists the suite, `contact scenes --kernels` the kernel scenes)"
+    )]
     UnknownScene(String),
     /// Writing the output failed.
     #[error("cannot write the output: {0}")]

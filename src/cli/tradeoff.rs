@@ -35,7 +35,9 @@ pub struct TradeoffArgs {
 #[derive(Debug, thiserror::Error)]
 pub enum TradeoffError {
     /// A scene name not in the suite.
-    #[error("no scene named '{0}' (run `contact scenes` for the list)")]
+    #[error(
+        "no scene named '{0}' (`contact scenes` lists the suite, `contact scenes --kernels` the kernel scenes)"
+    )]
     UnknownScene(String),
     /// A contact name not in the model.
     #[error("the model has no contact named '{0}' (its contacts are named CONTACT/id)")]

@@ -3,9 +3,12 @@
 
 use super::*;
 
-/// The scene called `name`, or `None`.
+/// The scene called `name` (of the suite, [`super::NAMES`], or of the kernel scenes,
+/// [`super::KERNEL_NAMES`]), or `None`.
 pub fn scene(name: &str) -> Option<Scene> {
-    let name: &'static str = NAMES.iter().find(|n| **n == name)?;
+    let Some(name) = NAMES.iter().find(|n| **n == name) else {
+        return super::kernels::kernel_scene(name);
+    };
     plane_scene(name)
         .or_else(|| pair_scene(name))
         .or_else(|| planar_scene(name))

@@ -1,6 +1,8 @@
 //! The reference scenes: one definition of every pair family users compare the engines on,
 //! each with a seeded family of poses from separated through grazing to deep. Tests, benches
-//! and `contact tradeoff` all read them from here.
+//! and `contact tradeoff` all read them from here: the suite ([`suite`], what the trade runs
+//! by default) and the kernel scenes ([`kernel_scenes`]: one configuration per path of the
+//! exact engine's dispatch that the suite does not reach, moved along an approach).
 //!
 //! A scene's *reference answer* at a pose is its closed form ([`Scene::closed_form`]) where one
 //! exists, else the exact engine's answer. Poses are placed at a *nominal* depth along an
@@ -11,6 +13,7 @@ mod catalog;
 mod closed_form;
 mod from_model;
 mod from_run;
+mod kernels;
 mod rng;
 mod support;
 
@@ -18,6 +21,7 @@ pub use catalog::scene;
 pub use closed_form::{circle_circle, cylinder_plane_side, sphere_plane, sphere_sphere};
 pub use from_model::{ModelSceneError, from_model};
 pub use from_run::{RUN_POSES_PER_CONTACT, RunScenes, SPREAD_TILT_DEG, from_run};
+pub use kernels::{KERNEL_NAMES, kernel_scenes};
 pub use rng::SplitMix64;
 pub use support::{support, support_point};
 
@@ -378,6 +382,38 @@ impl Scene {
             scene.push(
                 depth,
                 Isometry3::from_parts(Vector3::new(at.x, at.y, 0.0).into(), rotation),
+                &mut rng,
+            );
+        }
+        scene
+    }
+
+    /// A kernel's configuration moved along `approach` (a unit vector in J's frame, from J
+    /// towards I): I at `reference` relative to J stands at nominal depth `reference_depth`,
+    /// and the pose at nominal depth `d` is `reference` translated by
+    /// `approach·(reference_depth − d)`, its rotation kept. Where `approach` is the contact
+    /// normal and the reference depth a closed form, every pose's nominal depth is its depth.
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "one scene's whole definition, called from one place"
+    )]
+    fn through(
+        name: &'static str,
+        description: &'static str,
+        i: Vec<GeometryInstance>,
+        j: Vec<GeometryInstance>,
+        scale: f64,
+        reference: Isometry3,
+        reference_depth: f64,
+        approach: Vector3,
+    ) -> Self {
+        let mut scene = Self::base(name, description, i, j, scale);
+        let mut rng = SplitMix64::new(seed(name));
+        for depth in relative_depths().map(|d| d * scale) {
+            let moved = reference.translation.vector + approach * (reference_depth - depth);
+            scene.push(
+                depth,
+                Isometry3::from_parts(moved.into(), reference.rotation),
                 &mut rng,
             );
         }

@@ -153,3 +153,54 @@ fn graded_poses_touch_and_separated_poses_do_not() {
         }
     }
 }
+
+/// The kernel scenes' nominal depths are how far I has travelled along the approach past
+/// first touch, by the exact engine: each scene touches at every graded pose from 1e-3 of its
+/// scale on (the labels are rounded up to four digits) and is clear at its separated poses; where the nominal depth is a closed form (a pin in a slot,
+/// a sphere on a box face, on a cylinder's side and on a mesh foot, a box face across an
+/// upright frustum) the engine's depth is the nominal depth at every graded pose.
+#[test]
+fn kernel_scenes_touch_past_first_touch_and_hold_their_closed_forms() {
+    use contact_core::{GeometryEngine, WorkCounters};
+    let closed = [
+        "cylinder_box",
+        "sphere_box_face",
+        "sphere_cylinder_side",
+        "sphere_mesh_foot",
+        "box_frustum",
+    ];
+    let all = kernel_scenes();
+    let mut wrong = Vec::new();
+    assert_eq!(all.len(), KERNEL_NAMES.len());
+    for s in &all {
+        assert!(!NAMES.contains(&&*s.name), "{} is in the suite too", s.name);
+        assert_eq!(scene(&s.name).map(|f| f.poses), Some(s.poses.clone()));
+        assert_eq!(s.poses.len(), POSES, "{}", s.name);
+        let pair = engine_exact::ExactEngine.prepare(&s.i, &s.j).unwrap();
+        for (k, p) in s.poses.iter().enumerate() {
+            let mut out = Vec::new();
+            pair.query(
+                &p.pose_world_i,
+                &p.pose_world_j,
+                &mut out,
+                &mut WorkCounters::default(),
+            )
+            .unwrap();
+            let relative = p.nominal_depth / s.scale;
+            let depths: Vec<f64> = out.iter().map(|c| c.penetration).collect();
+            if relative < 0.0 && !out.is_empty() {
+                wrong.push(format!("{} pose {k}: separated, yet {depths:?}", s.name));
+            } else if relative >= 1e-3 && out.is_empty() {
+                wrong.push(format!("{} pose {k} at {relative:e}: no contact", s.name));
+            }
+            let closed_form = closed.contains(&&*s.name) && relative >= 1e-4;
+            if closed_form
+                && (depths.len() != 1 || (depths[0] - p.nominal_depth).abs() > 1e-12 * s.scale)
+            {
+                let nominal = p.nominal_depth;
+                wrong.push(format!("{} pose {k}: {depths:?} against {nominal}", s.name));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
