@@ -76,6 +76,17 @@ enum Command {
     },
 }
 
+/// Success, or the error on stderr and exit code 1.
+fn or_report<T, E: std::fmt::Display>(result: Result<T, E>) -> ExitCode {
+    match result {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
 fn exit(code: std::io::Result<u8>) -> ExitCode {
     match code {
         Ok(code) => ExitCode::from(code),
@@ -114,13 +125,9 @@ fn main() -> ExitCode {
     match command {
         Command::Run(args) => exit(cli::run::run(&args, &mut stdout, &mut std::io::stderr())),
         Command::Check(args) => exit(cli::check::run(&args, &mut stdout).map(|c| u8::from(c != 0))),
-        Command::Query(args) => match cli::query::run(&args, &mut stdout, &mut std::io::stderr()) {
-            Ok(_) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(1)
-            }
-        },
+        Command::Query(args) => {
+            or_report(cli::query::run(&args, &mut stdout, &mut std::io::stderr()))
+        }
         Command::Tradeoff {
             model,
             commands,
@@ -151,19 +158,13 @@ fn main() -> ExitCode {
             } else {
                 Vec::new()
             };
-            match cli::tradeoff::run(
+            or_report(cli::tradeoff::run(
                 &args,
                 &contact::engine_choice::build_engine,
                 &peers,
                 &mut stdout,
                 &mut progress,
-            ) {
-                Ok(_) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(1)
-                }
-            }
+            ))
         }
         Command::Select(args) => {
             let mut progress = |label: &str| eprintln!("measuring {label}");
@@ -185,13 +186,7 @@ fn main() -> ExitCode {
             } else {
                 cli::scenes::Default::Suite
             };
-            match cli::scenes::run(&names, answers, default, &mut stdout) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(1)
-                }
-            }
+            or_report(cli::scenes::run(&names, answers, default, &mut stdout))
         }
     }
 }

@@ -159,7 +159,9 @@ impl Expr {
 }
 
 /// The jet of a mathematical function of jets.
-fn math_jet(f: MathFn, a: &[Jet]) -> Option<Jet> {
+/// The jet of an elementary function (trigonometric, hyperbolic, exponential, logarithmic,
+/// square root) of `a[0]`, or ATAN2 of `a[0]`, `a[1]`; `None` for every other function.
+fn elementary_jet(f: MathFn, a: &[Jet]) -> Option<Jet> {
     let x = a[0].value;
     let g = a[0];
     Some(match f {
@@ -211,6 +213,28 @@ fn math_jet(f: MathFn, a: &[Jet]) -> Option<Jet> {
             let s = x.sqrt();
             g.chain(s, 0.5 / s, -0.25 / (s * x))
         }
+        _ => return None,
+    })
+}
+
+fn math_jet(f: MathFn, a: &[Jet]) -> Option<Jet> {
+    let x = a[0].value;
+    let g = a[0];
+    Some(match f {
+        MathFn::Sin
+        | MathFn::Cos
+        | MathFn::Tan
+        | MathFn::Asin
+        | MathFn::Acos
+        | MathFn::Atan
+        | MathFn::Atan2
+        | MathFn::Sinh
+        | MathFn::Cosh
+        | MathFn::Tanh
+        | MathFn::Exp
+        | MathFn::Log
+        | MathFn::Log10
+        | MathFn::Sqrt => return elementary_jet(f, a),
         MathFn::Abs => {
             if x < 0.0 {
                 g.neg()

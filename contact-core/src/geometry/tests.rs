@@ -8,7 +8,7 @@ fn message<T: std::fmt::Debug>(r: Result<T, crate::InvalidArgument>) -> String {
 }
 
 #[test]
-fn every_geometry_argument_is_range_checked() {
+fn every_solid_argument_is_range_checked() {
     let cases: Vec<(String, &str)> = vec![
         (
             message(Ellipsoid::from_diameters(0.0, 1.0, 1.0)),
@@ -66,6 +66,15 @@ fn every_geometry_argument_is_range_checked() {
             message(Torus::new(1.0, 1.0)),
             "MINOR_RADIUS = 1.0 is out of range: must be < MAJOR_RADIUS = 1.0",
         ),
+    ];
+    for (got, want) in cases {
+        assert_eq!(got, want);
+    }
+}
+
+#[test]
+fn every_plane_and_planar_argument_is_range_checked() {
+    let cases: Vec<(String, &str)> = vec![
         (
             message(Plane::bounded(1.0, 1.0, 0.0, 1.0)),
             "XMAX = 1.0 is out of range: must be > XMIN = 1.0",

@@ -34,6 +34,28 @@ fn geometry() -> (GeometryInstance, GeometryInstance) {
     )
 }
 
+/// A ball about 1e-4 deep in a tilted plate (inside the damping ramp); both parts move and
+/// turn.
+fn ball_in_moving_plate() -> (PartState, PartState) {
+    let ball = PartState {
+        pose_w: Isometry3::new(
+            nalgebra::Vector3::new(0.01, -0.02, 0.0996),
+            nalgebra::Vector3::new(0.2, -0.1, 0.3),
+        ),
+        velocity_w: nalgebra::Vector3::new(0.3, -0.2, -0.4),
+        angular_velocity_w: nalgebra::Vector3::new(1.0, 2.0, 3.0),
+    };
+    let plate = PartState {
+        pose_w: Isometry3::new(
+            nalgebra::Vector3::new(0.0, 0.0, 0.0),
+            nalgebra::Vector3::new(0.02, -0.01, 0.0),
+        ),
+        velocity_w: nalgebra::Vector3::new(0.1, 0.0, 0.05),
+        angular_velocity_w: nalgebra::Vector3::new(0.0, -0.3, 0.5),
+    };
+    (ball, plate)
+}
+
 #[test]
 fn the_solver_force_is_the_kinematics_helper_and_the_laws() {
     let (ball, ground) = geometry();
@@ -50,24 +72,7 @@ fn the_solver_force_is_the_kinematics_helper_and_the_laws() {
         Analysis::Dynamics,
     )
     .unwrap();
-    // A ball about 1e-4 deep in a tilted plate (inside the damping ramp); both parts move and
-    // turn.
-    let ball_state = PartState {
-        pose_w: Isometry3::new(
-            nalgebra::Vector3::new(0.01, -0.02, 0.0996),
-            nalgebra::Vector3::new(0.2, -0.1, 0.3),
-        ),
-        velocity_w: nalgebra::Vector3::new(0.3, -0.2, -0.4),
-        angular_velocity_w: nalgebra::Vector3::new(1.0, 2.0, 3.0),
-    };
-    let plate_state = PartState {
-        pose_w: Isometry3::new(
-            nalgebra::Vector3::new(0.0, 0.0, 0.0),
-            nalgebra::Vector3::new(0.02, -0.01, 0.0),
-        ),
-        velocity_w: nalgebra::Vector3::new(0.1, 0.0, 0.05),
-        angular_velocity_w: nalgebra::Vector3::new(0.0, -0.3, 0.5),
-    };
+    let (ball_state, plate_state) = ball_in_moving_plate();
     let states = [PartState::GROUND, ball_state, plate_state];
     let view = StateView::new(&states);
     let reports = element.reports(0.0, &view).unwrap();

@@ -12,9 +12,10 @@
 //! clear and the graded ones touch (`scenes::tests`), and the approach is the exact engine's
 //! normal at the configuration where one region answers, else J's z axis.
 
+mod on_planes_and_meshes;
+
 use super::*;
-use contact_core::Point3;
-use contact_core::geometry::TriangleMesh;
+use on_planes_and_meshes::{bounded_plane_scene, feet_scene};
 
 /// The kernel scenes, in order.
 pub const KERNEL_NAMES: [&str; 37] = [
@@ -69,7 +70,8 @@ pub fn kernel_scenes() -> Vec<Scene> {
 pub(super) fn kernel_scene(name: &str) -> Option<Scene> {
     let name: &'static str = KERNEL_NAMES.iter().find(|n| **n == name)?;
     curved_scene(name)
-        .or_else(|| box_and_sphere_scene(name))
+        .or_else(|| sphere_scene(name))
+        .or_else(|| box_scene(name))
         .or_else(|| bounded_plane_scene(name))
         .or_else(|| feet_scene(name))
 }
@@ -79,18 +81,18 @@ pub(super) fn kernel_scene(name: &str) -> Option<Scene> {
 /// length scale `scale` (a radius where the configuration has a closed form, else about four
 /// times the exact engine's depth there, so the graded depths to 0.3 of it reach about the
 /// configuration).
-struct Configuration {
-    i: Geometry,
-    j: Geometry,
-    pose_i: Isometry3,
-    pose_j: Isometry3,
-    depth: f64,
-    approach: Vector3,
-    scale: f64,
+pub(super) struct Configuration {
+    pub(super) i: Geometry,
+    pub(super) j: Geometry,
+    pub(super) pose_i: Isometry3,
+    pub(super) pose_j: Isometry3,
+    pub(super) depth: f64,
+    pub(super) approach: Vector3,
+    pub(super) scale: f64,
 }
 
 impl Configuration {
-    fn scene(self, name: &'static str, description: &'static str) -> Scene {
+    pub(super) fn scene(self, name: &'static str, description: &'static str) -> Scene {
         Scene::through(
             name,
             description,
@@ -105,15 +107,15 @@ impl Configuration {
 }
 
 /// The generic tilt of the configurations that need one.
-fn tilt() -> UnitQuaternion {
+pub(super) fn tilt() -> UnitQuaternion {
     UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5)
 }
 
-fn at(x: f64, y: f64, z: f64) -> Isometry3 {
+pub(super) fn at(x: f64, y: f64, z: f64) -> Isometry3 {
     Isometry3::translation(x, y, z)
 }
 
-fn tilted_at(x: f64, y: f64, z: f64) -> Isometry3 {
+pub(super) fn tilted_at(x: f64, y: f64, z: f64) -> Isometry3 {
     Isometry3::from_parts(nalgebra::Translation3::new(x, y, z), tilt())
 }
 
@@ -122,7 +124,7 @@ fn tilted_at(x: f64, y: f64, z: f64) -> Isometry3 {
     clippy::expect_used,
     reason = "literal sizes, all inside their valid ranges"
 )]
-mod shapes {
+pub(super) mod shapes {
     use super::*;
 
     pub fn cuboid(x: f64, y: f64, z: f64) -> Geometry {
@@ -307,8 +309,8 @@ fn frustum_and_torus_scene(name: &'static str) -> Option<Scene> {
     Some(configuration.scene(name, description))
 }
 
-/// Spheres on faces, edges, sides and tubes; boxes against frusta and tori; a wheel at rest.
-fn box_and_sphere_scene(name: &'static str) -> Option<Scene> {
+/// Spheres on faces, edges, sides and tubes.
+fn sphere_scene(name: &'static str) -> Option<Scene> {
     let identity = Isometry3::identity();
     let (configuration, description) = match name {
         "sphere_box_face" => (
@@ -375,6 +377,15 @@ fn box_and_sphere_scene(name: &'static str) -> Option<Scene> {
             },
             "a sphere under a torus, inside its ring (SPEC §4's δ = 0.201397)",
         ),
+        _ => return None,
+    };
+    Some(configuration.scene(name, description))
+}
+
+/// Boxes against frusta and tori; a wheel at rest.
+fn box_scene(name: &'static str) -> Option<Scene> {
+    let identity = Isometry3::identity();
+    let (configuration, description) = match name {
         "cylinder_plane_resting" => (
             Configuration {
                 i: rod(0.5, 2.0),
@@ -441,227 +452,4 @@ fn box_and_sphere_scene(name: &'static str) -> Option<Scene> {
         _ => return None,
     };
     Some(configuration.scene(name, description))
-}
-
-/// Solids on a bounded plane: across its edge x = −0.2, and well inside a 100 × 100 one.
-fn bounded_plane_scene(name: &'static str) -> Option<Scene> {
-    let edge = || bounded(-0.2, 2.0, -2.0, 2.0);
-    let wide = || bounded(-50.0, 50.0, -50.0, 50.0);
-    let on = |i: Geometry, j: Geometry, pose_i: Isometry3, depth: f64, scale: f64| Configuration {
-        i,
-        j,
-        pose_i,
-        pose_j: Isometry3::identity(),
-        depth,
-        approach: Vector3::z(),
-        scale,
-    };
-    let (configuration, description) = match name {
-        "frustum_bounded_plane" => (
-            on(
-                frustum(0.6, 0.3, 1.5),
-                edge(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.3108,
-                0.8,
-            ),
-            "a tilted frustum across a bounded plane's edge",
-        ),
-        "cylinder_bounded_plane" => (
-            on(
-                rod(0.5, 2.0),
-                edge(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.2757,
-                0.75,
-            ),
-            "a tilted cylinder across a bounded plane's edge",
-        ),
-        "torus_bounded_plane" => (
-            on(
-                torus(1.0, 0.3),
-                edge(),
-                tilted_at(0.0, 0.0, 0.5),
-                0.1513,
-                0.56,
-            ),
-            "a tilted torus across a bounded plane's edge",
-        ),
-        "ellipsoid_bounded_plane" => (
-            on(
-                ellipsoid(1.0, 0.6, 0.4),
-                edge(),
-                tilted_at(0.0, 0.0, 0.3),
-                0.1575,
-                0.54,
-            ),
-            "a tilted ellipsoid across a bounded plane's edge",
-        ),
-        "cylinder_bounded_plane_inside" => (
-            on(
-                rod(0.5, 2.0),
-                wide(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.2757,
-                0.71,
-            ),
-            "a tilted cylinder well inside a bounded plane: the unbounded plane's answer",
-        ),
-        "torus_bounded_plane_inside" => (
-            on(
-                torus(1.0, 0.3),
-                wide(),
-                tilted_at(0.0, 0.0, 0.5),
-                0.1513,
-                0.58,
-            ),
-            "a tilted torus well inside a bounded plane: the unbounded plane's answer",
-        ),
-        "ellipsoid_bounded_plane_inside" => (
-            on(
-                ellipsoid(1.0, 0.6, 0.4),
-                wide(),
-                tilted_at(0.0, 0.0, 0.3),
-                0.1582,
-                0.62,
-            ),
-            "a tilted ellipsoid well inside a bounded plane: the unbounded plane's answer",
-        ),
-        _ => return None,
-    };
-    Some(configuration.scene(name, description))
-}
-
-/// Solids on two boxes joined as one mesh (two "feet", convex and dented), and the feet on
-/// planes.
-fn feet_scene(name: &'static str) -> Option<Scene> {
-    let feet = || Geometry::Mesh(Arc::new(two_feet()));
-    let across = Isometry3::from_parts(
-        nalgebra::Translation3::new(-1.5, 0.0, 1.1),
-        UnitQuaternion::from_euler_angles(0.1, FRAC_PI_2 - 0.2, 0.0),
-    );
-    let on = |i: Geometry, j: Geometry, pose_i: Isometry3, depth: f64, scale: f64| Configuration {
-        i,
-        j,
-        pose_i,
-        pose_j: Isometry3::identity(),
-        depth,
-        approach: Vector3::z(),
-        scale,
-    };
-    let ground = || Geometry::Plane(Plane::unbounded());
-    let (configuration, description) = match name {
-        "mesh_plane_two_feet" => (
-            on(feet(), ground(), tilted_at(0.0, 0.0, 0.9), 0.4502, 1.15),
-            "the feet tilted on a plane: two regions",
-        ),
-        "mesh_bounded_plane_two_feet" => (
-            on(
-                feet(),
-                bounded(-1.2, 2.0, -2.0, 2.0),
-                tilted_at(0.0, 0.0, 0.9),
-                0.4502,
-                1.2,
-            ),
-            "the feet tilted on a bounded plane, its edge under one foot",
-        ),
-        "box_mesh_two_feet" => (
-            on(
-                cuboid(1.5, 0.3, 0.4),
-                feet(),
-                tilted_at(0.0, 0.1, 1.2),
-                0.4495,
-                2.0,
-            ),
-            "a tilted box pressed across both feet's tops: two regions",
-        ),
-        "cylinder_mesh_two_feet" => (
-            on(rod(0.3, 3.0), feet(), across, 0.1941, 0.56),
-            "a tilted cylinder across both feet's tops: two regions",
-        ),
-        "cylinder_mesh_dented_feet" => (
-            on(
-                rod(0.3, 3.0),
-                Geometry::Mesh(Arc::new(dented_feet())),
-                across,
-                0.1747,
-                0.56,
-            ),
-            "the cylinder across feet dented at a top corner (not convex: sliced)",
-        ),
-        "frustum_mesh_two_feet" => (
-            on(
-                frustum(0.6, 0.3, 1.5),
-                feet(),
-                tilted_at(-1.0, 0.0, 0.8),
-                0.3608,
-                0.95,
-            ),
-            "a tilted frustum on a foot",
-        ),
-        "torus_mesh_two_feet" => (
-            on(
-                torus(1.0, 0.3),
-                feet(),
-                tilted_at(0.0, 0.0, 1.1),
-                0.4258,
-                1.15,
-            ),
-            "a tilted torus across both feet",
-        ),
-        "ellipsoid_mesh_two_feet" => (
-            on(
-                ellipsoid(1.6, 0.5, 0.4),
-                feet(),
-                tilted_at(0.0, 0.0, 1.2),
-                0.3093,
-                1.1,
-            ),
-            "a long tilted ellipsoid across both feet",
-        ),
-        "sphere_mesh_foot" => (
-            on(ball(0.5), feet(), at(-1.0, 0.0, 1.3), 0.2, 0.5),
-            "a sphere on a foot's top face (closed form)",
-        ),
-        _ => return None,
-    };
-    Some(configuration.scene(name, description))
-}
-
-/// A closed mesh of two boxes (two "feet"): 24 triangles, two contact regions on a plane.
-#[expect(clippy::expect_used, reason = "literal vertices and triangles, valid")]
-fn two_feet() -> TriangleMesh {
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for (cx, h) in [(-1.0, [0.5, 0.4, 1.0]), (1.0, [0.3, 0.6, 1.0])] {
-        let base = vertices.len() as u32;
-        for k in 0..8u32 {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            vertices.push(Point3::new(cx + s(0) * h[0], s(1) * h[1], s(2) * h[2]));
-        }
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    TriangleMesh::new(vertices, triangles).expect("a valid literal mesh")
-}
-
-/// [`two_feet`] with each foot's top corner at `+x, +y` pushed in and down: no longer convex.
-#[expect(clippy::expect_used, reason = "literal vertices and triangles, valid")]
-fn dented_feet() -> TriangleMesh {
-    let feet = two_feet();
-    let mut vertices = feet.vertices().to_vec();
-    for foot in 0..2 {
-        let v = &mut vertices[8 * foot + 7];
-        *v = Point3::new(v.x - 0.1, v.y - 0.1, 0.7);
-    }
-    TriangleMesh::new(vertices, feet.triangles().to_vec()).expect("a valid literal mesh")
 }
