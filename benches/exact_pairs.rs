@@ -23,7 +23,8 @@ use contact::scenes::{self, Scene, ScenePose};
 use contact_core::{
     Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, PreparedPair, WorkCounters,
 };
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use engine_exact::ExactEngine;
 use std::hint::black_box;
 use std::time::Duration;
@@ -136,48 +137,48 @@ fn bench_scene(c: &mut Criterion, scene: &Scene) {
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2))
         .sample_size(30);
+    time_pair(&mut group, "exact", exact.as_ref(), pose);
+    match &parry {
+        Some(Peer::Engine(pair)) => time_pair(&mut group, "parry", pair.as_ref(), pose),
+        Some(Peer::Shapes(shapes)) => {
+            group.bench_function("parry", |bench| {
+                let [(a, xa), (b, xb)] = &**shapes;
+                bench.iter(|| {
+                    primitives::contact(
+                        a,
+                        &(black_box(pose.pose_world_i) * xa),
+                        b,
+                        &(black_box(pose.pose_world_j) * xb),
+                    )
+                })
+            });
+        }
+        None => {}
+    }
+    group.finish();
+}
+
+/// Times `pair`'s query at `pose` as `id` in `group`.
+fn time_pair(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    id: &str,
+    pair: &dyn PreparedPair,
+    pose: &ScenePose,
+) {
     let mut buffer: Vec<Contact> = Vec::with_capacity(4);
     let mut work = WorkCounters::default();
-    group.bench_function("exact", |b| {
+    group.bench_function(id, |b| {
         b.iter(|| {
-            exact
-                .query(
-                    black_box(&pose.pose_world_i),
-                    black_box(&pose.pose_world_j),
-                    &mut buffer,
-                    &mut work,
-                )
-                .ok();
+            pair.query(
+                black_box(&pose.pose_world_i),
+                black_box(&pose.pose_world_j),
+                &mut buffer,
+                &mut work,
+            )
+            .ok();
             black_box(buffer.len())
         })
     });
-    match &parry {
-        Some(Peer::Engine(pair)) => group.bench_function("parry", |b| {
-            b.iter(|| {
-                pair.query(
-                    black_box(&pose.pose_world_i),
-                    black_box(&pose.pose_world_j),
-                    &mut buffer,
-                    &mut work,
-                )
-                .ok();
-                black_box(buffer.len())
-            })
-        }),
-        Some(Peer::Shapes(shapes)) => group.bench_function("parry", |bench| {
-            let [(a, xa), (b, xb)] = &**shapes;
-            bench.iter(|| {
-                primitives::contact(
-                    a,
-                    &(black_box(pose.pose_world_i) * xa),
-                    b,
-                    &(black_box(pose.pose_world_j) * xb),
-                )
-            })
-        }),
-        None => &mut group,
-    };
-    group.finish();
 }
 
 fn bench_pairs(c: &mut Criterion) {

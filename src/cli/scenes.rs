@@ -40,7 +40,7 @@ pub fn run(
             };
             writeln!(
                 out,
-                "{:<28} {:>3} poses  reference: {:<12} {}",
+                "{:<31} {:>3} poses  reference: {:<12} {}",
                 s.name,
                 s.poses.len(),
                 oracle,

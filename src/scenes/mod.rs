@@ -256,7 +256,7 @@ impl Scene {
 
     fn base(
         name: &'static str,
-        description: &'static str,
+        description: impl Into<Cow<'static, str>>,
         i: Vec<GeometryInstance>,
         j: Vec<GeometryInstance>,
         scale: f64,
@@ -399,7 +399,7 @@ impl Scene {
     )]
     fn through(
         name: &'static str,
-        description: &'static str,
+        description: impl Into<Cow<'static, str>>,
         i: Vec<GeometryInstance>,
         j: Vec<GeometryInstance>,
         scale: f64,

@@ -93,6 +93,19 @@ fn scaled_curves_stay_the_same_shape() {
     }
 }
 
+/// The contacts `pair` answers at `pose`.
+fn exact_contacts(pair: &dyn contact_core::PreparedPair, pose: &ScenePose) -> Vec<Contact> {
+    let mut out = Vec::new();
+    pair.query(
+        &pose.pose_world_i,
+        &pose.pose_world_j,
+        &mut out,
+        &mut contact_core::WorkCounters::default(),
+    )
+    .unwrap();
+    out
+}
+
 /// How far inside the round surface about its frame's origin a mesh may lie: its largest
 /// vertex radius less its faces' smallest distance from the origin (for a mesh inscribed in a
 /// sphere, an upper bound on its chord sagitta); zero for anything but a mesh.
@@ -122,7 +135,7 @@ fn inscribed_gap(g: &GeometryInstance) -> f64 {
 /// ([`inscribed_gap`]): shallower, their faces may lie apart.
 #[test]
 fn graded_poses_touch_and_separated_poses_do_not() {
-    use contact_core::{GeometryEngine, PrepareError, WorkCounters};
+    use contact_core::{GeometryEngine, PrepareError};
     for s in suite() {
         let pair = match engine_exact::ExactEngine.prepare(&s.i, &s.j) {
             Ok(pair) => pair,
@@ -136,14 +149,7 @@ fn graded_poses_touch_and_separated_poses_do_not() {
             0.0
         };
         for (k, p) in s.poses.iter().enumerate() {
-            let mut out = Vec::new();
-            pair.query(
-                &p.pose_world_i,
-                &p.pose_world_j,
-                &mut out,
-                &mut WorkCounters::default(),
-            )
-            .unwrap();
+            let out = exact_contacts(pair.as_ref(), p);
             let relative = p.nominal_depth / s.scale;
             if relative >= 1e-4 + gap {
                 assert!(!out.is_empty(), "{} pose {k} (depth {relative:e})", s.name);
@@ -161,7 +167,7 @@ fn graded_poses_touch_and_separated_poses_do_not() {
 /// upright frustum) the engine's depth is the nominal depth at every graded pose.
 #[test]
 fn kernel_scenes_touch_past_first_touch_and_hold_their_closed_forms() {
-    use contact_core::{GeometryEngine, WorkCounters};
+    use contact_core::GeometryEngine;
     let closed = [
         "cylinder_box",
         "sphere_box_face",
@@ -178,14 +184,7 @@ fn kernel_scenes_touch_past_first_touch_and_hold_their_closed_forms() {
         assert_eq!(s.poses.len(), POSES, "{}", s.name);
         let pair = engine_exact::ExactEngine.prepare(&s.i, &s.j).unwrap();
         for (k, p) in s.poses.iter().enumerate() {
-            let mut out = Vec::new();
-            pair.query(
-                &p.pose_world_i,
-                &p.pose_world_j,
-                &mut out,
-                &mut WorkCounters::default(),
-            )
-            .unwrap();
+            let out = exact_contacts(pair.as_ref(), p);
             let relative = p.nominal_depth / s.scale;
             let depths: Vec<f64> = out.iter().map(|c| c.penetration).collect();
             if relative < 0.0 && !out.is_empty() {

@@ -135,6 +135,36 @@ impl TriangleMesh {
         })
     }
 
+    /// The surfaces of axis-aligned boxes `(centre, half extents)` as one closed mesh: each box
+    /// its 8 corners (corner `k` at `centre + (±h_x, ±h_y, ±h_z)`, bit 0 of `k` the sign of
+    /// x, bit 1 of y, bit 2 of z) and 12 outward triangles, two a face. Boxes that overlap or
+    /// touch make a mesh that is closed but not the surface of their union. Errors as
+    /// [`TriangleMesh::new`] (a zero half extent makes zero-area facets).
+    pub fn boxes(boxes: &[(Point3, Vector3)]) -> Result<Self, MeshError> {
+        const FACES: [[u32; 4]; 6] = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        let mut vertices = Vec::with_capacity(8 * boxes.len());
+        let mut triangles = Vec::with_capacity(12 * boxes.len());
+        for (c, h) in boxes {
+            let base = vertices.len() as u32;
+            vertices.extend((0..8u32).map(|k| {
+                let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
+                Point3::new(c.x + s(0) * h.x, c.y + s(1) * h.y, c.z + s(2) * h.z)
+            }));
+            for q in FACES.map(|q| q.map(|k| base + k)) {
+                triangles.push([q[0], q[1], q[2]]);
+                triangles.push([q[0], q[2], q[3]]);
+            }
+        }
+        Self::new(vertices, triangles)
+    }
+
     /// A mesh that may be open; indices, coordinates and facet areas are still checked.
     pub fn new_open(vertices: Vec<Point3>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
         let mesh = Self::checked_facets(vertices, triangles)?;

@@ -155,33 +155,7 @@ pub fn assert_close(a: &Contact, b: &Contact, length: f64, area_scale: f64, tol:
 /// A closed, outward-oriented triangle mesh of the boxes `(centre, half extents)`, all in one
 /// mesh (separate boxes make separate components).
 pub fn boxes_mesh(boxes: &[(Point3, Vector3)]) -> contact_core::geometry::TriangleMesh {
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for (c, h) in boxes {
-        let base = vertices.len() as u32;
-        for k in 0..8 {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            vertices.push(Point3::new(
-                c.x + s(0) * h.x,
-                c.y + s(1) * h.y,
-                c.z + s(2) * h.z,
-            ));
-        }
-        // Faces as quads of corner indices (bit 0: x, bit 1: y, bit 2: z), counter-clockwise
-        // seen from outside.
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    contact_core::geometry::TriangleMesh::new(vertices, triangles).unwrap()
+    contact_core::geometry::TriangleMesh::boxes(boxes).unwrap()
 }
 
 /// The contact of `found` whose I point is nearest `point` (regions come in no fixed order).

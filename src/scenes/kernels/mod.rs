@@ -92,7 +92,11 @@ pub(super) struct Configuration {
 }
 
 impl Configuration {
-    pub(super) fn scene(self, name: &'static str, description: &'static str) -> Scene {
+    pub(super) fn scene(
+        self,
+        name: &'static str,
+        description: impl Into<Cow<'static, str>>,
+    ) -> Scene {
         Scene::through(
             name,
             description,

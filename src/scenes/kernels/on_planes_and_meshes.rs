@@ -8,92 +8,50 @@ use contact_core::{Geometry, Isometry3, Point3, UnitQuaternion, Vector3};
 use std::f64::consts::FRAC_PI_2;
 use std::sync::Arc;
 
-/// Solids on a bounded plane: across its edge x = −0.2, and well inside a 100 × 100 one.
+/// Solids on a bounded plane: across its edge x = −0.2, and well inside a 100 × 100 one (the
+/// `_inside` scenes, which the bounded pairs answer with the unbounded plane's closed forms).
 pub(super) fn bounded_plane_scene(name: &'static str) -> Option<Scene> {
-    let edge = || bounded(-0.2, 2.0, -2.0, 2.0);
-    let wide = || bounded(-50.0, 50.0, -50.0, 50.0);
-    let on = |i: Geometry, j: Geometry, pose_i: Isometry3, depth: f64, scale: f64| Configuration {
-        i,
-        j,
-        pose_i,
+    let edge = "across a bounded plane's edge";
+    let well = "well inside a bounded plane";
+    let (body, height, depth, scale, kind, place) = match name {
+        "frustum_bounded_plane" => (frustum(0.6, 0.3, 1.5), -0.1, 0.3108, 0.8, "frustum", edge),
+        "cylinder_bounded_plane" => (rod(0.5, 2.0), -0.1, 0.2757, 0.75, "cylinder", edge),
+        "torus_bounded_plane" => (torus(1.0, 0.3), 0.5, 0.1513, 0.56, "torus", edge),
+        "ellipsoid_bounded_plane" => (
+            ellipsoid(1.0, 0.6, 0.4),
+            0.3,
+            0.1575,
+            0.54,
+            "ellipsoid",
+            edge,
+        ),
+        "cylinder_bounded_plane_inside" => (rod(0.5, 2.0), -0.1, 0.2757, 0.71, "cylinder", well),
+        "torus_bounded_plane_inside" => (torus(1.0, 0.3), 0.5, 0.1513, 0.58, "torus", well),
+        "ellipsoid_bounded_plane_inside" => (
+            ellipsoid(1.0, 0.6, 0.4),
+            0.3,
+            0.1582,
+            0.62,
+            "ellipsoid",
+            well,
+        ),
+        _ => return None,
+    };
+    let inside = name.ends_with("_inside");
+    let configuration = Configuration {
+        i: body,
+        j: if inside {
+            bounded(-50.0, 50.0, -50.0, 50.0)
+        } else {
+            bounded(-0.2, 2.0, -2.0, 2.0)
+        },
+        pose_i: tilted_at(0.0, 0.0, height),
         pose_j: Isometry3::identity(),
         depth,
         approach: Vector3::z(),
         scale,
     };
-    let (configuration, description) = match name {
-        "frustum_bounded_plane" => (
-            on(
-                frustum(0.6, 0.3, 1.5),
-                edge(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.3108,
-                0.8,
-            ),
-            "a tilted frustum across a bounded plane's edge",
-        ),
-        "cylinder_bounded_plane" => (
-            on(
-                rod(0.5, 2.0),
-                edge(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.2757,
-                0.75,
-            ),
-            "a tilted cylinder across a bounded plane's edge",
-        ),
-        "torus_bounded_plane" => (
-            on(
-                torus(1.0, 0.3),
-                edge(),
-                tilted_at(0.0, 0.0, 0.5),
-                0.1513,
-                0.56,
-            ),
-            "a tilted torus across a bounded plane's edge",
-        ),
-        "ellipsoid_bounded_plane" => (
-            on(
-                ellipsoid(1.0, 0.6, 0.4),
-                edge(),
-                tilted_at(0.0, 0.0, 0.3),
-                0.1575,
-                0.54,
-            ),
-            "a tilted ellipsoid across a bounded plane's edge",
-        ),
-        "cylinder_bounded_plane_inside" => (
-            on(
-                rod(0.5, 2.0),
-                wide(),
-                tilted_at(0.0, 0.0, -0.1),
-                0.2757,
-                0.71,
-            ),
-            "a tilted cylinder well inside a bounded plane: the unbounded plane's answer",
-        ),
-        "torus_bounded_plane_inside" => (
-            on(
-                torus(1.0, 0.3),
-                wide(),
-                tilted_at(0.0, 0.0, 0.5),
-                0.1513,
-                0.58,
-            ),
-            "a tilted torus well inside a bounded plane: the unbounded plane's answer",
-        ),
-        "ellipsoid_bounded_plane_inside" => (
-            on(
-                ellipsoid(1.0, 0.6, 0.4),
-                wide(),
-                tilted_at(0.0, 0.0, 0.3),
-                0.1582,
-                0.62,
-            ),
-            "a tilted ellipsoid well inside a bounded plane: the unbounded plane's answer",
-        ),
-        _ => return None,
-    };
+    let description = format!("a tilted {kind} {place}");
     Some(configuration.scene(name, description))
 }
 
@@ -194,29 +152,13 @@ pub(super) fn feet_scene(name: &'static str) -> Option<Scene> {
 }
 
 /// A closed mesh of two boxes (two "feet"): 24 triangles, two contact regions on a plane.
-#[expect(clippy::expect_used, reason = "literal vertices and triangles, valid")]
+#[expect(clippy::expect_used, reason = "literal boxes, valid")]
 fn two_feet() -> TriangleMesh {
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for (cx, h) in [(-1.0, [0.5, 0.4, 1.0]), (1.0, [0.3, 0.6, 1.0])] {
-        let base = vertices.len() as u32;
-        for k in 0..8u32 {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            vertices.push(Point3::new(cx + s(0) * h[0], s(1) * h[1], s(2) * h[2]));
-        }
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    TriangleMesh::new(vertices, triangles).expect("a valid literal mesh")
+    TriangleMesh::boxes(&[
+        (Point3::new(-1.0, 0.0, 0.0), Vector3::new(0.5, 0.4, 1.0)),
+        (Point3::new(1.0, 0.0, 0.0), Vector3::new(0.3, 0.6, 1.0)),
+    ])
+    .expect("a valid literal mesh")
 }
 
 /// [`two_feet`] with each foot's top corner at `+x, +y` pushed in and down: no longer convex.

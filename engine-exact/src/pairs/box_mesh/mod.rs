@@ -446,40 +446,14 @@ fn region_contact(
 /// The closed mesh of `cuboid`'s surface (12 triangles, outward), prepared (`None` only if
 /// the box were degenerate, which its constructor rules out).
 pub(crate) fn box_mesh(cuboid: &Cuboid) -> Option<PreparedMesh> {
-    let mesh = boxes_triangles(&[(cuboid.center(), cuboid.half_extents())]);
-    let mesh = contact_core::geometry::TriangleMesh::new(mesh.0, mesh.1).ok()?;
+    let mesh =
+        contact_core::geometry::TriangleMesh::boxes(&[(cuboid.center(), cuboid.half_extents())])
+            .ok()?;
     PreparedMesh::new(&mesh)
 }
 
 /// The surfaces of the boxes `(centre, half extents)` as one closed mesh (tests' shapes).
 #[cfg(test)]
 pub(crate) fn boxes_surface(boxes: &[(Point3, Vector3)]) -> contact_core::geometry::TriangleMesh {
-    let (vertices, triangles) = boxes_triangles(boxes);
-    contact_core::geometry::TriangleMesh::new(vertices, triangles).expect("boxes are closed")
-}
-
-/// The boxes' corners and triangles (12 a box, outward).
-fn boxes_triangles(boxes: &[(Point3, Vector3)]) -> (Vec<Point3>, Vec<[u32; 3]>) {
-    let mut vertices = Vec::with_capacity(8 * boxes.len());
-    let mut triangles = Vec::with_capacity(12 * boxes.len());
-    for (c, h) in boxes {
-        let base = vertices.len() as u32;
-        vertices.extend((0..8).map(|k| {
-            let s = |bit: u32| if k & (1 << bit) != 0 { 1.0 } else { -1.0 };
-            Point3::new(c.x + s(0) * h.x, c.y + s(1) * h.y, c.z + s(2) * h.z)
-        }));
-        // Faces as corner quads (bit 0: x, 1: y, 2: z), counter-clockwise seen from outside.
-        for q in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            triangles.push([base + q[0], base + q[1], base + q[2]]);
-            triangles.push([base + q[0], base + q[2], base + q[3]]);
-        }
-    }
-    (vertices, triangles)
+    contact_core::geometry::TriangleMesh::boxes(boxes).expect("boxes are closed")
 }
