@@ -159,8 +159,11 @@ fn turned(v: &Vector2<f64>) -> Vector2<f64> {
 }
 
 /// `∫ √(1 + v²) dl` along the arcs `spans` (parameters of `section`'s `u(φ)`), by a 12-node
-/// rule per arc.
+/// rule per arc; in closed form for a round section that does not drift ([`round_rate`]).
 pub(crate) fn curved_area(section: &Section, spans: &[(f64, f64)]) -> f64 {
+    if let Some(rate) = round_rate(section) {
+        return rate * spans.iter().map(|(f0, f1)| f1 - f0).sum::<f64>();
+    }
     let mut total = 0.0;
     for &(f0, f1) in spans {
         quadrature::for_each_node(f0, f1, |phi, weight| {
@@ -172,6 +175,23 @@ pub(crate) fn curved_area(section: &Section, spans: &[(f64, f64)]) -> f64 {
         });
     }
     total
+}
+
+/// The surface's rate per unit of `φ` when the section is a circle of radius `ρ` (`M = ρQ`, `Q`
+/// a rotation, to 1e-13 of `M`'s size) whose centre does not move with `t` (`|dc/dt|` within
+/// 1e-13): a sphere, or a spheroid sliced along its axis. The integrand of [`curved_area`] is
+/// then the same at every `φ`, `√(ρ² + (ρ²·s′/s)²)` (for a sphere of radius `r`, `r`: the zone
+/// between two slices has area `2πr·dt`); `None` for any other section.
+fn round_rate(section: &Section) -> Option<f64> {
+    let m = &section.matrix;
+    let size = m.abs().max();
+    let round = (m[(0, 0)] - m[(1, 1)]).abs() + (m[(0, 1)] + m[(1, 0)]).abs() <= 1e-13 * size;
+    let still = section.center_rate.norm() <= 1e-13;
+    (round && still).then(|| {
+        let rho2 = m.determinant();
+        let rate = section.scale_rate * rho2;
+        (rho2 + rate * rate).sqrt()
+    })
 }
 
 /// The integrand at `t` for the ellipsoid section `a` and its overlap `o` with the other
