@@ -202,6 +202,35 @@ fn flipped_cylinders_boxes_and_cylinders_on_flipped_bounded_planes() {
         "{found:?}"
     );
 }
+/// Axes parallel to the round-off of composed poses (both cylinders moved by the same seeded
+/// rigid motion) take the parallel closed form, with no quadrature, and match the oracle
+/// moved by that motion; a tilt of 1e-9 rad is sliced.
+#[test]
+fn axes_parallel_to_round_off_take_the_closed_form() {
+    let (ra, la, rb, lb, d, zb) = (0.7, 2.0, 0.4, 1.5, 0.9, 0.8);
+    let expected = oracles::parallel_cylinders(ra, la, rb, zb, lb, d);
+    let pair = ExactEngine
+        .prepare(&[instance(cylinder(ra, la))], &[instance(cylinder(rb, lb))])
+        .unwrap();
+    let mut rng = crate::common::Rng::new(17);
+    let iterations = |pose_i: &Isometry3, pose_j: &Isometry3| {
+        let (mut out, mut work) = (Vec::new(), contact_core::WorkCounters::default());
+        pair.query(pose_i, pose_j, &mut out, &mut work).unwrap();
+        (out, work.iterations)
+    };
+    for _ in 0..20 {
+        let world = rng.pose(3.0);
+        let pose_j = world * Isometry3::translation(d, 0.0, zb);
+        let (out, count) = iterations(&world, &pose_j);
+        assert_eq!((out.len(), count), (1, 0), "{out:?}");
+        let c = out[0];
+        assert!((c.penetration - expected.depth).abs() <= 1e-12, "{c:?}");
+        assert!((c.normal_w - world.rotation * expected.normal).norm() <= 1e-12);
+        assert!((c.point_i_w - world * expected.point_i).norm() <= 1e-12);
+        let tilted = pose_j * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 1e-9);
+        assert!(iterations(&world, &tilted).1 > 0);
+    }
+}
 
 /// A box with an axis exactly parallel to the cylinder's takes the closed form, a box tilted
 /// 1e-12 rad from it the slicing: the two agree to the slicing's accuracy, across poses where

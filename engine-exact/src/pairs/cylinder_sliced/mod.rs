@@ -9,13 +9,13 @@
 //!   `x·n = t` cuts both cylinders parallel to their axes (two rectangles). In `a`'s frame
 //!   `â = ẑ` and `â × b̂ = (−b_y, b_x, 0)` is exact, so `n·b̂` is a round-off of `|â × b̂|`
 //!   itself and stays tiny however close to parallel the axes are; `b̂` is then projected on
-//!   the slicing planes (a change at round-off). **Parallel** axes (`â × b̂ = 0` exactly) are
-//!   not sliced: the intersection is a lens times an axial overlap, in closed form
+//!   the slicing planes (a change at round-off). **Parallel** axes (`|â × b̂| ≤ 4ε` in each
+//!   component, the round-off of a rotation composed from two poses) are not sliced: the intersection is a lens times an axial overlap, in closed form
 //!   ([`crate::methods::cylinder_parallel`]), and near-parallel axes (the general case, with no
 //!   branch) approach it continuously (1e-12 rad off: within 4e-12 of it, see the
 //!   characterization table).
-//! - **Cylinder–box, cylinder–bounded plane**: a box with an axis exactly parallel (or
-//!   opposite) to the cylinder's is not sliced: its section inside the disc times the axial
+//! - **Cylinder–box, cylinder–bounded plane**: a box with an axis parallel (or opposite) to
+//!   the cylinder's, to the same `4ε`, is not sliced: its section inside the disc times the axial
 //!   overlap, in closed form ([`crate::methods::cylinder_prism`]); a box at any other tilt is not
 //!   sliced either (the divergence theorem over the intersection's boundary, in closed form:
 //!   `cylinder_polyhedron`), nor is a bounded plane's prism (its faces cut to the cylinder's
@@ -174,7 +174,7 @@ pub(crate) fn contact_by(
             0,
         ),
     };
-    // Exactly parallel axes, or a box axis along the cylinder's: a prism, in closed form.
+    // Parallel axes, or a box axis along the cylinder's: a prism, in closed form.
     if let Some(m) = aligned_moments(a, b, &rot_ab, &pose_ab, unit) {
         work.bounding_volume_tests += 1;
         let frame = Matrix3::identity();
@@ -415,10 +415,17 @@ fn prism_moments(
     cylinder_polyhedron::polyhedron_moments(ra / unit, hla / unit, &faces[..count])
 }
 
-/// When the intersection is a prism along `a`'s axis (`b` a cylinder with its axis exactly
-/// parallel or opposite, or a box with an axis so), its moments in closed form in the working
-/// frame (`a`'s axes, origin at `a`'s centre, lengths divided by `unit`): `Some(None)` when
-/// they do not overlap. `None` for any other pose, which is sliced.
+/// The tilt below which two axes are parallel: `4ε`, the round-off of a rotation composed from
+/// two poses. Within it the answer of the parallel closed form and that of the tilted pair
+/// differ by about the tilt times the pair's size (the first-order change of the volume
+/// cancels about the overlap's middle; the centroid, the normal and the caps move by the tilt
+/// times a length): round-off of the poses themselves.
+const ROUND_OFF_TILT: f64 = 4.0 * f64::EPSILON;
+
+/// When the intersection is a prism along `a`'s axis (`b` a cylinder with its axis parallel or
+/// opposite, or a box with an axis so, to [`ROUND_OFF_TILT`]), its moments in closed form in
+/// the working frame (`a`'s axes, origin at `a`'s centre, lengths divided by `unit`):
+/// `Some(None)` when they do not overlap. `None` for any other pose, which is sliced.
 fn aligned_moments(
     a: &Cylinder,
     b: &SlicedSolid,
@@ -427,7 +434,8 @@ fn aligned_moments(
     unit: f64,
 ) -> Option<Option<SlicedMoments>> {
     let (ra, la) = (a.radius() / unit, a.length() / unit);
-    let along = |k: usize| rot_ab[(0, k)] == 0.0 && rot_ab[(1, k)] == 0.0;
+    let along =
+        |k: usize| rot_ab[(0, k)].abs() <= ROUND_OFF_TILT && rot_ab[(1, k)].abs() <= ROUND_OFF_TILT;
     match b {
         SlicedSolid::Cylinder(c) if along(2) => {
             // b's frame has its origin on the bottom cap's centre, as a's does.
