@@ -181,12 +181,12 @@ fn main() -> ExitCode {
             answers,
             kernels,
         } => {
-            let default = if kernels {
-                cli::scenes::Default::Kernels
+            let listing = if kernels {
+                cli::scenes::Listing::Kernels
             } else {
-                cli::scenes::Default::Suite
+                cli::scenes::Listing::Suite
             };
-            or_report(cli::scenes::run(&names, answers, default, &mut stdout))
+            or_report(cli::scenes::run(&names, answers, listing, &mut stdout))
         }
     }
 }

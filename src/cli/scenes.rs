@@ -6,19 +6,19 @@ use std::io::Write;
 
 /// The scenes listed when none is named.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Default {
+pub enum Listing {
     /// The suite ([`scenes::suite`]).
     Suite,
     /// The kernel scenes ([`scenes::kernel_scenes`]).
     Kernels,
 }
 
-/// Prints the scenes named (none: `default`) to `out`; with `answers`, every pose's
+/// Prints the scenes named (none: the `unnamed` listing) to `out`; with `answers`, every pose's
 /// closed-form contacts as CSV rows `scene,pose,nominal_depth,penetration,nx,ny,nz,area`.
 pub fn run(
     names: &[String],
     answers: bool,
-    default: Default,
+    unnamed: Listing,
     out: &mut dyn Write,
 ) -> Result<(), ScenesError> {
     let chosen: Vec<scenes::Scene> = if !names.is_empty() {
@@ -26,7 +26,7 @@ pub fn run(
             .iter()
             .map(|n| scenes::scene(n).ok_or_else(|| ScenesError::UnknownScene(n.clone())))
             .collect::<Result<_, _>>()?
-    } else if default == Default::Kernels {
+    } else if unnamed == Listing::Kernels {
         scenes::kernel_scenes()
     } else {
         scenes::suite()

@@ -1,15 +1,15 @@
 //! `contact scenes` prints the suite, the kernel scenes and the closed-form answers.
 
-use contact::cli::scenes::{Default, run};
+use contact::cli::scenes::{Listing, run};
 
 #[test]
 fn scenes_lists_the_suite_and_prints_closed_form_answers() {
     let mut out = Vec::new();
-    run(&[], false, Default::Suite, &mut out).unwrap();
+    run(&[], false, Listing::Suite, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
     assert_eq!(text.lines().count(), contact::scenes::NAMES.len());
     let mut out = Vec::new();
-    run(&[], false, Default::Kernels, &mut out).unwrap();
+    run(&[], false, Listing::Kernels, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
     assert_eq!(text.lines().count(), contact::scenes::KERNEL_NAMES.len());
     assert!(text.starts_with("cylinder_box "), "{text}");
@@ -17,7 +17,7 @@ fn scenes_lists_the_suite_and_prints_closed_form_answers() {
     run(
         &["sphere_plane".to_string()],
         true,
-        Default::Suite,
+        Listing::Suite,
         &mut out,
     )
     .unwrap();
@@ -29,7 +29,7 @@ fn scenes_lists_the_suite_and_prints_closed_form_answers() {
     let err = run(
         &["nope".to_string()],
         false,
-        Default::Suite,
+        Listing::Suite,
         &mut Vec::new(),
     )
     .unwrap_err();
