@@ -29,6 +29,7 @@
 //! | cylinder–cylinder, –box, –plane (bounded) | divergence theorem or slicing                    | cylinder_sliced             | plane                 |
 //! | cylinder/frustum–frustum                  | divergence theorem or polar slicing              | revolved_pair               | none                  |
 //! | cylinder/frustum–torus                    | polar slicing across the torus' axis, per region | revolved_torus              | none                  |
+//! | torus–torus                               | `a`'s meridians in polar coordinates, per region | torus_torus                 | none                  |
 //! | frustum/torus–plane                       | quadrature over the azimuth                      | revolved_plane              | plane                 |
 //! | frustum/torus–plane (bounded)             | closed form, or box–solid on the prism           | revolved_bounded_plane      | plane                 |
 //! | cylinder/frustum/torus–mesh               | slicing across the axis, per region              | revolved_mesh               | none                  |
@@ -53,8 +54,8 @@
 //! surface), identical coincident ellipsoids (`b`'s `+z`), grazing (the pencil's extent
 //! shrinks to the touching point; touching alone is no contact).
 //!
-//! Everything else answers [`Unsupported`] with the reason: torus–torus; point–point,
-//! plane–plane and line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
+//! Everything else answers [`Unsupported`] with the reason: point–point, plane–plane and
+//! line–line are not contacts; 2-D against 3-D is refused (SPEC §3).
 
 mod planar;
 mod solid;
@@ -285,7 +286,7 @@ impl Pair<'_> {
             }
             (G::Cylinder(_) | G::Frustum(_), G::Frustum(_)) => self.revolved_pair(),
             (G::Cylinder(_) | G::Frustum(_), G::Torus(torus)) => self.revolved_torus(torus),
-            (G::Torus(_), G::Torus(_)) => Err(self.no(NOT_BUILT)),
+            (G::Torus(a), G::Torus(b)) => self.torus_torus(a, b),
             (G::Mesh(mesh_a), G::Mesh(mesh_b)) => self.mesh_mesh(mesh_a, mesh_b),
             (G::Mesh(mesh), G::Plane(p)) => self.mesh_plane(mesh, p),
             (G::Plane(_), G::Plane(_)) => Err(self.no(NOT_A_CONTACT)),

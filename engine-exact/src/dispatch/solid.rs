@@ -428,4 +428,12 @@ impl Pair<'_> {
             }),
         )
     }
+
+    /// A torus `a` against a torus `b` (no flip).
+    pub(super) fn torus_torus(&self, a: &Torus, b: &Torus) -> Result<Selected, Unsupported> {
+        self.no_flip(
+            self.flip_a || self.flip_b,
+            Kernel::Solid(SolidKernel::TorusTorus { a: *a, b: *b }),
+        )
+    }
 }

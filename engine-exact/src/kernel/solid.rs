@@ -59,6 +59,9 @@ pub(crate) enum SolidKernel {
         solid: pairs::sphere_solid::Solid,
         torus: Torus,
     },
+    /// Ring torus `a` against ring torus `b`, by meridians of `a` integrated in polar
+    /// coordinates about its tube: one contact per region.
+    TorusTorus { a: Torus, b: Torus },
     /// Closed mesh `a` against closed mesh `b`, as given: one contact per region.
     MeshMesh { pair: pairs::mesh_mesh::MeshPair },
     /// Box `a` against a closed mesh `b`: one contact per region.
@@ -155,6 +158,10 @@ impl SolidKernel {
                 ref torus,
             } => {
                 pairs::revolved_torus::contacts(solid, pose_a, torus, pose_b, work, emit);
+                None
+            }
+            Self::TorusTorus { ref a, ref b } => {
+                pairs::torus_torus::contacts(a, pose_a, b, pose_b, work, emit);
                 None
             }
             Self::RevolvedMesh {

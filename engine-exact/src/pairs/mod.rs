@@ -41,3 +41,4 @@ pub(crate) mod sphere_mesh;
 pub(crate) mod sphere_plane;
 pub(crate) mod sphere_solid;
 pub(crate) mod sphere_sphere;
+pub(crate) mod torus_torus;

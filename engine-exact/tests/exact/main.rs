@@ -67,4 +67,5 @@ mod sphere_solid;
 mod spherical_reference;
 mod torus_oracles;
 mod torus_pair_oracles;
+mod torus_torus;
 mod voxel_oracle;

@@ -57,7 +57,8 @@ fn representatives() -> Vec<Geometry> {
 }
 
 /// The built pairs, by name, in canonical order (the table in `engine_exact::dispatch`).
-const BUILT: [(&str, &str); 58] = [
+const BUILT: [(&str, &str); 59] = [
+    ("torus", "torus"),
     ("mesh", "mesh"),
     ("cylinder", "frustum"),
     ("cylinder", "torus"),
@@ -172,8 +173,8 @@ fn supports_is_symmetric_and_matches_the_table() {
             }
         }
     }
-    // 58 distinct pairs, 49 of them between different representatives (both orders count).
-    assert_eq!(accepted, 9 + 2 * 49);
+    // 59 distinct pairs, 49 of them between different representatives (both orders count).
+    assert_eq!(accepted, 10 + 2 * 49);
 }
 
 #[test]
@@ -182,7 +183,7 @@ fn prepare_refuses_what_it_cannot_answer_before_any_query() {
     let plane = || instance(Geometry::Plane(Plane::unbounded()));
     let torus = instance(Geometry::Torus(Torus::new(1.0, 0.5).unwrap()));
     let err = ExactEngine
-        .prepare(std::slice::from_ref(&torus), std::slice::from_ref(&torus))
+        .prepare(&[torus.clone().flipped()], std::slice::from_ref(&torus))
         .unwrap_err();
     assert!(matches!(err, PrepareError::Unsupported(_)), "{err}");
     // A flipped box is refused at prepare (supports cannot see flips).

@@ -203,7 +203,7 @@ pub fn coaxial_torus(a: f64, c: f64, zc: f64, big: f64, small: f64) -> Option<(M
 /// The arcs of `ψ ∈ [0, 2π)` (a meridian circle, periodic) where `f(ψ) > 0`, as `(a, b)`
 /// with `b` past `2π` for the arc across `ψ = 0`: cut at `f`'s sign changes and hidden pairs
 /// of crossings among 720 samples.
-fn arcs_inside(f: &dyn Fn(f64) -> f64) -> Vec<(f64, f64)> {
+pub fn arcs_inside(f: &dyn Fn(f64) -> f64) -> Vec<(f64, f64)> {
     let mut cuts = sign_changes(f, 0.0, TAU, 720);
     cuts.extend(hidden_pairs(f, 0.0, TAU, 720));
     cuts.sort_by(f64::total_cmp);
@@ -233,7 +233,12 @@ fn arcs_inside(f: &dyn Fn(f64) -> f64) -> Vec<(f64, f64)> {
 
 /// The azimuths in `[start, start + span]` where `count` changes, found between `samples`
 /// equal steps and bisected.
-fn count_changes(count: &dyn Fn(f64) -> usize, start: f64, span: f64, samples: usize) -> Vec<f64> {
+pub fn count_changes(
+    count: &dyn Fn(f64) -> usize,
+    start: f64,
+    span: f64,
+    samples: usize,
+) -> Vec<f64> {
     let mut cuts = Vec::new();
     for k in 0..samples {
         let (p0, p1) = (
