@@ -80,7 +80,7 @@ fn patch(
 
 /// The oracle's contact for one region of torus `a` (I, at `pose_a`) against torus `b` (J,
 /// at `pose_b`): the expected contact, the change between 24 and 48 nodes, and the closure.
-fn oracle(
+pub(crate) fn oracle(
     (big_a, small_a): (f64, f64),
     pose_a: &Isometry3,
     (big_b, small_b): (f64, f64),

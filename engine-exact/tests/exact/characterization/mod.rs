@@ -24,6 +24,7 @@ mod sliced;
 mod solids;
 mod sphere_rows;
 mod sphere_solid;
+mod torus_torus;
 
 pub(super) const SAMPLES: usize = 200;
 /// Curve rows are fewer: the oracle's evaluator allocates per call and runs unoptimized.
@@ -118,6 +119,7 @@ fn characterization_table() {
     rows.extend(revolved_pair::rows(&mut rng));
     rows.extend(revolved_torus::rows(&mut rng));
     rows.extend(sphere_solid::rows(&mut rng));
+    rows.extend(torus_torus::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
