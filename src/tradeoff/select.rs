@@ -343,6 +343,14 @@ mod tests {
             e.to_string(),
             "u: no engine and faceting tolerance meets a depth error of 1e-2 (best measured: 3.00e-2)"
         );
+        // Rows without a reference (no depth error measured): the message says so.
+        let mut unmeasured = row("v", "faceted", Some(100.0), 0.0, 10.0);
+        unmeasured.depth_error = None;
+        let e = recommend(&[unmeasured], &["v".into()], 0.01).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "v: no engine and faceting tolerance meets a depth error of 1e-2 (best measured: none with a reference)"
+        );
         // Each contact has a setting but no single one serves both.
         let split = vec![
             row("a", "exact", None, 1e-12, 100.0),
