@@ -2,6 +2,7 @@
 //!
 //! ```text
 //!   model check      engine.supports(i, j)?            → Unsupported is reported here
+//!                    engine.supports_instances(i, j)?  → and what the instance adds (a flip)
 //!   before the run   engine.prepare(&i_list, &j_list)? → Box<dyn PreparedPair>
 //!   every step       pair.query(&X_WI, &X_WJ, &mut contacts, &mut work)?
 //! ```
@@ -22,6 +23,19 @@ pub trait GeometryEngine: Send + Sync + Debug {
     /// Whether this engine can answer contact between `i` and `j` (in either order). Called
     /// when a model is checked, so an unsupported pair is an error before any run starts.
     fn supports(&self, i: &Geometry, j: &Geometry) -> Result<(), Unsupported>;
+
+    /// Whether this engine can answer `i` against `j` as placed instances: [`Self::supports`]
+    /// on their geometries, and what the instance adds (a flipped solid, the space outside
+    /// it). Called when a model is checked, without preparing anything, so a refusal that
+    /// [`Self::prepare`] would give is reported by the check too. The default sees the
+    /// geometries only.
+    fn supports_instances(
+        &self,
+        i: &GeometryInstance,
+        j: &GeometryInstance,
+    ) -> Result<(), PrepareError> {
+        Ok(self.supports(&i.geometry, &j.geometry)?)
+    }
 
     /// Prepares one CONTACT: its I list and J list (each list's geometries belong to one part).
     /// Only the geometry given here is processed (faceted, indexed): nothing else is built.

@@ -110,6 +110,16 @@ impl GeometryEngine for ExactEngine {
         dispatch::select(i, false, j, false).map(|_| ())
     }
 
+    /// The pair's kernel selected with the instances' flips (a cavity): the check `prepare`
+    /// makes, without preparing the geometry.
+    fn supports_instances(
+        &self,
+        i: &GeometryInstance,
+        j: &GeometryInstance,
+    ) -> Result<(), PrepareError> {
+        Ok(dispatch::select(&i.geometry, i.flip_normal, &j.geometry, j.flip_normal).map(|_| ())?)
+    }
+
     fn prepare(
         &self,
         i: &[GeometryInstance],

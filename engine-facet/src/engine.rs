@@ -68,20 +68,7 @@ impl FacetEngine {
         if g.geometry.is_planar() {
             return self.prepare_planar(g, side);
         }
-        if g.flip_normal {
-            return Err(PrepareError::InvalidArgument {
-                label: g.label.clone(),
-                source: InvalidArgument::with_text(
-                    if side == Side::I {
-                        "IFLIP_NORMAL"
-                    } else {
-                        "JFLIP_NORMAL"
-                    },
-                    "set on a 3-D solid",
-                    "unset for the faceted engine (a flipped solid, the space outside it, is not meshed)",
-                ),
-            });
-        }
+        flipped_solid(g, side)?;
         let shape = match g.geometry.as_ref() {
             Geometry::Plane(p) => Shape::HalfSpace(*p),
             Geometry::Mesh(m) => {
@@ -190,6 +177,17 @@ impl GeometryEngine for FacetEngine {
         "faceted"
     }
 
+    /// [`Self::supports`], and a flipped 3-D solid refused as [`Self::prepare`] refuses it.
+    fn supports_instances(
+        &self,
+        i: &GeometryInstance,
+        j: &GeometryInstance,
+    ) -> Result<(), PrepareError> {
+        self.supports(&i.geometry, &j.geometry)?;
+        flipped_solid(i, Side::I)?;
+        flipped_solid(j, Side::J)
+    }
+
     fn supports(&self, i: &Geometry, j: &Geometry) -> Result<(), Unsupported> {
         let (ki, kj) = (i.kind(), j.kind());
         let reason = if ki.is_planar() && kj.is_planar() {
@@ -285,6 +283,25 @@ fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str
     let circle = |g: &Geometry| matches!(g, Geometry::Circle(_));
     if (circle(i) && bounded(j)) || (circle(j) && bounded(i)) {
         return Err("a circle against a bounded 2-D PLANE is not built; use an unbounded line");
+    }
+    Ok(())
+}
+
+/// A flipped 3-D solid (the space outside it) is not meshed: refused, naming the argument.
+fn flipped_solid(g: &GeometryInstance, side: Side) -> Result<(), PrepareError> {
+    if g.flip_normal && !g.geometry.is_planar() {
+        return Err(PrepareError::InvalidArgument {
+            label: g.label.clone(),
+            source: InvalidArgument::with_text(
+                if side == Side::I {
+                    "IFLIP_NORMAL"
+                } else {
+                    "JFLIP_NORMAL"
+                },
+                "set on a 3-D solid",
+                "unset for the faceted engine (a flipped solid, the space outside it, is not meshed)",
+            ),
+        });
     }
     Ok(())
 }

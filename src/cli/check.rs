@@ -101,7 +101,12 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
         let j = instances(&c.j_geometries, &probe);
         if !refused.is_empty() {
             out.extend(refused);
-        } else if let Err(e) = contact_core::check_lists(engine, &i, &j) {
+        } else if let Err(e) = contact_core::check_lists(engine, &i, &j).and_then(|()| {
+            // What the instances add (a flipped solid), as `prepare` would refuse it.
+            i.iter()
+                .flat_map(|gi| j.iter().map(move |gj| (gi, gj)))
+                .try_for_each(|(gi, gj)| engine.supports_instances(gi, gj))
+        }) {
             out.push(Diagnostic::error(
                 c.origin.clone(),
                 format!("CONTACT/{}: {e}", c.id),

@@ -363,3 +363,52 @@ simulate/dyn, end = 2, dtout = 0.1\nactivate/joint, id = 1, 7\nsimulate/dyn, end
     assert!(!text.contains("Activate {"), "{text}");
     assert!(text.ends_with("0 error(s), 0 warning(s)\n"), "{text}");
 }
+
+#[test]
+fn flipped_solids_an_engine_refuses_are_errors_at_check() {
+    // A box in a bore (a flipped cylinder) and a ball in a box cavity: the exact engine
+    // refuses the first (no kernel for that cavity), the faceted engine both (it does not mesh
+    // the space outside a solid); `prepare` would refuse them at the run's start, so the check
+    // says so first.
+    let model = "flipped solids\n\
+         PART/1, GROUND\n\
+         MARKER/10, PART = 1\n\
+         MARKER/11, PART = 1, QP = -1, -1, -1\n\
+         PART/2, MASS = 1, CM = 20, IP = 1, 1, 1\n\
+         MARKER/20, PART = 2, QP = 0.55, 0, 1\n\
+         MARKER/21, PART = 2, QP = 0.25, -0.3, 0.7\n\
+         GRAPHICS/1, BOX, CORNER = 21, X = 0.6, Y = 0.6, Z = 0.6\n\
+         GRAPHICS/2, CYLINDER, CM = 10, RADIUS = 1, LENGTH = 2\n\
+         GRAPHICS/3, ELLIPSOID, CM = 20, XSCALE = 0.6, YSCALE = 0.6, ZSCALE = 0.6\n\
+         GRAPHICS/4, BOX, CORNER = 11, X = 2, Y = 2, Z = 2\n\
+         CONTACT/1, IGEOM = 1, JGEOM = 2, JFLIP_GEOMETRY = 2, IMPACT, STIFFNESS = 1E5\
+         , EXPONENT = 2, DAMPING = 10, DMAX = 0.01\n\
+         CONTACT/2, IGEOM = 3, JGEOM = 4, JFLIP_GEOMETRY = 4, IMPACT, STIFFNESS = 1E5\
+         , EXPONENT = 2, DAMPING = 10, DMAX = 0.01\n\
+         END\n";
+    let loaded = crate::inline("flipped.adm", model);
+    assert!(!loaded.has_errors(), "{:#?}", crate::printed(&loaded));
+    let problems = |engine: &dyn GeometryEngine| -> Vec<String> {
+        check_contacts(&loaded.model, engine)
+            .iter()
+            .map(|d| {
+                d.to_string()
+                    .replace(&format!("{}/", data_dir().display()), "data/")
+            })
+            .collect()
+    };
+    let exact = problems(&engine_exact::ExactEngine);
+    assert_eq!(exact.len(), 1, "{exact:#?}");
+    assert!(
+        exact[0].starts_with("data/flipped.adm:12:1: error: CONTACT/1: the exact engine cannot compute contact between BOX and CYLINDER: a flipped (inside-out) geometry is built only for"),
+        "{exact:#?}"
+    );
+    let faceted = problems(&engine_facet::FacetEngine::default());
+    assert_eq!(faceted.len(), 2, "{faceted:#?}");
+    for p in &faceted {
+        assert!(
+            p.contains("JFLIP_NORMAL = set on a 3-D solid is out of range"),
+            "{faceted:#?}"
+        );
+    }
+}
