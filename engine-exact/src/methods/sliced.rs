@@ -477,6 +477,31 @@ impl SlicedPair {
     }
 }
 
+/// The last point found where `not_empty` holds, bisecting from `inside` (where it holds)
+/// towards `outside` to round-off: a region's first or last slice. When `outside` itself
+/// holds, the region runs to it and it is returned.
+pub(crate) fn last_inside(
+    mut inside: f64,
+    mut outside: f64,
+    not_empty: impl Fn(f64) -> bool,
+) -> f64 {
+    if not_empty(outside) {
+        return outside;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (inside + outside);
+        if mid == inside || mid == outside {
+            break;
+        }
+        if not_empty(mid) {
+            inside = mid;
+        } else {
+            outside = mid;
+        }
+    }
+    inside
+}
+
 /// The boundary between `outside` (where `inside_at` is false) and `inside` (where it is
 /// true), by bisection to round-off; the last `t` found outside. The boundary is often
 /// `outside` itself (the intersection ends where one solid does, a range end the caller

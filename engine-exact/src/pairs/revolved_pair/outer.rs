@@ -7,7 +7,7 @@ use super::quadric::{self, circle_crossings};
 use super::slice::{self, Pair, rim_axes};
 use super::{Sums, add_caps};
 use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between, pieces_within};
-use crate::methods::sliced::golden_search;
+use crate::methods::sliced::{golden_search, last_inside};
 use crate::quadrature::Adaptive;
 use crate::quadrature::MAX_PIECES;
 use contact_core::{Vector3, WorkCounters};
@@ -143,23 +143,8 @@ impl Pair {
                 let (t, depth) = self.deepest(lo, hi);
                 (depth > 0.0 && self.not_empty(t)).then_some(t)
             })?;
-        let bisect = |mut inside: f64, mut outside: f64| {
-            if self.not_empty(outside) {
-                return outside;
-            }
-            for _ in 0..200 {
-                let mid = 0.5 * (inside + outside);
-                if mid == inside || mid == outside {
-                    break;
-                }
-                if self.not_empty(mid) {
-                    inside = mid;
-                } else {
-                    outside = mid;
-                }
-            }
-            inside
-        };
+        let bisect =
+            |inside: f64, outside: f64| last_inside(inside, outside, |x| self.not_empty(x));
         Some((bisect(inside, lo), bisect(inside, hi)))
     }
 

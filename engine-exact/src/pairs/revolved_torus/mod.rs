@@ -75,6 +75,7 @@ use super::revolved_pair::{dimensions, quadric_of, surface_of};
 use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
 use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between, pieces_within};
+use crate::methods::sliced::last_inside;
 use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::quadrature::{Adaptive, MAX_PIECES};
@@ -204,23 +205,8 @@ impl TorusPair {
 
     /// The region's lowest and highest slice, bisected from `inside` towards `lo` and `hi`.
     fn extent(&self, lo: f64, hi: f64, inside: f64, wedge: &Wedge) -> (f64, f64) {
-        let bisect = |mut inside: f64, mut outside: f64| {
-            if self.not_empty(outside, wedge) {
-                return outside;
-            }
-            for _ in 0..200 {
-                let mid = 0.5 * (inside + outside);
-                if mid == inside || mid == outside {
-                    break;
-                }
-                if self.not_empty(mid, wedge) {
-                    inside = mid;
-                } else {
-                    outside = mid;
-                }
-            }
-            inside
-        };
+        let bisect =
+            |inside: f64, outside: f64| last_inside(inside, outside, |x| self.not_empty(x, wedge));
         (bisect(inside, lo), bisect(inside, hi))
     }
 

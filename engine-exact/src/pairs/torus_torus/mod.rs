@@ -47,6 +47,7 @@ mod tests;
 use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
 use crate::methods::ellipsoid_sliced::{COMPONENTS, pieces_within};
+use crate::methods::sliced::last_inside;
 use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::pairs::box_revolved::azimuth::{SAMPLES, region_wedges_of};
@@ -166,23 +167,8 @@ impl TorusTorus {
     /// The region's first and last meridian, bisected from `inside` towards `lo` and `hi`
     /// (an end that still meets `b` is kept: the whole turn).
     fn extent(&self, lo: f64, hi: f64, inside: f64) -> (f64, f64) {
-        let bisect = |mut inside: f64, mut outside: f64| {
-            if self.not_empty(outside) {
-                return outside;
-            }
-            for _ in 0..200 {
-                let mid = 0.5 * (inside + outside);
-                if mid == inside || mid == outside {
-                    break;
-                }
-                if self.not_empty(mid) {
-                    inside = mid;
-                } else {
-                    outside = mid;
-                }
-            }
-            inside
-        };
+        let bisect =
+            |inside: f64, outside: f64| last_inside(inside, outside, |x| self.not_empty(x));
         (bisect(inside, lo), bisect(inside, hi))
     }
 
