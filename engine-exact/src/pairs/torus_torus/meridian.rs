@@ -38,6 +38,9 @@ pub(crate) const MERIDIAN: usize = 6;
 /// Components of the integrand in `ρ`: volume, radial and height moments.
 const RING: usize = 3;
 
+/// Samples of `b`'s parallels in the search for its tangencies to `a`'s meridian planes.
+const TANGENT_SAMPLES: usize = 512;
+
 /// Directions of the coarse search for the gap's minimiser over the tube's disc.
 const GAP_DIRECTIONS: usize = 24;
 
@@ -260,6 +263,55 @@ impl TorusTorus {
     /// moments are smooth across them).
     pub(crate) fn rim_class(&self, phi: f64) -> usize {
         self.class(&self.meridian(phi), self.small)
+    }
+
+    /// The azimuths where `b`'s surface is tangent to a meridian half-plane of `a` at a point
+    /// inside `a`'s tube: there the section splits or joins, a corner of the integrand in `φ`
+    /// that no circle of the rim sees. At such a point `b`'s normal `n` is horizontal and
+    /// normal to the point's radial direction: with `b`'s surface at `(θ, χ)`, `n_z = 0`
+    /// gives `χ(θ)` (two branches) and `n·x = 0` is a smooth function of `θ`, sampled at
+    /// [`TANGENT_SAMPLES`] and its sign changes bisected.
+    pub(crate) fn tangent_azimuths(&self) -> Vec<f64> {
+        let axes = [0, 1, 2]
+            .map(|k| Vector3::new(self.to_b[(k, 0)], self.to_b[(k, 1)], self.to_b[(k, 2)]));
+        let (e1, e2, w) = (axes[0], axes[1], axes[2]);
+        let point = |theta: f64, branch: f64| {
+            let u = theta.cos() * e1 + theta.sin() * e2;
+            let chi = (-u.z).atan2(w.z) + branch * PI;
+            let (s, c) = chi.sin_cos();
+            let normal = c * u + s * w;
+            let x = self.origin + (self.b_big + self.b_small * c) * u + self.b_small * s * w;
+            (normal.dot(&x), x)
+        };
+        let mut out = Vec::new();
+        for branch in [0.0, 1.0] {
+            let value = |theta: f64| point(theta, branch).0;
+            let step = TAU / TANGENT_SAMPLES as f64;
+            for k in 0..TANGENT_SAMPLES {
+                let (mut a, mut b) = (step * k as f64, step * (k + 1) as f64);
+                let positive = value(a) > 0.0;
+                if positive == (value(b) > 0.0) {
+                    continue;
+                }
+                for _ in 0..60 {
+                    let mid = 0.5 * (a + b);
+                    if mid <= a || mid >= b {
+                        break;
+                    }
+                    if (value(mid) > 0.0) == positive {
+                        a = mid;
+                    } else {
+                        b = mid;
+                    }
+                }
+                let x = point(0.5 * (a + b), branch).1;
+                let in_tube = (x.x.hypot(x.y) - self.big).hypot(x.z) < self.small;
+                if in_tube && (x.x != 0.0 || x.y != 0.0) {
+                    out.push(x.y.atan2(x.x));
+                }
+            }
+        }
+        out
     }
 
     /// Whether the meridian at `phi` meets `b`.

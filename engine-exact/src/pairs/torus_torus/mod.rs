@@ -11,7 +11,9 @@
 //! to 1e-13, and `a`'s wall inside `b` is the rim circle's arcs in closed form. The outer
 //! integral over `φ` runs over each region's arc of azimuths, between its first and last
 //! meridian (bisected on "the meridian meets `b`"), cut where the arcs of the meridian's rim
-//! circle change (`a`'s wall: 2,048 azimuths sampled, each change bisected), to 1e-11. Pieces
+//! circle change (`a`'s wall: 2,048 azimuths sampled, each change bisected) and where `b` is
+//! tangent to a meridian plane inside the tube (its section splits or joins:
+//! [`TorusTorus::tangent_azimuths`]), to 1e-11. Pieces
 //! closer than 1e-9 of the arc are merged.
 //!
 //! ## Regions
@@ -229,6 +231,13 @@ impl TorusTorus {
         cuts[1] = p_max;
         let mut n = 2;
         self.rim_events(p_min, p_max, &mut cuts, &mut n);
+        for phi in self.tangent_azimuths() {
+            let lifted = p_min + (phi - p_min).rem_euclid(std::f64::consts::TAU);
+            if lifted < p_max && n < cuts.len() {
+                cuts[n] = lifted;
+                n += 1;
+            }
+        }
         cuts[..n].sort_by(f64::total_cmp);
         let (mut inner, m) = pieces_within(&cuts[..n], (p_min, p_max), MERGE);
         let mut meridians = WorkCounters::default();
