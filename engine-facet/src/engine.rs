@@ -126,11 +126,7 @@ impl FacetEngine {
                 return Err(PrepareError::InvalidArgument {
                     label: g.label.clone(),
                     source: InvalidArgument::with_text(
-                        if side == Side::I {
-                            "IFLIP_NORMAL"
-                        } else {
-                            "JFLIP_NORMAL"
-                        },
+                        flip_argument(side),
                         "set on a POINT",
                         "unset (a point has no normal to flip)",
                     ),
@@ -293,15 +289,20 @@ fn flipped_solid(g: &GeometryInstance, side: Side) -> Result<(), PrepareError> {
         return Err(PrepareError::InvalidArgument {
             label: g.label.clone(),
             source: InvalidArgument::with_text(
-                if side == Side::I {
-                    "IFLIP_NORMAL"
-                } else {
-                    "JFLIP_NORMAL"
-                },
+                flip_argument(side),
                 "set on a 3-D solid",
                 "unset for the faceted engine (a flipped solid, the space outside it, is not meshed)",
             ),
         });
     }
     Ok(())
+}
+
+/// The CONTACT argument that flips a geometry on `side`.
+fn flip_argument(side: Side) -> &'static str {
+    if side == Side::I {
+        "IFLIP_NORMAL"
+    } else {
+        "JFLIP_NORMAL"
+    }
 }

@@ -86,24 +86,25 @@ use regions::Seed;
 use slice::{TorusPair, Wedge};
 use std::f64::consts::PI;
 
-/// The outer rule over `ψ`, as the frustum pairs' over `t`.
-const OUTER: Adaptive = Adaptive {
+/// The outer rule over `ψ`, as the frustum pairs' over `t` (the torus–torus pair's over `φ`
+/// too).
+pub(crate) const OUTER: Adaptive = Adaptive {
     tolerance: 1e-11,
     max_depth: 14,
     pair: crate::quadrature::Pair::Kronrod21,
 };
 
 /// Cuts in `ψ` closer than this fraction of the region's extent are merged.
-const MERGE: f64 = 1e-9;
+pub(crate) const MERGE: f64 = 1e-9;
 
 /// A surface inside the other solid within this fraction of its whole is all of it.
-const WHOLE: f64 = 1e-6;
+pub(crate) const WHOLE: f64 = 1e-6;
 
 /// Slices sampled for a region when no seed and no cut piece's midpoint meets it.
 const SAMPLES: usize = 33;
 
 /// The absolute error each outer piece may keep, as in the frustum pairs.
-fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
+pub(crate) fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
     let v = (e[0].abs() * 1e-12).max(1e-15);
     let surface = e[7].abs() + e[8].abs();
     let s = (surface * 1e-12).max(1e-15);

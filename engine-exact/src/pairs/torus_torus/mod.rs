@@ -54,7 +54,10 @@ use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
 use crate::pairs::box_revolved::azimuth::{SAMPLES, region_wedges_of};
 use crate::pairs::revolved_torus::slice::Wedge;
-use crate::quadrature::{Adaptive, MAX_PIECES};
+// The outer rule, merge and floor of the cylinder–torus pair, whose integrand has the same
+// components.
+use crate::pairs::revolved_torus::{MERGE, OUTER, WHOLE, outer_floor};
+use crate::quadrature::MAX_PIECES;
 use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Torus;
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
@@ -62,33 +65,11 @@ use meridian::TorusTorus;
 use std::cell::RefCell;
 use std::f64::consts::PI;
 
-/// The outer rule over `φ`, as the other torus pairs'.
-const OUTER: Adaptive = Adaptive {
-    tolerance: 1e-11,
-    max_depth: 14,
-    pair: crate::quadrature::Pair::Kronrod21,
-};
-
-/// Cuts in `φ` closer than this fraction of the region's arc are merged.
-const MERGE: f64 = 1e-9;
-
-/// A surface inside the other solid within this fraction of its whole is all of it.
-const WHOLE: f64 = 1e-6;
-
 /// Azimuths at which the rim circle's class is sampled over a region's arc.
 const RIM_SAMPLES: usize = 2048;
 
 /// Meridians sampled for a region when its seed's does not meet `b`.
 const SAMPLED_MERIDIANS: usize = 33;
-
-/// The absolute error each outer piece may keep, as in the other torus pairs.
-fn outer_floor(e: &[f64; COMPONENTS]) -> [f64; COMPONENTS] {
-    let v = (e[0].abs() * 1e-12).max(1e-15);
-    let surface = e[7].abs();
-    let s = (surface * 1e-12).max(1e-15);
-    let u = (surface * 1e-9).max(1e-15);
-    [v, v, v, v, s, s, s, u, u]
-}
 
 /// A meridian found meeting both solids: its azimuth and gap (negative).
 #[derive(Debug, Clone, Copy)]
