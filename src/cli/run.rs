@@ -297,5 +297,6 @@ fn options(args: &RunArgs) -> Result<RunOptions, String> {
         dtout: args.dtout,
         steps: args.steps,
         threads: args.threads,
+        integrator_error_scale: None,
     })
 }

@@ -32,12 +32,15 @@
 //!
 //! The trade on whole runs ([`trade_runs`]) runs the model with every candidate and holds each
 //! run to the reference run: part positions and orientations over time, each contact's peak
-//! force, impulse, onsets and releases, and the wall time per simulated second;
+//! force, impulse, onsets and releases, and the wall time per simulated second; the runs are
+//! compared at an integrator ERROR where the reference has converged ([`converge_reference`]),
+//! so what they differ by is the engines' difference, not the integrator's;
 //! [`select_run`] picks the fastest candidate within a run-error target.
 
 mod band;
 mod compare;
 mod for_model;
+mod integration;
 mod measure;
 mod reference_run;
 mod report;
@@ -49,6 +52,9 @@ mod whole_run;
 pub use band::{RESOLVED_BANDS, faceting_band, resolved_depth};
 pub use compare::{PoseErrors, compare};
 pub use for_model::{ModelSelection, ModelTradeError, select_for_model};
+pub use integration::{
+    Integration, IntegrationLevel, MAX_TIGHTENINGS, SMALLEST_ERROR, converge_reference,
+};
 pub use measure::{
     Reference, ReferenceSource, Timing, TradeError, TradeRecord, WorkPerQuery, measure, percentile,
 };

@@ -161,7 +161,7 @@ pub fn record_reference(
 ) -> Result<RunRecord, RecordError> {
     let scenes = crate::scenes::from_model(model)?;
     let setting = reference_setting(&scenes, exact, tolerances).ok_or(RecordError::NoReference)?;
-    let record = record_run(model, source, setting, end)?;
+    let record = record_run(model, source, setting, end, 1.0)?;
     match &record.failure {
         Some(failure) => Err(RecordError::ReferenceStopped {
             setting: setting.describe(),
@@ -191,13 +191,15 @@ pub fn reference_setting(
 }
 
 /// Runs `model` (read from `source`) with `setting`, one thread, `end` overriding the last END
-/// when given, and records it. A run that stops early is kept with its
+/// when given, every dynamic analysis at `error_scale` times its integrator ERROR (1: as the
+/// model says; range `(0, 1]`), and records it. A run that stops early is kept with its
 /// [`failure`](RunRecord::failure); a run that cannot start is an error.
 pub fn record_run(
     model: &Model,
     source: &Path,
     setting: Setting,
     end: Option<f64>,
+    error_scale: f64,
 ) -> Result<RunRecord, RecordError> {
     let faceting_tolerance = setting
         .faceting_tolerance
@@ -208,6 +210,7 @@ pub fn record_run(
         faceting_tolerance,
         end,
         threads: Some(1),
+        integrator_error_scale: (error_scale != 1.0).then_some(error_scale),
         ..RunOptions::default()
     };
     let mut recorder = Recorder::new(model, setting);

@@ -2,6 +2,7 @@
 //! plot of run error against wall time. The JSON is [`RunTrade`] serialised (schema in the
 //! README).
 
+use super::integration::Integration;
 use super::whole_run::{ContactRunErrors, RunRow, RunTrade};
 use crate::svg_plot::{Plot, Scale, Series};
 use std::fmt::Write;
@@ -16,6 +17,33 @@ fn ft(row: &RunRow) -> String {
         .map_or_else(|| "-".to_string(), |t| format!("{t}"))
 }
 
+/// How the compared runs were integrated, in one line.
+pub fn integration_line(i: &Integration) -> String {
+    let at = if i.error_scale == 1.0 {
+        "the model's own integrator ERROR".to_string()
+    } else {
+        format!("{:e} of the model's integrator ERROR", i.error_scale)
+    };
+    let floor = match (i.floor, i.converged) {
+        (Some(f), true) => format!("floor {f:.2e} (goal {:.0e})", i.goal),
+        (Some(f), false) => format!(
+            "floor {f:.2e}, short of the goal {:.0e} after {} tightenings",
+            i.goal,
+            i.levels.len()
+        ),
+        (None, _) => "no floor: no tightened run completed".to_string(),
+    };
+    let model = if i.error_scale == 1.0 {
+        String::new()
+    } else {
+        format!(
+            "; at the model's own ERROR the reference itself is off by {:.2e}",
+            i.at_model_error
+        )
+    };
+    format!("runs compared at {at}, {floor}{model}")
+}
+
 /// A fixed-width table: one line per candidate (run error, orientation error, wall time per
 /// simulated second), then one per candidate and contact (peak force and impulse with their
 /// relative errors, onsets and releases with their largest time errors).
@@ -28,16 +56,18 @@ pub fn run_table(trade: &RunTrade) -> String {
         trade.simulated_s,
         trade.scale.size
     );
+    let _ = writeln!(out, "{}", integration_line(&trade.integration));
     let _ = writeln!(
         out,
         "{:<8} {:>9} {:>10} {:>10} {:>12} {:>9} {:>7}  status",
         "engine", "FT", "run err", "orient °", "ms per sim s", "prep ms", "frames"
     );
     for r in &trade.rows {
-        let status = match (&r.failure, r.reference) {
-            (Some(f), _) => format!("stopped: {f}"),
-            (None, true) => "reference".to_string(),
-            (None, false) => "completed".to_string(),
+        let status = match (&r.failure, r.reference, r.within_floor) {
+            (Some(f), _, _) => format!("stopped: {f}"),
+            (None, true, _) => "reference".to_string(),
+            (None, false, true) => "completed, within the floor".to_string(),
+            (None, false, false) => "completed".to_string(),
         };
         let _ = writeln!(
             out,
@@ -93,12 +123,12 @@ pub fn run_table(trade: &RunTrade) -> String {
 /// contact columns empty). Empty fields where a value does not apply.
 pub fn run_csv(trade: &RunTrade) -> String {
     let mut out = String::from(
-        "engine,faceting_tolerance,reference,failure,frames_compared,position_error,orientation_error_deg,wall_ms_per_simulated_s,prepare_ms,contact,peak_force,peak_force_error,impulse,impulse_error,onsets,reference_onsets,onset_time_error,releases,reference_releases,release_time_error\n",
+        "engine,faceting_tolerance,reference,failure,frames_compared,position_error,orientation_error_deg,wall_ms_per_simulated_s,prepare_ms,within_floor,contact,peak_force,peak_force_error,impulse,impulse_error,onsets,reference_onsets,onset_time_error,releases,reference_releases,release_time_error\n",
     );
     let f = |v: Option<f64>| v.map_or_else(String::new, |x| format!("{x:?}"));
     for r in &trade.rows {
         let head = format!(
-            "{},{},{},{},{},{:?},{:?},{:?},{:?}",
+            "{},{},{},{},{},{:?},{:?},{:?},{:?},{}",
             r.setting.engine.name(),
             f(r.setting.faceting_tolerance),
             r.reference,
@@ -109,7 +139,8 @@ pub fn run_csv(trade: &RunTrade) -> String {
             r.position_error,
             r.orientation_error_deg,
             r.wall_ms_per_simulated_s,
-            r.prepare_ms
+            r.prepare_ms,
+            r.within_floor
         );
         if r.contacts.is_empty() {
             let _ = writeln!(out, "{head},,,,,,,,,,,");
@@ -172,6 +203,12 @@ pub fn run_plot(trade: &RunTrade) -> Plot {
         x_scale: Scale::Log,
         y_scale: Scale::Log,
         series: vec![faceted, exact],
-        note: None,
+        note: Some(match trade.integration.floor {
+            Some(f) => format!(
+                "runs at {:e} × the model's ERROR; floor {f:.2e}",
+                trade.integration.error_scale
+            ),
+            None => "runs at the model's ERROR; no floor".to_string(),
+        }),
     }
 }

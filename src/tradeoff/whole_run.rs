@@ -1,6 +1,10 @@
 //! The trade on whole runs: the model run with every candidate engine setting and held to the
 //! reference run ([`super::record_reference`]) over its whole motion.
 //!
+//! The runs compared are the reference and the candidate at the integrator ERROR where the
+//! reference has converged ([`converge_reference`]); the wall time is that of the candidate's
+//! run at the model's own ERROR.
+//!
 //! For each candidate, over the output frames both runs have (same times):
 //! - **position error**, the *run error* `--max-run-error` bounds: the largest displacement
 //!   between the two runs of a point of a moving part within its contact radius ρ (the
@@ -28,6 +32,7 @@
 //! faceted engine at its smallest tolerance that does, the faster of the two (the exact engine
 //! on a tie), so timing noise never picks a finer tolerance than needed.
 
+use super::integration::{Integration, converge_reference};
 use super::reference_run::{RecordError, RunRecord, Setting, TouchingPose, record_run};
 use crate::model::Model;
 use crate::scenes::{from_model, support};
@@ -86,6 +91,9 @@ pub struct RunRow {
     pub wall_ms_per_simulated_s: f64,
     /// Wall time of lowering the model (engine preparation included), ms.
     pub prepare_ms: f64,
+    /// True when its run error is within the integration floor
+    /// ([`Integration::floor`]): this candidate is not told apart from the reference.
+    pub within_floor: bool,
     /// Per CONTACT, in model order.
     pub contacts: Vec<ContactRunErrors>,
 }
@@ -118,6 +126,8 @@ pub struct RunTrade {
     pub scale: ModelScale,
     /// Simulated time of the reference run, seconds.
     pub simulated_s: f64,
+    /// How tightly the compared runs were integrated.
+    pub integration: Integration,
     /// One row per candidate: the exact engine (when it is a candidate), then the faceted
     /// engine by tolerance.
     pub rows: Vec<RunRow>,
@@ -256,6 +266,7 @@ pub fn compare_runs(reference: &RunRecord, candidate: &RunRecord, scale: &ModelS
         orientation_error_deg: orientation.to_degrees(),
         wall_ms_per_simulated_s: 1e3 * candidate.wall_per_simulated_s(),
         prepare_ms: 1e3 * candidate.prepare_s,
+        within_floor: false,
         contacts,
     }
 }
@@ -364,15 +375,18 @@ fn contact_errors(
 /// Runs `model` (read from `source`) with every candidate — the exact engine when the
 /// reference run is the exact engine's (it then answers every contact), and the faceted
 /// engine at each of `tolerances` — up to `end` when given, and holds each to `reference`
-/// (a run of that model, [`super::record_reference`]). The reference's own row reuses its
-/// record. `progress` hears each candidate before it runs. A reference run in which no
-/// contact touched is [`RunTradeError::NothingTouched`]: nothing is run.
+/// (a run of that model at its own ERROR, [`super::record_reference`]) converged to `goal`
+/// ([`converge_reference`]): each candidate runs twice, at the model's own ERROR for its wall
+/// time and at the converged ERROR for its errors (once when those are the same). `progress`
+/// hears each run before it starts. A reference run in which no contact touched is
+/// [`RunTradeError::NothingTouched`]: nothing is run.
 pub fn trade_runs(
     model: &Model,
     source: &Path,
     reference: &RunRecord,
     tolerances: &[FacetingTolerance],
     end: Option<f64>,
+    goal: f64,
     progress: &mut dyn FnMut(&str),
 ) -> Result<RunTrade, RunTradeError> {
     if reference.touching.iter().all(Vec::is_empty) {
@@ -381,6 +395,8 @@ pub fn trade_runs(
         });
     }
     let scale = model_scale(model, reference)?;
+    let (converged, integration) =
+        converge_reference(model, source, end, reference, &scale, goal, progress)?;
     let mut candidates = Vec::new();
     if reference.setting.engine == GeometryLibrary::Exact {
         candidates.push(Setting::EXACT);
@@ -391,19 +407,43 @@ pub fn trade_runs(
     candidates.extend(sorted.into_iter().map(Setting::faceted));
     let mut rows = Vec::with_capacity(candidates.len());
     for setting in candidates {
-        let row = if setting == reference.setting {
-            compare_runs(reference, reference, &scale)
+        let (timed, held) = if setting == reference.setting {
+            (reference.clone(), converged.clone())
         } else {
             progress(&format!("run with {}", setting.describe()));
-            let candidate = record_run(model, source, setting, end)?;
-            compare_runs(reference, &candidate, &scale)
+            let timed = record_run(model, source, setting, end, 1.0)?;
+            let held = if integration.error_scale == 1.0 {
+                timed.clone()
+            } else {
+                progress(&format!(
+                    "run with {} at {:e} of the model's integrator ERROR",
+                    setting.describe(),
+                    integration.error_scale
+                ));
+                record_run(model, source, setting, end, integration.error_scale)?
+            };
+            (timed, held)
         };
+        let mut row = compare_runs(&converged, &held, &scale);
+        row.failure = timed.failure.clone().or_else(|| {
+            held.failure.as_ref().map(|f| {
+                format!(
+                    "at {:e} of the model's integrator ERROR: {f}",
+                    integration.error_scale
+                )
+            })
+        });
+        row.within_floor =
+            !row.reference && integration.floor.is_some_and(|f| row.position_error <= f);
+        row.wall_ms_per_simulated_s = 1e3 * timed.wall_per_simulated_s();
+        row.prepare_ms = 1e3 * timed.prepare_s;
         rows.push(row);
     }
     Ok(RunTrade {
         reference: reference.setting,
         scale,
         simulated_s: reference.simulated_s,
+        integration,
         rows,
     })
 }

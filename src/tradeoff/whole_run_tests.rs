@@ -116,6 +116,7 @@ fn select_run_takes_the_faster_of_exact_and_the_smallest_sufficient_tolerance() 
         orientation_error_deg: 0.0,
         wall_ms_per_simulated_s: ms,
         prepare_ms: 0.0,
+        within_floor: false,
         contacts: Vec::new(),
     };
     let rows = vec![

@@ -244,3 +244,36 @@ fn each_simulate_writes_at_its_own_output_step() {
     assert_eq!(report.analyses.len(), 2);
     assert_eq!(report.selection.library_source, Source::Default);
 }
+
+/// A factor on the integrator ERROR tightens every dynamic analysis (more steps for the same
+/// span); one out of `(0, 1]` is refused before anything runs, naming its range.
+#[test]
+fn an_integrator_error_scale_tightens_the_dynamics_and_is_range_checked() {
+    let run = |scale: Option<f64>| {
+        let options = RunOptions {
+            engine: Some(GeometryLibrary::Exact),
+            end: Some(0.5),
+            integrator_error_scale: scale,
+            ..RunOptions::default()
+        };
+        run_files(
+            &example("ball/ball.adm"),
+            None,
+            &options,
+            &mut Recorder::default(),
+        )
+    };
+    let own = run(None).unwrap().dynamics.steps;
+    let tight = run(Some(1e-2)).unwrap().dynamics.steps;
+    assert!(
+        tight > own,
+        "{tight} steps at 1e-2 × ERROR, {own} at the model's"
+    );
+    for bad in [0.0, -1e-3, 1.5, f64::NAN] {
+        let e = run(Some(bad)).unwrap_err();
+        assert!(
+            matches!(e, RunError::ErrorScale { .. }) && e.to_string().contains("(0, 1]"),
+            "{bad}: {e}"
+        );
+    }
+}

@@ -51,6 +51,12 @@ pub enum RunError {
         /// Why the pool was not built.
         source: rayon::ThreadPoolBuildError,
     },
+    /// The factor on the integrator ERROR is out of range.
+    #[error("the integrator error scale {scale} is out of range: must be finite and in (0, 1]")]
+    ErrorScale {
+        /// The factor asked for.
+        scale: f64,
+    },
     /// The command file's analyses could not be planned.
     #[error(transparent)]
     Plan(#[from] PlanError),

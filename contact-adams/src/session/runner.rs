@@ -345,9 +345,19 @@ fn plan(
         dtout: options.dtout,
         steps: options.steps,
     };
-    let plan = plan_run(model, overrides, &mut |t, inactive| {
+    let mut plan = plan_run(model, overrides, &mut |t, inactive| {
         lowering.degrees_of_freedom(t, inactive)
     })?;
+    if let Some(scale) = options.integrator_error_scale {
+        if !(scale.is_finite() && scale > 0.0 && scale <= 1.0) {
+            return Err(RunError::ErrorScale { scale });
+        }
+        for step in &mut plan.steps {
+            if let AnalysisStep::Dynamics { integrator, .. } = step {
+                integrator.error *= scale;
+            }
+        }
+    }
     for note in &plan.notes {
         sink.note(note).map_err(RunError::Output)?;
     }
