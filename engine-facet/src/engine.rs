@@ -4,10 +4,10 @@ use crate::facet_mesh::FacetMesh;
 use crate::planar;
 use crate::prepared::{PreparedFacetPair, PreparedGeometry, Shape};
 use crate::tessellate::{self, Tessellation};
-use contact_core::geometry::Geometry;
+use contact_core::geometry::{Geometry, Plane};
 use contact_core::{
-    FacetingTolerance, GeometryEngine, GeometryInstance, InvalidArgument, PrepareError,
-    PreparedPair, Side, Unsupported, check_lists,
+    FacetingTolerance, GeometryEngine, GeometryInstance, InvalidArgument, Isometry3, PrepareError,
+    PreparedPair, Side, Unsupported, Vector3, check_lists,
 };
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -18,8 +18,8 @@ use std::sync::Arc;
 /// Supports every pair of 3-D solids and meshes, and solids against a 3-D PLANE (half-space),
 /// except PLANE against PLANE; and the 2-D pairs of [`crate::planar`] (a point or a circle
 /// against a line, circle, arc or curve, and an arc or curve against an arc, curve or line,
-/// on polylines). A flipped 3-D solid (IFLIP_NORMAL,
-/// "the space outside it") is rejected by `prepare`.
+/// on polylines). A flipped PLANE is the half-space above it; a flipped 3-D solid
+/// (IFLIP_NORMAL, "the space outside it") is rejected by `prepare`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FacetEngine {
     faceting_tolerance: FacetingTolerance,
@@ -69,7 +69,13 @@ impl FacetEngine {
             return self.prepare_planar(g, side);
         }
         flipped_solid(g, side)?;
+        let mut pose_part_geometry = g.pose_part_geometry;
         let shape = match g.geometry.as_ref() {
+            Geometry::Plane(p) if g.flip_normal => {
+                let (plane, turn) = flipped_plane(p);
+                pose_part_geometry *= turn;
+                Shape::HalfSpace(plane)
+            }
             Geometry::Plane(p) => Shape::HalfSpace(*p),
             Geometry::Mesh(m) => {
                 let t = Tessellation {
@@ -100,10 +106,19 @@ impl FacetEngine {
         };
         Ok(PreparedGeometry {
             shape,
-            pose_part_geometry: g.pose_part_geometry,
+            pose_part_geometry,
             label: g.label.clone(),
         })
     }
+}
+
+/// A flipped PLANE — the material above its rectangle, `z ≥ 0`, instead of below — as an
+/// unflipped one: the same half-space seen from the plane's frame turned half a turn about its
+/// x axis ([`Plane::turned_about_x`]). Returns that plane and the turn (to follow the
+/// geometry's pose).
+fn flipped_plane(p: &Plane) -> (Plane, Isometry3) {
+    let turn = Isometry3::rotation(Vector3::x() * std::f64::consts::PI);
+    (p.turned_about_x(), turn)
 }
 
 impl FacetEngine {
@@ -283,9 +298,11 @@ fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str
     Ok(())
 }
 
-/// A flipped 3-D solid (the space outside it) is not meshed: refused, naming the argument.
+/// A flipped 3-D solid (the space outside it) is not meshed: refused, naming the argument. A
+/// flipped PLANE is the half-space on its other side, taken as it is.
 fn flipped_solid(g: &GeometryInstance, side: Side) -> Result<(), PrepareError> {
-    if g.flip_normal && !g.geometry.is_planar() {
+    let plane = matches!(g.geometry.as_ref(), Geometry::Plane(_));
+    if g.flip_normal && !g.geometry.is_planar() && !plane {
         return Err(PrepareError::InvalidArgument {
             label: g.label.clone(),
             source: InvalidArgument::with_text(

@@ -322,6 +322,18 @@ impl Plane {
         [self.ymin, self.ymax]
     }
 
+    /// The same rectangle in its frame turned half a turn about the x axis
+    /// (`(x, y, z) → (x, −y, −z)`): `[xmin, xmax] × [−ymax, −ymin]`. With that turn, the
+    /// half-space on the plane's other side (a flipped PLANE) is an unflipped one.
+    pub fn turned_about_x(&self) -> Self {
+        Self {
+            xmin: self.xmin,
+            xmax: self.xmax,
+            ymin: -self.ymax,
+            ymax: -self.ymin,
+        }
+    }
+
     /// True when all four bounds are infinite.
     pub fn is_unbounded(&self) -> bool {
         self.xmin.is_infinite()

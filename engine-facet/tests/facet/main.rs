@@ -6,6 +6,7 @@ mod concave_regions;
 mod convergence;
 mod engine;
 mod far_from_plane;
+mod flipped_plane;
 mod grazing_corner;
 mod implied_ellipsoid;
 mod mesh_regions;
