@@ -18,8 +18,10 @@
 //! faces where it has few (`faces`: a box's six sides, a cylinder's caps and side strips),
 //! else over its triangles (`convex`, the general path's sums to the bit).
 //!
-//! A bounded plane (finite XMIN…YMAX) ignores triangles whose corners all lie beyond one of its
-//! edges; a triangle straddling an edge counts whole (an error within one facet of the edge).
+//! A bounded plane (finite XMIN…YMAX) stands for the prism under its rectangle: it ignores
+//! triangles whose corners all lie beyond one of its edges, and a region reaching over an edge
+//! is clipped by the prism's side faces too, its normal and centroid those of the clipped
+//! intersection (`edge`).
 
 use crate::contact_region::{
     LocalContact, add_polygon, clip_by_heights, label_regions, new_node, union,
@@ -35,6 +37,7 @@ use convex::convex_region;
 use faces::faces_region;
 
 mod convex;
+mod edge;
 mod faces;
 #[cfg(test)]
 pub(crate) mod tests;
@@ -199,23 +202,38 @@ fn facets_plane(
         );
     }
     s.curved = curved;
+    // Regions reaching over a bounded plane's edge are answered on the prism under it.
+    let prism = (!plane.is_unbounded()).then(|| edge::Prism::new(plane, frame));
+    let mut over_edge = vec![false; count];
+    if let Some(prism) = &prism {
+        for node in &s.nodes {
+            if !over_edge[node.region as usize] {
+                over_edge[node.region as usize] = prism.reaches_over_an_edge(&a.corners(node.tri));
+            }
+        }
+    }
     let smooth_only: Vec<bool> = by_region
         .iter()
-        .map(|b| b.is_some_and(|s: Support| s.weight >= 1.0))
+        .zip(&over_edge)
+        .map(|(b, &over)| over || b.is_some_and(|s: Support| s.weight >= 1.0))
         .collect();
     sum_waterlines(a, frame, &smooth_only, s);
     sum_volumes(a, frame, &smooth_only, s);
     for (index, r) in s.regions.iter().enumerate() {
-        let support = by_region[index];
-        if let Some(support) = support.filter(|_| smooth_only[index]) {
-            out.push(alone_contact(&support, &n));
-            continue;
-        }
         let in_region = s
             .nodes
             .iter()
             .filter(|node| node.region as usize == index)
             .map(|node| node.tri);
+        if let (Some(prism), true) = (&prism, over_edge[index]) {
+            out.extend(edge::edge_region_contact(a, prism, in_region));
+            continue;
+        }
+        let support = by_region[index];
+        if let Some(support) = support.filter(|_| smooth_only[index]) {
+            out.push(alone_contact(&support, &n));
+            continue;
+        }
         let facets = region_contact(a, frame, in_region, r);
         out.push(match support {
             Some(support) => blended(&facets, &support, &n),

@@ -15,6 +15,7 @@ mod patches;
 mod pinned;
 mod planar;
 mod planar_overlap;
+mod plane_edge;
 mod rolling;
 mod solid_on_face;
 mod stl_files;
