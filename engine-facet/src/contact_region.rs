@@ -32,15 +32,25 @@
 //!    ([`FacetMesh::lift_to_surface`]); the penetration is their distance. Every one of these
 //!    is continuous in the pose, which dynamics needs. A region whose centroid lies outside one
 //!    of the (closed) bodies is not convex — a thin crescent where a convex surface presses
-//!    into a nearly conforming concave one — and the line through the centroid crosses a body's
-//!    far side: its penetration is held to the convex bound `3V/|S|` (no convex region of
-//!    volume `V` and cross-section `|S|` is thicker), with J's point moved along the normal to
-//!    match.
+//!    into a nearly conforming concave one, a body in a cavity — and the rays from the
+//!    centroid cross a body's far side; the line through it still crosses the region beside
+//!    the centroid, and the chord there (the first hits of the two surfaces on one side of `g`,
+//!    whose middle lies in both bodies) gives the two points. Only where neither side has
+//!    such a chord (a ring lying flat, its centroid in the hole) is the penetration held to
+//!    the convex bound `3V/|S|` (no convex region of volume `V` and cross-section `|S|` is
+//!    thicker), with J's point moved along the normal to match.
 //! 4. **No crossings.** Closed meshes whose root boxes overlap are tested for containment (a
 //!    ray-parity point-in-mesh test of three triangles' centroids, by majority). A body wholly inside the other is one
 //!    contact: `g` is the inner body's centroid, the normal points from `g` to the closest point
 //!    on the outer surface (see `containment`), the area is a quarter of the inner body's surface
 //!    (Cauchy: its mean projected area).
+//! 5. **Cavities.** A flipped solid is its mesh turned inside out
+//!    ([`FacetMesh::build_inside_out`]): its facets face into the cavity, so the crossings,
+//!    the inside tests against the other surface's planes, the loop and the sums above take
+//!    the space outside it as they take a solid. Its inside is unbounded: the flood over the
+//!    other surface has no leak guard, containment is tested whatever the boxes, a body clear
+//!    of the cavity is wholly in its material, and where the cavity's surface lies inside the
+//!    other body the intersection is that body less the cavity.
 //!
 //! ## Error bound
 //! Every facet lies within `δ = L/FT` of the true surface (tessellation), so the faceted
@@ -455,14 +465,66 @@ fn closest_points(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scratc
         // meshes have no inside: their regions keep the line's measure).
         let area = r.vector_area.norm();
         let bound = 3.0 * r.volume.max(0.0) / area;
-        r.held_to_bound = area > 0.0
+        let outside = area > 0.0
             && bound.is_finite()
             && (r.best_j.1 - r.best_i.1).norm() > bound
-            && loop_normal(r).is_some()
             && a.closed
             && b.closed
             && !(a.contains(&Point3::from(g)) && b.contains(&Point3::from(gb)));
+        r.held_to_bound = false;
+        let Some(n) = loop_normal(r).filter(|_| outside) else {
+            continue;
+        };
+        match chord_beside(a, b, x, &g, &n) {
+            Some((i, j)) => {
+                r.best_i = (0.0, a.lift_to_surface(i.0, &i.1), i.0);
+                r.best_j = (0.0, x.apply(&b.lift_to_surface(j.0, &j.1)), j.0);
+            }
+            None => r.held_to_bound = true,
+        }
     }
+}
+
+/// The centroid `g` of a region that is not convex lies outside one of the bodies (a
+/// crescent where a convex surface presses into a nearly conforming concave one, or a body in
+/// a cavity), and the rays from it along `∓n` cross the far side of that body. The line
+/// through `g` still crosses the region itself beside `g`: on one side of it, the first hits
+/// of the two surfaces bound a chord whose middle lies in both bodies. That chord's ends, I's
+/// point `(triangle, point)` in A's frame and J's in B's, are SPEC §4's contact points; `None`
+/// when neither side has such a chord (a ring lying flat, whose centroid is in its hole).
+#[allow(clippy::type_complexity)]
+fn chord_beside(
+    a: &FacetMesh,
+    b: &FacetMesh,
+    x: &RelativePose,
+    g: &Vector3,
+    n: &Vector3,
+) -> Option<((u32, Vector3), (u32, Vector3))> {
+    let gb = x.inverse_apply(g);
+    let mut best: Option<(f64, (u32, Vector3), (u32, Vector3))> = None;
+    for side in [-1.0, 1.0] {
+        let dir = n * side;
+        let (Some(hit_a), Some(hit_b)) = (
+            a.first_ray_hit(g, &dir),
+            b.first_ray_hit(&gb, &x.rot.tr_mul(&dir)),
+        ) else {
+            continue;
+        };
+        let (pa, pb) = (hit_a.1, x.apply(&hit_b.1));
+        // J's point lies beyond I's along n; the chord's middle in both bodies.
+        let middle = 0.5 * (pa + pb);
+        if (pb - pa).dot(n) <= 0.0
+            || !a.contains(&Point3::from(middle))
+            || !b.contains(&Point3::from(x.inverse_apply(&middle)))
+        {
+            continue;
+        }
+        let near = (pa - g).norm().min((pb - g).norm());
+        if best.as_ref().is_none_or(|(d, _, _)| near < *d) {
+            best = Some((near, hit_a, hit_b));
+        }
+    }
+    best.map(|(_, i, j)| (i, j))
 }
 
 /// The region's normal from J into I, `−S/|S|` with `S` the loop's vector area, or `None` when
@@ -485,9 +547,8 @@ fn finish_region(r: &RegionSums) -> LocalContact {
             .try_normalize(0.0)
             .unwrap_or_else(Vector3::z)
     };
-    // A region whose centroid lies outside one of the bodies is not convex (a thin crescent
-    // where a convex surface presses into a nearly conforming concave one), and the line
-    // through the centroid crosses that body's far side. A convex region of volume V whose
+    // A region whose centroid lies outside one of the bodies and whose line crosses it nowhere
+    // beside the centroid (see `chord_beside`). A convex region of volume V whose
     // cross-section normal to n has area A is no thicker along n than 3V/A (the cone over
     // its section is the thinnest such body): the penetration of such a region is held to
     // that, the point on J moved along the normal with it.
@@ -528,11 +589,23 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
     let (ra, rb) = (a.tree.root(), b.tree.root());
     let r = ra.axes.tr_mul(&(x.rot * rb.axes));
     let t = ra.axes.tr_mul(&(x.apply(&rb.center) - ra.center));
-    if !boxes_overlap(&ra.half_extents, &rb.half_extents, &r, &t) {
+    // Apart, unless one is inside out: a body clear of a cavity is wholly in its material.
+    let overlap = boxes_overlap(&ra.half_extents, &rb.half_extents, &r, &t);
+    if !(a.inside_out || b.inside_out || overlap) {
         return None;
     }
     if inside_by_majority(a, |v| b.contains(&Point3::from(x.inverse_apply(v)))) {
-        let g = a.centroid.coords;
+        let g = if a.inside_out {
+            // A cavity whose surface lies in solid B: the intersection is B less the cavity.
+            shell_centroid(
+                &x.apply(&b.centroid.coords),
+                b.volume,
+                &a.centroid.coords,
+                a.volume,
+            )
+        } else {
+            a.centroid.coords
+        };
         let gb = x.inverse_apply(&g);
         let pj = x.apply(&b.closest_point(&gb, &mut Vec::new()).1);
         let n = (pj - g).try_normalize(0.0).unwrap_or_else(Vector3::z);
@@ -549,7 +622,16 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         });
     }
     if inside_by_majority(b, |v| a.contains(&Point3::from(x.apply(v)))) {
-        let g = x.apply(&b.centroid.coords);
+        let g = if b.inside_out {
+            shell_centroid(
+                &a.centroid.coords,
+                a.volume,
+                &x.apply(&b.centroid.coords),
+                b.volume,
+            )
+        } else {
+            x.apply(&b.centroid.coords)
+        };
         let pi = a.closest_point(&g, &mut Vec::new()).1;
         let n = (g - pi).try_normalize(0.0).unwrap_or_else(Vector3::z);
         let pj = b
@@ -567,6 +649,18 @@ pub(crate) fn containment(a: &FacetMesh, b: &FacetMesh, x: &RelativePose) -> Opt
         });
     }
     None
+}
+
+/// The centroid of a solid (centroid `solid`, volume `v > 0`) less a cavity inside it
+/// (centroid `cavity`, volume `w < 0`, as an inside-out mesh keeps it): `(v·s + w·c)/(v + w)`;
+/// the solid's own centroid when nothing is left.
+fn shell_centroid(solid: &Vector3, v: f64, cavity: &Vector3, w: f64) -> Vector3 {
+    let left = v + w;
+    if left > 0.0 {
+        (solid * v + cavity * w) / left
+    } else {
+        *solid
+    }
 }
 
 /// Whether `mesh` lies inside the other solid, with no crossing between them: judged by the

@@ -19,7 +19,9 @@ use std::sync::Arc;
 /// except PLANE against PLANE; and the 2-D pairs of [`crate::planar`] (a point or a circle
 /// against a line, circle, arc or curve, and an arc or curve against an arc, curve or line,
 /// on polylines). A flipped PLANE is the half-space above it; a flipped 3-D solid
-/// (IFLIP_NORMAL, "the space outside it") is rejected by `prepare`.
+/// (IFLIP_NORMAL, "the space outside it", a cavity) is its tessellation turned inside out
+/// ([`FacetMesh::build_inside_out`]), answered against any solid or mesh but not against a
+/// PLANE or another cavity (their intersection is unbounded).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FacetEngine {
     faceting_tolerance: FacetingTolerance,
@@ -68,7 +70,7 @@ impl FacetEngine {
         if g.geometry.is_planar() {
             return self.prepare_planar(g, side);
         }
-        flipped_solid(g, side)?;
+        open_cavity(g, side)?;
         let mut pose_part_geometry = g.pose_part_geometry;
         let shape = match g.geometry.as_ref() {
             Geometry::Plane(p) if g.flip_normal => {
@@ -83,7 +85,11 @@ impl FacetEngine {
                     triangles: m.triangles().to_vec(),
                     corner_normals: tessellate::flat_corner_normals(m.vertices(), m.triangles()),
                 };
-                Shape::Mesh(Arc::new(FacetMesh::build(t, m.is_closed())))
+                Shape::Mesh(Arc::new(if g.flip_normal {
+                    FacetMesh::build_inside_out(t)
+                } else {
+                    FacetMesh::build(t, m.is_closed())
+                }))
             }
             other => {
                 let tolerance = g.faceting_tolerance.unwrap_or(self.faceting_tolerance);
@@ -101,7 +107,11 @@ impl FacetEngine {
                     });
                 }
                 let t = tessellate::tessellate(other, tolerance).ok_or_else(unsupported)?;
-                Shape::Mesh(Arc::new(FacetMesh::build(t, true)))
+                Shape::Mesh(Arc::new(if g.flip_normal {
+                    FacetMesh::build_inside_out(t)
+                } else {
+                    FacetMesh::build(t, true)
+                }))
             }
         };
         Ok(PreparedGeometry {
@@ -188,15 +198,17 @@ impl GeometryEngine for FacetEngine {
         "faceted"
     }
 
-    /// [`Self::supports`], and a flipped 3-D solid refused as [`Self::prepare`] refuses it.
+    /// [`Self::supports`], and the flips [`Self::prepare`] refuses: an open mesh flipped, and
+    /// a flipped solid against another flipped solid or a PLANE.
     fn supports_instances(
         &self,
         i: &GeometryInstance,
         j: &GeometryInstance,
     ) -> Result<(), PrepareError> {
         self.supports(&i.geometry, &j.geometry)?;
-        flipped_solid(i, Side::I)?;
-        flipped_solid(j, Side::J)
+        open_cavity(i, Side::I)?;
+        open_cavity(j, Side::J)?;
+        unbounded_pair(i, j)
     }
 
     fn supports(&self, i: &Geometry, j: &Geometry) -> Result<(), Unsupported> {
@@ -228,16 +240,20 @@ impl GeometryEngine for FacetEngine {
     ) -> Result<Box<dyn PreparedPair>, PrepareError> {
         check_lists(self, i, j)?;
         // One mesh per (shape, tolerance): a GRAPHICS used twice is faceted once.
-        let mut built: HashMap<(usize, u64), Shape> = HashMap::new();
+        let mut built: HashMap<(usize, u64, bool), Shape> = HashMap::new();
         let mut prepare_list = |list: &[GeometryInstance], side: Side| {
             list.iter()
                 .map(|g| {
                     let tolerance = g.faceting_tolerance.unwrap_or(self.faceting_tolerance);
+                    // Turned inside out when flipped: a flip is part of the key. A flipped
+                    // plane's frame turns with it, and a plane costs nothing to prepare again.
                     let key = (
                         Arc::as_ptr(&g.geometry) as usize,
                         tolerance.value().to_bits(),
+                        g.flip_normal,
                     );
-                    if let Some(shape) = built.get(&key) {
+                    let plane = matches!(g.geometry.as_ref(), Geometry::Plane(_));
+                    if let Some(shape) = built.get(&key).filter(|_| !plane) {
                         return Ok(PreparedGeometry {
                             shape: shape.clone(),
                             pose_part_geometry: g.pose_part_geometry,
@@ -250,6 +266,11 @@ impl GeometryEngine for FacetEngine {
                 })
                 .collect::<Result<Vec<_>, PrepareError>>()
         };
+        for a in i {
+            for b in j {
+                unbounded_pair(a, b)?;
+            }
+        }
         let i_list = prepare_list(i, Side::I)?;
         let j_list = prepare_list(j, Side::J)?;
         for a in &i_list {
@@ -298,21 +319,46 @@ fn planar_kinds_supported(i: &Geometry, j: &Geometry) -> Result<(), &'static str
     Ok(())
 }
 
-/// A flipped 3-D solid (the space outside it) is not meshed: refused, naming the argument. A
-/// flipped PLANE is the half-space on its other side, taken as it is.
-fn flipped_solid(g: &GeometryInstance, side: Side) -> Result<(), PrepareError> {
-    let plane = matches!(g.geometry.as_ref(), Geometry::Plane(_));
-    if g.flip_normal && !g.geometry.is_planar() && !plane {
+/// A flipped mesh is the space outside a closed surface: an open one bounds no such space, and
+/// is refused, naming the argument.
+fn open_cavity(g: &GeometryInstance, side: Side) -> Result<(), PrepareError> {
+    if let (Geometry::Mesh(m), true) = (g.geometry.as_ref(), g.flip_normal)
+        && !m.is_closed()
+    {
         return Err(PrepareError::InvalidArgument {
             label: g.label.clone(),
             source: InvalidArgument::with_text(
                 flip_argument(side),
-                "set on a 3-D solid",
-                "unset for the faceted engine (a flipped solid, the space outside it, is not meshed)",
+                "set on an open mesh",
+                "unset, or a closed mesh (a flipped mesh is the space outside its surface)",
             ),
         });
     }
     Ok(())
+}
+
+/// Whether `g` is a flipped 3-D solid: the space outside it (a cavity), unbounded.
+fn is_cavity(g: &GeometryInstance) -> bool {
+    g.flip_normal && !g.geometry.is_planar() && !matches!(g.geometry.as_ref(), Geometry::Plane(_))
+}
+
+/// A cavity against another cavity or a half-space: their intersection is unbounded, so no
+/// contact is defined; refused.
+fn unbounded_pair(i: &GeometryInstance, j: &GeometryInstance) -> Result<(), PrepareError> {
+    let plane = |g: &GeometryInstance| matches!(g.geometry.as_ref(), Geometry::Plane(_));
+    let reason = if is_cavity(i) && is_cavity(j) {
+        "two flipped solids (the spaces outside them) have no bounded intersection"
+    } else if (is_cavity(i) && plane(j)) || (plane(i) && is_cavity(j)) {
+        "a flipped solid (the space outside it) and a PLANE have no bounded intersection"
+    } else {
+        return Ok(());
+    };
+    Err(PrepareError::Unsupported(Unsupported {
+        engine: "faceted",
+        i: i.geometry.kind(),
+        j: j.geometry.kind(),
+        reason,
+    }))
 }
 
 /// The CONTACT argument that flips a geometry on `side`.

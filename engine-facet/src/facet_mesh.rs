@@ -60,6 +60,11 @@ pub struct FacetMesh {
     pub longest_edge: f64,
     /// True when closed and outward oriented (inside tests are meaningful).
     pub closed: bool,
+    /// True for a solid turned inside out ([`FacetMesh::build_inside_out`]): the space outside
+    /// a closed surface, a cavity. Its facets face into the cavity, its
+    /// [`contains`](Self::contains) is the complement of the solid's, and its `volume` is the
+    /// cavity's, negative.
+    pub inside_out: bool,
     /// True when closed and convex: one edge-connected surface, every neighbour link returned,
     /// and at every edge the neighbour's far corner on or behind the triangle's plane within
     /// `1e-12·size`. Its surface below any plane is then one region.
@@ -143,6 +148,7 @@ impl FacetMesh {
             size,
             longest_edge,
             closed,
+            inside_out: false,
             convex,
             pn_reach,
             implied_sphere,
@@ -152,6 +158,37 @@ impl FacetMesh {
         if convex {
             mesh.flat_faces = flat_faces(&mesh);
         }
+        mesh
+    }
+
+    /// The space outside the closed solid `t` describes (a flipped solid, a cavity): its
+    /// triangles wound the other way and its corner normals reversed, so every facet faces
+    /// into the cavity and the PN patches lie on the same surface. None of the shortcuts a
+    /// solid takes applies: it is not convex and stands for no sphere or ellipsoid.
+    pub fn build_inside_out(t: Tessellation) -> Self {
+        let Tessellation {
+            vertices,
+            triangles,
+            corner_normals,
+        } = t;
+        let triangles = triangles.iter().map(|&[i, j, k]| [i, k, j]).collect();
+        let corner_normals = corner_normals
+            .iter()
+            .map(|&[p, q, r]| [-p, -r, -q])
+            .collect();
+        let mut mesh = Self::build(
+            Tessellation {
+                vertices,
+                triangles,
+                corner_normals,
+            },
+            true,
+        );
+        mesh.inside_out = true;
+        mesh.convex = false;
+        mesh.implied_sphere = None;
+        mesh.implied_ellipsoid = None;
+        mesh.flat_faces = None;
         mesh
     }
 
@@ -180,11 +217,20 @@ impl FacetMesh {
             + self.flat_faces.as_ref().map_or(0, FlatFaces::heap_bytes)
     }
 
-    /// Whether `p` (mesh frame) is inside the closed mesh: parity of ray crossings, cast along
-    /// up to three fixed skew directions until one meets no edge or vertex within a relative
-    /// 1e-9 (then the parity is unambiguous); the majority of the three otherwise.
+    /// Whether `p` (mesh frame) is inside the closed mesh's solid (outside the cavity, for an
+    /// inside-out one): parity of ray crossings, cast along up to three fixed skew directions
+    /// until one meets no edge or vertex within a relative 1e-9 (then the parity is
+    /// unambiguous); the majority of the three otherwise. Always false for an open mesh.
     pub fn contains(&self, p: &Point3) -> bool {
-        if !self.closed || !self.tree.root().contains(p) {
+        if !self.closed {
+            return false;
+        }
+        self.inside_out != self.solid_contains(p)
+    }
+
+    /// Whether `p` lies inside the closed surface (inside the cavity, for an inside-out mesh).
+    fn solid_contains(&self, p: &Point3) -> bool {
+        if !self.tree.root().contains(p) {
             return false;
         }
         // Skew directions (normalised below) unlikely to run along edges of tessellated meshes.

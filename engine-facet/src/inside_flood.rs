@@ -70,10 +70,21 @@ pub(crate) fn flood(a: &FacetMesh, b: &FacetMesh, x: &RelativePose, s: &mut Scra
         block_up(&mesh.patches, &mut s.blocked[node.side as usize], leaf);
     }
     // The other mesh's root box in each mesh's frame, as an axis-aligned box: the leak guard
-    // (one per side, not per seed).
+    // (one per side, not per seed). The inside of an inside-out mesh is unbounded: no guard.
+    let everywhere = (
+        Vector3::repeat(f64::NEG_INFINITY),
+        Vector3::repeat(f64::INFINITY),
+    );
+    let guard = |other: &FacetMesh, within: crate::obb::Obb| {
+        if other.inside_out {
+            everywhere
+        } else {
+            aabb(&within)
+        }
+    };
     let guards = [
-        aabb(&x.box_in_a(b.tree.root())),
-        aabb(&x.box_in_b(a.tree.root())),
+        guard(b, x.box_in_a(b.tree.root())),
+        guard(a, x.box_in_b(a.tree.root())),
     ];
     for id in 0..crossing_count as u32 {
         let node = s.nodes[id as usize];

@@ -143,8 +143,8 @@ pub(crate) struct RegionSums {
     pub sums_a: crate::surface_sums::SurfaceSums,
     pub sums_b: crate::surface_sums::SurfaceSums,
     /// The line through the centroid measured the region deeper than a convex region of its
-    /// volume and cross-section can be, and the centroid lies outside a closed body: the
-    /// penetration is held to the bound `3V/|S|`.
+    /// volume and cross-section can be, the centroid lies outside a closed body, and the line
+    /// crosses the region nowhere beside it: the penetration is held to the bound `3V/|S|`.
     pub held_to_bound: bool,
 }
 

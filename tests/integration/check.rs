@@ -366,9 +366,10 @@ simulate/dyn, end = 2, dtout = 0.1\nactivate/joint, id = 1, 7\nsimulate/dyn, end
 
 #[test]
 fn flipped_solids_an_engine_refuses_are_errors_at_check() {
-    // A box in a bore (a flipped cylinder) and a ball in a box cavity: the exact engine
-    // refuses the first (no kernel for that cavity), the faceted engine both (it does not mesh
-    // the space outside a solid); `prepare` would refuse them at the run's start, so the check
+    // A box in a bore (a flipped cylinder), a ball in a box cavity and a flipped ball against
+    // a plane: the exact engine refuses the first (no kernel for that cavity) and the last,
+    // the faceted engine only the last (the space outside the ball and the half-space meet
+    // in an unbounded region); `prepare` would refuse them at the run's start, so the check
     // says so first.
     let model = "flipped solids\n\
          PART/1, GROUND\n\
@@ -381,9 +382,12 @@ fn flipped_solids_an_engine_refuses_are_errors_at_check() {
          GRAPHICS/2, CYLINDER, CM = 10, RADIUS = 1, LENGTH = 2\n\
          GRAPHICS/3, ELLIPSOID, CM = 20, XSCALE = 0.6, YSCALE = 0.6, ZSCALE = 0.6\n\
          GRAPHICS/4, BOX, CORNER = 11, X = 2, Y = 2, Z = 2\n\
+         GRAPHICS/5, PLANE, RM = 10\n\
          CONTACT/1, IGEOM = 1, JGEOM = 2, JFLIP_GEOMETRY = 2, IMPACT, STIFFNESS = 1E5\
          , EXPONENT = 2, DAMPING = 10, DMAX = 0.01\n\
          CONTACT/2, IGEOM = 3, JGEOM = 4, JFLIP_GEOMETRY = 4, IMPACT, STIFFNESS = 1E5\
+         , EXPONENT = 2, DAMPING = 10, DMAX = 0.01\n\
+         CONTACT/3, IGEOM = 3, JGEOM = 5, IFLIP_GEOMETRY = 3, IMPACT, STIFFNESS = 1E5\
          , EXPONENT = 2, DAMPING = 10, DMAX = 0.01\n\
          END\n";
     let loaded = crate::inline("flipped.adm", model);
@@ -398,17 +402,16 @@ fn flipped_solids_an_engine_refuses_are_errors_at_check() {
             .collect()
     };
     let exact = problems(&engine_exact::ExactEngine);
-    assert_eq!(exact.len(), 1, "{exact:#?}");
+    assert_eq!(exact.len(), 2, "{exact:#?}");
     assert!(
-        exact[0].starts_with("data/flipped.adm:12:1: error: CONTACT/1: the exact engine cannot compute contact between BOX and CYLINDER: a flipped (inside-out) geometry is built only for"),
+        exact[0].starts_with("data/flipped.adm:13:1: error: CONTACT/1: the exact engine cannot compute contact between BOX and CYLINDER: a flipped (inside-out) geometry is built only for"),
         "{exact:#?}"
     );
+    assert!(exact[1].contains("CONTACT/3"), "{exact:#?}");
     let faceted = problems(&engine_facet::FacetEngine::default());
-    assert_eq!(faceted.len(), 2, "{faceted:#?}");
-    for p in &faceted {
-        assert!(
-            p.contains("JFLIP_NORMAL = set on a 3-D solid is out of range"),
-            "{faceted:#?}"
-        );
-    }
+    assert_eq!(faceted.len(), 1, "{faceted:#?}");
+    assert!(
+        faceted[0].starts_with("data/flipped.adm:15:1: error: CONTACT/3: the faceted engine cannot compute contact between ELLIPSOID and PLANE: a flipped solid (the space outside it) and a PLANE have no bounded intersection"),
+        "{faceted:#?}"
+    );
 }

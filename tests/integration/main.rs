@@ -4,6 +4,7 @@ mod adams_req;
 mod adams_tests;
 mod augmented_lagrangian;
 mod ball_drop;
+mod cavity_runs;
 mod chain_sprockets;
 mod check;
 mod cross_engine;

@@ -1,5 +1,6 @@
 //! Integration tests of the faceted engine (one binary, modules inside).
 
+mod cavities;
 mod common;
 mod concave_oracle;
 mod concave_regions;
