@@ -8,41 +8,13 @@
 //! lies on the line from the axis through the ball's centre, so the ray rule gives the depth
 //! `e + r − R` along that line).
 
-use crate::common::{Rng, angle_deg, engine};
+use crate::common::{Rng, angle_deg, centred, contacts_with_j_at_origin as contacts, engine};
 use contact_core::geometry::{Cuboid, Cylinder, Frustum, Torus, TriangleMesh};
 use contact_core::{
     Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3,
-    PrepareError, Vector3, WorkCounters,
+    PrepareError, Vector3,
 };
 use engine_exact::ExactEngine;
-
-fn contacts(
-    engine: &dyn GeometryEngine,
-    i: &GeometryInstance,
-    j: &GeometryInstance,
-    pose_i: &Isometry3,
-) -> Vec<Contact> {
-    let pair = engine
-        .prepare(std::slice::from_ref(i), std::slice::from_ref(j))
-        .unwrap();
-    let mut out = Vec::new();
-    pair.query(
-        pose_i,
-        &Isometry3::identity(),
-        &mut out,
-        &mut WorkCounters::default(),
-    )
-    .unwrap();
-    out
-}
-
-/// `g` with its part frame at the middle of its box (a cylinder's or frustum's frame is at its
-/// base).
-fn centred(g: Geometry) -> GeometryInstance {
-    let (lo, hi) = g.local_bounding_box();
-    let m = 0.5 * (lo.coords + hi.coords);
-    GeometryInstance::new(g).at(Isometry3::translation(-m.x, -m.y, -m.z))
-}
 
 /// Bodies in a 1.0 × 0.8 × 0.6 box cavity and in a sphere socket of radius 0.6, pushed from
 /// the middle toward a wall by seeded offsets so that they dig into it, against the exact

@@ -68,6 +68,42 @@ pub fn query(
     query_pair(prepare(engine, i, j).as_ref(), pose_i, pose_j)
 }
 
+/// The contacts of instances `i` and `j` at world poses `pose_i` and `pose_j`, from any
+/// engine (the faceted one, or the exact one as an oracle).
+pub fn instance_contacts(
+    engine: &dyn GeometryEngine,
+    i: &GeometryInstance,
+    j: &GeometryInstance,
+    pose_i: &Isometry3,
+    pose_j: &Isometry3,
+) -> Vec<Contact> {
+    let pair = engine
+        .prepare(std::slice::from_ref(i), std::slice::from_ref(j))
+        .unwrap();
+    let mut out = Vec::new();
+    pair.query(pose_i, pose_j, &mut out, &mut WorkCounters::default())
+        .unwrap();
+    out
+}
+
+/// [`instance_contacts`] with `j` at the origin.
+pub fn contacts_with_j_at_origin(
+    engine: &dyn GeometryEngine,
+    i: &GeometryInstance,
+    j: &GeometryInstance,
+    pose_i: &Isometry3,
+) -> Vec<Contact> {
+    instance_contacts(engine, i, j, pose_i, &Isometry3::identity())
+}
+
+/// `g` with its part frame at the middle of its bounding box (a cylinder's or a frustum's
+/// frame is at its base).
+pub fn centred(g: Geometry) -> GeometryInstance {
+    let (lo, hi) = g.local_bounding_box();
+    let m = 0.5 * (lo.coords + hi.coords);
+    GeometryInstance::new(g).at(Isometry3::translation(-m.x, -m.y, -m.z))
+}
+
 pub fn engine(ft: f64) -> FacetEngine {
     FacetEngine::new(contact_core::FacetingTolerance::new(ft).unwrap())
 }

@@ -3,29 +3,10 @@
 //! own closed forms (a side sign in each plane kernel), written apart from the faceted
 //! engine's half-turn of the plane's frame.
 
-use crate::common::{Rng, angle_deg, engine};
+use crate::common::{Rng, angle_deg, centred, engine, instance_contacts as contacts};
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Plane, Torus};
-use contact_core::{
-    Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3, Side,
-    WorkCounters,
-};
+use contact_core::{FacetingTolerance, Geometry, GeometryInstance, Isometry3, Side};
 use engine_exact::ExactEngine;
-
-fn contacts(
-    engine: &dyn GeometryEngine,
-    i: &GeometryInstance,
-    j: &GeometryInstance,
-    pose_i: &Isometry3,
-    pose_j: &Isometry3,
-) -> Vec<Contact> {
-    let pair = engine
-        .prepare(std::slice::from_ref(i), std::slice::from_ref(j))
-        .unwrap();
-    let mut out = Vec::new();
-    pair.query(pose_i, pose_j, &mut out, &mut WorkCounters::default())
-        .unwrap();
-    out
-}
 
 /// The solids, each with a lower bound on its support in any direction from its centre (the
 /// radius of a ball it holds; a torus' tube radius).
@@ -90,10 +71,7 @@ fn a_flipped_plane_is_the_half_space_above_it_as_the_exact_engine_says() {
                 );
                 let pose_plane = Isometry3::identity();
                 // The part frame at the solid's middle (a cylinder's frame is at its base).
-                let (lo, hi) = solid.local_bounding_box();
-                let middle = 0.5 * (lo.coords + hi.coords);
-                let s = GeometryInstance::new(solid.clone())
-                    .at(Isometry3::translation(-middle.x, -middle.y, -middle.z));
+                let s = centred(solid.clone());
                 let p = GeometryInstance::new(Geometry::Plane(plane)).flipped();
                 for side in [Side::I, Side::J] {
                     let (i, j, pi, pj) = match side {

@@ -4,38 +4,13 @@
 //! apart (closed forms and slicing on the primitives), with the error falling as the faceting
 //! tolerance rises.
 
-use crate::common::{Rng, angle_deg, engine};
+use crate::common::{Rng, angle_deg, centred, contacts_with_j_at_origin as contacts, engine};
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Plane, Torus};
-use contact_core::{Contact, Geometry, GeometryEngine, GeometryInstance, Isometry3, WorkCounters};
+use contact_core::{Geometry, GeometryInstance, Isometry3};
 use engine_exact::ExactEngine;
-
-fn contacts(
-    engine: &dyn GeometryEngine,
-    i: &GeometryInstance,
-    j: &GeometryInstance,
-    pose_i: &Isometry3,
-) -> Vec<Contact> {
-    let pair = engine
-        .prepare(std::slice::from_ref(i), std::slice::from_ref(j))
-        .unwrap();
-    let mut out = Vec::new();
-    pair.query(
-        pose_i,
-        &Isometry3::identity(),
-        &mut out,
-        &mut WorkCounters::default(),
-    )
-    .unwrap();
-    out
-}
 
 /// Each solid, its part frame at its middle, with its smallest support from there.
 fn solids() -> Vec<(&'static str, GeometryInstance, f64)> {
-    let centred = |g: Geometry| {
-        let (lo, hi) = g.local_bounding_box();
-        let m = 0.5 * (lo.coords + hi.coords);
-        GeometryInstance::new(g).at(Isometry3::translation(-m.x, -m.y, -m.z))
-    };
     vec![
         ("sphere", centred(Geometry::sphere(0.5).unwrap()), 0.5),
         (
