@@ -247,6 +247,95 @@ fn the_pendulum_keeps_the_large_amplitude_period_and_its_energy() {
     assert!(drift < 1e-4 * m * g * l, "energy drift {drift} J");
 }
 
+/// The ball in its socket as a separately integrated model: its centre in polar coordinates
+/// `(ρ, θ)` about the socket's centre, on the contact's radial spring `F = k·(ρ − L)^e` where
+/// `ρ > L` (the penetration of a sphere in a spherical socket is exactly `ρ + r − R`; the
+/// example's damping, 1e-3 N·s/m, moves the force by under 1e-7 N and is left out), RK4 at
+/// 1 µs from rest at `θ₀`. Returns the times the centre crosses `x = 0` moving −x.
+fn socket_reference_crossings(end: f64) -> Vec<f64> {
+    let (m, g, l, k, e): (f64, f64, f64, f64, f64) = (1.0, 9.81, 0.4, 1e7, 1.5);
+    let accel = |s: [f64; 4]| {
+        let [rho, rho_dot, theta, theta_dot] = s;
+        let f = if rho > l { k * (rho - l).powf(e) } else { 0.0 };
+        let rho_dd = rho * theta_dot * theta_dot + g * theta.cos() - f / m;
+        let theta_dd = (-g * theta.sin() - 2.0 * rho_dot * theta_dot) / rho;
+        [rho_dot, rho_dd, theta_dot, theta_dd]
+    };
+    let h = 1e-6;
+    let mut s = [l, 0.0, 15f64.to_radians(), 0.0];
+    let mut t = 0.0;
+    let mut crossings = Vec::new();
+    while t < end {
+        let add = |a: [f64; 4], b: [f64; 4], w: f64| std::array::from_fn(|i| a[i] + w * b[i]);
+        let k1 = accel(s);
+        let k2 = accel(add(s, k1, 0.5 * h));
+        let k3 = accel(add(s, k2, 0.5 * h));
+        let k4 = accel(add(s, k3, h));
+        let next: [f64; 4] =
+            std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        let (x0, x1) = (s[0] * s[2].sin(), next[0] * next[2].sin());
+        if x0 > 0.0 && x1 <= 0.0 {
+            crossings.push(t + h * x0 / (x0 - x1));
+        }
+        s = next;
+        t += h;
+    }
+    crossings
+}
+
+/// The ball sliding in its socket (a flipped sphere) is a pendulum of length `L = R − r`: its
+/// period is the elliptic-integral one lengthened by the contact's compliance, by about
+/// `δ/(2L)` with `δ` the penetration (between `(m·g·cos θ₀/k)^(1/e)` and the bottom's
+/// `(m·g·(3 − 2·cos θ₀)/k)^(1/e)`), and its swing crosses the bottom when the separately
+/// integrated model on the contact's spring says; it keeps its energy.
+#[test]
+fn the_ball_in_its_socket_swings_with_the_pendulum_period() {
+    let frames = run_example("ball_socket", 4.0, 1e-3);
+    let (m, g, l, k, e): (f64, f64, f64, f64, f64) = (1.0, 9.81, 0.4, 1e7, 1.5);
+    let theta = 15f64.to_radians();
+    let period = 4.0 * (l / g).sqrt() * elliptic_k((0.5 * theta).sin());
+    let delta_max = (m * g * (3.0 - 2.0 * theta.cos()) / k).powf(1.0 / e);
+    let crossings: Vec<f64> = frames
+        .windows(2)
+        .filter(|w| w[0].1.x > 0.0 && w[1].1.x <= 0.0)
+        .map(|w| w[0].0 + (w[1].0 - w[0].0) * w[0].1.x / (w[0].1.x - w[1].1.x))
+        .collect();
+    assert!(crossings.len() >= 3, "{crossings:?}");
+    let measured = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+    let lengthened = (measured - period) / period;
+    assert!(
+        lengthened > 0.0 && lengthened < delta_max / l,
+        "period {measured} s, rigid {period} s: lengthened by {lengthened:e}"
+    );
+    let reference = socket_reference_crossings(4.0);
+    assert_eq!(
+        reference.len(),
+        crossings.len(),
+        "{reference:?} {crossings:?}"
+    );
+    for (got, want) in crossings.iter().zip(&reference) {
+        assert!(
+            (got - want).abs() < 1e-5 * period,
+            "crossing at {got} s, reference {want} s"
+        );
+    }
+    // Energy, the contact's spring energy k·δ^(e+1)/(e+1) included (δ = |c| − L, the socket's
+    // centre at the origin): the damping takes under 1e-6 J.
+    let energy = |v: nalgebra::Vector3<f64>, p: nalgebra::Vector3<f64>| {
+        let delta = (p.norm() - l).max(0.0);
+        0.5 * m * v.norm_squared() + m * g * p.z + k * delta.powf(e + 1.0) / (e + 1.0)
+    };
+    let e0 = energy(frames[0].2, frames[0].1);
+    let drift = frames
+        .iter()
+        .map(|(_, p, v)| (energy(*v, *p) - e0).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        drift < 1e-4 * m * g * l * (1.0 - theta.cos()),
+        "energy drift {drift} J"
+    );
+}
+
 /// Runs the POISSON ball with restitution `eps` (`augmented` adds the augmented Lagrangian) for
 /// `end` seconds; returns the apex heights of the ball's lowest point after each bounce and
 /// the largest penetration seen.
