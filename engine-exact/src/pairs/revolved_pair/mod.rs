@@ -356,7 +356,6 @@ fn contact_with(
     if volume.is_nan() || volume <= 0.0 {
         return Ok(None);
     }
-    let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
     // b's surface inside a (see the module docs): all of it when none of a's is inside b,
     // else |S_a| stands for it unless S_a vanishes, when it is integrated across b's axis.
     let s_a = Vector3::new(r[4], r[5], r[6]);
@@ -384,6 +383,31 @@ fn contact_with(
             whole(&mut r);
         }
     }
+    Ok(region_contact(
+        &r,
+        unit,
+        (solid_a, pose_a),
+        (solid_b, pose_b),
+        true,
+    ))
+}
+
+/// The contact of one region of two revolved solids (or a torus) from its sums `r` in
+/// `a`'s frame, lengths in units of `unit` (the layout of [`sums`]: volume, the z, x and y
+/// moments, `a`'s area vector inside `b`, `a`'s surface inside `b` and `b`'s inside `a`,
+/// both settled by the caller). The points follow the ray rule on the two surfaces; where
+/// the area vector vanishes, the normal is the closest-point one of the body holding the
+/// other. `convex` false for a region that need not be convex (a torus').
+pub(crate) fn region_contact(
+    r: &[f64; COMPONENTS],
+    unit: f64,
+    (solid_a, pose_a): (&Solid, &Isometry3),
+    (solid_b, pose_b): (&Solid, &Isometry3),
+    convex: bool,
+) -> Option<PairContact> {
+    let volume = r[0];
+    let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
+    let s_a = Vector3::new(r[4], r[5], r[6]);
     let a_inside_b = r[8] <= ENCLOSED * (r[7] + r[8]);
     let moments = VolumeMoments {
         volume: volume * unit * unit * unit,
@@ -401,10 +425,11 @@ fn contact_with(
             -(pose_a.rotation * signed_distance(solid_a, &p).2)
         }
     };
-    Ok(volume_contact::contact(
+    volume_contact::contact_of_region(
         &moments,
         |g, d| surface_point_along_w(solid_a, pose_a, g, d),
         |g, d| surface_point_along_w(solid_b, pose_b, g, d),
         fallback,
-    ))
+        convex,
+    )
 }

@@ -68,20 +68,39 @@
 
 pub(crate) mod regions;
 pub(crate) mod slice;
+
+/// A torus region's surface areas from its sums `r` (see [`super::revolved_pair::sums`]'s
+/// layout), given the whole surfaces of the torus (`whole_a`, its side `a`) and of `b`:
+/// `b`'s surface inside the torus is all of it when none of the torus' is inside `b`, else
+/// `|S_a|` stands for it; where `S_a` vanishes the torus' surface inside `b` is closed, all of
+/// it (`b` then none) or a closed piece matched by as much of `b`'s.
+pub(crate) fn settle_surfaces(r: &mut [f64; COMPONENTS], whole_a: f64, whole_b: f64) {
+    let s_a = Vector3::new(r[4], r[5], r[6]).norm();
+    let none_of_a = r[7] <= ENCLOSED * whole_b;
+    r[8] = if none_of_a { whole_b } else { s_a };
+    if !none_of_a && s_a <= ENCLOSED * (r[7] + r[8]) {
+        if r[7] >= (1.0 - WHOLE) * whole_a {
+            r[7] = whole_a;
+            r[8] = 0.0;
+        } else {
+            r[8] = r[7];
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;
 
-use super::revolved_pair::{dimensions, quadric_of, surface_of};
+use super::revolved_pair::{dimensions, quadric_of, region_contact, surface_of};
 use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
 use crate::methods::ellipsoid_sliced::{COMPONENTS, add_shape_events_between, pieces_within};
 use crate::methods::sliced::last_inside;
-use crate::methods::solid_distance::{Solid, signed_distance};
-use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::methods::solid_distance::Solid;
+use crate::methods::volume_contact::ENCLOSED;
 use crate::quadrature::{Adaptive, MAX_PIECES};
-use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Torus;
-use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use contact_core::{Isometry3, Vector3, WorkCounters};
 use regions::Seed;
 use slice::{TorusPair, Wedge};
 use std::f64::consts::PI;
@@ -297,46 +316,12 @@ pub(crate) fn contacts(
         if volume.is_nan() || volume <= 0.0 {
             continue;
         }
-        let centroid = pose_b * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
-        let s_t = Vector3::new(r[4], r[5], r[6]);
         // b's surface inside the torus (see the module docs).
-        let none_of_torus = r[7] <= ENCLOSED * whole_b;
-        r[8] = if none_of_torus { whole_b } else { s_t.norm() };
-        if !none_of_torus && s_t.norm() <= ENCLOSED * (r[7] + r[8]) {
-            if r[7] >= (1.0 - WHOLE) * whole_torus {
-                r[7] = whole_torus;
-                r[8] = 0.0;
-            } else {
-                r[8] = r[7];
-            }
-        }
-        let torus_inside_b = r[8] <= ENCLOSED * (r[7] + r[8]);
-        let moments = VolumeMoments {
-            volume: volume * unit * unit * unit,
-            centroid,
-            area_vector_a: pose_b.rotation * s_t * (unit * unit),
-            surface_area: (r[7] + r[8]) * unit * unit,
-            length: unit,
-        };
-        let fallback = || {
-            if torus_inside_b {
-                let p = pose_a.inverse_transform_point(&centroid).coords;
-                pose_a.rotation * signed_distance(solid, &p).2
-            } else {
-                let p = pose_b.inverse_transform_point(&centroid).coords;
-                -(pose_b.rotation * signed_distance(&torus_solid, &p).2)
-            }
-        };
-        let found = volume_contact::contact_of_region(
-            &moments,
-            |g, d| surface_point_along_w(&torus_solid, pose_b, g, d),
-            |g, d| surface_point_along_w(solid, pose_a, g, d),
-            fallback,
-            // A region of the torus need not be convex, even a thin one (a flat cap pressed
-            // on the tube's top circle makes a curved strip whose centroid lies off it), so
-            // the convex pairs' chord bound is not applied, as for the box–torus pair.
-            false,
-        );
+        settle_surfaces(&mut r, whole_torus, whole_b);
+        // A region of the torus need not be convex, even a thin one (a flat cap pressed on
+        // the tube's top circle makes a curved strip whose centroid lies off it), so the
+        // convex pairs' chord bound is not applied, as for the box–torus pair.
+        let found = region_contact(&r, unit, (&torus_solid, pose_b), (solid, pose_a), false);
         if let Some(c) = found {
             // Computed with the torus first: back to the caller's order.
             emit(c.swapped());

@@ -50,17 +50,16 @@ use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
 use crate::methods::ellipsoid_sliced::{COMPONENTS, pieces_within};
 use crate::methods::sliced::last_inside;
-use crate::methods::solid_distance::{Solid, signed_distance};
-use crate::methods::volume_contact::{self, ENCLOSED, VolumeMoments};
+use crate::methods::solid_distance::Solid;
 use crate::pairs::box_revolved::azimuth::{SAMPLES, region_wedges_of};
+use crate::pairs::revolved_pair::region_contact;
 use crate::pairs::revolved_torus::slice::Wedge;
 // The outer rule, merge and floor of the cylinder–torus pair, whose integrand has the same
 // components.
-use crate::pairs::revolved_torus::{MERGE, OUTER, WHOLE, outer_floor};
+use crate::pairs::revolved_torus::{MERGE, OUTER, outer_floor, settle_surfaces};
 use crate::quadrature::MAX_PIECES;
-use crate::ray_exit::surface_point_along_w;
 use contact_core::geometry::Torus;
-use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
+use contact_core::{Isometry3, WorkCounters};
 use meridian::TorusTorus;
 use std::cell::RefCell;
 use std::f64::consts::PI;
@@ -271,43 +270,9 @@ pub(crate) fn contacts(
         if volume.is_nan() || volume <= 0.0 {
             continue;
         }
-        let centroid = pose_a * Point3::from(Vector3::new(r[2], r[3], r[1]) / volume * unit);
-        let s_a = Vector3::new(r[4], r[5], r[6]);
-        let none_of_a = r[7] <= ENCLOSED * whole_b;
-        r[8] = if none_of_a { whole_b } else { s_a.norm() };
-        if !none_of_a && s_a.norm() <= ENCLOSED * (r[7] + r[8]) {
-            if r[7] >= (1.0 - WHOLE) * whole_a {
-                r[7] = whole_a;
-                r[8] = 0.0;
-            } else {
-                r[8] = r[7];
-            }
-        }
-        let a_inside_b = r[8] <= ENCLOSED * (r[7] + r[8]);
-        let moments = VolumeMoments {
-            volume: volume * unit * unit * unit,
-            centroid,
-            area_vector_a: pose_a.rotation * s_a * (unit * unit),
-            surface_area: (r[7] + r[8]) * unit * unit,
-            length: unit,
-        };
-        let fallback = || {
-            if a_inside_b {
-                let p = pose_b.inverse_transform_point(&centroid).coords;
-                pose_b.rotation * signed_distance(&solid_b, &p).2
-            } else {
-                let p = pose_a.inverse_transform_point(&centroid).coords;
-                -(pose_a.rotation * signed_distance(&solid_a, &p).2)
-            }
-        };
-        let found = volume_contact::contact_of_region(
-            &moments,
-            |g, d| surface_point_along_w(&solid_a, pose_a, g, d),
-            |g, d| surface_point_along_w(&solid_b, pose_b, g, d),
-            fallback,
-            // A torus' region need not be convex (see the cylinder–torus pair).
-            false,
-        );
+        settle_surfaces(&mut r, whole_a, whole_b);
+        // A torus' region need not be convex (see the cylinder–torus pair).
+        let found = region_contact(&r, unit, (&solid_a, pose_a), (&solid_b, pose_b), false);
         if let Some(c) = found {
             emit(c);
         }
