@@ -31,6 +31,17 @@ pub enum ErrorKind {
     /// The text header or the stream's opening is not that of a Parasolid text transmit file.
     #[error("not a Parasolid text transmit file: {0}")]
     NotTransmit(String),
+    /// A schema key this reader has no layouts for: neither the base schema 13006 itself nor
+    /// changes embedded against it.
+    #[error(
+        "schema {key}: {why}; only files of schema 13006, or with their changes embedded against 13006 (Parasolid V14 and later), are read — save the part from a newer Parasolid version"
+    )]
+    UnsupportedSchema {
+        /// The key as the file writes it, e.g. `SCH_1200000_12006`.
+        key: String,
+        /// What about it is not read.
+        why: String,
+    },
     /// The file ends before the terminator node.
     #[error("the file ends inside {what} (truncated file?)")]
     Truncated {

@@ -394,6 +394,7 @@ impl Part {
             nodes: Nodes {
                 banner: String::new(),
                 schema: String::new(),
+                user_fields: 0,
                 by_index: Default::default(),
             },
         }

@@ -9,6 +9,13 @@
 //! name, description and every field. A described field is its name, its pointer class (0 for
 //! data), its element count (0 one value, 1 a variable-length tail followed by a logical, more a
 //! fixed array) and, for data, its type letter.
+//!
+//! A file of the base schema itself (key `SCH_<modeller>_13006`) writes every node in these
+//! layouts with no layout before a type's first node ([`Form`]).
+//!
+//! LIST's fifth and eighth base fields are taken as `list_type` (u) and `notransmit` (l): the
+//! writers that embed changes delete exactly those two fields and insert two of these names and
+//! kinds at the front.
 
 /// How a field's values are written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,8 +34,6 @@ pub enum Kind {
     Interval,
     /// `b`: six reals.
     Box,
-    /// A base field every known writer deletes; its kind is never needed.
-    Deleted,
 }
 
 impl Kind {
@@ -87,6 +92,51 @@ impl Layout {
     /// The position of field `name`.
     pub fn position(&self, name: &str) -> Option<usize> {
         self.fields.iter().position(|f| f.name == name)
+    }
+}
+
+/// The base schema's number: embedded changes are written against it.
+pub const BASE_SCHEMA: &str = "13006";
+
+/// How a file lays out its nodes, from its schema key `SCH_<modeller>_<schema>[_<base>]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Form {
+    /// `SCH_<modeller>_13006`: the base schema itself; nodes carry no layout, and the key is
+    /// followed by one integer (the user field size).
+    Base,
+    /// `SCH_<modeller>_<schema>_13006`: each type's first node is preceded by its layout (`255`
+    /// for the base one, else its changes), and the key is followed by two integers (the
+    /// highest node type, then the user field size).
+    Embedded,
+}
+
+impl Form {
+    /// The form of schema key `key`; keys of other schemas are refused by name.
+    pub fn of(key: &str) -> Result<Self, crate::error::ErrorKind> {
+        let refuse = |why: &str| crate::error::ErrorKind::UnsupportedSchema {
+            key: key.to_string(),
+            why: why.to_string(),
+        };
+        let parts: Vec<&str> = key.split('_').collect();
+        let numeric = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+        if parts[0] != "SCH" || parts.len() < 3 || !parts[1..].iter().all(|p| numeric(p)) {
+            return Err(refuse(
+                "not a schema key (SCH_<modeller>_<schema>[_<base>])",
+            ));
+        }
+        match parts[2..] {
+            [BASE_SCHEMA] => Ok(Self::Base),
+            [_, BASE_SCHEMA] => Ok(Self::Embedded),
+            [schema] => Err(refuse(&format!(
+                "schema {schema} is written without embedded changes and its layouts are not known"
+            ))),
+            [_, base] => Err(refuse(&format!(
+                "its changes are embedded against base schema {base}, not 13006"
+            ))),
+            _ => Err(refuse(
+                "not a schema key (SCH_<modeller>_<schema>[_<base>])",
+            )),
+        }
     }
 }
 
@@ -182,7 +232,7 @@ const GEOM: &str =
     "node_id:d attributes_features:p owner:p next:p previous:p geometric_owner:p sense:c";
 
 /// Base layouts: type, name, fields as `name:letter` (a count after the letter for a fixed
-/// array, `*` for the variable tail, `x` for a field every writer deletes).
+/// array, `*` for the variable tail).
 const BASE: &[(u16, &str, &str)] = &[
     (
         12,
@@ -278,7 +328,7 @@ const BASE: &[(u16, &str, &str)] = &[
     (
         70,
         "LIST",
-        "node_id:d owner:p next:p previous:p old_4:x list_length:d block_length:d old_7:x list_block:p",
+        "node_id:d owner:p next:p previous:p list_type:u list_length:d block_length:d notransmit:l list_block:p",
     ),
     (71, "REAL_LIS_BLOCK", "n_entries:d next_block:p entries:f*"),
     (
@@ -380,11 +430,7 @@ fn parse_fields(spec: &str) -> Vec<Field> {
         .map(|tok| {
             let (name, rest) = tok.split_once(':').expect("base table entry name:kind");
             let (letter, count) = rest.split_at(1);
-            let kind = if letter == "x" {
-                Kind::Deleted
-            } else {
-                Kind::from_letter(letter).expect("base table letter")
-            };
+            let kind = Kind::from_letter(letter).expect("base table letter");
             let count = match count {
                 "" => Count::One,
                 "*" => Count::Variable,

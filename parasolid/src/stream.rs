@@ -2,11 +2,12 @@
 //!
 //! Each node is its type, then (for a variable-length type) the tail's length, then its
 //! index, then its fields; a type's first node is preceded by its layout (`255` for the base
-//! layout, otherwise the file's changes, see [`crate::schema`]). The stream ends with the
-//! terminator: type 1, index 0.
+//! layout, otherwise the file's changes, see [`crate::schema`]) unless the file is of the base
+//! schema itself ([`Form::Base`]). A file with user fields (size n > 0) writes n integers after
+//! every node. The stream ends with the terminator: type 1, index 0.
 
 use crate::error::{ErrorKind, NodeRef};
-use crate::schema::{Count, Field, Kind, Layout, base_layout};
+use crate::schema::{Count, Field, Form, Kind, Layout, base_layout};
 use crate::text::{Cursor, Stream, TokenError};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -69,6 +70,8 @@ pub struct Nodes {
     pub banner: String,
     /// The schema key, e.g. `SCH_3101206_31100_13006`.
     pub schema: String,
+    /// The user field size: integers written after every node.
+    pub user_fields: usize,
     /// Nodes by index.
     pub by_index: HashMap<u32, Node>,
 }
@@ -76,6 +79,8 @@ pub struct Nodes {
 struct Reader<'a> {
     cur: Cursor<'a>,
     layouts: HashMap<u16, Arc<Layout>>,
+    form: Form,
+    user_fields: usize,
 }
 
 /// Where a read failed: the current node, for messages.
@@ -176,12 +181,6 @@ impl Reader<'_> {
             },
             Kind::Interval => Value::Reals(vec![self.real(at)?, self.real(at)?]),
             Kind::Box => Value::Reals((0..6).map(|_| self.real(at)).collect::<Result<_, _>>()?),
-            Kind::Deleted => {
-                return Err(ErrorKind::BadSchema {
-                    node_type: at.node_type,
-                    what: format!("field {} is copied, but its type is not known", at.field),
-                });
-            }
         })
     }
 
@@ -211,7 +210,6 @@ impl Reader<'_> {
                         .collect::<Result<_, _>>()?,
                 )
             }
-            Kind::Deleted => self.one(kind, at)?,
         })
     }
 
@@ -330,6 +328,17 @@ impl Reader<'_> {
     fn node(&mut self, node_type: u16) -> Result<Node, ErrorKind> {
         let layout = match self.layouts.get(&node_type) {
             Some(l) => l.clone(),
+            None if self.form == Form::Base => match base_layout(node_type) {
+                Some(l) => {
+                    let l = Arc::new(l);
+                    self.layouts.insert(node_type, l.clone());
+                    l
+                }
+                None => {
+                    let index = self.cur.int().ok().flatten().unwrap_or(0) as u32;
+                    return Err(ErrorKind::UnknownNodeType { index, node_type });
+                }
+            },
             None => self.layout(node_type).map_err(|e| match e {
                 ErrorKind::UnknownNodeType { node_type, .. } => {
                     // Name the node: its index is the next integer after the layout.
@@ -369,6 +378,10 @@ impl Reader<'_> {
                 Count::Variable => self.many(f.kind, tail, at)?,
             });
         }
+        at.field = "its user fields";
+        for _ in 0..self.user_fields {
+            self.int(at)?;
+        }
         Ok(Node {
             node_type,
             index,
@@ -383,6 +396,8 @@ pub fn read(stream: &Stream) -> Result<Nodes, ErrorKind> {
     let mut r = Reader {
         cur: stream.cursor(),
         layouts: HashMap::new(),
+        form: Form::Base,
+        user_fields: 0,
     };
     let head = At {
         node_type: 0,
@@ -401,14 +416,15 @@ pub fn read(stream: &Stream) -> Result<Nodes, ErrorKind> {
     if !schema.starts_with("SCH_") {
         return Err(ErrorKind::NotTransmit(format!("schema key {schema:?}")));
     }
-    if schema.split('_').count() == 4 && !schema.ends_with("_13006") {
-        return Err(ErrorKind::NotTransmit(format!(
-            "schema {schema} embeds changes against a base other than 13006"
-        )));
+    r.form = Form::of(&schema)?;
+    if r.form == Form::Embedded {
+        // The highest node type the writer knows.
+        r.int(head)?;
     }
-    // Two integers follow the key (the highest node type and the user field size).
-    r.int(head)?;
-    r.int(head)?;
+    r.user_fields = r.count(At {
+        field: "the user field size",
+        ..head
+    })?;
     let mut by_index = HashMap::new();
     loop {
         let at = At {
@@ -435,6 +451,7 @@ pub fn read(stream: &Stream) -> Result<Nodes, ErrorKind> {
     Ok(Nodes {
         banner,
         schema,
+        user_fields: r.user_fields,
         by_index,
     })
 }
