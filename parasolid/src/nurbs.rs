@@ -32,6 +32,29 @@ pub fn expand_knots(knots: &[f64], mult: &[i64]) -> Option<Vec<f64>> {
     Some(out)
 }
 
+/// A periodic B-spline stored by one period — n vertices and n + 1 knots t₀ … tₙ (period
+/// T = tₙ − t₀) — as the equivalent open one: p knots before (t_{n−p} … t_{n−1}, less T) and p
+/// after (t₁ … t_p, plus T), for vertices extended by their first p ([`wrap_vertices`]).
+/// `None` unless the knots number n + 1 with n ≥ p.
+pub fn unwrap_periodic_knots(knots: &[f64], p: usize) -> Option<Vec<f64>> {
+    let n = knots.len().checked_sub(1)?;
+    if n < p || p == 0 {
+        return None;
+    }
+    let period = knots[n] - knots[0];
+    let mut out: Vec<f64> = knots[n - p..n].iter().map(|t| t - period).collect();
+    out.extend_from_slice(knots);
+    out.extend(knots[1..=p].iter().map(|t| t + period));
+    Some(out)
+}
+
+/// Vertices of `count` groups of `group` values each, extended by their first `p` groups.
+pub fn wrap_vertices(vertices: &[f64], group: usize, p: usize) -> Vec<f64> {
+    let mut out = vertices.to_vec();
+    out.extend_from_slice(&vertices[..(p * group).min(vertices.len())]);
+    out
+}
+
 impl Nurbs {
     /// Checks the sizes: n vertices, n + p + 1 non-decreasing knots.
     pub fn new(

@@ -6,7 +6,8 @@
 //! vertices) and a cam lobe (a B-surface periodic in u between two planes, bounded by periodic
 //! B-curves). Oracle: the cylinder's volume πr²h, the lobe's section area by the shoelace
 //! formula over its uniform cubic B-spline evaluated here in closed form; and every form of
-//! the file gives the same meshes to the bit.
+//! the file gives the same meshes to the bit, the lobe's periodic B-splines stored with their
+//! first vertices repeated or by one period (n vertices, n + 1 knots) alike.
 
 use contact_core::FacetingTolerance;
 use parasolid::{Body, ErrorKind, Part, body_mesh, tessellate};
@@ -33,6 +34,9 @@ use F::{C, I, R, V};
 struct Form {
     embedded: bool,
     user_fields: usize,
+    /// The lobe's periodic B-splines stored by one period (8 vertices, 9 knots) rather than
+    /// with their first three vertices repeated (11 vertices, 15 knots).
+    one_period: bool,
 }
 
 struct Writer {
@@ -306,17 +310,23 @@ fn lobe_polygon() -> Vec<[f64; 2]> {
         .collect()
 }
 
-/// Knots 0, 1, …, 14 as distinct values with multiplicity one; returns (mult, knots) nodes.
-fn knots(w: &mut Writer, mult: u32, set: u32, n: usize) {
+/// Knots `first`, `first` + 1, … (`n` of them) with multiplicity one: the mult and knot nodes.
+fn knots(w: &mut Writer, mult: u32, set: u32, first: usize, n: usize) {
     w.node(127, mult, vec![F::Ints(vec![1; n])]);
-    w.node(128, set, vec![F::Reals((0..n).map(|k| k as f64).collect())]);
+    w.node(
+        128,
+        set,
+        vec![F::Reals((first..first + n).map(|k| k as f64).collect())],
+    );
 }
 
-/// The lobe as a periodic cubic: the polygon with its first three vertices repeated.
-fn lobe(w: &mut Writer, s: &Solid) {
+/// The lobe as a periodic cubic: the polygon with its first three vertices repeated over
+/// knots 0 … 14, or stored by one period over knots 3 … 11.
+fn lobe(w: &mut Writer, s: &Solid, one_period: bool) {
     s.topology(w, LOBE_HEIGHT);
     let a = |k| s.at(k);
     let poly = lobe_polygon();
+    let (n, first, n_knots) = if one_period { (8, 3, 9) } else { (11, 0, 15) };
     // The side: B-surface 40, nurbs 80, vertices 81 (u major, v = 0 then H), knots 82–85.
     w.node(124, s.b + 40, geom(a(40), a(10), vec![I(a(80)), I(0)]));
     w.node(
@@ -327,11 +337,11 @@ fn lobe(w: &mut Writer, s: &Solid) {
             C('F'),
             I(3),
             I(1),
-            I(11),
+            I(n),
             I(2),
             I(1),
             I(1),
-            I(15),
+            I(n_knots),
             I(2),
             C('F'),
             C('T'),
@@ -346,12 +356,12 @@ fn lobe(w: &mut Writer, s: &Solid) {
         ],
     );
     let mut vertices = Vec::new();
-    for k in 0..11 {
+    for k in 0..n as usize {
         let [x, y] = poly[k % 8];
         vertices.extend([x, y, 0.0, x, y, LOBE_HEIGHT]);
     }
     w.node(45, s.b + 81, vec![F::Reals(vertices)]);
-    knots(w, s.b + 82, s.b + 83, 15);
+    knots(w, s.b + 82, s.b + 83, first, n_knots as usize);
     w.node(127, s.b + 84, vec![F::Ints(vec![2, 2])]);
     w.node(128, s.b + 85, vec![F::Reals(vec![0.0, 1.0])]);
     // The rings: B-curves 50, 51 with nurbs 86, 87 and vertices 88, 89, sharing knots 82, 83.
@@ -366,9 +376,9 @@ fn lobe(w: &mut Writer, s: &Solid) {
             s.b + 86 + k,
             vec![
                 I(3),
-                I(11),
+                I(n),
                 I(3),
-                I(15),
+                I(n_knots),
                 I(1),
                 C('T'),
                 C('T'),
@@ -379,7 +389,7 @@ fn lobe(w: &mut Writer, s: &Solid) {
                 I(a(83)),
             ],
         );
-        let v = (0..11).flat_map(|i| {
+        let v = (0..n as usize).flat_map(|i| {
             let [x, y] = poly[i % 8];
             [x, y, z]
         });
@@ -407,6 +417,7 @@ fn stream(form: Form) -> Writer {
             b: 101,
             next_body: 0,
         },
+        form.one_period,
     );
     w
 }
@@ -472,6 +483,7 @@ fn a_base_schema_file_reads_and_its_solids_close_on_their_volumes() {
     let bytes = file(Form {
         embedded: false,
         user_fields: 0,
+        one_period: false,
     });
     let exact = [
         std::f64::consts::PI * RADIUS * RADIUS * HEIGHT,
@@ -494,24 +506,34 @@ fn a_base_schema_file_reads_and_its_solids_close_on_their_volumes() {
 }
 
 #[test]
-fn embedded_and_user_field_forms_give_the_same_meshes() {
+fn embedded_user_field_and_one_period_forms_give_the_same_meshes() {
     let reference = meshes(
         &file(Form {
             embedded: false,
             user_fields: 0,
+            one_period: false,
         }),
         300.0028,
     );
-    for (embedded, user_fields) in [(true, 0), (false, 2), (true, 1)] {
+    for (embedded, user_fields, one_period) in [
+        (true, 0, false),
+        (false, 2, false),
+        (true, 1, false),
+        (false, 0, true),
+    ] {
         let other = meshes(
             &file(Form {
                 embedded,
                 user_fields,
+                one_period,
             }),
             300.0028,
         );
         for (a, b) in reference.iter().zip(&other) {
-            assert_eq!(a.0, b.0, "embedded {embedded}, user fields {user_fields}");
+            assert_eq!(
+                a.0, b.0,
+                "embedded {embedded}, user fields {user_fields}, one period {one_period}"
+            );
         }
     }
 }
@@ -521,6 +543,7 @@ fn other_schemas_are_refused_by_their_key() {
     let form = Form {
         embedded: false,
         user_fields: 0,
+        one_period: false,
     };
     let edited = |from: &str, to: &str| {
         let mut w = stream(form);

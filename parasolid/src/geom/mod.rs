@@ -13,7 +13,7 @@
 //! | spun (profile C about axis a through b) | C's parameter | angle about a |
 
 use crate::error::{Error, ErrorKind};
-use crate::nurbs::{Nurbs, NurbsSurface, expand_knots};
+use crate::nurbs::{Nurbs, NurbsSurface, expand_knots, unwrap_periodic_knots, wrap_vertices};
 use crate::part::Part;
 use crate::schema::types as ty;
 use crate::stream::Node;
@@ -222,6 +222,11 @@ pub fn curve_at(
     ))
 }
 
+/// Whether logical field `name` is in the node's layout and true.
+fn flag(node: &Node, name: &str) -> bool {
+    matches!(node.get(name), Some(crate::stream::Value::Char(b'T')))
+}
+
 fn nurbs_curve(part: &Part, node: &Node) -> Result<Nurbs, Error> {
     let nc = part.follow(node, "nurbs", &[ty::NURBS_CURVE])?;
     let degree = part.int(nc, "degree")?;
@@ -239,14 +244,22 @@ fn nurbs_curve(part: &Part, node: &Node) -> Result<Nurbs, Error> {
             format!("degree {degree}, vertex dimension {dim}"),
         ));
     }
-    Nurbs::new(
-        degree as usize,
-        knots,
-        part.reals(verts, "vertices")?.to_vec(),
-        dim as usize,
-        rational,
-    )
-    .ok_or_else(|| bad(part, nc, "vertex and knot counts do not fit the degree"))
+    let mut vertices = part.reals(verts, "vertices")?.to_vec();
+    let mut knots = knots;
+    let (p, stride) = (degree as usize, dim as usize);
+    if flag(nc, "periodic") && knots.len() * stride == vertices.len() + stride {
+        // Stored by one period: n vertices, n + 1 knots.
+        knots = unwrap_periodic_knots(&knots, p).ok_or_else(|| {
+            bad(
+                part,
+                nc,
+                "a periodic B-curve with fewer vertices than its degree",
+            )
+        })?;
+        vertices = wrap_vertices(&vertices, stride, p);
+    }
+    Nurbs::new(p, knots, vertices, stride, rational)
+        .ok_or_else(|| bad(part, nc, "vertex and knot counts do not fit the degree"))
 }
 
 fn nurbs_surface(part: &Part, node: &Node) -> Result<NurbsSurface, Error> {
@@ -261,10 +274,29 @@ fn nurbs_surface(part: &Part, node: &Node) -> Result<NurbsSurface, Error> {
         expand_knots(part.reals(knots, "knots")?, part.ints(mult, "mult")?)
             .ok_or_else(|| bad(part, ns, "knots and multiplicities do not match"))
     };
-    let u_knots = knots("u_knot_mult", "u_knots")?;
-    let v_knots = knots("v_knot_mult", "v_knots")?;
+    let mut u_knots = knots("u_knot_mult", "u_knots")?;
+    let mut v_knots = knots("v_knot_mult", "v_knots")?;
     let verts = part.follow(ns, "bspline_vertices", &[ty::BSPLINE_VERTICES])?;
-    let vertices = part.reals(verts, "vertices")?.to_vec();
+    let mut vertices = part.reals(verts, "vertices")?.to_vec();
+    let (mut nu, mut nv) = (nu, nv);
+    // A direction stored by one period (n vertices, n + 1 knots) is unwrapped.
+    let short = |n: i64, k: &[f64], p: i64| {
+        (3..=4).contains(&dim) && (1..=15).contains(&p) && k.len() as i64 == n + 1 && n >= p
+    };
+    if flag(ns, "u_periodic") && short(nu, &u_knots, pu) {
+        u_knots = unwrap_periodic_knots(&u_knots, pu as usize).unwrap_or_default();
+        vertices = wrap_vertices(&vertices, (nv * dim).max(0) as usize, pu as usize);
+        nu += pu;
+    }
+    if flag(ns, "v_periodic") && short(nv, &v_knots, pv) {
+        v_knots = unwrap_periodic_knots(&v_knots, pv as usize).unwrap_or_default();
+        let row = (nv * dim).max(0) as usize;
+        vertices = vertices
+            .chunks(row.max(1))
+            .flat_map(|r| wrap_vertices(r, dim as usize, pv as usize))
+            .collect();
+        nv += pv;
+    }
     let ok = (1..=15).contains(&pu)
         && (1..=15).contains(&pv)
         && (3..=4).contains(&dim)
