@@ -479,6 +479,13 @@ impl ForceElement for ContactForce {
     fn bounds(&self) -> Option<[Bounds; 2]> {
         self.bounds
     }
+
+    fn velocity_scale(&self) -> Option<f64> {
+        match &self.params.friction {
+            FrictionModel::On(c) | FrictionModel::DynamicsOnly(c) => Some(c.stiction_velocity()),
+            FrictionModel::Off | FrictionModel::User(_) => None,
+        }
+    }
 }
 
 /// A [`ContactForce`] shared between the system (which evaluates it) and the driver (which
@@ -514,6 +521,10 @@ impl ForceElement for SharedContact {
 
     fn partials_are_exact(&self) -> bool {
         self.0.partials_are_exact()
+    }
+
+    fn velocity_scale(&self) -> Option<f64> {
+        self.0.velocity_scale()
     }
 
     fn bounds(&self) -> Option<[Bounds; 2]> {

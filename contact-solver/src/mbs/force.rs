@@ -120,6 +120,13 @@ pub trait ForceElement: Send + Sync {
         None
     }
 
+    /// The smallest relative speed over which the element's loads change character (a
+    /// CONTACT's STICTION_TRANSITION_VELOCITY), if it has one: [`difference_partials`] keeps
+    /// its velocity steps well inside it. `None` (the default) for an element without one.
+    fn velocity_scale(&self) -> Option<f64> {
+        None
+    }
+
     /// Analytic partial derivatives of the loads in the layout of the module docs
     /// (`6·parts` rows, `12·parts` columns), or `None` to let the system difference the
     /// element ([`difference_partials`]).
@@ -245,12 +252,28 @@ pub fn point_pair_partials(
     }
 }
 
+/// A velocity column's difference step for a variable of size `scale`: `√ε·scale`, capped at a
+/// thousandth of the element's own scale `fine` if it has one, and never below `64·ε·scale`.
+fn velocity_step(scale: f64, fine: Option<f64>) -> f64 {
+    let h = f64::EPSILON.sqrt() * scale;
+    match fine {
+        Some(fine) if fine.is_finite() && fine > 0.0 => {
+            h.min(1e-3 * fine).max(64.0 * f64::EPSILON * scale)
+        }
+        _ => h,
+    }
+}
+
 /// Forward-difference partials of one element in the layout of the module docs, perturbing
 /// only the parts it acts on: `12` evaluations per moving part.
 ///
 /// Steps: `√ε·max(|r|, L)` for positions, `√ε` rad for rotations, `√ε·max(|u|, L)` for velocities
 /// (L per unit time) and `√ε·max(|ω|, 1)` for angular velocities, with `L` the model's length
-/// scale. Columns of ground parts are zero.
+/// scale. For an element with a [`ForceElement::velocity_scale`] `vs`, the velocity steps are
+/// at most `vs/1000` (and the angular ones `vs/(1000·L)`, the slip they make at a lever arm
+/// `L`), so that a difference across a friction law's stiction band is not taken for its slope,
+/// but not below `64·ε·max(|u|, L)` (`64·ε·max(|ω|, 1)`), where round-off would rule.
+/// Columns of ground parts are zero.
 pub fn difference_partials(
     element: &dyn ForceElement,
     t: f64,
@@ -288,12 +311,15 @@ pub fn difference_partials(
                     h
                 }
                 2 => {
-                    let h = root_eps * original.velocity_w.norm().max(length_scale);
+                    let scale = original.velocity_w.norm().max(length_scale);
+                    let h = velocity_step(scale, element.velocity_scale());
                     state.velocity_w[axis] += h;
                     h
                 }
                 _ => {
-                    let h = root_eps * original.angular_velocity_w.norm().max(1.0);
+                    let scale = original.angular_velocity_w.norm().max(1.0);
+                    let slip = element.velocity_scale().map(|vs| vs / length_scale);
+                    let h = velocity_step(scale, slip);
                     state.angular_velocity_w[axis] += h;
                     h
                 }
