@@ -1,14 +1,18 @@
 //! Mesh files as geometry: STL and OBJ files read as they are, Parasolid bodies read from
 //! their transmit file and tessellated at their faceting tolerance.
 //!
+//! For the exact engine, a body that is exactly one of its primitives (a sphere, ring torus,
+//! cylinder, frustum or box: [`parasolid::primitive::recognise`]) is that primitive
+//! ([`exact_instance`]).
+//!
 //! A transmit file holds every body of a model, and several GRAPHICS (and `check` before
 //! `run`) name bodies of the same file: each file is read once per process and each body
 //! tessellated once per tolerance, both kept for the process's life.
 
 use crate::model::{MeshFile, ParasolidBody};
-use contact_core::geometry::TriangleMesh;
-use contact_core::{FacetingTolerance, Geometry};
-use parasolid::{Body, Part, body_mesh};
+use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Torus, TriangleMesh};
+use contact_core::{FacetingTolerance, Geometry, GeometryInstance};
+use parasolid::{Body, Part, Shape, body_mesh};
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -87,4 +91,51 @@ pub fn mesh_geometry(
         Some(body) => Ok(Geometry::Mesh(body_geometry(file, body, model_tolerance)?)),
         None => contact_core::mesh_file::read_mesh_geometry(&file.path).map_err(|e| e.to_string()),
     }
+}
+
+/// A recognised primitive in model length units (`s` per metre), or `None` when the geometry
+/// refuses its dimensions (out of range or of aspect ratio).
+fn primitive_geometry(shape: Shape, s: f64) -> Option<Geometry> {
+    let g = match shape {
+        Shape::Sphere { radius } => {
+            Geometry::Ellipsoid(Ellipsoid::new(radius * s, radius * s, radius * s).ok()?)
+        }
+        Shape::Torus { major, minor } => Geometry::Torus(Torus::new(major * s, minor * s).ok()?),
+        Shape::Frustum {
+            bottom,
+            top,
+            length,
+        } if bottom == top => Geometry::Cylinder(Cylinder::new(bottom * s, length * s).ok()?),
+        Shape::Frustum {
+            bottom,
+            top,
+            length,
+        } => Geometry::Frustum(Frustum::new(bottom * s, top * s, length * s).ok()?),
+        Shape::Box { half } => {
+            Geometry::Cuboid(Cuboid::centered(half[0] * s, half[1] * s, half[2] * s).ok()?)
+        }
+    };
+    Some(g)
+}
+
+/// The Parasolid body `file` names as the exact engine's primitive, placed on its part: the
+/// primitive in model length units at the GRAPHICS frame (RM marker) composed with the
+/// primitive's frame in the body. `None` for STL and OBJ files, for a body that is not exactly
+/// a primitive, and for a file or body that cannot be read (the mesh path reports why).
+pub fn exact_instance(file: &MeshFile) -> Option<GeometryInstance> {
+    let body = file.parasolid.as_ref()?;
+    let part = read_part(&file.path).ok()?;
+    let index = part
+        .find_body_on_part(body.part, body.part_name.as_deref(), &body.element)
+        .ok()?;
+    let primitive = parasolid::primitive::recognise(&Body::read(&part, index).ok()?)?;
+    let s = body.units_per_metre;
+    let geometry = primitive_geometry(primitive.shape, s)?;
+    let mut frame = primitive.frame;
+    frame.translation.vector *= s;
+    let mut instance = GeometryInstance::new(geometry)
+        .at(file.pose_part_geometry * frame)
+        .labeled(file.label.clone());
+    instance.flip_normal = file.flip_normal;
+    Some(instance)
 }

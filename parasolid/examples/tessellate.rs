@@ -1,5 +1,6 @@
 //! Reads a Parasolid text transmit file and tessellates every body at a faceting tolerance,
-//! reporting each body that does not close by name, the triangle count and the time taken.
+//! reporting each body that does not close by name, each that is exactly one of the exact
+//! engine's primitives, the triangle count and the time taken.
 //!
 //! `cargo run --release -p parasolid --example tessellate -- FILE.x_t [FT]` (FT defaults to
 //! Adams' 300.0028).
@@ -53,7 +54,11 @@ fn main() -> std::process::ExitCode {
             n.part.as_deref().unwrap_or("?"),
             n.element.as_deref().unwrap_or("?")
         );
-        match Body::read(&part, n.index).and_then(|b| body_mesh(&part, &b, ft, &name)) {
+        let body = Body::read(&part, n.index);
+        if let Some(p) = body.as_ref().ok().and_then(parasolid::primitive::recognise) {
+            println!("  {name}: exactly a primitive, {:?}", p.shape);
+        }
+        match body.and_then(|b| body_mesh(&part, &b, ft, &name)) {
             Ok(m) => {
                 triangles += m.triangles().len();
                 slowest.push((

@@ -17,6 +17,7 @@ pub mod error;
 pub mod geom;
 pub mod nurbs;
 pub mod part;
+pub mod primitive;
 pub mod schema;
 pub mod stream;
 pub mod text;
@@ -24,6 +25,7 @@ pub mod text;
 pub use brep::Body;
 pub use error::{Error, ErrorKind, NodeRef};
 pub use part::{BodyName, Part};
+pub use primitive::{Primitive, Shape};
 pub mod tess;
 
 pub use tess::{Mesh, body_mesh, tessellate};

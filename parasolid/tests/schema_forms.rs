@@ -25,6 +25,10 @@ enum F {
     Reals(Vec<f64>),
     /// A variable tail of integers.
     Ints(Vec<i64>),
+    /// A variable tail of characters.
+    Text(String),
+    /// A fixed array of characters (logicals).
+    Chars(&'static str),
 }
 
 use F::{C, I, R, V};
@@ -74,6 +78,7 @@ impl Writer {
         match fields.last() {
             Some(F::Reals(v)) => t.push_str(&format!("{} ", v.len())),
             Some(F::Ints(v)) => t.push_str(&format!("{} ", v.len())),
+            Some(F::Text(v)) => t.push_str(&format!("{} ", v.len())),
             _ => {}
         }
         t.push_str(&format!("{index} "));
@@ -86,6 +91,8 @@ impl Writer {
                 F::Unset => t.push('?'),
                 F::Reals(v) => v.iter().for_each(|x| t.push_str(&format!("{x:?} "))),
                 F::Ints(v) => v.iter().for_each(|x| t.push_str(&format!("{x} "))),
+                F::Text(v) => t.push_str(&v),
+                F::Chars(v) => t.push_str(v),
             }
         }
         for k in 0..self.form.user_fields {
@@ -130,6 +137,8 @@ const X: [f64; 3] = [1.0, 0.0, 0.0];
 struct Solid {
     b: u32,
     next_body: u32,
+    /// Its AdamsObjectName.
+    element: &'static str,
 }
 
 impl Solid {
@@ -149,7 +158,7 @@ impl Solid {
             body,
             vec![
                 I(a(60)),
-                I(0),
+                I(a(95)),
                 I(0),
                 I(0),
                 I(0),
@@ -274,6 +283,27 @@ impl Solid {
             );
             w.node(50, body + k, f);
         }
+        // Its name as Adams writes it: attribute AdamsObjectName = `element`.
+        w.node(
+            81,
+            body + 95,
+            vec![
+                I(a(95)),
+                I(a(96)),
+                I(b0),
+                I(0),
+                I(0),
+                I(0),
+                I(0),
+                F::Ints(vec![a(98)]),
+            ],
+        );
+        let mut def = vec![I(0), I(a(97)), I(8001)];
+        def.extend((0..8).map(|_| I(0)));
+        def.extend([I(0), F::Chars("FFFFTFTFFFFFFF"), F::Ints(vec![3])]);
+        w.node(80, body + 96, def);
+        w.node(79, body + 97, vec![F::Text("AdamsObjectName".into())]);
+        w.node(84, body + 98, vec![F::Text(self.element.into())]);
     }
 }
 
@@ -409,6 +439,7 @@ fn stream(form: Form) -> Writer {
         &Solid {
             b: 1,
             next_body: 101,
+            element: "PIN",
         },
     );
     lobe(
@@ -416,6 +447,7 @@ fn stream(form: Form) -> Writer {
         &Solid {
             b: 101,
             next_body: 0,
+            element: "LOBE",
         },
         form.one_period,
     );
@@ -569,4 +601,64 @@ fn other_schemas_are_refused_by_their_key() {
     // A user field size that is not the one written misaligns the stream: an error, no panic.
     let bad = edited("_130060 12 1 ", "_130061 12 1 ");
     assert!(Part::from_bytes(Path::new("u.x_t"), &bad).is_err());
+}
+
+#[test]
+fn the_written_cylinder_is_recognised_as_one_and_the_lobe_is_not() {
+    let bytes = file(Form {
+        embedded: false,
+        user_fields: 0,
+        one_period: false,
+    });
+    let part = Part::from_bytes(Path::new("cam.x_t"), &bytes).unwrap();
+    let shapes: Vec<_> = part
+        .body_names()
+        .unwrap()
+        .iter()
+        .map(|n| {
+            parasolid::primitive::recognise(&Body::read(&part, n.index).unwrap()).map(|p| p.shape)
+        })
+        .collect();
+    assert_eq!(
+        shapes,
+        [
+            Some(parasolid::Shape::Frustum {
+                bottom: RADIUS,
+                top: RADIUS,
+                length: HEIGHT
+            }),
+            None
+        ]
+    );
+}
+
+/// The fixture `tests/data/parasolid/cam_and_pin.x_t` (read by the run tests of the workspace)
+/// is this file's base-schema form; `CONTACT_WRITE_FIXTURES=1` rewrites it.
+#[test]
+fn the_fixture_is_the_base_schema_form_of_this_file() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/parasolid/cam_and_pin.x_t");
+    let bytes = file(Form {
+        embedded: false,
+        user_fields: 0,
+        one_period: false,
+    });
+    if std::env::var_os("CONTACT_WRITE_FIXTURES").is_some() {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(&path, &bytes).unwrap();
+    }
+    let fixture = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(
+        fixture == bytes,
+        "{} is not this file's output",
+        path.display()
+    );
+    let part = Part::from_bytes(&path, &fixture).unwrap();
+    let names: Vec<_> = part
+        .body_names()
+        .unwrap()
+        .into_iter()
+        .map(|n| n.element.unwrap())
+        .collect();
+    assert_eq!(names, ["PIN", "LOBE"]);
 }

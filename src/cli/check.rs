@@ -4,6 +4,7 @@
 
 use crate::dataset::{self, Diagnostic, Severity};
 use crate::model::{ContactGeometry, Model};
+use contact_adams::parasolid_bodies::exact_instance;
 use contact_core::geometry::TriangleMesh;
 use contact_core::{Geometry, GeometryEngine, GeometryInstance, GeometryLibrary, Point3};
 use std::collections::BTreeMap;
@@ -49,21 +50,31 @@ fn mesh_kind_probe() -> Option<Geometry> {
         .map(|m| Geometry::Mesh(Arc::new(m)))
 }
 
-fn instances(list: &[(u32, ContactGeometry)], probe: &Option<Geometry>) -> Vec<GeometryInstance> {
+/// The instances of a CONTACT's side; a mesh file is the probe, or for the exact engine
+/// (`exact`) a Parasolid body that is exactly one of its primitives is that primitive.
+fn instances(
+    list: &[(u32, ContactGeometry)],
+    probe: &Option<Geometry>,
+    exact: bool,
+) -> Vec<GeometryInstance> {
     list.iter()
         .filter_map(|(_, g)| match g {
             ContactGeometry::Geometry(gi) => Some(gi.clone()),
-            ContactGeometry::MeshFile(f) => probe.clone().map(|m| {
-                GeometryInstance::new(m)
-                    .at(f.pose_part_geometry)
-                    .labeled(f.label.clone())
-            }),
+            ContactGeometry::MeshFile(f) => {
+                exact.then(|| exact_instance(f)).flatten().or_else(|| {
+                    probe.clone().map(|m| {
+                        GeometryInstance::new(m)
+                            .at(f.pose_part_geometry)
+                            .labeled(f.label.clone())
+                    })
+                })
+            }
         })
         .collect()
 }
 
-/// A CONTACT's Parasolid bodies, each an error for the exact engine: a body is tessellated,
-/// so the faceted engine is the one that answers it.
+/// A CONTACT's Parasolid bodies, each an error for the exact engine unless it is exactly one of
+/// its primitives: a body is tessellated, so the faceted engine is the one that answers it.
 fn parasolid_on_exact(c: &crate::model::ContactElement) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     for (_, g) in c.i_geometries.iter().chain(&c.j_geometries) {
@@ -71,6 +82,9 @@ fn parasolid_on_exact(c: &crate::model::ContactElement) -> Vec<Diagnostic> {
             continue;
         };
         let Some(b) = &f.parasolid else { continue };
+        if exact_instance(f).is_some() {
+            continue;
+        }
         let file = f.path.file_name().map_or_else(
             || f.path.display().to_string(),
             |n| n.to_string_lossy().into_owned(),
@@ -97,8 +111,9 @@ pub fn check_contacts(model: &Model, engine: &dyn GeometryEngine) -> Vec<Diagnos
         } else {
             Vec::new()
         };
-        let i = instances(&c.i_geometries, &probe);
-        let j = instances(&c.j_geometries, &probe);
+        let exact = engine.name() == "exact";
+        let i = instances(&c.i_geometries, &probe, exact);
+        let j = instances(&c.j_geometries, &probe, exact);
         if !refused.is_empty() {
             out.extend(refused);
         } else if let Err(e) = contact_core::check_lists(engine, &i, &j).and_then(|()| {

@@ -237,7 +237,7 @@ impl Lowering<'_> {
         inactive: &Inactive,
     ) -> Result<LoweredModel, LowerError> {
         let started = Instant::now();
-        let read = |f: &MeshFile| read_mesh(f, self.tolerance);
+        let read = |f: &MeshFile| read_mesh(f, self.tolerance, self.engine);
         let mut lowered = if inactive.is_empty() {
             lower(self.model, self.engine, analysis, &read)?
         } else {
@@ -257,7 +257,7 @@ impl Lowering<'_> {
         t: f64,
         inactive: &Inactive,
     ) -> Result<usize, DegreesOfFreedomError> {
-        let read = |f: &MeshFile| read_mesh(f, self.tolerance);
+        let read = |f: &MeshFile| read_mesh(f, self.tolerance, self.engine);
         let model = inactive.apply(self.model);
         let lowered = lower(&model, self.engine, Analysis::Quasistatic, &read).map_err(Box::new)?;
         Ok(initial_degrees_of_freedom(&lowered.system, t)?)
@@ -314,7 +314,7 @@ fn request_output(
 /// it), assembled at `t`. A model that does not lower gives nothing here: `contact run`
 /// reports why.
 pub fn check_constraints(model: &Model, engine: &dyn GeometryEngine, t: f64) -> Vec<Diagnostic> {
-    let read = |f: &MeshFile| read_mesh(f, FacetingTolerance::DEFAULT);
+    let read = |f: &MeshFile| read_mesh(f, FacetingTolerance::DEFAULT, engine);
     match lower(model, engine, Analysis::Dynamics, &read) {
         Ok(lowered) => redundancy_diagnostics(model, &lowered.system, t),
         Err(_) => Vec::new(),
@@ -322,8 +322,18 @@ pub fn check_constraints(model: &Model, engine: &dyn GeometryEngine, t: f64) -> 
 }
 
 /// A mesh file (STL, OBJ, a Parasolid body tessellated at the model-wide `tolerance` unless
-/// its GRAPHICS gives one) as a geometry on its part.
-fn read_mesh(file: &MeshFile, tolerance: FacetingTolerance) -> Result<GeometryInstance, String> {
+/// its GRAPHICS gives one) as a geometry on its part; for the exact engine, a Parasolid body
+/// that is exactly one of its primitives is that primitive.
+fn read_mesh(
+    file: &MeshFile,
+    tolerance: FacetingTolerance,
+    engine: &dyn GeometryEngine,
+) -> Result<GeometryInstance, String> {
+    if engine.name() == "exact" {
+        if let Some(instance) = crate::parasolid_bodies::exact_instance(file) {
+            return Ok(instance);
+        }
+    }
     let geometry = crate::parasolid_bodies::mesh_geometry(file, tolerance)?;
     let mut instance = GeometryInstance::new(geometry)
         .at(file.pose_part_geometry)
