@@ -71,7 +71,10 @@ impl Nurbs {
         if n <= degree || knots.len() != n + degree + 1 {
             return None;
         }
-        if knots.windows(2).any(|w| w[1] < w[0]) || knots.iter().any(|k| !k.is_finite()) {
+        if knots.windows(2).any(|w| w[1] < w[0])
+            || knots.iter().any(|k| !k.is_finite())
+            || vertices.iter().any(|x| !x.is_finite())
+        {
             return None;
         }
         Some(Self {

@@ -128,3 +128,62 @@ fn damaged_bytes_never_panic() {
         }
     }
 }
+
+/// The small cam-and-pin file (planes, a cylinder, a periodic B-surface and B-curves, name
+/// attributes) with one of its numbers replaced by an extreme one, 3,000 times: every read and
+/// recognition, and the tessellation of every 60th, gives an answer or an error, never a panic
+/// (tests run with overflow checks; the tessellation of all 3,000 is a release-build minute,
+/// and gave no panic either).
+#[test]
+fn extreme_numbers_in_a_b_spline_file_never_panic() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests/data/parasolid/cam_and_pin.x_t");
+    let text = String::from_utf8(std::fs::read(&path).unwrap()).unwrap();
+    let start = text.find("**END_OF_HEADER").unwrap();
+    // Where each number of the stream starts.
+    let b = text.as_bytes();
+    let numbers: Vec<usize> = (start..text.len())
+        .filter(|&i| b[i].is_ascii_digit() && !b[i - 1].is_ascii_alphanumeric() && b[i - 1] != b'.')
+        .collect();
+    let extremes = [
+        "0",
+        "-1",
+        "1",
+        "2",
+        "15",
+        "16",
+        "9223372036854775807",
+        "-9223372036854775808",
+        "4294967295",
+        "67108864",
+        "1e308",
+        "-1e308",
+        "1e-308",
+        "?",
+    ];
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    for k in 0..3000 {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        let at = numbers[(seed as usize) % numbers.len()];
+        let end = at
+            + text[at..]
+                .find(|c: char| !(c.is_ascii_digit() || matches!(c, '.' | 'e' | '-')))
+                .unwrap_or(0);
+        let with = extremes[(seed >> 32) as usize % extremes.len()];
+        let bytes = format!("{}{with}{}", &text[..at], &text[end..]);
+        let Ok(p) = Part::from_bytes(name(), bytes.as_bytes()) else {
+            continue;
+        };
+        let _ = p.body_names();
+        for i in p.body_indices().unwrap_or_default() {
+            if let Ok(body) = Body::read(&p, i) {
+                let _ = parasolid::primitive::recognise(&body);
+                if k % 60 == 0 {
+                    let _ = body_mesh(&p, &body, FacetingTolerance::new(30.0).unwrap(), "x");
+                }
+            }
+        }
+    }
+}

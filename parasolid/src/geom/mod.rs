@@ -279,29 +279,44 @@ fn nurbs_surface(part: &Part, node: &Node) -> Result<NurbsSurface, Error> {
     let verts = part.follow(ns, "bspline_vertices", &[ty::BSPLINE_VERTICES])?;
     let mut vertices = part.reals(verts, "vertices")?.to_vec();
     let (mut nu, mut nv) = (nu, nv);
+    // Counts beyond the vertices stored, or degrees out of range, cannot fit (checked first,
+    // so that no product of them overflows).
+    let stored = vertices.len() as i64;
+    if !((1..=stored).contains(&nu)
+        && (1..=stored).contains(&nv)
+        && (3..=4).contains(&dim)
+        && (1..=15).contains(&pu)
+        && (1..=15).contains(&pv))
+    {
+        return Err(bad(
+            part,
+            ns,
+            "vertex and knot counts do not fit the degrees",
+        ));
+    }
     // A direction stored by one period (n vertices, n + 1 knots) is unwrapped.
-    let short = |n: i64, k: &[f64], p: i64| {
-        (3..=4).contains(&dim) && (1..=15).contains(&p) && k.len() as i64 == n + 1 && n >= p
-    };
+    let short = |n: i64, k: &[f64], p: i64| k.len() as i64 == n + 1 && n >= p;
     if flag(ns, "u_periodic") && short(nu, &u_knots, pu) {
         u_knots = unwrap_periodic_knots(&u_knots, pu as usize).unwrap_or_default();
-        vertices = wrap_vertices(&vertices, (nv * dim).max(0) as usize, pu as usize);
+        vertices = wrap_vertices(&vertices, (nv * dim) as usize, pu as usize);
         nu += pu;
     }
     if flag(ns, "v_periodic") && short(nv, &v_knots, pv) {
         v_knots = unwrap_periodic_knots(&v_knots, pv as usize).unwrap_or_default();
-        let row = (nv * dim).max(0) as usize;
+        let row = (nv * dim) as usize;
         vertices = vertices
-            .chunks(row.max(1))
+            .chunks(row)
             .flat_map(|r| wrap_vertices(r, dim as usize, pv as usize))
             .collect();
         nv += pv;
     }
-    let ok = (1..=15).contains(&pu)
-        && (1..=15).contains(&pv)
-        && (3..=4).contains(&dim)
-        && nu > pu
+    let monotone =
+        |k: &[f64]| k.iter().all(|t| t.is_finite()) && k.windows(2).all(|w| w[0] <= w[1]);
+    let ok = nu > pu
         && nv > pv
+        && monotone(&u_knots)
+        && monotone(&v_knots)
+        && vertices.iter().all(|x| x.is_finite())
         && u_knots.len() as i64 == nu + pu + 1
         && v_knots.len() as i64 == nv + pv + 1
         && vertices.len() as i64 == nu * nv * dim;
@@ -309,7 +324,7 @@ fn nurbs_surface(part: &Part, node: &Node) -> Result<NurbsSurface, Error> {
         return Err(bad(
             part,
             ns,
-            "vertex and knot counts do not fit the degrees",
+            "vertex and knot counts do not fit the degrees, knots decrease, or a value is unset",
         ));
     }
     Ok(NurbsSurface {

@@ -130,12 +130,12 @@ fn attempt(part: &Part, body: &Body, delta: f64, edge_delta: &[f64]) -> Result<M
     for (index, f) in body.faces.iter().enumerate() {
         let loops = face_loops(part, f, &edge_ids, &vertices).map_err(|e| (None, e))?;
         let first_local = vertices.len() as u32;
-        let ft = face::triangulate(&f.surface, &loops, delta, first_local).map_err(|what| {
+        let ft = face::triangulate(&f.surface, &loops, delta, first_local).map_err(|e| {
             (
-                Some(index),
+                e.refinable.then_some(index),
                 part.error(ErrorKind::Geometry {
                     node: f.node.clone(),
-                    what: format!("{} face: {what}", surface_kind(&f.surface)),
+                    what: format!("{} face: {}", surface_kind(&f.surface), e.what),
                 }),
             )
         })?;

@@ -125,9 +125,10 @@ pub fn triangulate(
     loops: &[Vec<LoopPoint>],
     delta: f64,
     first_local: u32,
-) -> Result<FaceTriangles, String> {
+) -> Result<FaceTriangles, FaceFailure> {
     let (pu, pv) = surface.periods();
     let rings: Vec<Ring> = loops.iter().map(|l| ring(surface, l, (pu, pv))).collect();
+    off_surface(surface, loops, &rings, delta)?;
     let winds_u = rings.iter().any(|r| r.wu != 0);
     let winds_v = rings.iter().any(|r| r.wv != 0);
     if winds_u && winds_v {
@@ -154,12 +155,68 @@ pub fn triangulate(
                 .ok_or("a loop winds round a direction that is not periodic")?;
             seam::cut_open(&mut ctx, &winding, holes, p)?
         }
-        n => return Err(format!("{n} loops wind round the face")),
+        n => return Err(format!("{n} loops wind round the face").into()),
     };
-    domain::triangles(&mut ctx, &polygons, delta).map(|triangles| FaceTriangles {
+    let triangles = domain::triangles(&mut ctx, &polygons, delta)?;
+    Ok(FaceTriangles {
         points: ctx.points,
         triangles,
     })
+}
+
+/// Loop points farther than this many chord deviations from the face's surface mean that the
+/// face's edges do not lie on it (valid edges lie within their tolerance, far below the chord
+/// deviation at any usable faceting tolerance).
+pub const OFF_SURFACE: f64 = 10.0;
+
+/// An error, not to be mended by refining the edges, when a loop point lies farther than
+/// [`OFF_SURFACE`] chord deviations from the surface at the parameters found for it.
+fn off_surface(
+    surface: &Surface,
+    loops: &[Vec<LoopPoint>],
+    rings: &[Ring],
+    delta: f64,
+) -> Result<(), FaceFailure> {
+    let worst = loops
+        .iter()
+        .zip(rings)
+        .flat_map(|(l, r)| l.iter().zip(&r.points))
+        .map(|(lp, q)| (surface.eval(q.uv.x, q.uv.y) - lp.p).norm())
+        .fold(0.0, f64::max);
+    if worst > OFF_SURFACE * delta || worst.is_nan() {
+        return Err(FaceFailure {
+            what: format!(
+                "an edge point lies {worst:e} from the face's surface, more than {OFF_SURFACE} chord deviations ({delta:e}): its edges do not lie on it"
+            ),
+            refinable: false,
+        });
+    }
+    Ok(())
+}
+
+/// Why a face was not triangulated, and whether sampling its edges finer may mend it (loops
+/// that come near each other) or not (edges off the surface).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceFailure {
+    /// What went wrong.
+    pub what: String,
+    /// Whether finer edges may mend it.
+    pub refinable: bool,
+}
+
+impl From<String> for FaceFailure {
+    fn from(what: String) -> Self {
+        Self {
+            what,
+            refinable: true,
+        }
+    }
+}
+
+impl From<&str> for FaceFailure {
+    fn from(what: &str) -> Self {
+        what.to_string().into()
+    }
 }
 
 /// A loop's parameters, each point's found near the one before it (the first's without a
