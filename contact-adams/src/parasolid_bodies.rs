@@ -6,13 +6,14 @@
 //! ([`exact_instance`]).
 //!
 //! A transmit file holds every body of a model, and several GRAPHICS (and `check` before
-//! `run`) name bodies of the same file: each file is read once per process and each body
-//! tessellated once per tolerance, both kept for the process's life.
+//! `run`) name bodies of the same file: each file is read once per process, each body
+//! tessellated once per tolerance and recognised as a primitive or not once, all kept for the
+//! process's life.
 
 use crate::model::{MeshFile, ParasolidBody};
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Torus, TriangleMesh};
 use contact_core::{FacetingTolerance, Geometry, GeometryInstance};
-use parasolid::{Body, Part, Shape, body_mesh};
+use parasolid::{Body, Part, Primitive, Shape, body_mesh};
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -20,6 +21,8 @@ use std::sync::{Arc, Mutex, OnceLock};
 type PartCache = Mutex<HashMap<PathBuf, Arc<Part>>>;
 type MeshKey = (PathBuf, u32, String, u64, u64);
 type MeshCache = Mutex<HashMap<MeshKey, Arc<TriangleMesh>>>;
+type BodyKey = (PathBuf, u32, String);
+type PrimitiveCache = Mutex<HashMap<BodyKey, Option<Primitive>>>;
 
 fn parts() -> &'static PartCache {
     static CACHE: OnceLock<PartCache> = OnceLock::new();
@@ -28,6 +31,11 @@ fn parts() -> &'static PartCache {
 
 fn meshes() -> &'static MeshCache {
     static CACHE: OnceLock<MeshCache> = OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
+fn primitives() -> &'static PrimitiveCache {
+    static CACHE: OnceLock<PrimitiveCache> = OnceLock::new();
     CACHE.get_or_init(Default::default)
 }
 
@@ -124,11 +132,7 @@ fn primitive_geometry(shape: Shape, s: f64) -> Option<Geometry> {
 /// a primitive, and for a file or body that cannot be read (the mesh path reports why).
 pub fn exact_instance(file: &MeshFile) -> Option<GeometryInstance> {
     let body = file.parasolid.as_ref()?;
-    let part = read_part(&file.path).ok()?;
-    let index = part
-        .find_body_on_part(body.part, body.part_name.as_deref(), &body.element)
-        .ok()?;
-    let primitive = parasolid::primitive::recognise(&Body::read(&part, index).ok()?)?;
+    let primitive = body_primitive(file, body)?;
     let s = body.units_per_metre;
     let geometry = primitive_geometry(primitive.shape, s)?;
     let mut frame = primitive.frame;
@@ -138,4 +142,29 @@ pub fn exact_instance(file: &MeshFile) -> Option<GeometryInstance> {
         .labeled(file.label.clone());
     instance.flip_normal = file.flip_normal;
     Some(instance)
+}
+
+/// The primitive the body is exactly, if any, recognised once per process (`None` also for a
+/// file or body that cannot be read).
+fn body_primitive(file: &MeshFile, body: &ParasolidBody) -> Option<Primitive> {
+    let key = (
+        file.path.clone(),
+        body.part,
+        body.element.to_ascii_uppercase(),
+    );
+    if let Some(p) = primitives().lock().ok().and_then(|c| c.get(&key).copied()) {
+        return p;
+    }
+    let recognised = || {
+        let part = read_part(&file.path).ok()?;
+        let index = part
+            .find_body_on_part(body.part, body.part_name.as_deref(), &body.element)
+            .ok()?;
+        parasolid::primitive::recognise(&Body::read(&part, index).ok()?)
+    };
+    let primitive = recognised();
+    if let Ok(mut c) = primitives().lock() {
+        c.insert(key, primitive);
+    }
+    primitive
 }
