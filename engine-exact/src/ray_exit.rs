@@ -161,6 +161,69 @@ fn frustum_like_exit(r0: f64, r1: f64, length: f64, o: &Vector3, d: &Vector3) ->
     Some(caps.min(side))
 }
 
+/// The interval `(s₀, s₁)` of the line `o + s d` inside a frustum (a cylinder when
+/// `r0 = r1`) on the `z` axis, bottom radius `r0` at `z = 0`, top `r1` at `length`; `None`
+/// when the line misses it or only touches it. The solid is convex, so the line meets it in
+/// one interval: the slab `0 ≤ z ≤ length` cut by the side's quadratic
+/// `x² + y² − r(z)² ≤ 0` (the cone's other nappe lies beyond the apex, outside the slab).
+pub(crate) fn frustum_line_interval(
+    r0: f64,
+    r1: f64,
+    length: f64,
+    o: &Vector3,
+    d: &Vector3,
+) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = if d.z != 0.0 {
+        let (a, b) = (-o.z / d.z, (length - o.z) / d.z);
+        (a.min(b), a.max(b))
+    } else if (0.0..=length).contains(&o.z) {
+        (f64::NEG_INFINITY, f64::INFINITY)
+    } else {
+        return None;
+    };
+    let slope = (r1 - r0) / length;
+    let r_o = r0 + slope * o.z;
+    let a = d.x * d.x + d.y * d.y - slope * slope * d.z * d.z;
+    let b = 2.0 * (o.x * d.x + o.y * d.y - slope * d.z * r_o);
+    let c = o.x * o.x + o.y * o.y - r_o * r_o;
+    let radius_along = |s: f64| r0 + slope * (o.z + s * d.z);
+    let disc = b * b - 4.0 * a * c;
+    if a == 0.0 {
+        // Linear: b s + c ≤ 0.
+        if b > 0.0 {
+            hi = hi.min(-c / b);
+        } else if b < 0.0 {
+            lo = lo.max(-c / b);
+        } else if c > 0.0 {
+            return None;
+        }
+    } else if disc < 0.0 || disc.is_nan() {
+        if a > 0.0 {
+            return None;
+        }
+    } else {
+        let q = -0.5 * (b + b.signum() * disc.sqrt());
+        let (s1, s2) = if q == 0.0 {
+            (0.0, 0.0)
+        } else {
+            let (x, y) = (q / a, c / q);
+            (x.min(y), x.max(y))
+        };
+        if a > 0.0 {
+            (lo, hi) = (lo.max(s1), hi.min(s2));
+        } else {
+            // Outside (s1, s2): the part on the slab's side of the nappe with r(z) ≥ 0.
+            let below = (lo, hi.min(s1));
+            let above = (lo.max(s2), hi);
+            let good = |(x, y): (f64, f64)| {
+                y > x && radius_along(if x.is_finite() { 0.5 * (x + y) } else { y }) >= 0.0
+            };
+            (lo, hi) = if good(below) { below } else { above };
+        }
+    }
+    (hi > lo).then_some((lo, hi))
+}
+
 /// The smallest `t > 0` where `a t² + b t + c` (≤ 0 at 0) rises through 0, or ∞.
 fn leaving_root(a: f64, b: f64, c: f64) -> f64 {
     if a == 0.0 {

@@ -102,9 +102,18 @@ impl Pair<'_> {
     }
 
     /// An ellipsoid against the convex solid `b` (box, cylinder, frustum, torus): a sphere
-    /// in closed form on one face (only `a` may be flipped), else the general slicing.
+    /// in closed form on one face (only `a` may be flipped), else the general slicing; in a
+    /// cylinder- or frustum-shaped cavity (`b` flipped), the slicing along the cavity's axis.
     pub(super) fn ellipsoid_solid(&self, e: &Ellipsoid) -> Result<Selected, Unsupported> {
         let solid = self.solid(self.b)?;
+        if self.flip_b && !self.flip_a && matches!(solid, Solid::Cylinder(_) | Solid::Frustum(_)) {
+            return Ok(canonical(Kernel::Solid(
+                SolidKernel::EllipsoidInDiscCavity {
+                    semi_axes: e.semi_axes(),
+                    cavity: solid,
+                },
+            )));
+        }
         match e.sphere_radius() {
             Some(radius) if !self.flip_b => self.no_flip(
                 self.flip_a,

@@ -38,6 +38,12 @@ pub(crate) enum SolidKernel {
         semi_axes: Vector3,
         frustum: Frustum,
     },
+    /// Ellipsoid (or sphere) `a` in the cylinder- or frustum-shaped cavity `b` (a flipped
+    /// cylinder or frustum, sliced along its axis): one contact per region.
+    EllipsoidInDiscCavity {
+        semi_axes: Vector3,
+        cavity: pairs::sphere_solid::Solid,
+    },
     /// General ellipsoid `a` against ring torus `b` (sliced across `b`'s axis): one contact
     /// per region.
     EllipsoidTorus { semi_axes: Vector3, torus: Torus },
@@ -132,6 +138,15 @@ impl SolidKernel {
                 semi_axes,
                 ref frustum,
             } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
+            Self::EllipsoidInDiscCavity {
+                ref semi_axes,
+                ref cavity,
+            } => {
+                pairs::ellipsoid_disc_cavity::contacts(
+                    semi_axes, pose_a, cavity, pose_b, work, emit,
+                );
+                None
+            }
             Self::EllipsoidTorus {
                 ref semi_axes,
                 ref torus,

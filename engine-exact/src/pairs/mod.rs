@@ -23,6 +23,7 @@ pub(crate) mod cylinder_sliced;
 pub(crate) mod ellipsoid_bounded_plane;
 pub(crate) mod ellipsoid_box;
 pub(crate) mod ellipsoid_cylinder;
+pub(crate) mod ellipsoid_disc_cavity;
 pub(crate) mod ellipsoid_ellipsoid;
 pub(crate) mod ellipsoid_frustum;
 pub(crate) mod ellipsoid_mesh;

@@ -18,6 +18,9 @@
 //!   branches;
 //! - [`frustum_oracles`]: ellipsoid–frustum in general poses by the divergence theorem about
 //!   the apex;
+//! - [`ellipsoid_cavity`]: ellipsoids and balls in cylinder- and frustum-shaped cavities:
+//!   two caps through a bore's ends in closed form, a crescent and two regions against the
+//!   wall's area integral, a ball wholly in the material;
 //! - [`ellipsoid_torus`]: general ellipsoid–torus: two regions, invariants, degenerate
 //!   branches; [`torus_oracles`]: its coaxial and divergence oracles;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:
@@ -47,6 +50,7 @@ mod common;
 mod degenerate;
 mod degenerate_boundaries;
 mod degenerate_sliced;
+mod ellipsoid_cavity;
 mod ellipsoid_degenerate;
 mod ellipsoid_oracles;
 mod ellipsoid_revolved;

@@ -254,8 +254,9 @@ fn flipped_general_ellipsoid_pairs_are_refused() {
         instance(Geometry::Cylinder(Cylinder::new(1.0, 2.0).unwrap())),
     ];
     for other in &others {
-        // A flipped box is a cavity the ellipsoid may sit in (built, tested in mesh_revolved).
-        let cavity = matches!(*other.geometry, Geometry::Cuboid(_));
+        // A flipped box or cylinder is a cavity the ellipsoid may sit in (built; tested in
+        // mesh_revolved and ellipsoid_cavity).
+        let cavity = matches!(*other.geometry, Geometry::Cuboid(_) | Geometry::Cylinder(_));
         for (i, j, built) in [
             (general().flipped(), other.clone(), false),
             (general(), other.clone().flipped(), cavity),

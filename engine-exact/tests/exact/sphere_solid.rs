@@ -75,6 +75,61 @@ fn intervals(inside: impl Fn(f64) -> bool, lo: f64, hi: f64, samples: usize) -> 
 /// on `2·grid` polar rings (1024 samples each) for the area vector and a direction grid of `grid/4` by `grid/2`
 /// for the volume.
 fn brute_force(c: &Vector3, r: f64, inside: &dyn Fn(&Vector3) -> bool, grid: usize) -> Oracle {
+    let (s, g) = brute_force_moments(c, r, inside, grid);
+    let normal = -s.normalize();
+    // The sphere along −n from g: |g − t n − c| = r.
+    let point_sphere = sphere_exit(c, r, &g, &-normal);
+    // The solid along +n from g: march to the first outside point, then bisect.
+    let point_solid = first_change(inside, &g, &normal, r);
+    Oracle {
+        normal,
+        point_sphere,
+        point_solid,
+        depth: (point_solid - point_sphere).norm(),
+    }
+}
+
+/// Where the line from `g` (inside the sphere) along the unit `d` leaves the sphere.
+pub(crate) fn sphere_exit(c: &Vector3, r: f64, g: &Vector3, d: &Vector3) -> Vector3 {
+    let w = g - c;
+    let b = -w.dot(d);
+    let t = b + (b * b - w.norm_squared() + r * r).sqrt();
+    g + t * d
+}
+
+/// The first point from `g` along `d` where `inside` changes: marched in steps of 1e-3 of
+/// `r`, then bisected.
+pub(crate) fn first_change(
+    inside: &dyn Fn(&Vector3) -> bool,
+    g: &Vector3,
+    d: &Vector3,
+    r: f64,
+) -> Vector3 {
+    let start = inside(g);
+    let step = 1e-3 * r;
+    let mut t = 0.0;
+    while inside(&(g + (t + step) * d)) == start && t < 1e3 * r {
+        t += step;
+    }
+    let (mut lo, mut hi) = (t, t + step);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if inside(&(g + mid * d)) == start {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    g + 0.5 * (lo + hi) * d
+}
+
+/// The oracle's `S` (the sphere's surface inside, outward) and the intersection's centroid.
+pub(crate) fn brute_force_moments(
+    c: &Vector3,
+    r: f64,
+    inside: &dyn Fn(&Vector3) -> bool,
+    grid: usize,
+) -> (Vector3, Vector3) {
     let pole = Vector3::new(0.31, -0.52, 0.79).normalize();
     let e1 = pole.cross(&Vector3::x()).normalize();
     let e2 = pole.cross(&e1);
@@ -113,39 +168,11 @@ fn brute_force(c: &Vector3, r: f64, inside: &dyn Fn(&Vector3) -> bool, grid: usi
             }
         }
     }
-    let g = moment / volume;
-    let normal = -s.normalize();
-    // The sphere along −n from g: |g − t n − c| = r.
-    let w = g - c;
-    let b = w.dot(&normal);
-    let t = b + (b * b - w.norm_squared() + r * r).sqrt();
-    let point_sphere = g - t * normal;
-    // The solid along +n from g: march to the first outside point, then bisect.
-    let step = 1e-3 * r;
-    let mut t = 0.0;
-    while inside(&(g + (t + step) * normal)) {
-        t += step;
-    }
-    let (mut lo, mut hi) = (t, t + step);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if inside(&(g + mid * normal)) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let point_solid = g + 0.5 * (lo + hi) * normal;
-    Oracle {
-        normal,
-        point_sphere,
-        point_solid,
-        depth: (point_solid - point_sphere).norm(),
-    }
+    (s, moment / volume)
 }
 
 /// The oracle's grid (see [`brute_force`]).
-const GRID: usize = 1600;
+pub(crate) const GRID: usize = 1600;
 
 /// A solid with its inside test (own frame) and size.
 struct Solid {

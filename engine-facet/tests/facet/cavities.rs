@@ -3,25 +3,27 @@
 //!
 //! Oracles written apart from the faceted engine: the exact engine's cavity pairs (a sphere in
 //! a spherical socket; a sphere, box, cylinder, frustum or torus in a box-shaped cavity, by
-//! closed forms and slicing against the cavity's walls), and a closed form for a ball pressed
+//! closed forms and slicing against the cavity's walls; a sphere or an ellipsoid in a bore or
+//! a conical cavity, by slicing along its axis), and a closed form for a ball pressed
 //! into the wall of a long cylindrical bore (the centroid of the part of the ball in the wall
 //! lies on the line from the axis through the ball's centre, so the ray rule gives the depth
 //! `e + r − R` along that line).
 
 use crate::common::{Rng, angle_deg, centred, contacts_with_j_at_origin as contacts, engine};
-use contact_core::geometry::{Cuboid, Cylinder, Frustum, Torus, TriangleMesh};
+use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Frustum, Torus, TriangleMesh};
 use contact_core::{
     Contact, FacetingTolerance, Geometry, GeometryEngine, GeometryInstance, Isometry3, Point3,
     PrepareError, Vector3,
 };
 use engine_exact::ExactEngine;
 
-/// Bodies in a 1.0 × 0.8 × 0.6 box cavity and in a sphere socket of radius 0.6, pushed from
+/// Bodies in a 1.0 × 0.8 × 0.6 box cavity, a sphere socket of radius 0.6, a bore of radius
+/// 0.5 and a conical cavity (radii 0.6 and 0.35, both 1.2 long), pushed from
 /// the middle toward a wall by seeded offsets so that they dig into it, against the exact
 /// engine: the same number of contacts, and at FT 3000 each depth within the chord deviation
 /// of the two surfaces, each normal within 1°.
 #[test]
-fn bodies_in_box_and_sphere_cavities_agree_with_the_exact_engine() {
+fn bodies_in_cavities_agree_with_the_exact_engine() {
     let ft = 3000.0;
     let faceted = engine(ft);
     let deviation = |g: &Geometry| {
@@ -31,6 +33,8 @@ fn bodies_in_box_and_sphere_cavities_agree_with_the_exact_engine() {
     };
     let box_cavity = centred(Geometry::Cuboid(Cuboid::centered(0.5, 0.4, 0.3).unwrap())).flipped();
     let socket = GeometryInstance::new(Geometry::sphere(0.6).unwrap()).flipped();
+    let bore = centred(Geometry::Cylinder(Cylinder::new(0.5, 1.2).unwrap())).flipped();
+    let cone = centred(Geometry::Frustum(Frustum::new(0.6, 0.35, 1.2).unwrap())).flipped();
     let cases: Vec<(&str, GeometryInstance, GeometryInstance)> = vec![
         (
             "sphere in a socket",
@@ -61,6 +65,21 @@ fn bodies_in_box_and_sphere_cavities_agree_with_the_exact_engine() {
             "torus in a box",
             centred(Geometry::Torus(Torus::new(0.18, 0.06).unwrap())),
             box_cavity,
+        ),
+        (
+            "sphere in a bore",
+            GeometryInstance::new(Geometry::sphere(0.25).unwrap()),
+            bore.clone(),
+        ),
+        (
+            "ellipsoid in a bore",
+            GeometryInstance::new(Geometry::Ellipsoid(Ellipsoid::new(0.3, 0.2, 0.15).unwrap())),
+            bore,
+        ),
+        (
+            "ellipsoid in a cone",
+            GeometryInstance::new(Geometry::Ellipsoid(Ellipsoid::new(0.3, 0.2, 0.15).unwrap())),
+            cone,
         ),
     ];
     let mut rng = Rng(0x0ca5_17e5);
@@ -122,7 +141,7 @@ fn bodies_in_box_and_sphere_cavities_agree_with_the_exact_engine() {
     println!(
         "cavities: {compared} poses, worst depth error {worst_depth:.3} of the band, normal {worst_normal:.3}°"
     );
-    assert_eq!(compared, 6 * 6);
+    assert_eq!(compared, 6 * cases.len());
 }
 
 /// A ball of radius r pressed a distance e off the axis of a long bore of radius R < e + r:

@@ -100,14 +100,14 @@ pub(crate) struct DiscOverlap {
     pub shape: usize,
 }
 
-fn on_circle(theta: f64) -> Vector2<f64> {
+pub(crate) fn on_circle(theta: f64) -> Vector2<f64> {
     Vector2::new(theta.cos(), theta.sin())
 }
 
 impl DiscOverlap {
     /// Adds the circle's arc from `t0` to `t1` (a sector about the centre for the area and
     /// moments, which is Green's integral along the arc).
-    fn add_circle_arc(&mut self, t0: f64, t1: f64) {
+    pub(crate) fn add_circle_arc(&mut self, t0: f64, t1: f64) {
         let (s0, c0) = t0.sin_cos();
         let (s1, c1) = t1.sin_cos();
         self.area += 0.5 * (t1 - t0);
@@ -118,7 +118,7 @@ impl DiscOverlap {
     }
 
     /// Adds the ellipse's arc `k + K u(φ)`, `φ` from `f0` to `f1`: Green's integrals.
-    fn add_ellipse_arc(&mut self, k: &Vector2<f64>, m: &Matrix2<f64>, f0: f64, f1: f64) {
+    pub(crate) fn add_ellipse_arc(&mut self, k: &Vector2<f64>, m: &Matrix2<f64>, f0: f64, f1: f64) {
         // p × p' = det K + a cos φ + b sin φ.
         let k1 = m.column(0).into_owned();
         let k2 = m.column(1).into_owned();
@@ -174,7 +174,7 @@ pub(crate) fn disc_polygon(vertices: &[Vector2<f64>], map: &Matrix2<f64>) -> Dis
 
 /// `f(θ) = a₀ + a₁ cos θ + b₁ sin θ + a₂ cos 2θ + b₂ sin 2θ`.
 #[derive(Debug, Clone, Copy)]
-struct TrigQuadratic {
+pub(crate) struct TrigQuadratic {
     a0: f64,
     a1: f64,
     b1: f64,
@@ -183,7 +183,7 @@ struct TrigQuadratic {
 }
 
 impl TrigQuadratic {
-    fn value(&self, t: f64) -> f64 {
+    pub(crate) fn value(&self, t: f64) -> f64 {
         let (s, c) = t.sin_cos();
         let (s2, c2) = (2.0 * s * c, (c - s) * (c + s));
         self.a0 + self.a1 * c + self.b1 * s + self.a2 * c2 + self.b2 * s2
@@ -294,42 +294,105 @@ impl TrigQuadratic {
     }
 }
 
+/// Where the unit circle meets the ellipse `center + matrix·u(φ)` (`det matrix > 0`).
+pub(crate) enum CircleCrossings {
+    /// The matrix is singular: no ellipse.
+    Degenerate,
+    /// The ellipse is the unit circle within round-off.
+    Same,
+    /// No crossing, the circle inside the ellipse.
+    CircleInside,
+    /// No crossing, the ellipse inside the circle.
+    EllipseInside,
+    /// No crossing, the two apart.
+    Apart,
+    /// Crossings at the circle's angles `theta[..n]` (ascending in `[0, 2π)`).
+    At {
+        /// The angles.
+        theta: [f64; 4],
+        /// How many.
+        n: usize,
+        /// `f(θ) = |K⁻¹(u(θ) − k)|² − 1`, negative where the circle runs inside the ellipse.
+        inside: TrigQuadratic,
+        /// `K⁻¹`, for the ellipse's parameter `φ` of a crossing.
+        inverse: Matrix2<f64>,
+    },
+}
+
+impl CircleCrossings {
+    /// The crossings of the unit circle with the ellipse `center + matrix·u(φ)`.
+    pub(crate) fn of(center: &Vector2<f64>, matrix: &Matrix2<f64>) -> Self {
+        let Some(inverse) = matrix.try_inverse() else {
+            return Self::Degenerate;
+        };
+        let g = inverse.transpose() * inverse;
+        let gk = g * center;
+        let f = TrigQuadratic {
+            a0: 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) - 1.0,
+            a1: -2.0 * gk.x,
+            b1: -2.0 * gk.y,
+            a2: 0.5 * (g[(0, 0)] - g[(1, 1)]),
+            b2: g[(0, 1)],
+        };
+        let size = 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) + 1.0;
+        let largest = f.a0.abs() + f.a1.abs() + f.b1.abs() + f.a2.abs() + f.b2.abs();
+        if largest <= 1e-14 * size {
+            return Self::Same;
+        }
+        let (theta, n) = f.roots();
+        if n > 0 {
+            return Self::At {
+                theta,
+                n,
+                inside: f,
+                inverse,
+            };
+        }
+        // Without crossings one point tells which curve holds the other (two concentric
+        // circles swap it with no tangency between).
+        if f.value(0.0) < 0.0 {
+            Self::CircleInside
+        } else if (center + matrix.column(0)).norm_squared() < 1.0 {
+            Self::EllipseInside
+        } else {
+            Self::Apart
+        }
+    }
+}
+
+/// The ellipse's parameter `φ ∈ [0, 2π)` of the circle's point at angle `theta`.
+pub(crate) fn ellipse_parameter(inverse: &Matrix2<f64>, center: &Vector2<f64>, theta: f64) -> f64 {
+    let w = inverse * (on_circle(theta) - center);
+    w.y.atan2(w.x).rem_euclid(TAU)
+}
+
 /// The overlap of the unit disc with the ellipse `center + matrix·u(φ)` (`det matrix > 0`).
 pub(crate) fn disc_ellipse(center: &Vector2<f64>, matrix: &Matrix2<f64>) -> DiscOverlap {
     let mut out = DiscOverlap::default();
-    let Some(inverse) = matrix.try_inverse() else {
-        return out;
-    };
-    let g = inverse.transpose() * inverse;
-    let gk = g * center;
-    let f = TrigQuadratic {
-        a0: 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) - 1.0,
-        a1: -2.0 * gk.x,
-        b1: -2.0 * gk.y,
-        a2: 0.5 * (g[(0, 0)] - g[(1, 1)]),
-        b2: g[(0, 1)],
-    };
-    let size = 0.5 * (g[(0, 0)] + g[(1, 1)]) + center.dot(&gk) + 1.0;
-    let largest = f.a0.abs() + f.a1.abs() + f.b1.abs() + f.a2.abs() + f.b2.abs();
-    if largest <= 1e-14 * size {
-        // The same circle.
-        out.add_circle_arc(0.0, TAU);
-        return out;
-    }
-    let (roots, n) = f.roots();
-    out.shape = n;
-    if n == 0 {
-        // Without crossings the class says which curve holds the other (odd, apart from
-        // the even crossing counts): two concentric circles swap it with no tangency between.
-        if f.value(0.0) < 0.0 {
+    let (roots, n, f, inverse) = match CircleCrossings::of(center, matrix) {
+        CircleCrossings::Degenerate | CircleCrossings::Apart => return out,
+        CircleCrossings::Same => {
+            out.add_circle_arc(0.0, TAU);
+            return out;
+        }
+        CircleCrossings::CircleInside => {
             out.add_circle_arc(0.0, TAU);
             out.shape = CIRCLE_INSIDE;
-        } else if (center + matrix.column(0)).norm_squared() < 1.0 {
+            return out;
+        }
+        CircleCrossings::EllipseInside => {
             out.add_ellipse_arc(center, matrix, 0.0, TAU);
             out.shape = ELLIPSE_INSIDE;
+            return out;
         }
-        return out;
-    }
+        CircleCrossings::At {
+            theta,
+            n,
+            inside,
+            inverse,
+        } => (theta, n, inside, inverse),
+    };
+    out.shape = n;
     let mut params = [0.0; 4];
     for k in 0..n {
         let t0 = roots[k];
@@ -341,8 +404,7 @@ pub(crate) fn disc_ellipse(center: &Vector2<f64>, matrix: &Matrix2<f64>) -> Disc
         if t1 > t0 && f.value(0.5 * (t0 + t1)) < 0.0 {
             out.add_circle_arc(t0, t1);
         }
-        let w = inverse * (on_circle(t0) - center);
-        params[k] = w.y.atan2(w.x).rem_euclid(TAU);
+        params[k] = ellipse_parameter(&inverse, center, t0);
     }
     params[..n].sort_by(f64::total_cmp);
     for k in 0..n {

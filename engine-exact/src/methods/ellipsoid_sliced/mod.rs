@@ -21,6 +21,7 @@
 //!   arc, plus the flat and straight pieces in closed form. It is an estimate (held to 1e-9
 //!   of itself, not to round-off).
 
+pub(crate) mod disc_less;
 pub(crate) mod disc_overlap;
 pub(crate) mod disc_solid;
 pub(crate) mod distance;

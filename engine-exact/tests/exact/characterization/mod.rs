@@ -11,6 +11,7 @@ use contact_core::{GeometryInstance, Isometry3};
 
 pub(crate) mod bounded_line;
 mod box_revolved;
+mod ellipsoid_cavity;
 mod ellipsoid_revolved;
 mod ellipsoid_torus;
 mod ellipsoids;
@@ -120,6 +121,7 @@ fn characterization_table() {
     rows.extend(revolved_torus::rows(&mut rng));
     rows.extend(sphere_solid::rows(&mut rng));
     rows.extend(torus_torus::rows(&mut rng));
+    rows.extend(ellipsoid_cavity::rows(&mut rng));
     println!(
         "| pair | configuration family | method | samples | max depth err | max normal err | max point err | bound |"
     );
