@@ -6,6 +6,7 @@ use super::{FLIP_NOT_BUILT, MESH_OPEN, NOT_A_CONTACT, NOT_BUILT, Pair, Selected,
 use crate::kernel::{Kernel, PlaneKernel, SolidKernel};
 use crate::pairs::box_mesh::box_mesh;
 use crate::pairs::cylinder_sliced::SlicedSolid;
+use crate::pairs::ellipsoid_cavity::Cavity;
 use crate::pairs::sphere_solid::Solid;
 use contact_core::geometry::{Cuboid, Cylinder, Ellipsoid, Plane, Torus, TriangleMesh};
 use contact_core::{Geometry, Unsupported};
@@ -13,7 +14,7 @@ use contact_core::{Geometry, Unsupported};
 // ---- Sphere and ellipsoid pairs.
 impl Pair<'_> {
     /// Two ellipsoids: two spheres in closed form (one of them may be a cavity), else the
-    /// general slicing (no flip).
+    /// general slicing; one general ellipsoid flipped (a cavity), the slicing along its axis.
     pub(super) fn ellipsoid_ellipsoid(
         &self,
         ea: &Ellipsoid,
@@ -44,12 +45,24 @@ impl Pair<'_> {
                 }),
                 swap: true,
             }),
-            (Some(_), Some(_), true, true) => Err(self.no(NOT_A_CONTACT)),
+            (_, _, true, true) => Err(self.no(NOT_A_CONTACT)),
             (_, _, false, false) => Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidEllipsoid {
                 semi_a: ea.semi_axes(),
                 semi_b: eb.semi_axes(),
             }))),
-            _ => Err(self.no(FLIP_NOT_BUILT)),
+            // A general ellipsoid in an ellipsoid (or a sphere in a general one): sliced
+            // along the cavity's axis.
+            (_, _, false, true) => Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidInCavity {
+                semi_axes: ea.semi_axes(),
+                cavity: Cavity::Ellipsoid(eb.semi_axes()),
+            }))),
+            (_, _, true, false) => Ok(Selected {
+                kernel: Kernel::Solid(SolidKernel::EllipsoidInCavity {
+                    semi_axes: eb.semi_axes(),
+                    cavity: Cavity::Ellipsoid(ea.semi_axes()),
+                }),
+                swap: true,
+            }),
         }
     }
 
@@ -106,13 +119,16 @@ impl Pair<'_> {
     /// cylinder- or frustum-shaped cavity (`b` flipped), the slicing along the cavity's axis.
     pub(super) fn ellipsoid_solid(&self, e: &Ellipsoid) -> Result<Selected, Unsupported> {
         let solid = self.solid(self.b)?;
-        if self.flip_b && !self.flip_a && matches!(solid, Solid::Cylinder(_) | Solid::Frustum(_)) {
-            return Ok(canonical(Kernel::Solid(
-                SolidKernel::EllipsoidInDiscCavity {
-                    semi_axes: e.semi_axes(),
-                    cavity: solid,
-                },
-            )));
+        let cavity = match solid {
+            Solid::Cylinder(c) => Some(Cavity::Cylinder(c)),
+            Solid::Frustum(f) => Some(Cavity::Frustum(f)),
+            Solid::Box(_) | Solid::Torus(_) => None,
+        };
+        if let (Some(cavity), true, false) = (cavity, self.flip_b, self.flip_a) {
+            return Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidInCavity {
+                semi_axes: e.semi_axes(),
+                cavity,
+            })));
         }
         match e.sphere_radius() {
             Some(radius) if !self.flip_b => self.no_flip(

@@ -38,11 +38,11 @@ pub(crate) enum SolidKernel {
         semi_axes: Vector3,
         frustum: Frustum,
     },
-    /// Ellipsoid (or sphere) `a` in the cylinder- or frustum-shaped cavity `b` (a flipped
-    /// cylinder or frustum, sliced along its axis): one contact per region.
-    EllipsoidInDiscCavity {
+    /// Ellipsoid (or sphere) `a` in the cavity `b` (a flipped cylinder, frustum or
+    /// ellipsoid, sliced along its axis): one contact per region.
+    EllipsoidInCavity {
         semi_axes: Vector3,
-        cavity: pairs::sphere_solid::Solid,
+        cavity: pairs::ellipsoid_cavity::Cavity,
     },
     /// General ellipsoid `a` against ring torus `b` (sliced across `b`'s axis): one contact
     /// per region.
@@ -138,13 +138,11 @@ impl SolidKernel {
                 semi_axes,
                 ref frustum,
             } => pairs::ellipsoid_frustum::contact(&semi_axes, pose_a, frustum, pose_b, work),
-            Self::EllipsoidInDiscCavity {
+            Self::EllipsoidInCavity {
                 ref semi_axes,
                 ref cavity,
             } => {
-                pairs::ellipsoid_disc_cavity::contacts(
-                    semi_axes, pose_a, cavity, pose_b, work, emit,
-                );
+                pairs::ellipsoid_cavity::contacts(semi_axes, pose_a, cavity, pose_b, work, emit);
                 None
             }
             Self::EllipsoidTorus {

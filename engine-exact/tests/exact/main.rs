@@ -18,9 +18,10 @@
 //!   branches;
 //! - [`frustum_oracles`]: ellipsoid–frustum in general poses by the divergence theorem about
 //!   the apex;
-//! - [`ellipsoid_cavity`]: ellipsoids and balls in cylinder- and frustum-shaped cavities:
-//!   two caps through a bore's ends in closed form, a crescent and two regions against the
-//!   wall's area integral, a ball wholly in the material;
+//! - [`ellipsoid_cavity`]: ellipsoids and balls in cylinder-, frustum- and ellipsoid-shaped
+//!   cavities: two caps through a bore's ends and a spheroid across a socket in closed form,
+//!   a crescent and two regions against the wall's area integral, a ball wholly in the
+//!   material, balls at rims against brute force, region counts against a grid;
 //! - [`ellipsoid_torus`]: general ellipsoid–torus: two regions, invariants, degenerate
 //!   branches; [`torus_oracles`]: its coaxial and divergence oracles;
 //! - [`box_revolved`]: box–frustum/torus and frustum, torus, ellipsoid–bounded plane:

@@ -254,20 +254,29 @@ fn flipped_general_ellipsoid_pairs_are_refused() {
         instance(Geometry::Cylinder(Cylinder::new(1.0, 2.0).unwrap())),
     ];
     for other in &others {
-        // A flipped box or cylinder is a cavity the ellipsoid may sit in (built; tested in
-        // mesh_revolved and ellipsoid_cavity).
-        let cavity = matches!(*other.geometry, Geometry::Cuboid(_) | Geometry::Cylinder(_));
+        // A flipped box, cylinder or ellipsoid is a cavity the ellipsoid may sit in (built;
+        // tested in mesh_revolved and ellipsoid_cavity); a flipped ellipsoid is one around
+        // an ellipsoid or a sphere.
+        let cavity = matches!(
+            *other.geometry,
+            Geometry::Cuboid(_) | Geometry::Cylinder(_) | Geometry::Ellipsoid(_)
+        );
+        let around = matches!(*other.geometry, Geometry::Ellipsoid(_));
         for (i, j, built) in [
-            (general().flipped(), other.clone(), false),
+            (general().flipped(), other.clone(), around),
             (general(), other.clone().flipped(), cavity),
             (other.clone().flipped(), general(), cavity),
+            (general().flipped(), other.clone().flipped(), false),
         ] {
             let result = ExactEngine.prepare(&[i], &[j]);
             if built {
                 assert!(result.is_ok(), "{result:?}");
             } else {
                 let err = result.unwrap_err();
-                assert!(err.to_string().contains("flipped"), "{err}");
+                assert!(
+                    err.to_string().contains("flipped") || err.to_string().contains("no volume"),
+                    "{err}"
+                );
             }
         }
     }

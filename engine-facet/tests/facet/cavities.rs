@@ -3,8 +3,8 @@
 //!
 //! Oracles written apart from the faceted engine: the exact engine's cavity pairs (a sphere in
 //! a spherical socket; a sphere, box, cylinder, frustum or torus in a box-shaped cavity, by
-//! closed forms and slicing against the cavity's walls; a sphere or an ellipsoid in a bore or
-//! a conical cavity, by slicing along its axis), and a closed form for a ball pressed
+//! closed forms and slicing against the cavity's walls; a sphere or an ellipsoid in a bore, a
+//! conical or an ellipsoid cavity, by slicing along its axis), and a closed form for a ball pressed
 //! into the wall of a long cylindrical bore (the centroid of the part of the ball in the wall
 //! lies on the line from the axis through the ball's centre, so the ray rule gives the depth
 //! `e + r − R` along that line).
@@ -18,7 +18,8 @@ use contact_core::{
 use engine_exact::ExactEngine;
 
 /// Bodies in a 1.0 × 0.8 × 0.6 box cavity, a sphere socket of radius 0.6, a bore of radius
-/// 0.5 and a conical cavity (radii 0.6 and 0.35, both 1.2 long), pushed from
+/// 0.5, a conical cavity (radii 0.6 and 0.35, both 1.2 long) and an ellipsoid cavity
+/// (semi-axes 0.6, 0.5, 0.4), pushed from
 /// the middle toward a wall by seeded offsets so that they dig into it, against the exact
 /// engine: the same number of contacts, and at FT 3000 each depth within the chord deviation
 /// of the two surfaces, each normal within 1°.
@@ -80,6 +81,12 @@ fn bodies_in_cavities_agree_with_the_exact_engine() {
             "ellipsoid in a cone",
             GeometryInstance::new(Geometry::Ellipsoid(Ellipsoid::new(0.3, 0.2, 0.15).unwrap())),
             cone,
+        ),
+        (
+            "ellipsoid in an ellipsoid",
+            GeometryInstance::new(Geometry::Ellipsoid(Ellipsoid::new(0.3, 0.2, 0.15).unwrap())),
+            GeometryInstance::new(Geometry::Ellipsoid(Ellipsoid::new(0.6, 0.5, 0.4).unwrap()))
+                .flipped(),
         ),
     ];
     let mut rng = Rng(0x0ca5_17e5);

@@ -5,7 +5,10 @@
 //!   ([`crate::ellipsoid_cavity::ellipsoid_cap`]), the normal the end's, the points on the
 //!   line through the cap's centroid;
 //! - a ball pressed into a long bore's wall: by symmetry the normal is radial, the points
-//!   lie on the radial line through the centre, and δ = d + r − R.
+//!   lie on the radial line through the centre, and δ = d + r − R;
+//! - a prolate spheroid in a spherical cavity, its far end in the wall, and a ball in a
+//!   general ellipsoid cavity on one of its axes: symmetric about that axis (or about two
+//!   planes through it), so the normal is the axis and the points its ends.
 
 use super::{Case, ITERATIVE_BOUND, Row, run};
 use crate::common::{Expected, Rng, instance};
@@ -54,7 +57,89 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "slicing along the cavity's axis, lunes per region",
             pressed_ball,
         )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "ellipsoid in a spherical cavity",
+            "spheroid a ∈ [1.1, 1.5], b ∈ [0.2, 0.6] in a socket R = 1, off-centre along its axis so only its far end reaches the wall",
+            "slicing along the cavity's axis, lunes per region",
+            spheroid_in_socket,
+        )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "sphere in an ellipsoid cavity",
+            "r ∈ [0.2, 0.4] on an axis of a cavity with semi-axes 1, 0.7, 0.5, pressed 1e-3 r to 0.3 r into its wall",
+            "slicing along the cavity's axis, lunes per region",
+            ball_in_ellipsoid,
+        )),
     ]
+}
+
+/// A prolate spheroid in a unit socket along a random axis, moved along it so that its far
+/// end is `e` into the wall and its near end clear.
+fn spheroid_in_socket(rng: &mut Rng) -> Option<Case> {
+    let (a, b) = (rng.uniform(1.1, 1.5), rng.uniform(0.2, 0.6));
+    let e = rng.uniform(0.01, 0.3);
+    let c = 1.0 + e - a;
+    if c - a <= -1.0 + 0.05 || a <= 1.0 || b >= 1.0 {
+        return None;
+    }
+    let turn = rng.rotation();
+    let axis = turn * Vector3::x();
+    Some(Case {
+        i: instance(Geometry::Ellipsoid(Ellipsoid::new(a, b, b).unwrap())),
+        j: instance(Geometry::sphere(1.0).unwrap()).flipped(),
+        pose_i: Isometry3::from_parts(Translation3::from(c * axis), turn),
+        pose_j: Isometry3::identity(),
+        expected: Expected {
+            point_i: Point3::from((c + a) * axis),
+            point_j: Point3::from(axis),
+            normal: -axis,
+            depth: e,
+        },
+        length: 1.0,
+    })
+}
+
+/// A ball on one axis of the cavity with semi-axes (1, 0.7, 0.5), pressed into the wall
+/// there (its other points clear: the ball's radius under the wall's curvature radius).
+fn ball_in_ellipsoid(rng: &mut Rng) -> Option<Case> {
+    let semi = Vector3::new(1.0, 0.7, 0.5);
+    let k = (rng.uniform(0.0, 3.0) as usize).min(2);
+    let r = rng.uniform(0.2, 0.4);
+    let e = r * 10f64.powf(rng.uniform(-3.0, -0.5));
+    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+        -1.0
+    } else {
+        1.0
+    };
+    let axis = Vector3::ith(k, sign);
+    // Clear elsewhere: the ball's radius below the wall's smallest curvature radius there.
+    let radius_of_curvature = (0..3)
+        .filter(|&j| j != k)
+        .map(|j| semi[j] * semi[j] / semi[k])
+        .fold(f64::INFINITY, f64::min);
+    if r >= radius_of_curvature {
+        return None;
+    }
+    let d = semi[k] - r + e;
+    Some(Case {
+        i: instance(Geometry::sphere(r).unwrap()),
+        j: instance(Geometry::Ellipsoid(
+            Ellipsoid::new(semi.x, semi.y, semi.z).unwrap(),
+        ))
+        .flipped(),
+        pose_i: Isometry3::from_parts(Translation3::from(d * axis), rng.rotation()),
+        pose_j: Isometry3::identity(),
+        expected: Expected {
+            point_i: Point3::from((d + r) * axis),
+            point_j: Point3::from(semi[k] * axis),
+            normal: -axis,
+            depth: e,
+        },
+        length: 1.0,
+    })
 }
 
 /// An ellipsoid through the top end (`z = 3`) of the cavity `geometry` of radius `radius(z)`,

@@ -1,5 +1,5 @@
-//! Ellipsoids and spheres in cylinder- and frustum-shaped cavities (flipped cylinders and
-//! frustums), against oracles written apart from the engine's slicing:
+//! Ellipsoids and spheres in cylinder-, frustum- and ellipsoid-shaped cavities (flipped
+//! solids), against oracles written apart from the engine's slicing:
 //!
 //! - an ellipsoid through both ends of a cylindrical cavity: two caps, each the affine image
 //!   of a unit sphere's cap (volume centroid in closed form), its area vector the flat
@@ -9,20 +9,26 @@
 //!   closes the region: `S = ∫ ρ̂ dA` over the wall inside it, a 1-D integral in the azimuth
 //!   by Gauss–Legendre);
 //! - a ball wholly in the material: the whole ball, pushed to the cavity's nearest wall;
-//! - the same answers with I and J exchanged, and in every rigid frame.
+//! - a prolate spheroid across a spherical cavity: two caps in closed form;
+//! - the same answers with I and J exchanged, and in every rigid frame;
+//! - [`brute_force`]: balls at rims, on a cone's wall and in an ellipsoid cavity against the
+//!   sampling oracle of `sphere_solid`;
+//! - [`regions`]: the region count against a grid's connected pieces.
+
+mod brute_force;
+mod regions;
 
 use crate::common::{Rng, instance, query};
-use crate::sphere_solid::{GRID, brute_force_moments, first_change, sphere_exit};
 use contact_core::geometry::{Cylinder, Ellipsoid, Frustum};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::{Matrix3, Translation3, UnitQuaternion};
 use std::f64::consts::PI;
 
-fn bore(radius: f64, length: f64) -> GeometryInstance {
+pub(crate) fn bore(radius: f64, length: f64) -> GeometryInstance {
     instance(Geometry::Cylinder(Cylinder::new(radius, length).unwrap())).flipped()
 }
 
-fn ellipsoid(a: f64, b: f64, c: f64) -> GeometryInstance {
+pub(crate) fn ellipsoid(a: f64, b: f64, c: f64) -> GeometryInstance {
     instance(Geometry::Ellipsoid(Ellipsoid::new(a, b, c).unwrap()))
 }
 
@@ -335,263 +341,6 @@ fn a_ball_clear_of_the_walls_has_no_contact() {
     assert!(got.is_empty(), "{got:?}");
 }
 
-/// SPEC §4's points for a region of the ball `(c, r)` outside a cavity (`in_hole` its inside
-/// test), by marching: from a centroid in both bodies, the exits along `∓n`; from one in
-/// the cavity, the nearer chord beside it whose middle lies in both.
-fn brute_force_points(
-    c: &Vector3,
-    r: f64,
-    in_hole: &dyn Fn(&Vector3) -> bool,
-    g: &Vector3,
-    n: &Vector3,
-) -> (Vector3, Vector3) {
-    let material = |p: &Vector3| !in_hole(p);
-    if material(g) {
-        return (sphere_exit(c, r, g, &-n), first_change(&material, g, n, r));
-    }
-    let mut best: Option<(f64, Vector3, Vector3)> = None;
-    for side in [-1.0, 1.0] {
-        let d = n * side;
-        let pa = sphere_exit(c, r, g, &d);
-        let pb = first_change(&material, g, &d, r);
-        let middle = 0.5 * (pa + pb);
-        if (pb - pa).dot(n) <= 0.0 || (middle - c).norm() >= r || !material(&middle) {
-            continue;
-        }
-        let near = (pa - g).norm().min((pb - g).norm());
-        if best.as_ref().is_none_or(|(x, _, _)| near < *x) {
-            best = Some((near, pa, pb));
-        }
-    }
-    let (_, pa, pb) = best.expect("a chord beside the centroid");
-    (pa, pb)
-}
-
-/// Balls at a bore's rim (pressed into the wall and through the end at once), near the
-/// bottom rim, on a conical cavity's slanted wall and at its top rim, both orders, against
-/// the brute-force oracle of `sphere_solid` with the cavity's outside as the solid (its
-/// midpoint rules hold it to about 1e-5 of the size, so the engine is held to 2e-4).
-#[test]
-fn balls_at_a_cavitys_rims_and_slanted_wall_match_the_brute_force_oracle() {
-    let mut rng = Rng::new(0xCA_5E);
-    let cylinder = |p: &Vector3| p.xy().norm() <= 0.7 && p.z >= 0.0 && p.z <= 1.6;
-    let cone = |p: &Vector3| p.z >= 0.0 && p.z <= 1.4 && p.xy().norm() <= 0.9 - 0.5 * p.z / 1.4;
-    let bore_g = Geometry::Cylinder(Cylinder::new(0.7, 1.6).unwrap());
-    let cone_g = Geometry::Frustum(Frustum::new(0.9, 0.4, 1.4).unwrap());
-    type Case<'a> = (&'a Geometry, &'a dyn Fn(&Vector3) -> bool, f64, Vector3);
-    let cases: [Case; 5] = [
-        (&bore_g, &cylinder, 0.3, Vector3::new(0.6, 0.0, 1.65)),
-        (&bore_g, &cylinder, 0.3, Vector3::new(0.45, 0.3, 0.1)),
-        (&bore_g, &cylinder, 0.25, Vector3::new(-0.55, 0.1, 0.8)),
-        (&cone_g, &cone, 0.2, Vector3::new(0.55, 0.0, 0.7)),
-        (&cone_g, &cone, 0.25, Vector3::new(0.3, 0.3, 1.45)),
-    ];
-    let mut worst = [0.0f64; 3];
-    for (geometry, in_hole, r, c) in cases {
-        let material = |p: &Vector3| !in_hole(p);
-        let (s, g) = brute_force_moments(&c, r, &material, GRID);
-        let n = -s.normalize();
-        let (on_ball, on_cavity) = brute_force_points(&c, r, in_hole, &g, &n);
-        let world = rng.pose(2.0);
-        let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
-        let ball = instance(Geometry::sphere(r).unwrap());
-        let cavity = instance(geometry.clone()).flipped();
-        for ball_is_i in [true, false] {
-            let found = if ball_is_i {
-                query(&ball, &cavity, &pose_ball, &world)
-            } else {
-                query(&cavity, &ball, &world, &pose_ball)
-            };
-            assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
-            let got = found[0];
-            let (normal, p_ball, p_cavity) = if ball_is_i {
-                (got.normal_w, got.point_i_w, got.point_j_w)
-            } else {
-                (-got.normal_w, got.point_j_w, got.point_i_w)
-            };
-            let e = [
-                (normal - world.rotation * n).norm(),
-                (got.penetration - (on_cavity - on_ball).norm()).abs(),
-                (p_ball - world * Point3::from(on_ball)).norm()
-                    + (p_cavity - world * Point3::from(on_cavity)).norm(),
-            ];
-            println!("ball r = {r} at {c:?} in a cavity: [normal, depth, points] {e:?}");
-            assert!(
-                e.iter().all(|&x| x <= 2e-4),
-                "r = {r} c = {c:?}: {e:?} {got:?}"
-            );
-            for k in 0..3 {
-                worst[k] = worst[k].max(e[k]);
-            }
-        }
-    }
-    println!("balls in cavities vs brute force, worst [normal, depth, points]: {worst:?}");
-}
-
-/// The sizes (cells) of the connected pieces of `{p in the box (lo, hi) : inside(p)}` on an
-/// `n³` grid of cell centres (6-neighbours).
-fn grid_components(
-    inside: &dyn Fn(&Vector3) -> bool,
-    lo: &Vector3,
-    hi: &Vector3,
-    n: usize,
-) -> Vec<usize> {
-    let at = |i: usize, j: usize, k: usize| {
-        let f = |a: usize, l: f64, h: f64| l + (h - l) * (a as f64 + 0.5) / n as f64;
-        Vector3::new(f(i, lo.x, hi.x), f(j, lo.y, hi.y), f(k, lo.z, hi.z))
-    };
-    let index = |i: usize, j: usize, k: usize| (i * n + j) * n + k;
-    let mut state: Vec<u8> = (0..n * n * n)
-        .map(|x| {
-            let (i, j, k) = (x / (n * n), (x / n) % n, x % n);
-            u8::from(inside(&at(i, j, k)))
-        })
-        .collect();
-    let mut sizes = Vec::new();
-    let mut stack = Vec::new();
-    for start in 0..state.len() {
-        if state[start] != 1 {
-            continue;
-        }
-        state[start] = 2;
-        stack.push(start);
-        let mut size = 0;
-        while let Some(x) = stack.pop() {
-            size += 1;
-            let (i, j, k) = (x / (n * n), (x / n) % n, x % n);
-            let mut visit = |a: usize, b: usize, c: usize| {
-                let y = index(a, b, c);
-                if state[y] == 1 {
-                    state[y] = 2;
-                    stack.push(y);
-                }
-            };
-            if i > 0 {
-                visit(i - 1, j, k);
-            }
-            if i + 1 < n {
-                visit(i + 1, j, k);
-            }
-            if j > 0 {
-                visit(i, j - 1, k);
-            }
-            if j + 1 < n {
-                visit(i, j + 1, k);
-            }
-            if k > 0 {
-                visit(i, j, k - 1);
-            }
-            if k + 1 < n {
-                visit(i, j, k + 1);
-            }
-        }
-        sizes.push(size);
-    }
-    sizes
-}
-
-/// Tilted, elongated ellipsoids across a bore and a conical cavity, clear of their ends:
-/// one contact per
-/// connected piece of the ellipsoid outside the cavity, the pieces counted on a grid as
-/// they are, with the body shrunk and the cavity grown by a cell, and the other way
-/// (poses whose counts differ, a neck or a sliver near a change of topology, and poses with
-/// a piece under 2% of the whole or a contact thinner than three cells, a film along a wall,
-/// are skipped).
-#[test]
-fn regions_are_the_connected_pieces_outside_the_cavity() {
-    let seeds: u64 = std::env::var("CAVITY_REGION_SEEDS").map_or(3, |s| s.parse().unwrap());
-    let mut seen = [0usize; 4];
-    for seed in 0..seeds {
-        for (total, k) in seen.iter_mut().zip(region_counts(0x4E610 + seed)) {
-            *total += k;
-        }
-    }
-    println!("region counts seen (0, 1, 2, 3+) over {seeds} seeds: {seen:?}");
-    assert!(seen[2] >= 5 && seen[1] >= 5, "{seen:?}");
-}
-
-/// The poses compared for one seed, by their number of regions (0, 1, 2, 3 or more).
-fn region_counts(seed: u64) -> [usize; 4] {
-    let mut rng = Rng::new(seed);
-    // Each cavity's hole grown by `g` (shrunk when negative): radii and ends moved by `g`.
-    type Hole = Box<dyn Fn(&Vector3, f64) -> bool>;
-    let cavities: [(Geometry, Hole); 2] = [
-        (
-            Geometry::Cylinder(Cylinder::new(1.0, 3.5).unwrap()),
-            Box::new(|p: &Vector3, g: f64| p.xy().norm() <= 1.0 + g && p.z >= -g && p.z <= 3.5 + g),
-        ),
-        (
-            Geometry::Frustum(Frustum::new(1.3, 0.6, 3.5).unwrap()),
-            Box::new(|p: &Vector3, g: f64| {
-                p.z >= -g && p.z <= 3.5 + g && p.xy().norm() <= 1.3 - 0.7 * p.z / 3.5 + g
-            }),
-        ),
-    ];
-    let n = 80;
-    let mut seen = [0usize; 4];
-    let mut compared = 0;
-    for (geometry, in_hole) in &cavities {
-        let cavity = instance(geometry.clone()).flipped();
-        for _ in 0..16 {
-            let semi = Vector3::new(
-                rng.uniform(1.0, 1.7),
-                rng.uniform(0.15, 0.6),
-                rng.uniform(0.15, 0.6),
-            );
-            let rotation = rng.rotation();
-            let c = Vector3::new(
-                rng.uniform(-0.3, 0.3),
-                rng.uniform(-0.3, 0.3),
-                rng.uniform(1.2, 2.3),
-            );
-            let l = rotation.to_rotation_matrix().matrix() * Matrix3::from_diagonal(&semi);
-            let inv = l.try_inverse().unwrap();
-            let reach = Vector3::from_fn(|k, _| l.row(k).norm());
-            // Clear of the ends (the caps and rims have their own oracles above): the pieces
-            // are the lunes' alone.
-            if c.z - reach.z < 0.05 || c.z + reach.z > 3.45 {
-                continue;
-            }
-            let cell = 2.0 * reach.max() / n as f64;
-            // The piece as it is, with the body shrunk and the hole grown by a cell, and
-            // the other way: where the counts differ, a neck or a sliver is within two cells of
-            // changing the topology, and the pose is skipped.
-            let count = |grow: f64| {
-                let body = 1.0 - grow * cell / semi.min();
-                let piece =
-                    |p: &Vector3| (inv * (p - c)).norm() <= body && !in_hole(p, grow * cell);
-                grid_components(&piece, &(c - reach), &(c + reach), n)
-            };
-            let sizes = count(0.0);
-            let (thin, nominal, thick) = (count(1.0).len(), sizes.len(), count(-1.0).len());
-            // Specks of a few cells: a thin film along a wall, seen cell by cell.
-            let total: usize = sizes.iter().sum();
-            if thin != nominal || thick != nominal || sizes.iter().any(|&x| 50 * x < total) {
-                continue;
-            }
-            let pose = Isometry3::from_parts(Translation3::from(c), rotation);
-            let got = query(&body_of(&semi), &cavity, &pose, &Isometry3::identity());
-            if got.iter().any(|x| x.penetration < 3.0 * cell) {
-                continue;
-            }
-            assert_eq!(
-                got.len(),
-                nominal,
-                "semi {semi:?} at {c:?} rotation {:?}: {got:?}",
-                rotation.coords
-            );
-            seen[nominal.min(3)] += 1;
-            compared += 1;
-        }
-    }
-    println!("seed {seed}: region counts seen (0, 1, 2, 3+): {seen:?} over {compared} poses");
-    seen
-}
-
-fn body_of(semi: &Vector3) -> GeometryInstance {
-    ellipsoid(semi.x, semi.y, semi.z)
-}
-
 /// Degenerate poses: a ball exactly the bore's size (touching all round: no contact), one a
 /// hair larger (a thin ring: one contact, finite), a ball at a cone's apex, coaxial spheroids
 /// at the ends' planes, and random poses at scales 1e-4 and 1e4: every answer well formed.
@@ -654,6 +403,61 @@ fn degenerate_and_scaled_poses_give_well_formed_answers() {
                 // `query` asserts every contact is well formed.
                 let _ = query(&body, c, &pose, &Isometry3::identity());
             }
+        }
+    }
+}
+
+/// A prolate spheroid (semi-axes a > R > b = b) centred in a spherical cavity of radius R,
+/// along a random axis: two mirror regions, each beyond the sphere's cap `x ≥ x₀` with
+/// `x₀² = (1 − R²/b²)/(1/a² − 1/b²)`, whose area vector is the cap's projected disc
+/// `π(R² − x₀²)`; the depth `a − R` along the axis. Then offset along the axis so only one
+/// end reaches the wall: one region, depth `c + a − R`, in both orders.
+#[test]
+fn a_spheroid_across_a_spherical_cavity_meets_it_at_both_ends() {
+    let (a, b, big_r) = (1.3, 0.4, 1.0);
+    let socket = instance(Geometry::sphere(big_r).unwrap()).flipped();
+    let body = ellipsoid(a, b, b);
+    let x0 = ((1.0 - big_r * big_r / (b * b)) / (1.0 / (a * a) - 1.0 / (b * b))).sqrt();
+    let area = PI * (big_r * big_r - x0 * x0);
+    let mut rng = Rng::new(17);
+    for _ in 0..6 {
+        let world = rng.pose(2.0);
+        let turn = rng.rotation();
+        let axis = turn * Vector3::x();
+        let pose_i = world * Isometry3::from_parts(Translation3::identity(), turn);
+        let got = query(&body, &socket, &pose_i, &world);
+        assert_eq!(got.len(), 2, "{got:?}");
+        for side in [1.0, -1.0] {
+            let normal = world.rotation * (-side * axis);
+            let found = got
+                .iter()
+                .find(|x| (x.normal_w - normal).norm() < 0.5)
+                .expect("one region per end");
+            let point_i = world * Point3::from(side * a * axis);
+            let point_j = world * Point3::from(side * big_r * axis);
+            check(found, &normal, &point_i, &point_j, area, 1.0, 1e-9);
+        }
+        // Moved along its axis past a − R: only the far end in the wall.
+        let c = 0.4;
+        let pose_i = world * Isometry3::from_parts(Translation3::from(c * axis), turn);
+        for body_is_i in [true, false] {
+            let got = if body_is_i {
+                query(&body, &socket, &pose_i, &world)
+            } else {
+                query(&socket, &body, &world, &pose_i)
+                    .iter()
+                    .map(Contact::swapped)
+                    .collect()
+            };
+            assert_eq!(got.len(), 1, "{got:?}");
+            let normal = world.rotation * -axis;
+            assert!((got[0].normal_w - normal).norm() < 1e-9, "{got:?}");
+            assert!(
+                (got[0].penetration - (c + a - big_r)).abs() < 1e-9,
+                "{got:?}"
+            );
+            assert!((got[0].point_i_w - world * Point3::from((c + a) * axis)).norm() < 1e-9);
+            assert!((got[0].point_j_w - world * Point3::from(big_r * axis)).norm() < 1e-9);
         }
     }
 }
