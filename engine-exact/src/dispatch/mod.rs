@@ -24,7 +24,7 @@
 //! | ellipsoid–cylinder                        | slicing along the axis                           | ellipsoid_cylinder          | none                  |
 //! | ellipsoid–frustum                         | slicing across the axis                          | ellipsoid_frustum           | none                  |
 //! | ellipsoid–torus                           | slicing across the axis, per region              | ellipsoid_torus             | none                  |
-//! | ellipsoid in a cylinder, frustum or ellipsoid cavity | slicing along the cavity's axis, lunes per region | ellipsoid_cavity | the cavity    |
+//! | ellipsoid in a cylinder, frustum, ellipsoid or torus cavity | slicing along the cavity's axis, lunes per region | ellipsoid_cavity | the cavity |
 //! | ellipsoid–mesh                            | the mesh mapped to the unit sphere, sliced       | ellipsoid_mesh              | none                  |
 //! | cylinder–plane                            | quadrature of closed-form chords                 | cylinder_plane              | plane                 |
 //! | cylinder–cylinder, –box, –plane (bounded) | divergence theorem or slicing                    | cylinder_sliced             | plane                 |
@@ -84,7 +84,7 @@ const NOT_BUILT: &str = "this pair is not built in the exact engine yet; use the
 const NOT_A_CONTACT: &str = "these two geometries have no volume (or area) to overlap";
 const MIXED: &str = "2-D geometry cannot contact 3-D geometry (SPEC §3)";
 const MESH_OPEN: &str = "the mesh is not a closed 2-manifold (an edge without exactly one neighbour); close it before using it in a contact";
-const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, a box or a mesh as a cavity around a box, cylinder, frustum, torus or ellipsoid (sphere included), a cylinder, frustum or ellipsoid as a cavity around an ellipsoid (sphere included), one circle of a circle pair, and arcs and curves against arcs, curves and lines";
+const FLIP_NOT_BUILT: &str = "a flipped (inside-out) geometry is built only for planes, lines, one sphere of a sphere pair, a box or a mesh as a cavity around a box, cylinder, frustum, torus or ellipsoid (sphere included), a cylinder, frustum, ellipsoid or torus as a cavity around an ellipsoid (sphere included), one circle of a circle pair, and arcs and curves against arcs, curves and lines";
 
 /// The convex solids the sphere, box–revolved and revolved–plane kernels take, `None` for
 /// every other kind (an exhaustive match: a new kind must say whether it is one).

@@ -116,13 +116,15 @@ impl Pair<'_> {
 
     /// An ellipsoid against the convex solid `b` (box, cylinder, frustum, torus): a sphere
     /// in closed form on one face (only `a` may be flipped), else the general slicing; in a
-    /// cylinder- or frustum-shaped cavity (`b` flipped), the slicing along the cavity's axis.
+    /// cylinder-, frustum- or torus-shaped cavity (`b` flipped), the slicing along the
+    /// cavity's axis.
     pub(super) fn ellipsoid_solid(&self, e: &Ellipsoid) -> Result<Selected, Unsupported> {
         let solid = self.solid(self.b)?;
         let cavity = match solid {
             Solid::Cylinder(c) => Some(Cavity::Cylinder(c)),
             Solid::Frustum(f) => Some(Cavity::Frustum(f)),
-            Solid::Box(_) | Solid::Torus(_) => None,
+            Solid::Torus(t) => Some(Cavity::Torus(t)),
+            Solid::Box(_) => None,
         };
         if let (Some(cavity), true, false) = (cavity, self.flip_b, self.flip_a) {
             return Ok(canonical(Kernel::Solid(SolidKernel::EllipsoidInCavity {

@@ -17,17 +17,23 @@
 //! ellipse's arc (the cavity's wall inside the ellipsoid) in `other_arcs`, stored from its end
 //! to its start.
 
-use super::disc_overlap::{CircleCrossings, DiscOverlap, ellipse_parameter, on_circle};
+use super::disc_overlap::{
+    CircleCrossings, DiscOverlap, disc_ellipse, ellipse_parameter, on_circle,
+};
 use nalgebra::{Matrix2, Vector2};
 use std::f64::consts::TAU;
 
-/// Most lunes of a disc less an ellipse (four crossings leave two arcs outside).
-pub(crate) const MAX_LUNES: usize = 2;
+/// Most components: a disc less an ellipse has two at most (four crossings leave two arcs
+/// outside), a disc less an elliptic annulus one more inside the annulus' hole.
+pub(crate) const MAX_LUNES: usize = 3;
 
-/// The components of the unit disc less an ellipse.
+/// The components of the unit disc less an ellipse (or an elliptic annulus).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Lunes {
     parts: [DiscOverlap; MAX_LUNES],
+    /// Per part, the cavity's curve its `other_arcs` lie on: 0 the ellipse (an annulus'
+    /// outer one), 1 an annulus' inner one.
+    curves: [u8; MAX_LUNES],
     count: usize,
 }
 
@@ -35,6 +41,11 @@ impl Lunes {
     /// The components, each with its boundary pieces.
     pub(crate) fn parts(&self) -> &[DiscOverlap] {
         &self.parts[..self.count]
+    }
+
+    /// Per component, the cavity's curve its `other_arcs` lie on (see [`Lunes`]).
+    pub(crate) fn curves(&self) -> &[u8] {
+        &self.curves[..self.count]
     }
 
     /// The whole unit disc (a section beyond the cavity's ends).
@@ -111,6 +122,30 @@ pub(crate) fn disc_less_ellipse(center: &Vector2<f64>, matrix: &Matrix2<f64>) ->
     out
 }
 
+/// The unit disc less the annulus between the ellipses `inner` and `outer` (each a centre and
+/// a matrix; `inner` inside `outer`): the disc's overlap with the inner ellipse (the
+/// annulus' hole: one convex part, its arcs of the inner ellipse run counter-clockwise), then
+/// the lunes outside the outer one.
+pub(crate) fn disc_less_annulus(
+    inner: (&Vector2<f64>, &Matrix2<f64>),
+    outer: (&Vector2<f64>, &Matrix2<f64>),
+) -> Lunes {
+    let hole = disc_ellipse(inner.0, inner.1);
+    let mut out = disc_less_ellipse(outer.0, outer.1);
+    if hole.area > 0.0 {
+        // The hole's part first: shift the lunes up.
+        let count = out.count.min(MAX_LUNES - 1);
+        for k in (0..count).rev() {
+            out.parts[k + 1] = out.parts[k];
+            out.curves[k + 1] = out.curves[k];
+        }
+        out.parts[0] = hole;
+        out.curves[0] = 1;
+        out.count = count + 1;
+    }
+    out
+}
+
 /// The disc with the whole ellipse as its hole.
 fn holed_disc(out: &mut Lunes, center: &Vector2<f64>, matrix: &Matrix2<f64>) {
     let part = out.push();
@@ -146,7 +181,6 @@ fn add_lune(
 
 #[cfg(test)]
 mod tests {
-    use super::super::disc_overlap::disc_ellipse;
     use super::*;
     use crate::test_rng::Rng;
     use std::f64::consts::PI;

@@ -40,14 +40,14 @@
 
 use crate::kernel::PairContact;
 use crate::methods::clipped::unit_for;
-use crate::methods::ellipsoid_sliced::disc_less::{Lunes, disc_less_ellipse};
+use crate::methods::ellipsoid_sliced::disc_less::{Lunes, disc_less_annulus, disc_less_ellipse};
 use crate::methods::ellipsoid_sliced::disc_overlap::{DiscOverlap, disc_ellipse};
 use crate::methods::ellipsoid_sliced::{
     ADAPTIVE, COMPONENTS, Integrals, Section, SlicedEllipsoid, curved_area, ellipsoid_in, floor,
     integrand, to_world,
 };
 use crate::methods::volume_contact::contact_of_region;
-use contact_core::geometry::{Cylinder, Frustum};
+use contact_core::geometry::{Cylinder, Frustum, Torus};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use nalgebra::{Matrix2, Vector2};
 use regions::{Piece, Regions, connect_across_cuts, labels, pieces};
@@ -65,6 +65,8 @@ pub(crate) enum Cavity {
     Frustum(Frustum),
     /// An ellipsoid about the origin with these semi-axes.
     Ellipsoid(Vector3),
+    /// A ring torus about `z`.
+    Torus(Torus),
 }
 
 /// `|S|` at or below this fraction of the region's surface counts as vanishing (the
@@ -113,6 +115,8 @@ enum Sections {
     Disc(Profile),
     /// An ellipsoid's ellipses.
     Ellipsoid(SlicedEllipsoid),
+    /// A torus' annuli `big ± √(small² − t²)`.
+    Torus { big: f64, small: f64 },
 }
 
 /// The ellipsoid's slices against the cavity's, in working units.
@@ -127,6 +131,7 @@ impl Slicing {
         match &self.cavity {
             Sections::Disc(p) => (0.0, p.length),
             Sections::Ellipsoid(e) => e.range(),
+            Sections::Torus { small, .. } => (-small, *small),
         }
     }
 
@@ -140,10 +145,17 @@ impl Slicing {
         let Some((center, hole)) = self.hole(&sa, t) else {
             return Some((sa, Lunes::whole_disc()));
         };
+        if let Some((inner_center, inner)) = self.inner_hole(&sa, t) {
+            return Some((
+                sa,
+                disc_less_annulus((&inner_center, &inner), (&center, &hole)),
+            ));
+        }
         Some((sa, disc_less_ellipse(&center, &hole)))
     }
 
-    /// The cavity's section at `t` in the ellipsoid section's unit-disc coordinates.
+    /// The cavity's section at `t` in the ellipsoid section's unit-disc coordinates (a
+    /// torus' outer circle).
     fn hole(&self, sa: &Section, t: f64) -> Option<(Vector2<f64>, Matrix2<f64>)> {
         let inverse = sa.matrix.try_inverse()?;
         match &self.cavity {
@@ -152,19 +164,41 @@ impl Slicing {
                 let sb = e.section(t)?;
                 Some((inverse * (sb.center - sa.center), inverse * sb.matrix))
             }
+            Sections::Torus { big, small } => {
+                let s = ((small - t) * (small + t)).max(0.0).sqrt();
+                Some((inverse * -sa.center, inverse * (big + s)))
+            }
         }
     }
 
-    /// The crossing class of slice `t` (the cuts are where it changes).
-    fn shape(&self, t: f64) -> usize {
-        self.a
-            .section(t)
-            .and_then(|sa| self.hole(&sa, t))
-            .map_or(0, |(c, m)| disc_ellipse(&c, &m).shape)
+    /// A torus' inner circle at `t` in the same coordinates (`None` for the other cavities).
+    fn inner_hole(&self, sa: &Section, t: f64) -> Option<(Vector2<f64>, Matrix2<f64>)> {
+        let Sections::Torus { big, small } = self.cavity else {
+            return None;
+        };
+        let inverse = sa.matrix.try_inverse()?;
+        let s = ((small - t) * (small + t)).max(0.0).sqrt();
+        Some((inverse * -sa.center, inverse * (big - s).max(0.0)))
     }
 
-    /// The unsigned rate of the cavity's wall inside the ellipsoid, for one lune.
-    fn wall(&self, t: f64, lune: &DiscOverlap) -> f64 {
+    /// The crossing class of slice `t` (the cuts are where it changes): of the outer curve,
+    /// and of a torus' inner circle by eights.
+    fn shape(&self, t: f64) -> usize {
+        let Some(sa) = self.a.section(t) else {
+            return 0;
+        };
+        let outer = self
+            .hole(&sa, t)
+            .map_or(0, |(c, m)| disc_ellipse(&c, &m).shape);
+        let inner = self
+            .inner_hole(&sa, t)
+            .map_or(0, |(c, m)| disc_ellipse(&c, &m).shape);
+        outer + 8 * inner
+    }
+
+    /// The unsigned rate of the cavity's wall inside the ellipsoid, for one part whose
+    /// `other_arcs` lie on the cavity's curve `curve` (see [`Lunes::curves`]).
+    fn wall(&self, t: f64, lune: &DiscOverlap, curve: u8) -> f64 {
         let (lo, hi) = self.cavity_range();
         if t <= lo || t >= hi {
             return 0.0;
@@ -174,14 +208,18 @@ impl Slicing {
         for (s, &(f0, f1)) in spans.iter_mut().zip(lune.other_arcs.spans()) {
             *s = (f0.min(f1), f0.max(f1));
         }
+        let angle: f64 = spans[..count].iter().map(|(f0, f1)| f1 - f0).sum();
         match &self.cavity {
-            Sections::Disc(p) => {
-                let angle: f64 = spans[..count].iter().map(|(f0, f1)| f1 - f0).sum();
-                p.stretch() * p.radius(t).max(0.0) * angle
-            }
+            Sections::Disc(p) => p.stretch() * p.radius(t).max(0.0) * angle,
             Sections::Ellipsoid(e) => e
                 .section(t)
                 .map_or(0.0, |sb| curved_area(&sb, &spans[..count])),
+            Sections::Torus { big, small } => {
+                // The tube's area per unit of arc and height: ρ/s on both circles.
+                let s = ((small - t) * (small + t)).max(0.0).sqrt();
+                let radius = if curve == 1 { big - s } else { big + s };
+                small / s * radius.max(0.0) * angle
+            }
         }
     }
 }
@@ -200,6 +238,7 @@ pub(crate) fn contacts(
         Cavity::Cylinder(c) => c.radius().max(c.length()),
         Cavity::Frustum(f) => f.bottom_radius().max(f.top_radius()).max(f.length()),
         Cavity::Ellipsoid(semi) => semi.max(),
+        Cavity::Torus(t) => t.major_radius() + t.minor_radius(),
     };
     let unit = unit_for(semi_axes.max().max(size));
     let (c, l) = ellipsoid_in(pose_b, pose_a, semi_axes, unit);
@@ -246,7 +285,7 @@ pub(crate) fn contacts(
 /// The slicing of the ellipsoid `{c + L u : |u| ≤ 1}` (cavity frame, working units) against
 /// the cavity, or `None` when the ellipsoid lies clear inside it (a sufficient test: inside
 /// the cylinder of a cylinder's or frustum's smaller end radius, or inside an ellipsoid's
-/// inscribed ball about its centre) or is degenerate.
+/// inscribed ball about its centre; a torus is always sliced) or is degenerate.
 fn slicing(cavity: &Cavity, c: Vector3, l: &nalgebra::Matrix3<f64>, unit: f64) -> Option<Slicing> {
     let reach = Vector3::from_fn(|k, _| l.row(k).norm());
     let sections = match *cavity {
@@ -269,6 +308,10 @@ fn slicing(cavity: &Cavity, c: Vector3, l: &nalgebra::Matrix3<f64>, unit: f64) -
                 &nalgebra::Matrix3::from_diagonal(&semi),
             )?)
         }
+        Cavity::Torus(t) => Sections::Torus {
+            big: t.major_radius() / unit,
+            small: t.minor_radius() / unit,
+        },
     };
     if let Sections::Disc(p) = &sections
         && c.z - reach.z > 0.0
@@ -313,9 +356,10 @@ fn integrate_regions(
                     return total;
                 };
                 let label = labels(&piece.middles, &lunes);
-                for (p, &k) in lunes.parts().iter().zip(&label) {
+                let parts = lunes.parts().iter().zip(lunes.curves()).zip(&label);
+                for ((p, &curve), &k) in parts {
                     if k == Some(j) {
-                        let row = integrand(t, &sa, p, slicing.wall(t, p));
+                        let row = integrand(t, &sa, p, slicing.wall(t, p, curve));
                         for (s, v) in total.iter_mut().zip(row) {
                             *s += v;
                         }

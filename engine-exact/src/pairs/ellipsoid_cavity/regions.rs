@@ -27,9 +27,12 @@ pub(super) fn arc_middle(lune: &DiscOverlap) -> f64 {
         .map_or(0.0, |(t0, t1)| (0.5 * (t0 + t1)).rem_euclid(TAU))
 }
 
-/// The circle arc of a lune, `(start, end)` with `end ≥ start`.
-fn arc_of(lune: &DiscOverlap) -> (f64, f64) {
-    lune.arcs.spans().first().copied().unwrap_or((0.0, 0.0))
+/// Whether two components share a stretch of the circle (any of their arcs overlap).
+fn parts_overlap(a: &DiscOverlap, b: &DiscOverlap) -> bool {
+    a.arcs
+        .spans()
+        .iter()
+        .any(|&x| b.arcs.spans().iter().any(|&y| arcs_overlap(x, y)))
 }
 
 fn angular_distance(a: f64, b: f64) -> f64 {
@@ -211,7 +214,7 @@ fn continuous(slicing: &Slicing, t0: f64, t1: f64) -> bool {
     b.parts()
         .iter()
         .zip(label)
-        .all(|(p, j)| j.is_some_and(|j| arcs_overlap(arc_of(&a.parts()[j]), arc_of(p))))
+        .all(|(p, j)| j.is_some_and(|j| parts_overlap(&a.parts()[j], p)))
 }
 
 /// Adds to `cuts` the changes inside `(lo, hi)` that keep the crossing class on both sides:
@@ -261,13 +264,13 @@ pub(super) fn connect_across_cuts(slicing: &Slicing, pieces: &[Piece], regions: 
         };
         slicing.lunes(t).map(|(_, l)| {
             let label = labels(&piece.middles, &l);
-            let arcs: Vec<((f64, f64), usize)> = l
+            let parts: Vec<(DiscOverlap, usize)> = l
                 .parts()
                 .iter()
                 .zip(label)
-                .filter_map(|(p, j)| j.map(|j| (arc_of(p), piece.first + j)))
+                .filter_map(|(p, j)| j.map(|j| (*p, piece.first + j)))
                 .collect();
-            arcs
+            parts
         })
     };
     for w in pieces.windows(2) {
@@ -278,10 +281,10 @@ pub(super) fn connect_across_cuts(slicing: &Slicing, pieces: &[Piece], regions: 
         let (Some(down), Some(up)) = (near(below, true), near(above, false)) else {
             continue;
         };
-        for &(arc_d, id_d) in &down {
-            for &(arc_u, id_u) in &up {
-                if arcs_overlap(arc_d, arc_u) {
-                    regions.join(id_d, id_u);
+        for (part_d, id_d) in &down {
+            for (part_u, id_u) in &up {
+                if parts_overlap(part_d, part_u) {
+                    regions.join(*id_d, *id_u);
                 }
             }
         }

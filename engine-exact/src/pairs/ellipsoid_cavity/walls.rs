@@ -5,6 +5,7 @@ use super::Cavity;
 use crate::methods::ellipsoid_sliced::ellipsoid_exit_w;
 use crate::methods::solid_distance::{Solid, signed_distance};
 use crate::ray_exit::{ellipsoid_exit, frustum_line_interval, surface_point_along};
+use contact_core::geometry::Torus;
 use contact_core::{Isometry3, Point3, Vector3};
 
 /// Bisection steps for the closest point of an ellipsoid (the multiplier's bracket halved to
@@ -25,15 +26,24 @@ impl Cavity {
                 (s, q)
             }
             Self::Ellipsoid(semi) => ellipsoid_distance(semi, p),
+            Self::Torus(t) => {
+                let (s, q, _) = signed_distance(&Solid::Torus(*t), p);
+                (s, q)
+            }
         }
     }
 
-    /// The interval of the line `o + s d` inside the cavity, or `None`.
-    pub(super) fn line_interval(&self, o: &Vector3, d: &Vector3) -> Option<(f64, f64)> {
+    /// The first `s ≥ 0` where the line `o + s d` (unit `d`, from `o` outside the cavity)
+    /// enters the cavity, or `None`.
+    pub(super) fn entry(&self, o: &Vector3, d: &Vector3) -> Option<f64> {
+        let first = |(s0, s1): (f64, f64)| (s1 > 0.0).then_some(s0.max(0.0));
         match self {
-            Self::Cylinder(c) => frustum_line_interval(c.radius(), c.radius(), c.length(), o, d),
+            Self::Cylinder(c) => {
+                frustum_line_interval(c.radius(), c.radius(), c.length(), o, d).and_then(first)
+            }
             Self::Frustum(f) => {
                 frustum_line_interval(f.bottom_radius(), f.top_radius(), f.length(), o, d)
+                    .and_then(first)
             }
             Self::Ellipsoid(semi) => {
                 let (u, v) = (o.component_div(semi), d.component_div(semi));
@@ -44,8 +54,9 @@ impl Cavity {
                 }
                 let q = -0.5 * (b + b.signum() * disc.sqrt());
                 let (x, y) = (q / a, c / q);
-                Some((x.min(y), x.max(y)))
+                first((x.min(y), x.max(y)))
             }
+            Self::Torus(t) => torus_entry(t, o, d),
         }
     }
 
@@ -59,8 +70,48 @@ impl Cavity {
                 Some(t) => o + t * d,
                 None => ellipsoid_distance(semi, o).1,
             },
+            Self::Torus(t) => surface_point_along(&Solid::Torus(*t), o, d),
         }
     }
+}
+
+/// Steps of the march into a torus' tube, per tube radius (a chord of the tube cannot hide
+/// between two steps of `ρ/8`).
+const TORUS_STEPS_PER_RADIUS: f64 = 8.0;
+
+/// The first `s ≥ 0` where the line from `o` along the unit `d` enters the tube of `torus`:
+/// the tube's signed distance `√((ρ_xy − R)² + z²) − ρ` marched in steps of `ρ/8` out to the
+/// torus' bounding sphere, the sign change bisected to round-off.
+fn torus_entry(torus: &Torus, o: &Vector3, d: &Vector3) -> Option<f64> {
+    let (big, small) = (torus.major_radius(), torus.minor_radius());
+    let inside = |s: f64| {
+        let p = o + s * d;
+        let rho = (p.x * p.x + p.y * p.y).sqrt() - big;
+        rho * rho + p.z * p.z < small * small
+    };
+    let reach = o.norm() + big + small;
+    let step = small / TORUS_STEPS_PER_RADIUS;
+    let mut s = 0.0;
+    while s < reach {
+        let next = s + step;
+        if inside(next) {
+            let (mut lo, mut hi) = (s, next);
+            for _ in 0..BISECTIONS {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                if inside(mid) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            return Some(0.5 * (lo + hi));
+        }
+        s = next;
+    }
+    None
 }
 
 /// The signed distance of `p` from the ellipsoid with `semi` axes about the origin (negative
@@ -125,11 +176,7 @@ pub(super) fn cavity_points(
     let default_a = ellipsoid_exit_w(semi_axes, pose_a, g, &-n);
     if distance >= 0.0 {
         // In the material: the line enters the cavity along +n.
-        let entry = cavity
-            .line_interval(&gb, &nb)
-            .filter(|&(_, s1)| s1 > 0.0)
-            .map(|(s0, _)| s0.max(0.0));
-        return match entry {
+        return match cavity.entry(&gb, &nb) {
             Some(s) => (default_a, g + s * n),
             None => (default_a, closest_w),
         };

@@ -8,12 +8,15 @@
 //!   lie on the radial line through the centre, and δ = d + r − R;
 //! - a prolate spheroid in a spherical cavity, its far end in the wall, and a ball in a
 //!   general ellipsoid cavity on one of its axes: symmetric about that axis (or about two
-//!   planes through it), so the normal is the axis and the points its ends.
+//!   planes through it), so the normal is the axis and the points its ends;
+//! - a ball in a torus' tube (a toroidal groove) on the tube's equator, pressed outward or
+//!   inward: symmetric about its meridian plane and the equator's, so the normal is radial
+//!   and δ = e + r − ρ.
 
 use super::{Case, ITERATIVE_BOUND, Row, run};
 use crate::common::{Expected, Rng, instance};
 use crate::ellipsoid_cavity::{ellipsoid_cap, ellipsoid_exit_of};
-use contact_core::geometry::{Cylinder, Ellipsoid, Frustum};
+use contact_core::geometry::{Cylinder, Ellipsoid, Frustum, Torus};
 use contact_core::{Geometry, Isometry3, Point3, Vector3};
 use nalgebra::{Matrix3, Translation3, UnitQuaternion};
 use std::f64::consts::{PI, TAU};
@@ -73,7 +76,46 @@ pub(super) fn rows(rng: &mut Rng) -> Vec<Row> {
             "slicing along the cavity's axis, lunes per region",
             ball_in_ellipsoid,
         )),
+        iterative(run(
+            rng,
+            SAMPLES,
+            "sphere in a torus cavity",
+            "r ∈ [0.1, 0.25] in a groove R = 1, ρ = 0.3 on its equator, pressed 1e-3 r to 0.2 r into the outer or the inner wall",
+            "slicing along the cavity's axis, lunes and the hole's part per region",
+            ball_in_groove,
+        )),
     ]
+}
+
+/// A ball in the tube of the torus R = 1, ρ = 0.3 on its equator at a random azimuth, `e`
+/// from the core circle outward or inward.
+fn ball_in_groove(rng: &mut Rng) -> Option<Case> {
+    let (big, small) = (1.0, 0.3);
+    let r = rng.uniform(0.1, 0.25);
+    let e = small - r + r * 10f64.powf(rng.uniform(-3.0, -0.7));
+    let sign = if rng.uniform(0.0, 1.0) < 0.5 {
+        -1.0
+    } else {
+        1.0
+    };
+    let azimuth = rng.uniform(0.0, TAU);
+    let radial = Vector3::new(azimuth.cos(), azimuth.sin(), 0.0);
+    Some(Case {
+        i: instance(Geometry::sphere(r).unwrap()),
+        j: instance(Geometry::Torus(Torus::new(big, small).unwrap())).flipped(),
+        pose_i: Isometry3::from_parts(
+            Translation3::from((big + sign * e) * radial),
+            rng.rotation(),
+        ),
+        pose_j: Isometry3::identity(),
+        expected: Expected {
+            point_i: Point3::from((big + sign * (e + r)) * radial),
+            point_j: Point3::from((big + sign * small) * radial),
+            normal: -sign * radial,
+            depth: e + r - small,
+        },
+        length: big + small,
+    })
 }
 
 /// A prolate spheroid in a unit socket along a random axis, moved along it so that its far

@@ -5,7 +5,7 @@
 use super::ellipsoid;
 use crate::common::{Rng, instance, query};
 use crate::sphere_solid::{GRID, brute_force_moments, first_change, sphere_exit};
-use contact_core::geometry::{Cylinder, Frustum};
+use contact_core::geometry::{Cylinder, Frustum, Torus};
 use contact_core::{Geometry, Isometry3, Point3, Vector3};
 
 /// SPEC §4's points for a region of the ball `(c, r)` outside a cavity (`in_hole` its inside
@@ -142,6 +142,56 @@ fn balls_in_an_ellipsoid_cavity_match_the_brute_force_oracle() {
                     + (got.point_j_w - world * Point3::from(on_cavity)).norm(),
             ];
             println!("ball r = {r} at {c:?} in an ellipsoid cavity: [normal, depth, points] {e:?}");
+            assert!(
+                e.iter().all(|&x| x <= 2e-4),
+                "r = {r} c = {c:?}: {e:?} {got:?}"
+            );
+        }
+    }
+}
+
+/// Balls in a torus' tube (R = 1, ρ = 0.3) off its symmetry planes, against the wall's
+/// outer, inner and upper sides, both orders, against the brute-force oracle (2e-4).
+#[test]
+fn balls_in_a_toroidal_groove_match_the_brute_force_oracle() {
+    let mut rng = Rng::new(0x70_7F);
+    let in_hole = |p: &Vector3| {
+        let rho = p.xy().norm() - 1.0;
+        rho * rho + p.z * p.z <= 0.09
+    };
+    let cavity = instance(Geometry::Torus(Torus::new(1.0, 0.3).unwrap())).flipped();
+    let cases = [
+        (0.15, Vector3::new(1.16, 0.1, 0.06)),
+        (0.2, Vector3::new(0.72, -0.3, -0.05)),
+        (0.12, Vector3::new(-0.4, 0.9, 0.2)),
+    ];
+    for (r, c) in cases {
+        let material = |p: &Vector3| !in_hole(p);
+        let (s, g) = brute_force_moments(&c, r, &material, GRID);
+        let n = -s.normalize();
+        let (on_ball, on_cavity) = brute_force_points(&c, r, &in_hole, &g, &n);
+        let world = rng.pose(2.0);
+        let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
+        let ball = instance(Geometry::sphere(r).unwrap());
+        for ball_is_i in [true, false] {
+            let found = if ball_is_i {
+                query(&ball, &cavity, &pose_ball, &world)
+            } else {
+                query(&cavity, &ball, &world, &pose_ball)
+            };
+            assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
+            let got = if ball_is_i {
+                found[0]
+            } else {
+                found[0].swapped()
+            };
+            let e = [
+                (got.normal_w - world.rotation * n).norm(),
+                (got.penetration - (on_cavity - on_ball).norm()).abs(),
+                (got.point_i_w - world * Point3::from(on_ball)).norm()
+                    + (got.point_j_w - world * Point3::from(on_cavity)).norm(),
+            ];
+            println!("ball r = {r} at {c:?} in a groove: [normal, depth, points] {e:?}");
             assert!(
                 e.iter().all(|&x| x <= 2e-4),
                 "r = {r} c = {c:?}: {e:?} {got:?}"

@@ -19,7 +19,7 @@ mod brute_force;
 mod regions;
 
 use crate::common::{Rng, instance, query};
-use contact_core::geometry::{Cylinder, Ellipsoid, Frustum};
+use contact_core::geometry::{Cylinder, Ellipsoid, Frustum, Torus};
 use contact_core::{Contact, Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 use nalgebra::{Matrix3, Translation3, UnitQuaternion};
 use std::f64::consts::PI;
@@ -460,4 +460,71 @@ fn a_spheroid_across_a_spherical_cavity_meets_it_at_both_ends() {
             assert!((got[0].point_j_w - world * Point3::from(big_r * axis)).norm() < 1e-9);
         }
     }
+}
+
+/// A ball in a torus' tube (a toroidal groove: R = 1, ρ = 0.3), its centre in a meridian
+/// plane on the tube's equator, pressed outward or inward: symmetric about that plane and
+/// the equator's, so the normal is radial and the points lie on the radial line through the
+/// centre, `δ = e + r − ρ` with `e` the centre's distance from the tube's core circle; both
+/// orders. A long ellipsoid along the core circle's tangent leaves the tube at both ends:
+/// two regions, mirror images.
+#[test]
+fn a_ball_in_a_toroidal_groove_meets_its_walls_radially() {
+    let (big, small) = (1.0, 0.3);
+    let groove = instance(Geometry::Torus(Torus::new(big, small).unwrap())).flipped();
+    let mut rng = Rng::new(0x70_7E);
+    for _ in 0..8 {
+        let r = rng.uniform(0.1, 0.25);
+        let e = small - r + r * 10f64.powf(rng.uniform(-3.0, -0.7));
+        let outward = rng.uniform(0.0, 1.0) < 0.5;
+        let sign = if outward { 1.0 } else { -1.0 };
+        let azimuth = rng.uniform(0.0, 2.0 * PI);
+        let radial = Vector3::new(azimuth.cos(), azimuth.sin(), 0.0);
+        let centre = (big + sign * e) * radial;
+        let world = rng.pose(2.0);
+        let pose_ball = world * Isometry3::from_parts(centre.into(), rng.rotation());
+        let ball = instance(Geometry::sphere(r).unwrap());
+        let normal = world.rotation * (-sign * radial);
+        let point_i = world * Point3::from((big + sign * (e + r)) * radial);
+        let point_j = world * Point3::from((big + sign * small) * radial);
+        let got = query(&ball, &groove, &pose_ball, &world);
+        assert_eq!(got.len(), 1, "{got:?}");
+        check_points(&got[0], &normal, &point_i, &point_j, 1e-9);
+        let back = query(&groove, &ball, &world, &pose_ball);
+        assert_eq!(back.len(), 1);
+        check_points(&back[0].swapped(), &normal, &point_i, &point_j, 1e-9);
+    }
+    // A long ellipsoid along the tangent at (R, 0, 0).
+    let body = ellipsoid(0.2, 0.9, 0.2);
+    let got = query(
+        &body,
+        &groove,
+        &Isometry3::translation(big, 0.0, 0.0),
+        &Isometry3::identity(),
+    );
+    assert_eq!(got.len(), 2, "{got:?}");
+    let (a, b) = (got[0], got[1]);
+    assert!((a.penetration - b.penetration).abs() < 1e-9, "{got:?}");
+    let mirror = |v: Vector3| Vector3::new(v.x, -v.y, v.z);
+    assert!((mirror(a.normal_w) - b.normal_w).norm() < 1e-9, "{got:?}");
+}
+
+/// The normal and both points of `got` against the expected ones (absolute, lengths near 1).
+fn check_points(got: &Contact, normal: &Vector3, point_i: &Point3, point_j: &Point3, tol: f64) {
+    assert!(
+        (got.normal_w - normal).norm() < tol,
+        "{got:?} want {normal:?}"
+    );
+    assert!(
+        (got.point_i_w - point_i).norm() < tol,
+        "{got:?} want I {point_i:?}"
+    );
+    assert!(
+        (got.point_j_w - point_j).norm() < tol,
+        "{got:?} want J {point_j:?}"
+    );
+    assert!(
+        (got.penetration - (point_i - point_j).norm()).abs() < tol,
+        "{got:?}"
+    );
 }
