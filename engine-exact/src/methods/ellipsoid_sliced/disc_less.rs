@@ -27,12 +27,18 @@ use std::f64::consts::TAU;
 /// outside), a disc less an elliptic annulus one more inside the annulus' hole.
 pub(crate) const MAX_LUNES: usize = 3;
 
+/// [`Lunes::curves`] of the whole disc (no cavity curve bounds it).
+pub(crate) const WHOLE: u8 = 2;
+
+/// [`Lunes::curves`] of the part inside an annulus' hole.
+pub(crate) const INNER: u8 = 1;
+
 /// The components of the unit disc less an ellipse (or an elliptic annulus).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Lunes {
     parts: [DiscOverlap; MAX_LUNES],
     /// Per part, the cavity's curve its `other_arcs` lie on: 0 the ellipse (an annulus'
-    /// outer one), 1 an annulus' inner one.
+    /// outer one), 1 an annulus' inner one, 2 none (the whole disc).
     curves: [u8; MAX_LUNES],
     count: usize,
 }
@@ -52,6 +58,7 @@ impl Lunes {
     pub(crate) fn whole_disc() -> Self {
         let mut out = Self::default();
         out.push().add_circle_arc(0.0, TAU);
+        out.curves[0] = WHOLE;
         out
     }
 
@@ -140,7 +147,7 @@ pub(crate) fn disc_less_annulus(
             out.curves[k + 1] = out.curves[k];
         }
         out.parts[0] = hole;
-        out.curves[0] = 1;
+        out.curves[0] = INNER;
         out.count = count + 1;
     }
     out

@@ -50,7 +50,7 @@ use crate::methods::volume_contact::contact_of_region;
 use contact_core::geometry::{Cylinder, Frustum, Torus};
 use contact_core::{Isometry3, Point3, Vector3, WorkCounters};
 use nalgebra::{Matrix2, Vector2};
-use regions::{Piece, Regions, connect_across_cuts, labels, pieces};
+use regions::{Piece, Regions, connect_across_cuts, labels_for_integrals, pieces};
 use walls::{cavity_points, toward_cavity};
 
 mod regions;
@@ -355,7 +355,7 @@ fn integrate_regions(
                 let Some((sa, lunes)) = slicing.lunes(t) else {
                     return total;
                 };
-                let label = labels(&piece.middles, &lunes);
+                let label = labels_for_integrals(&piece.middles, &lunes);
                 let parts = lunes.parts().iter().zip(lunes.curves()).zip(&label);
                 for ((p, &curve), &k) in parts {
                     if k == Some(j) {

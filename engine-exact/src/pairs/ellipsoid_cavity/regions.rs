@@ -3,7 +3,7 @@
 //! (see the parent module's doc).
 
 use super::Slicing;
-use crate::methods::ellipsoid_sliced::disc_less::{Lunes, MAX_LUNES};
+use crate::methods::ellipsoid_sliced::disc_less::{INNER, Lunes, MAX_LUNES, WHOLE};
 use crate::methods::ellipsoid_sliced::disc_overlap::DiscOverlap;
 use crate::methods::ellipsoid_sliced::shape_events;
 use std::f64::consts::TAU;
@@ -20,15 +20,48 @@ const NEAR_CUT: f64 = 1e-6;
 const MERGE: f64 = 1e-9;
 
 /// The middle of a circle arc, in `[0, 2π)`.
-pub(super) fn arc_middle(lune: &DiscOverlap) -> f64 {
+fn arc_middle(lune: &DiscOverlap) -> f64 {
     lune.arcs
         .spans()
         .first()
         .map_or(0.0, |(t0, t1)| (0.5 * (t0 + t1)).rem_euclid(TAU))
 }
 
-/// Whether two components share a stretch of the circle (any of their arcs overlap).
-fn parts_overlap(a: &DiscOverlap, b: &DiscOverlap) -> bool {
+/// A part's mark, by which the slices of one piece are matched to its middle's: the middle
+/// of its first circle arc, and the cavity curve that bounds it ([`Lunes::curves`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Mark {
+    middle: f64,
+    curve: u8,
+}
+
+/// The marks of `lunes`' parts.
+pub(super) fn marks(lunes: &Lunes) -> Vec<Mark> {
+    lunes
+        .parts()
+        .iter()
+        .zip(lunes.curves())
+        .map(|(p, &curve)| Mark {
+            middle: arc_middle(p),
+            curve,
+        })
+        .collect()
+}
+
+/// Whether two parts of nearby slices are one component: a whole section meets every part;
+/// parts bounded by different curves of the cavity never meet (a torus' tube keeps its hole
+/// from its outside at every height); the one part in an annulus' hole is itself; lunes are
+/// one where their circle arcs overlap.
+fn parts_overlap((a, ca): (&DiscOverlap, u8), (b, cb): (&DiscOverlap, u8)) -> bool {
+    if ca == WHOLE || cb == WHOLE {
+        return true;
+    }
+    if ca != cb {
+        return false;
+    }
+    if ca == INNER {
+        return true;
+    }
     a.arcs
         .spans()
         .iter()
@@ -50,21 +83,35 @@ fn arcs_overlap((a0, a1): (f64, f64), (b0, b1): (f64, f64)) -> bool {
     (b0 < a1) || (b1 > a0 + TAU)
 }
 
-/// Maps each lune of `here` to one of the `reference` middles: the cyclic shift nearest in
-/// the arcs' middles when the counts agree; else one to one, each reference middle taking the
-/// nearest lune left (a lune vanishing at a cut, read within round-off of it, is left out).
-pub(super) fn labels(reference: &[f64], here: &Lunes) -> [Option<usize>; MAX_LUNES] {
+/// Maps each part of `here` to one of the `reference` marks: a part bounded by an annulus'
+/// inner curve, or a whole section, to the reference's part of the same kind; lunes among
+/// the reference's lunes by the cyclic shift nearest in the arcs' middles when the counts
+/// agree, else one to one, each reference middle taking the nearest lune left (a lune
+/// vanishing at a cut, read within round-off of it, is left out).
+pub(super) fn labels(reference: &[Mark], here: &Lunes) -> [Option<usize>; MAX_LUNES] {
     let mut out = [None; MAX_LUNES];
     let parts = here.parts();
-    let k = reference.len();
-    if k == 0 {
+    let curves = here.curves();
+    for (i, &curve) in curves.iter().enumerate() {
+        if curve != 0 {
+            out[i] = reference.iter().position(|m| m.curve == curve);
+        }
+    }
+    let refs: Vec<usize> = (0..reference.len())
+        .filter(|&j| reference[j].curve == 0)
+        .collect();
+    let lunes: Vec<usize> = (0..parts.len()).filter(|&i| curves[i] == 0).collect();
+    let k = refs.len();
+    if k == 0 || lunes.is_empty() {
         return out;
     }
-    if parts.len() == k {
+    let middle = |i: usize| arc_middle(&parts[i]);
+    if lunes.len() == k {
         let cost = |shift: usize| -> f64 {
             (0..k)
                 .map(|j| {
-                    angular_distance(reference[j], arc_middle(&parts[(j + shift) % k])).powi(2)
+                    angular_distance(reference[refs[j]].middle, middle(lunes[(j + shift) % k]))
+                        .powi(2)
                 })
                 .sum()
         };
@@ -72,19 +119,42 @@ pub(super) fn labels(reference: &[f64], here: &Lunes) -> [Option<usize>; MAX_LUN
             .min_by(|&x, &y| cost(x).total_cmp(&cost(y)))
             .unwrap_or(0);
         for j in 0..k {
-            out[(j + best) % k] = Some(j);
+            out[lunes[(j + best) % k]] = Some(refs[j]);
         }
         return out;
     }
-    for (j, &m) in reference.iter().enumerate() {
-        let nearest = (0..parts.len())
-            .filter(|&i| out[i].is_none())
+    let mut taken = [false; MAX_LUNES];
+    for &j in &refs {
+        let m = reference[j].middle;
+        let nearest = lunes
+            .iter()
+            .copied()
+            .filter(|&i| !taken[i])
             .min_by(|&x, &y| {
-                angular_distance(arc_middle(&parts[x]), m)
-                    .total_cmp(&angular_distance(arc_middle(&parts[y]), m))
+                angular_distance(middle(x), m).total_cmp(&angular_distance(middle(y), m))
             });
         if let Some(i) = nearest {
+            taken[i] = true;
             out[i] = Some(j);
+        }
+    }
+    out
+}
+
+/// [`labels`] for the integrals: a lune left out there (a change between the samples that
+/// found none, a lune appearing and merging within one spacing) goes to the reference
+/// lune nearest in its middle, so that no volume is lost.
+pub(super) fn labels_for_integrals(reference: &[Mark], here: &Lunes) -> [Option<usize>; MAX_LUNES] {
+    let mut out = labels(reference, here);
+    for (i, part) in here.parts().iter().enumerate() {
+        if out[i].is_none() {
+            let m = arc_middle(part);
+            out[i] = (0..reference.len())
+                .filter(|&j| reference[j].curve == here.curves()[i] || reference[j].curve == 0)
+                .min_by(|&x, &y| {
+                    angular_distance(reference[x].middle, m)
+                        .total_cmp(&angular_distance(reference[y].middle, m))
+                });
         }
     }
     out
@@ -124,7 +194,7 @@ impl Regions {
 pub(super) struct Piece {
     pub(super) lo: f64,
     pub(super) hi: f64,
-    pub(super) middles: Vec<f64>,
+    pub(super) middles: Vec<Mark>,
     /// The index of its first lune among all pieces' lunes.
     pub(super) first: usize,
 }
@@ -178,9 +248,9 @@ pub(super) fn pieces(slicing: &Slicing) -> Vec<Piece> {
     let mut first = 0;
     for w in cuts.windows(2) {
         let mid = 0.5 * (w[0] + w[1]);
-        let middles: Vec<f64> = slicing
+        let middles: Vec<Mark> = slicing
             .lunes(mid)
-            .map(|(_, l)| l.parts().iter().map(arc_middle).collect())
+            .map(|(_, l)| marks(&l))
             .unwrap_or_default();
         let count = middles.len();
         out.push(Piece {
@@ -209,12 +279,14 @@ fn continuous(slicing: &Slicing, t0: f64, t1: f64) -> bool {
     if a.parts().len() != b.parts().len() {
         return false;
     }
-    let middles: Vec<f64> = a.parts().iter().map(arc_middle).collect();
-    let label = labels(&middles, &b);
+    let label = labels(&marks(&a), &b);
     b.parts()
         .iter()
         .zip(label)
-        .all(|(p, j)| j.is_some_and(|j| parts_overlap(&a.parts()[j], p)))
+        .zip(b.curves())
+        .all(|((p, j), &c)| {
+            j.is_some_and(|j| parts_overlap((&a.parts()[j], a.curves()[j]), (p, c)))
+        })
 }
 
 /// Adds to `cuts` the changes inside `(lo, hi)` that keep the crossing class on both sides:
@@ -232,26 +304,33 @@ fn hidden_events(slicing: &Slicing, lo: f64, hi: f64, cuts: &mut Vec<f64>) {
 }
 
 /// Finds the change between `a` and `b` whose lunes are not continuous (see
-/// [`hidden_events`]).
-fn locate_jump(slicing: &Slicing, a: f64, b: f64, depth: usize, cuts: &mut Vec<f64>) {
-    let mid = 0.5 * (a + b);
-    if depth == 0 || mid <= a || mid >= b {
-        cuts.push(mid);
-        return;
-    }
+/// [`hidden_events`]): halves the interval `depth` times at most, keeping a half whose ends
+/// are not continuous (the first), so the work is linear in `depth` (a second jump within
+/// one sample's spacing is not sought).
+fn locate_jump(slicing: &Slicing, mut a: f64, mut b: f64, depth: usize, cuts: &mut Vec<f64>) {
     let class = slicing.shape(a);
-    if slicing.shape(mid) != class || slicing.shape(b) != class {
-        let mut found = [0.0; 4];
-        let mut n = 0;
-        shape_events(a, b, |t| slicing.shape(t), &mut found, &mut n);
-        cuts.extend_from_slice(&found[..n]);
-        return;
-    }
-    for (x, y) in [(a, mid), (mid, b)] {
-        if !continuous(slicing, x, y) {
-            locate_jump(slicing, x, y, depth - 1, cuts);
+    for _ in 0..depth {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            break;
+        }
+        if slicing.shape(mid) != class || slicing.shape(b) != class {
+            let mut found = [0.0; 4];
+            let mut n = 0;
+            shape_events(a, b, |t| slicing.shape(t), &mut found, &mut n);
+            cuts.extend_from_slice(&found[..n]);
+            return;
+        }
+        if !continuous(slicing, a, mid) {
+            b = mid;
+        } else if !continuous(slicing, mid, b) {
+            a = mid;
+        } else {
+            // Continuous on both halves: the lunes moved fast, nothing jumped.
+            return;
         }
     }
+    cuts.push(0.5 * (a + b));
 }
 
 /// Joins the lunes on both sides of every cut whose circle arcs overlap.
@@ -264,11 +343,12 @@ pub(super) fn connect_across_cuts(slicing: &Slicing, pieces: &[Piece], regions: 
         };
         slicing.lunes(t).map(|(_, l)| {
             let label = labels(&piece.middles, &l);
-            let parts: Vec<(DiscOverlap, usize)> = l
+            let parts: Vec<(DiscOverlap, u8, usize)> = l
                 .parts()
                 .iter()
+                .zip(l.curves())
                 .zip(label)
-                .filter_map(|(p, j)| j.map(|j| (*p, piece.first + j)))
+                .filter_map(|((p, &c), j)| j.map(|j| (*p, c, piece.first + j)))
                 .collect();
             parts
         })
@@ -281,9 +361,9 @@ pub(super) fn connect_across_cuts(slicing: &Slicing, pieces: &[Piece], regions: 
         let (Some(down), Some(up)) = (near(below, true), near(above, false)) else {
             continue;
         };
-        for (part_d, id_d) in &down {
-            for (part_u, id_u) in &up {
-                if parts_overlap(part_d, part_u) {
+        for (part_d, c_d, id_d) in &down {
+            for (part_u, c_u, id_u) in &up {
+                if parts_overlap((part_d, *c_d), (part_u, *c_u)) {
                     regions.join(*id_d, *id_u);
                 }
             }

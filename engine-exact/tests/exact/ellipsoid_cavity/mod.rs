@@ -528,3 +528,35 @@ fn check_points(got: &Contact, normal: &Vector3, point_i: &Point3, point_j: &Poi
         "{got:?}"
     );
 }
+
+/// The material of a torus cavity includes its hole: a ball in the hole, clear of the tube,
+/// is wholly in the material (one contact, pushed toward the tube's nearest wall: `δ = r +`
+/// its distance); a flat ellipsoid over the whole hole, through the tube at two sides, is one
+/// region (its parts in the hole and outside the tube meet above and below the tube).
+#[test]
+fn a_torus_cavitys_hole_is_material() {
+    let groove = instance(Geometry::Torus(Torus::new(1.0, 0.3).unwrap())).flipped();
+    let ball = instance(Geometry::sphere(0.1).unwrap());
+    let got = query(
+        &ball,
+        &groove,
+        &Isometry3::translation(0.2, 0.0, 0.0),
+        &Isometry3::identity(),
+    );
+    assert_eq!(got.len(), 1, "{got:?}");
+    check_points(
+        &got[0],
+        &Vector3::x(),
+        &Point3::new(0.1, 0.0, 0.0),
+        &Point3::new(0.7, 0.0, 0.0),
+        1e-9,
+    );
+    let flat = ellipsoid(1.5, 1.2, 0.5);
+    let got = query(
+        &flat,
+        &groove,
+        &Isometry3::translation(0.1, -0.05, 0.1),
+        &Isometry3::identity(),
+    );
+    assert_eq!(got.len(), 1, "{got:?}");
+}
