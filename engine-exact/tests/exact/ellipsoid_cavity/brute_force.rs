@@ -6,7 +6,7 @@ use super::ellipsoid;
 use crate::common::{Rng, instance, query};
 use crate::sphere_solid::{GRID, brute_force_moments, first_change, sphere_exit};
 use contact_core::geometry::{Cylinder, Frustum, Torus};
-use contact_core::{Geometry, Isometry3, Point3, Vector3};
+use contact_core::{Geometry, GeometryInstance, Isometry3, Point3, Vector3};
 
 /// SPEC §4's points for a region of the ball `(c, r)` outside a cavity (`in_hole` its inside
 /// test), by marching: from a centroid in both bodies, the exits along `∓n`; from one in
@@ -40,6 +40,54 @@ fn brute_force_points(
     (pa, pb)
 }
 
+/// The engine's answer for the ball `(c, r)` in `cavity` (flipped; `in_hole` its inside
+/// test, own frame), both orders, seen from a random world frame, against the brute-force
+/// oracle: returns the errors [normal, depth, points], each held to 2e-4.
+fn against_brute_force(
+    cavity: &GeometryInstance,
+    in_hole: &dyn Fn(&Vector3) -> bool,
+    r: f64,
+    c: Vector3,
+    rng: &mut Rng,
+) -> [f64; 3] {
+    let material = |p: &Vector3| !in_hole(p);
+    let (s, g) = brute_force_moments(&c, r, &material, GRID);
+    let n = -s.normalize();
+    let (on_ball, on_cavity) = brute_force_points(&c, r, in_hole, &g, &n);
+    let world = rng.pose(2.0);
+    let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
+    let ball = instance(Geometry::sphere(r).unwrap());
+    let mut worst = [0.0f64; 3];
+    for ball_is_i in [true, false] {
+        let found = if ball_is_i {
+            query(&ball, cavity, &pose_ball, &world)
+        } else {
+            query(cavity, &ball, &world, &pose_ball)
+        };
+        assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
+        let got = if ball_is_i {
+            found[0]
+        } else {
+            found[0].swapped()
+        };
+        let e = [
+            (got.normal_w - world.rotation * n).norm(),
+            (got.penetration - (on_cavity - on_ball).norm()).abs(),
+            (got.point_i_w - world * Point3::from(on_ball)).norm()
+                + (got.point_j_w - world * Point3::from(on_cavity)).norm(),
+        ];
+        println!("ball r = {r} at {c:?}: [normal, depth, points] {e:?}");
+        assert!(
+            e.iter().all(|&x| x <= 2e-4),
+            "r = {r} c = {c:?}: {e:?} {got:?}"
+        );
+        for k in 0..3 {
+            worst[k] = worst[k].max(e[k]);
+        }
+    }
+    worst
+}
+
 /// Balls at a bore's rim (pressed into the wall and through the end at once), near the
 /// bottom rim, on a conical cavity's slanted wall and at its top rim, both orders, against
 /// the brute-force oracle of `sphere_solid` with the cavity's outside as the solid (its
@@ -61,41 +109,10 @@ fn balls_at_a_cavitys_rims_and_slanted_wall_match_the_brute_force_oracle() {
     ];
     let mut worst = [0.0f64; 3];
     for (geometry, in_hole, r, c) in cases {
-        let material = |p: &Vector3| !in_hole(p);
-        let (s, g) = brute_force_moments(&c, r, &material, GRID);
-        let n = -s.normalize();
-        let (on_ball, on_cavity) = brute_force_points(&c, r, in_hole, &g, &n);
-        let world = rng.pose(2.0);
-        let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
-        let ball = instance(Geometry::sphere(r).unwrap());
         let cavity = instance(geometry.clone()).flipped();
-        for ball_is_i in [true, false] {
-            let found = if ball_is_i {
-                query(&ball, &cavity, &pose_ball, &world)
-            } else {
-                query(&cavity, &ball, &world, &pose_ball)
-            };
-            assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
-            let got = found[0];
-            let (normal, p_ball, p_cavity) = if ball_is_i {
-                (got.normal_w, got.point_i_w, got.point_j_w)
-            } else {
-                (-got.normal_w, got.point_j_w, got.point_i_w)
-            };
-            let e = [
-                (normal - world.rotation * n).norm(),
-                (got.penetration - (on_cavity - on_ball).norm()).abs(),
-                (p_ball - world * Point3::from(on_ball)).norm()
-                    + (p_cavity - world * Point3::from(on_cavity)).norm(),
-            ];
-            println!("ball r = {r} at {c:?} in a cavity: [normal, depth, points] {e:?}");
-            assert!(
-                e.iter().all(|&x| x <= 2e-4),
-                "r = {r} c = {c:?}: {e:?} {got:?}"
-            );
-            for k in 0..3 {
-                worst[k] = worst[k].max(e[k]);
-            }
+        let e = against_brute_force(&cavity, in_hole, r, c, &mut rng);
+        for k in 0..3 {
+            worst[k] = worst[k].max(e[k]);
         }
     }
     println!("balls in cavities vs brute force, worst [normal, depth, points]: {worst:?}");
@@ -116,37 +133,7 @@ fn balls_in_an_ellipsoid_cavity_match_the_brute_force_oracle() {
         (0.3, Vector3::new(-0.4, -0.2, -0.35)),
     ];
     for (r, c) in cases {
-        let material = |p: &Vector3| !in_hole(p);
-        let (s, g) = brute_force_moments(&c, r, &material, GRID);
-        let n = -s.normalize();
-        let (on_ball, on_cavity) = brute_force_points(&c, r, &in_hole, &g, &n);
-        let world = rng.pose(2.0);
-        let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
-        let ball = instance(Geometry::sphere(r).unwrap());
-        for ball_is_i in [true, false] {
-            let found = if ball_is_i {
-                query(&ball, &cavity, &pose_ball, &world)
-            } else {
-                query(&cavity, &ball, &world, &pose_ball)
-            };
-            assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
-            let got = if ball_is_i {
-                found[0]
-            } else {
-                found[0].swapped()
-            };
-            let e = [
-                (got.normal_w - world.rotation * n).norm(),
-                (got.penetration - (on_cavity - on_ball).norm()).abs(),
-                (got.point_i_w - world * Point3::from(on_ball)).norm()
-                    + (got.point_j_w - world * Point3::from(on_cavity)).norm(),
-            ];
-            println!("ball r = {r} at {c:?} in an ellipsoid cavity: [normal, depth, points] {e:?}");
-            assert!(
-                e.iter().all(|&x| x <= 2e-4),
-                "r = {r} c = {c:?}: {e:?} {got:?}"
-            );
-        }
+        against_brute_force(&cavity, &in_hole, r, c, &mut rng);
     }
 }
 
@@ -166,36 +153,6 @@ fn balls_in_a_toroidal_groove_match_the_brute_force_oracle() {
         (0.12, Vector3::new(-0.4, 0.9, 0.2)),
     ];
     for (r, c) in cases {
-        let material = |p: &Vector3| !in_hole(p);
-        let (s, g) = brute_force_moments(&c, r, &material, GRID);
-        let n = -s.normalize();
-        let (on_ball, on_cavity) = brute_force_points(&c, r, &in_hole, &g, &n);
-        let world = rng.pose(2.0);
-        let pose_ball = world * Isometry3::from_parts(c.into(), rng.rotation());
-        let ball = instance(Geometry::sphere(r).unwrap());
-        for ball_is_i in [true, false] {
-            let found = if ball_is_i {
-                query(&ball, &cavity, &pose_ball, &world)
-            } else {
-                query(&cavity, &ball, &world, &pose_ball)
-            };
-            assert_eq!(found.len(), 1, "r = {r} c = {c:?}: {found:?}");
-            let got = if ball_is_i {
-                found[0]
-            } else {
-                found[0].swapped()
-            };
-            let e = [
-                (got.normal_w - world.rotation * n).norm(),
-                (got.penetration - (on_cavity - on_ball).norm()).abs(),
-                (got.point_i_w - world * Point3::from(on_ball)).norm()
-                    + (got.point_j_w - world * Point3::from(on_cavity)).norm(),
-            ];
-            println!("ball r = {r} at {c:?} in a groove: [normal, depth, points] {e:?}");
-            assert!(
-                e.iter().all(|&x| x <= 2e-4),
-                "r = {r} c = {c:?}: {e:?} {got:?}"
-            );
-        }
+        against_brute_force(&cavity, &in_hole, r, c, &mut rng);
     }
 }
